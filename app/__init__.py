@@ -1,0 +1,1 @@
+"""Desktop controller for a small 3-axis CNC mill."""

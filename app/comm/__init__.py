@@ -1,0 +1,1 @@
+"""The link to the machine: frame codec, session, transports; Qt only in worker.py."""

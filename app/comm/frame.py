@@ -1,0 +1,481 @@
+"""Frame codec of docs/protocol.md, shared by the host and the simulator.
+
+A frame is one line of printable ASCII, ``BODY*CCCC\\n``, at most 96 bytes, where
+CCCC is CRC-16/CCITT-FALSE of BODY in upper-case hex. This module only encodes,
+decodes and deframes; it knows nothing of sessions, threads or Qt.
+
+``encode(frame) -> bytes`` and ``decode(line) -> Frame`` are exact inverses for
+every frame kind. ``Deframer`` turns arbitrary byte chunks into frames, real-time
+bytes and counted drops.
+"""
+
+from __future__ import annotations
+
+import binascii
+import re
+from dataclasses import dataclass, field
+from typing import ClassVar
+
+MAX_FRAME = 96
+"""Longest frame in bytes, including ``*CCCC\\n``."""
+MAX_BODY = MAX_FRAME - 6
+PARTIAL_TIMEOUT = 0.5
+"""Seconds after which a partial frame with no newline is dropped."""
+FEED_HOLD = b"!"
+STOP_FLUSH = b"\x18"
+REALTIME_BYTES = FEED_HOLD + STOP_FLUSH
+STATES = ("IDLE", "HOMING", "RUN", "HOLD", "JOG", "ALARM")
+FLAG_LETTERS = "HCLUPS"
+NO_FLAGS = "-"
+
+
+class FrameError(ValueError):
+    """A line that is not a valid frame; the message says why."""
+
+
+def crc16(body: bytes) -> int:
+    """CRC-16/CCITT-FALSE (poly 0x1021, init 0xFFFF): ``crc16(b"123456789") == 0x29B1``."""
+    return binascii.crc_hqx(body, 0xFFFF)
+
+
+def seal(body: str) -> bytes:
+    """``BODY`` -> ``BODY*CCCC\\n``; raises FrameError if the result is too long or not ASCII."""
+    raw = body.encode("ascii", "strict") if body.isascii() else _not_ascii(body)
+    if not _PRINTABLE.fullmatch(raw):
+        raise FrameError(f"body has a non-printable byte: {body!r}")
+    if len(raw) > MAX_BODY:
+        raise FrameError(f"frame would be {len(raw) + 6} bytes, over {MAX_FRAME}: {body[:40]!r}...")
+    return b"%s*%04X\n" % (raw, crc16(raw))
+
+
+def unseal(line: bytes) -> str:
+    """``BODY*CCCC`` (newline and ``\\r`` already removed) -> BODY, checking length and CRC."""
+    if len(line) + 1 > MAX_FRAME:
+        raise FrameError(f"over-length frame ({len(line) + 1} bytes)")
+    body, star, crc = line.rpartition(b"*")
+    if not star:
+        raise FrameError("no '*' before the CRC")
+    if not _PRINTABLE.fullmatch(body) or not body:
+        raise FrameError("empty body or a non-printable byte")
+    if not _HEX4.fullmatch(crc):
+        raise FrameError(f"CRC field {crc!r} is not 4 upper-case hex digits")
+    if int(crc, 16) != crc16(body):
+        raise FrameError(f"bad CRC {crc.decode()} (expected {crc16(body):04X})")
+    return body.decode("ascii")
+
+
+def _not_ascii(body: str) -> bytes:
+    raise FrameError(f"body is not ASCII: {body!r}")
+
+
+_PRINTABLE = re.compile(rb"[\x20-\x7e]*")
+_HEX4 = re.compile(rb"[0-9A-F]{4}")
+
+
+# --------------------------------------------------------------------------- frames
+
+
+@dataclass(frozen=True)
+class Frame:
+    """Base of every frame kind; ``KIND`` is the body's first letter."""
+
+    KIND: ClassVar[str] = ""
+
+    def body(self) -> str:
+        raise NotImplementedError
+
+    def encode(self) -> bytes:
+        return seal(self.body())
+
+
+@dataclass(frozen=True)
+class Data(Frame):
+    """``D <seq> <line>``: one G-code line of the current stream."""
+
+    KIND: ClassVar[str] = "D"
+    seq: int
+    line: str
+
+    def body(self) -> str:
+        return f"D {self.seq} {self.line}"
+
+
+@dataclass(frozen=True)
+class Command(Frame):
+    """``C <id> <VERB> [args]``: a command, answered by ``O``/``E`` with the same id."""
+
+    KIND: ClassVar[str] = "C"
+    id: int
+    verb: str
+    args: tuple[str, ...] = ()
+
+    def body(self) -> str:
+        return " ".join(("C", str(self.id), self.verb, *self.args))
+
+
+@dataclass(frozen=True)
+class Ack(Frame):
+    """``A <seq> <free>``: every D frame up to seq is queued; free slots remain."""
+
+    KIND: ClassVar[str] = "A"
+    seq: int
+    free: int
+
+    def body(self) -> str:
+        return f"A {self.seq} {self.free}"
+
+
+@dataclass(frozen=True)
+class Finished(Frame):
+    """``F <seq>``: every line up to seq has finished moving."""
+
+    KIND: ClassVar[str] = "F"
+    seq: int
+
+    def body(self) -> str:
+        return f"F {self.seq}"
+
+
+@dataclass(frozen=True)
+class Nak(Frame):
+    """``N <seq>``: bad frame or gap; resend from seq."""
+
+    KIND: ClassVar[str] = "N"
+    seq: int
+
+    def body(self) -> str:
+        return f"N {self.seq}"
+
+
+@dataclass(frozen=True)
+class Ok(Frame):
+    """``O <id> <VERB> [info]``: command id done."""
+
+    KIND: ClassVar[str] = "O"
+    id: int
+    verb: str
+    info: str = ""
+
+    def body(self) -> str:
+        return _join("O", str(self.id), self.verb, self.info)
+
+
+@dataclass(frozen=True)
+class Error(Frame):
+    """``E <id> <code> <text>``: command refused; ``id`` None (``-``) for a refused D line."""
+
+    KIND: ClassVar[str] = "E"
+    id: int | None
+    code: str
+    text: str = ""
+
+    def body(self) -> str:
+        return _join("E", "-" if self.id is None else str(self.id), self.code, self.text)
+
+
+@dataclass(frozen=True)
+class Status(Frame):
+    """``S <boot> <state> <x> <y> <z> <acc> <done> <free> <rpm> <flags>``."""
+
+    KIND: ClassVar[str] = "S"
+    boot: str
+    state: str
+    x: float
+    y: float
+    z: float
+    acc: int
+    done: int
+    free: int
+    rpm: int
+    flags: str = ""
+
+    def body(self) -> str:
+        return (
+            f"S {self.boot} {self.state} {self.x:.3f} {self.y:.3f} {self.z:.3f} "
+            f"{self.acc} {self.done} {self.free} {self.rpm} {self.flags or NO_FLAGS}"
+        )
+
+    def has(self, flag: str) -> bool:
+        return flag in self.flags
+
+
+@dataclass(frozen=True)
+class Alarm(Frame):
+    """``X <code> <text>``: an alarm (LIMIT, SOFT_LIMIT, COVER_OPEN, ...)."""
+
+    KIND: ClassVar[str] = "X"
+    code: str
+    text: str = ""
+
+    def body(self) -> str:
+        return _join("X", self.code, self.text)
+
+
+@dataclass(frozen=True)
+class Info(Frame):
+    """``I <id> <text>``: one row of a multi-row answer to command id."""
+
+    KIND: ClassVar[str] = "I"
+    id: int
+    text: str
+
+    def body(self) -> str:
+        return f"I {self.id} {self.text}"
+
+
+@dataclass(frozen=True)
+class Log(Frame):
+    """``L <text>``: free text for the log."""
+
+    KIND: ClassVar[str] = "L"
+    text: str
+
+    def body(self) -> str:
+        return f"L {self.text}"
+
+
+def _join(*parts: str) -> str:
+    return " ".join(p for p in parts if p)
+
+
+# --------------------------------------------------------------------------- decoding
+
+
+def _int(text: str, what: str, minimum: int = 0) -> int:
+    if not re.fullmatch(r"-?\d{1,10}", text) or int(text) < minimum:
+        raise FrameError(f"bad {what} {text!r}")
+    return int(text)
+
+
+def _num(text: str, what: str) -> float:
+    if not re.fullmatch(r"-?\d{1,6}(\.\d{1,3})?", text):
+        raise FrameError(f"bad {what} {text!r}")
+    return float(text)
+
+
+def _word(text: str, what: str) -> str:
+    if not re.fullmatch(r"[A-Z][A-Z0-9_]*", text):
+        raise FrameError(f"bad {what} {text!r}")
+    return text
+
+
+def _split(rest: str, count: int, kind: str) -> list[str]:
+    """The first ``count - 1`` fields and the remainder (possibly empty)."""
+    parts = rest.split(" ", count - 1)
+    if any(p == "" for p in parts[: count - 1]) or len(parts) < count - 1:
+        raise FrameError(f"{kind} frame has too few fields")
+    return parts + [""] * (count - len(parts))
+
+
+def _data(rest: str) -> Data:
+    seq, line = _split(rest, 2, "D")
+    if not line:
+        raise FrameError("D frame has no line")
+    return Data(_int(seq, "seq"), line)
+
+
+def _command(rest: str) -> Command:
+    fields = rest.split(" ")
+    if len(fields) < 2 or "" in fields:
+        raise FrameError("C frame needs an id and a verb, single-spaced")
+    return Command(_int(fields[0], "command id"), _word(fields[1], "verb"), tuple(fields[2:]))
+
+
+def _ack(rest: str) -> Ack:
+    seq, free = _exact(rest, 2, "A")
+    return Ack(_int(seq, "seq", -1), _int(free, "free"))
+
+
+def _finished(rest: str) -> Finished:
+    (seq,) = _exact(rest, 1, "F")
+    return Finished(_int(seq, "seq", -1))
+
+
+def _nak(rest: str) -> Nak:
+    (seq,) = _exact(rest, 1, "N")
+    return Nak(_int(seq, "seq"))
+
+
+def _ok(rest: str) -> Ok:
+    cid, verb, info = _split(rest, 3, "O")
+    return Ok(_int(cid, "command id"), _word(verb, "verb"), info)
+
+
+def _error(rest: str) -> Error:
+    cid, code, text = _split(rest, 3, "E")
+    return Error(None if cid == "-" else _int(cid, "command id"), _word(code, "code"), text)
+
+
+def _status(rest: str) -> Status:
+    f = _exact(rest, 10, "S")
+    if not re.fullmatch(r"[0-9A-F]{1,8}", f[0]):
+        raise FrameError(f"bad boot id {f[0]!r}")
+    if f[1] not in STATES:
+        raise FrameError(f"bad state {f[1]!r}")
+    flags = "" if f[9] == NO_FLAGS else f[9]
+    if f[9] != NO_FLAGS and not set(flags) <= set(FLAG_LETTERS):
+        raise FrameError(f"bad flags {f[9]!r}")
+    return Status(
+        f[0], f[1], _num(f[2], "x"), _num(f[3], "y"), _num(f[4], "z"),
+        _int(f[5], "acc", -1), _int(f[6], "done", -1), _int(f[7], "free"),
+        _int(f[8], "rpm"), flags,
+    )
+
+
+def _alarm(rest: str) -> Alarm:
+    code, text = _split(rest, 2, "X")
+    return Alarm(_word(code, "alarm code"), text)
+
+
+def _info(rest: str) -> Info:
+    cid, text = _split(rest, 2, "I")
+    return Info(_int(cid, "command id"), text)
+
+
+def _log(rest: str) -> Log:
+    return Log(rest)
+
+
+def _exact(rest: str, count: int, kind: str) -> list[str]:
+    fields = rest.split(" ")
+    if len(fields) != count or "" in fields:
+        raise FrameError(f"{kind} frame needs exactly {count} single-spaced fields")
+    return fields
+
+
+_PARSERS = {
+    "D": _data, "C": _command, "A": _ack, "F": _finished, "N": _nak, "O": _ok,
+    "E": _error, "S": _status, "X": _alarm, "I": _info, "L": _log,
+}
+
+
+def parse_body(body: str) -> Frame:
+    """Parse a checked BODY into its frame; raises FrameError naming the bad field."""
+    if len(body) < 2 or body[1] != " " or body[0] not in _PARSERS:
+        raise FrameError(f"unknown frame kind in {body[:20]!r}")
+    return _PARSERS[body[0]](body[2:])
+
+
+def decode(line: bytes) -> Frame:
+    """One frame (with or without the trailing newline / ``\\r``) -> Frame; FrameError if bad."""
+    return parse_body(unseal(line.rstrip(b"\n").replace(b"\r", b"")))
+
+
+def encode(frame: Frame) -> bytes:
+    """Frame -> wire bytes ``BODY*CCCC\\n``."""
+    return frame.encode()
+
+
+# --------------------------------------------------------------------------- deframing
+
+
+@dataclass
+class DeframerStats:
+    """Counts of what a Deframer dropped, by reason."""
+
+    frames: int = 0
+    bad: int = 0
+    overlength: int = 0
+    timeouts: int = 0
+    realtime: int = 0
+
+
+@dataclass(frozen=True)
+class Dropped:
+    """A line that was not a valid frame; ``reason`` says why (for the log and for ``N``)."""
+
+    reason: str
+    raw: bytes
+
+
+@dataclass(frozen=True)
+class Realtime:
+    """A real-time byte (``!`` or 0x18) seen outside any frame."""
+
+    byte: bytes
+
+
+@dataclass
+class Deframer:
+    """Incremental deframer: ``feed(chunk, now)`` -> list of Frame | Dropped | Realtime.
+
+    Chunks may split frames anywhere. ``\\r`` is ignored. A line over 96 bytes is
+    dropped (once, when its newline arrives); a partial line with no newline for
+    ``PARTIAL_TIMEOUT`` seconds is dropped. With ``realtime=True`` (the machine's
+    side) ``!`` and 0x18 are taken out of the stream wherever they occur.
+    """
+
+    realtime: bool = False
+    stats: DeframerStats = field(default_factory=DeframerStats)
+    _buf: bytearray = field(default_factory=bytearray)
+    _started: float | None = None
+    _overlong: bool = False
+
+    def feed(self, chunk: bytes, now: float) -> list[Frame | Dropped | Realtime]:
+        out: list[Frame | Dropped | Realtime] = self.poll(now)
+        for line, complete in self._lines(chunk):
+            if self.realtime:
+                line = self._take_realtime(line, out)
+            self._append(line, now)
+            if complete and (self._buf or self._overlong):
+                out.append(self._finish())
+        return out
+
+    def poll(self, now: float) -> list[Frame | Dropped | Realtime]:
+        """Drop a partial frame that has waited too long for its newline."""
+        if self._started is not None and now - self._started > PARTIAL_TIMEOUT:
+            raw = bytes(self._buf)
+            self._reset()
+            self.stats.timeouts += 1
+            return [Dropped("partial frame timed out", raw)]
+        return []
+
+    def pending(self) -> int:
+        """Bytes of a partial frame waiting for its newline."""
+        return len(self._buf)
+
+    @staticmethod
+    def _lines(chunk: bytes):
+        parts = chunk.split(b"\n")
+        for part in parts[:-1]:
+            yield part, True
+        yield parts[-1], False
+
+    def _take_realtime(self, line: bytes, out: list) -> bytes:
+        for byte in (FEED_HOLD, STOP_FLUSH):
+            if byte in line:
+                self.stats.realtime += line.count(byte)
+                out.extend(Realtime(byte) for _ in range(line.count(byte)))
+                line = line.replace(byte, b"")
+        return line
+
+    def _append(self, data: bytes, now: float) -> None:
+        data = data.replace(b"\r", b"")
+        if not data:
+            return
+        if self._started is None:
+            self._started = now
+        if len(self._buf) + len(data) >= MAX_FRAME:
+            self._overlong = True
+            self._buf = self._buf[:MAX_FRAME]
+        else:
+            self._buf += data
+
+    def _finish(self) -> Frame | Dropped:
+        raw, overlong = bytes(self._buf), self._overlong
+        self._reset()
+        if overlong:
+            self.stats.overlength += 1
+            return Dropped("over-length frame", raw)
+        try:
+            frame = decode(raw)
+        except FrameError as exc:
+            self.stats.bad += 1
+            return Dropped(str(exc), raw)
+        self.stats.frames += 1
+        return frame
+
+    def _reset(self) -> None:
+        self._buf = bytearray()
+        self._started = None
+        self._overlong = False

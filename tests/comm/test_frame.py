@@ -1,0 +1,128 @@
+"""Golden byte vectors and error cases for the frame codec (docs/protocol.md)."""
+
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+
+from app.comm import frame as fr
+
+GOLDEN = [
+    (fr.Data(0, "G00 X10 Y10"), b"D 0 G00 X10 Y10*904C\n"),
+    (fr.Command(3, "PING"), b"C 3 PING*6852\n"),
+    (fr.Command(4, "JOG", ("X", "1.5", "300")), b"C 4 JOG X 1.5 300*E180\n"),
+    (fr.Ack(5, 7), b"A 5 7*F37C\n"),
+    (fr.Finished(-1), b"F -1*1DCB\n"),
+    (fr.Nak(3), b"N 3*CAE6\n"),
+    (fr.Ok(4, "HOME"), b"O 4 HOME*E871\n"),
+    (fr.Error(None, "SOFT_LIMIT", "X+ 151.000 > 150"), b"E - SOFT_LIMIT X+ 151.000 > 150*C043\n"),
+    (fr.Error(3, "BUSY", "job running"), b"E 3 BUSY job running*28B9\n"),
+    (
+        fr.Status("A1B2C3D4", "IDLE", 0, 0, 30, -1, -1, 16, 0, "H"),
+        b"S A1B2C3D4 IDLE 0.000 0.000 30.000 -1 -1 16 0 H*3AD2\n",
+    ),
+    (
+        fr.Status("1", "RUN", 1.5, -2, 3, 4, 3, 10, 4500, ""),
+        b"S 1 RUN 1.500 -2.000 3.000 4 3 10 4500 -*77BC\n",
+    ),
+    (fr.Alarm("LIMIT", "X min"), b"X LIMIT X min*9441\n"),
+    (fr.Info(7, "a.nc 120 10"), b"I 7 a.nc 120 10*F127\n"),
+    (fr.Log("hello world"), b"L hello world*296F\n"),
+]
+
+
+def test_check_values_of_the_protocol():
+    assert fr.crc16(b"123456789") == 0x29B1
+    assert fr.seal("D 0 G00 X10 Y10") == b"D 0 G00 X10 Y10*904C\n"
+
+
+@pytest.mark.parametrize(("frame", "wire"), GOLDEN, ids=lambda v: getattr(v, "KIND", None))
+def test_golden_vectors(frame, wire):
+    assert fr.encode(frame) == wire
+    assert fr.decode(wire) == frame
+
+
+@pytest.mark.parametrize(
+    ("wire", "reason"),
+    [
+        (b"D 0 G00 X10 Y10*904D\n", "bad CRC"),
+        (b"D 0 G00 X10 Y10\n", "no '*'"),
+        (b"D 0 G00 X01 Y10*904C\n", "bad CRC"),  # two adjacent digits swapped
+        (b"D 0 G00 X10 Y10*904c\n", "4 upper-case hex"),
+        (b"Q 1*" + b"%04X" % fr.crc16(b"Q 1") + b"\n", "unknown frame kind"),
+        (fr.seal("A x 3"), "bad seq"),
+        (fr.seal("S 1 FLY 0 0 0 -1 -1 1 0 -"), "bad state"),
+        (fr.seal("S 1 IDLE 0 0 0 -1 -1 1 0 Q"), "bad flags"),
+        (fr.seal("C 1  PING"), "single-spaced"),
+        (b"D 1 " + b"X" * 90 + b"*0000\n", "over-length"),
+    ],
+)
+def test_bad_frames_are_refused_with_a_reason(wire, reason):
+    with pytest.raises(fr.FrameError, match=reason):
+        fr.decode(wire)
+
+
+def test_seal_refuses_a_body_that_would_be_too_long():
+    with pytest.raises(fr.FrameError, match="over 96"):
+        fr.seal("D 1 " + "X" * 87)
+
+
+def test_every_single_bit_flip_is_detected():
+    wire = fr.encode(fr.Data(12, "G01 X12.5 Y-3 F300"))
+    for i in range(len(wire) - 1):
+        for bit in range(8):
+            bad = bytearray(wire)
+            bad[i] ^= 1 << bit
+            with pytest.raises(fr.FrameError):
+                fr.decode(bytes(bad))
+
+
+def _wire(frames):
+    return b"".join(fr.encode(f) for f, _ in frames)
+
+
+@given(st.lists(st.integers(min_value=1, max_value=40), max_size=30))
+def test_deframer_reassembles_any_split(cuts):
+    stream = _wire(GOLDEN)
+    deframer = fr.Deframer()
+    out, pos = [], 0
+    for cut in cuts:
+        out += deframer.feed(stream[pos : pos + cut], now=0.0)
+        pos += cut
+    out += deframer.feed(stream[pos:], now=0.0)
+    assert out == [f for f, _ in GOLDEN]
+
+
+def test_noise_between_frames_costs_only_the_next_frame():
+    deframer = fr.Deframer()
+    out = deframer.feed(b"\x00\xff~~" + fr.encode(fr.Ack(1, 3)) + fr.encode(fr.Ack(2, 3)), 0.0)
+    assert isinstance(out[0], fr.Dropped)
+    assert out[1:] == [fr.Ack(2, 3)]
+    assert deframer.stats.bad == 1
+
+
+def test_machine_side_takes_realtime_bytes_out_of_the_stream():
+    deframer = fr.Deframer(realtime=True)
+    wire = fr.encode(fr.Data(0, "G00 X1"))
+    out = deframer.feed(wire[:5] + b"!" + wire[5:] + b"\x18", 0.0)
+    assert out == [fr.Realtime(b"!"), fr.Data(0, "G00 X1"), fr.Realtime(b"\x18")]
+
+
+def test_partial_frame_is_dropped_after_500_ms():
+    deframer = fr.Deframer()
+    assert deframer.feed(b"A 1 ", 0.0) == []
+    assert deframer.poll(0.4) == []
+    dropped = deframer.poll(0.6)
+    assert dropped == [fr.Dropped("partial frame timed out", b"A 1 ")]
+    assert deframer.feed(fr.encode(fr.Ack(1, 2)), 0.7) == [fr.Ack(1, 2)]
+
+
+def test_overlength_line_is_dropped_once_and_the_next_frame_survives():
+    deframer = fr.Deframer()
+    out = deframer.feed(b"L " + b"x" * 300 + b"\n" + fr.encode(fr.Finished(4)), 0.0)
+    assert [type(o) for o in out] == [fr.Dropped, fr.Finished]
+    assert deframer.stats.overlength == 1
+
+
+def test_carriage_returns_and_blank_lines_are_ignored():
+    deframer = fr.Deframer()
+    assert deframer.feed(b"\r\n\nF 2*" + b"%04X" % fr.crc16(b"F 2") + b"\r\n", 0.0) == [fr.Finished(2)]
