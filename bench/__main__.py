@@ -1,0 +1,21 @@
+"""`make bench`: run every bench/bench_*.py (or those named on the command line)."""
+
+import importlib
+import sys
+import time
+from pathlib import Path
+
+
+def main(argv: list[str]) -> int:
+    names = argv or sorted(p.stem for p in Path(__file__).parent.glob("bench_*.py"))
+    for name in names:
+        module = importlib.import_module(f"bench.{name}")
+        print(f"== {name}", flush=True)
+        started = time.perf_counter()
+        module.main()
+        print(f"== {name} took {time.perf_counter() - started:.1f} s\n", flush=True)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
