@@ -1,0 +1,187 @@
+"""Reader for LinuxCNC ``rs274 -g`` canonical output, as recorded by ``record.py``.
+
+No dependency beyond the standard library, so the GUI or a bench can reuse it::
+
+    from tests.oracle.canon import read_record
+    rec = read_record("tests/oracle/data/arcs_circles.canon")
+    rec.moves      # list of dicts in the ``cnc-gcode moves`` format (mm)
+    rec.error_line # 1-based physical line where rs274 refused the program, or None
+
+``rs274 -g`` prints one canonical call per line::
+
+        12 N17    STRAIGHT_FEED(10.0000, 2.0000, 3.0000, 0.0000, 0.0000, 0.0000)
+
+a running counter, the block's ``N`` word as written in the source (``N.....`` when
+there is none) and the call. ``record.py`` feeds rs274 a copy of the program whose
+line ``k`` carries the word ``N<k>``, so the ``N`` column is the physical line.
+
+Values are printed with ``%.4f`` in the *program's* units at the time of the call
+(``USE_LENGTH_UNITS``); ``canon_to_moves`` converts them to millimetres. The feed rate
+is converted with the units in force when ``SET_FEED_RATE`` was called, as LinuxCNC's
+motion layer does (a G20/G21 switch does not re-scale an earlier F).
+
+``ARC_FEED(first_end, second_end, first_axis, second_axis, rotation, axis_end_point,
+a, b, c)``: the first/second axes are X/Y in G17, Z/X in G18, Y/Z in G19; ``first_axis``
+and ``second_axis`` are the centre; ``rotation`` < 0 is clockwise, its magnitude is
+1 + the number of extra full turns; ``axis_end_point`` is the third axis (helix).
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterable
+from dataclasses import dataclass, field
+from pathlib import Path
+
+MM_PER_INCH = 25.4
+
+# "   12 N17    STRAIGHT_FEED(1.0000, ...)" ; N digits are padded to 6, longer ones are not.
+_CALL = re.compile(r"^\s*(\d+)\s+N(\d+|\.+)\s*([A-Z_0-9]+)\((.*)\)\s*$")
+
+PLANES = {"CANON_PLANE_XY": "XY", "CANON_PLANE_XZ": "XZ", "CANON_PLANE_YZ": "YZ"}
+UNITS = {"CANON_UNITS_MM": 1.0, "CANON_UNITS_INCHES": MM_PER_INCH, "CANON_UNITS_CM": 10.0}
+
+
+class CanonError(ValueError):
+    """A line of canonical output that this reader does not understand."""
+
+
+@dataclass(frozen=True)
+class CanonCall:
+    """One canonical call: ``seq`` is rs274's counter, ``line`` the N column (None for N.....)."""
+
+    seq: int
+    line: int | None
+    name: str
+    args: tuple[str, ...]
+
+    def floats(self) -> list[float]:
+        return [float(a) for a in self.args]
+
+
+@dataclass
+class CanonRecord:
+    """A recorded rs274 run: header fields, the calls, and where it stopped with an error."""
+
+    path: Path | None
+    header: dict[str, str] = field(default_factory=dict)
+    calls: list[CanonCall] = field(default_factory=list)
+    error_line: int | None = None
+    error_message: str | None = None
+
+    @property
+    def source(self) -> str | None:
+        return self.header.get("source")
+
+    @property
+    def moves(self) -> list[dict]:
+        return canon_to_moves(self.calls)
+
+
+def split_args(text: str) -> tuple[str, ...]:
+    """Arguments of a call: comma separated, except inside a quoted string (COMMENT("a, b"))."""
+    text = text.strip()
+    if not text:
+        return ()
+    if text.startswith('"'):
+        return (text,)
+    return tuple(a.strip() for a in text.split(","))
+
+
+def parse_call(line: str) -> CanonCall:
+    m = _CALL.match(line)
+    if not m:
+        raise CanonError(f"not a canonical call: {line!r}")
+    seq, n, name, args = m.groups()
+    return CanonCall(int(seq), int(n) if n[0] != "." else None, name, split_args(args))
+
+
+def parse_canon_lines(lines: Iterable[str]) -> list[CanonCall]:
+    """Parse the stdout of ``rs274 -g``; blank lines are skipped."""
+    return [parse_call(line) for line in lines if line.strip()]
+
+
+def _mm(values: list[float], scale: float) -> list[float]:
+    return [v * scale for v in values]
+
+
+def canon_to_moves(calls: Iterable[CanonCall]) -> list[dict]:
+    """Turn canonical calls into moves in the ``cnc-gcode moves`` JSON format, in mm.
+
+    rapid: ``{"line", "kind": "rapid", "end"}``; feed: ``{..., "kind": "feed", "end", "feed"}``;
+    arc: ``{..., "kind": "arc", "end", "center", "plane", "turn", "feed"}`` with ``center``
+    in the plane's (first, second) axes; dwell: ``{"line", "kind": "dwell", "seconds"}``.
+    Every move also carries ``"units"``: the canon units it was printed in ("mm"/"in"),
+    which tells the comparison how finely rs274 printed it.
+    """
+    scale = 1.0
+    plane = "XY"
+    feed = 0.0
+    moves: list[dict] = []
+    for call in calls:
+        name = call.name
+        unit_name = "in" if scale == MM_PER_INCH else "mm"
+        if name == "USE_LENGTH_UNITS":
+            try:
+                scale = UNITS[call.args[0]]
+            except KeyError:
+                raise CanonError(f"unknown units {call.args}") from None
+        elif name == "SELECT_PLANE":
+            try:
+                plane = PLANES[call.args[0]]
+            except KeyError:
+                raise CanonError(f"unknown plane {call.args}") from None
+        elif name == "SET_FEED_RATE":
+            feed = float(call.args[0]) * scale
+        elif name in ("STRAIGHT_TRAVERSE", "STRAIGHT_FEED"):
+            end = _mm(call.floats()[:3], scale)
+            if name == "STRAIGHT_TRAVERSE":
+                moves.append({"line": call.line, "kind": "rapid", "end": end, "units": unit_name})
+            else:
+                moves.append({"line": call.line, "kind": "feed", "end": end, "feed": feed,
+                              "units": unit_name})
+        elif name == "ARC_FEED":
+            v = call.floats()
+            first_end, second_end, first_axis, second_axis = _mm(v[:4], scale)
+            rotation = int(v[4])
+            axis_end = v[5] * scale
+            if plane == "XY":
+                end = [first_end, second_end, axis_end]
+            elif plane == "XZ":  # first = Z, second = X, third = Y
+                end = [second_end, axis_end, first_end]
+            else:  # YZ: first = Y, second = Z, third = X
+                end = [axis_end, first_end, second_end]
+            moves.append({"line": call.line, "kind": "arc", "end": end,
+                          "center": [first_axis, second_axis], "plane": plane,
+                          "turn": rotation, "feed": feed, "units": unit_name})
+        elif name == "DWELL":
+            moves.append({"line": call.line, "kind": "dwell", "seconds": float(call.args[0])})
+        elif name in ("STRAIGHT_PROBE", "RIGID_TAP", "NURBS_FEED", "SPLINE_FEED"):
+            raise CanonError(f"motion call {name} is not supported by this reader")
+    return moves
+
+
+def parse_record(text: str, path: Path | None = None) -> CanonRecord:
+    """Parse a ``.canon`` file written by ``record.py``.
+
+    Lines starting with ``#`` are the header (``# key: value``); the rest is rs274's stdout.
+    """
+    rec = CanonRecord(path)
+    body: list[str] = []
+    for raw in text.splitlines():
+        if raw.startswith("#"):
+            key, sep, value = raw[1:].strip().partition(":")
+            if sep:
+                rec.header.setdefault(key.strip(), value.strip())
+        else:
+            body.append(raw)
+    rec.calls = parse_canon_lines(body)
+    if "error_line" in rec.header:
+        rec.error_line = int(rec.header["error_line"])
+        rec.error_message = rec.header.get("error")
+    return rec
+
+
+def read_record(path: str | Path) -> CanonRecord:
+    path = Path(path)
+    return parse_record(path.read_text(encoding="utf-8"), path)
