@@ -138,8 +138,9 @@ def canon_to_moves(calls: Iterable[CanonCall]) -> list[dict]:
             if name == "STRAIGHT_TRAVERSE":
                 moves.append({"line": call.line, "kind": "rapid", "end": end, "units": unit_name})
             else:
-                moves.append({"line": call.line, "kind": "feed", "end": end, "feed": feed,
-                              "units": unit_name})
+                moves.append(
+                    {"line": call.line, "kind": "feed", "end": end, "feed": feed, "units": unit_name}
+                )
         elif name == "ARC_FEED":
             v = call.floats()
             first_end, second_end, first_axis, second_axis = _mm(v[:4], scale)
@@ -151,9 +152,18 @@ def canon_to_moves(calls: Iterable[CanonCall]) -> list[dict]:
                 end = [second_end, axis_end, first_end]
             else:  # YZ: first = Y, second = Z, third = X
                 end = [axis_end, first_end, second_end]
-            moves.append({"line": call.line, "kind": "arc", "end": end,
-                          "center": [first_axis, second_axis], "plane": plane,
-                          "turn": rotation, "feed": feed, "units": unit_name})
+            moves.append(
+                {
+                    "line": call.line,
+                    "kind": "arc",
+                    "end": end,
+                    "center": [first_axis, second_axis],
+                    "plane": plane,
+                    "turn": rotation,
+                    "feed": feed,
+                    "units": unit_name,
+                }
+            )
         elif name == "DWELL":
             moves.append({"line": call.line, "kind": "dwell", "seconds": float(call.args[0])})
         elif name in ("STRAIGHT_PROBE", "RIGID_TAP", "NURBS_FEED", "SPLINE_FEED"):
@@ -185,3 +195,78 @@ def parse_record(text: str, path: Path | None = None) -> CanonRecord:
 def read_record(path: str | Path) -> CanonRecord:
     path = Path(path)
     return parse_record(path.read_text(encoding="utf-8"), path)
+
+
+# --- comparing moves ---------------------------------------------------------------------
+
+TOL_MM = 0.001
+# rs274 prints %.4f in the program's units: half a unit of the last digit, in mm
+PRINT_STEP = {"mm": 0.00005, "in": 0.00005 * MM_PER_INCH}
+
+
+def _close(a, b, tol: float) -> bool:
+    try:
+        return len(a) == len(b) and all(abs(float(x) - float(y)) <= tol for x, y in zip(a, b, strict=True))
+    except (TypeError, ValueError):
+        return False
+
+
+def _fmt(v) -> str:
+    try:
+        return "[" + ", ".join(f"{float(x):.4f}" for x in v) + "]"
+    except (TypeError, ValueError):
+        return repr(v)
+
+
+def compare_move(ours: dict, theirs: dict, tol_mm: float = TOL_MM) -> str | None:
+    """None if the move ``ours`` (``cnc-gcode moves`` format) matches rs274's ``theirs``
+    (from ``canon_to_moves``), else a short description of the first difference.
+
+    Same kind and source line; end points and arc centres within ``tol_mm`` plus rs274's
+    print resolution; feed within the same; dwell within 0.0001 s; arcs in the same plane
+    and direction (sign of ``turn``; its magnitude too when rs274 gives extra turns).
+    """
+    kind = theirs["kind"]
+    if ours.get("kind") != kind:
+        return f"kind {ours.get('kind')!r}, rs274 {kind!r}"
+    if ours.get("line") != theirs["line"]:
+        return f"line {ours.get('line')}, rs274 {theirs['line']}"
+    if kind == "dwell":
+        seconds = ours.get("seconds")
+        if not isinstance(seconds, int | float) or abs(seconds - theirs["seconds"]) > 0.0001:
+            return f"dwell {seconds} s, rs274 {theirs['seconds']} s"
+        return None
+    tol = tol_mm + PRINT_STEP[theirs["units"]]
+    if not _close(ours.get("end"), theirs["end"], tol):
+        return f"end {_fmt(ours.get('end'))}, rs274 {_fmt(theirs['end'])}"
+    if kind in ("feed", "arc"):
+        feed = ours.get("feed")
+        if not isinstance(feed, int | float) or abs(feed - theirs["feed"]) > tol:
+            return f"feed {feed}, rs274 {theirs['feed']:.4f}"
+    if kind == "arc":
+        if ours.get("plane") != theirs["plane"]:
+            return f"plane {ours.get('plane')}, rs274 {theirs['plane']}"
+        if not _close(ours.get("center"), theirs["center"], tol):
+            return f"centre {_fmt(ours.get('center'))}, rs274 {_fmt(theirs['center'])}"
+        turn = ours.get("turn")
+        if not isinstance(turn, int | float) or turn == 0 or (turn < 0) != (theirs["turn"] < 0):
+            return f"turn {turn}, rs274 {theirs['turn']}"
+        if abs(theirs["turn"]) > 1 and abs(turn) != abs(theirs["turn"]):
+            return f"turn {turn}, rs274 {theirs['turn']}"
+    return None
+
+
+def compare_moves(ours: list[dict], theirs: list[dict], limit: int = 8) -> list[str]:
+    """Differences between two move lists, move by move (at most ``limit``); [] if equal."""
+    problems = []
+    for i, (a, b) in enumerate(zip(ours, theirs, strict=False)):
+        why = compare_move(a, b)
+        if why:
+            problems.append(f"move {i} (rs274: source line {b.get('line')}): {why}")
+            if len(problems) >= limit:
+                return problems
+    if len(ours) != len(theirs):
+        extra = ours[len(theirs) :] or theirs[len(ours) :]
+        who = "ours" if len(ours) > len(theirs) else "rs274's"
+        problems.append(f"{len(ours)} moves, rs274 {len(theirs)}; first extra is {who}: {extra[0]}")
+    return problems

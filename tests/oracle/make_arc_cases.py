@@ -27,8 +27,9 @@ def fmt(v: float) -> str:
     return "0" if s in ("-0", "") else s
 
 
-def center_case(units: str, radius: float, off: float, plane: str = "XY",
-                angle: float = 90.0) -> tuple[str, str]:
+def center_case(
+    units: str, radius: float, off: float, plane: str = "XY", angle: float = 90.0
+) -> tuple[str, str]:
     """An arc of ``angle`` degrees CCW about a centre, its end ``off`` outside the circle."""
     unit_word = "G21" if units == "mm" else "G20"
     feed = "F300" if units == "mm" else "F12"
@@ -38,16 +39,24 @@ def center_case(units: str, radius: float, off: float, plane: str = "XY",
     a = math.radians(angle)
     ex, ey = cx + (radius + off) * math.cos(a), cy + (radius + off) * math.sin(a)
     if plane == "XY":
-        select, start, arc = "G17", f"X{fmt(x0)} Y{fmt(y0)} Z0", (
-            f"G3 X{fmt(ex)} Y{fmt(ey)} I{fmt(cx - x0)} J0")
+        select, start, arc = (
+            "G17",
+            f"X{fmt(x0)} Y{fmt(y0)} Z0",
+            (f"G3 X{fmt(ex)} Y{fmt(ey)} I{fmt(cx - x0)} J0"),
+        )
     elif plane == "XZ":  # first axis Z, second X: start Z=x0, X=y0
-        select, start, arc = "G18", f"X{fmt(y0)} Y0 Z{fmt(x0)}", (
-            f"G3 Z{fmt(ex)} X{fmt(ey)} K{fmt(cx - x0)} I0")
+        select, start, arc = (
+            "G18",
+            f"X{fmt(y0)} Y0 Z{fmt(x0)}",
+            (f"G3 Z{fmt(ex)} X{fmt(ey)} K{fmt(cx - x0)} I0"),
+        )
     else:
         raise ValueError(plane)
-    title = (f"centre format, {units}, {plane}, radius {fmt(radius)}, {angle:g} deg arc, "
-             f"end {fmt(off)} {units} {'outside' if off >= 0 else 'inside'} the circle")
-    text = (f"({title})\n{unit_word} G90 {select}\nG0 {start}\nG1 {feed}\n{arc}\nG0 X0 Y0\nM2\n")
+    title = (
+        f"centre format, {units}, {plane}, radius {fmt(radius)}, {angle:g} deg arc, "
+        f"end {fmt(off)} {units} {'outside' if off >= 0 else 'inside'} the circle"
+    )
+    text = f"({title})\n{unit_word} G90 {select}\nG0 {start}\nG1 {feed}\n{arc}\nG0 X0 Y0\nM2\n"
     return title, text
 
 
@@ -57,10 +66,11 @@ def radius_case(units: str, radius: float, excess: float) -> tuple[str, str]:
     feed = "F300" if units == "mm" else "F12"
     x0, y0 = (40.0, 75.0) if units == "mm" else (1.5, 3.0)
     ex = x0 + 2 * (abs(radius) + excess)
-    title = (f"radius format, {units}, R{fmt(radius)}, half chord {fmt(excess)} {units} "
-             f"longer than |R|")
-    text = (f"({title})\n{unit_word} G90 G17\nG0 X{fmt(x0)} Y{fmt(y0)} Z0\nG1 {feed}\n"
-            f"G2 X{fmt(ex)} Y{fmt(y0)} R{fmt(radius)}\nG0 X0 Y0\nM2\n")
+    title = f"radius format, {units}, R{fmt(radius)}, half chord {fmt(excess)} {units} longer than |R|"
+    text = (
+        f"({title})\n{unit_word} G90 G17\nG0 X{fmt(x0)} Y{fmt(y0)} Z0\nG1 {feed}\n"
+        f"G2 X{fmt(ex)} Y{fmt(y0)} R{fmt(radius)}\nG0 X0 Y0\nM2\n"
+    )
     return title, text
 
 
@@ -79,8 +89,7 @@ def all_cases() -> dict[str, str]:
         add(f"mm_ijk_r50_p{off:.4f}".replace(".", "_"), center_case("mm", 50.0, off))
     # mm, r = 3000 (a 0.6 deg arc): 0.1 % is 3 mm, so the absolute cap 100 * T = 2.83 mm decides
     for off in (2.8, 2.86):
-        add(f"mm_ijk_r3000_p{off:.4f}".replace(".", "_"),
-            center_case("mm", 3000.0, off, angle=0.6))
+        add(f"mm_ijk_r3000_p{off:.4f}".replace(".", "_"), center_case("mm", 3000.0, off, angle=0.6))
     # XZ plane, mm
     for off in (0.028, 0.029):
         add(f"mm_ijk_g18_r10_p{off:.4f}".replace(".", "_"), center_case("mm", 10.0, off, "XZ"))
@@ -101,10 +110,12 @@ def all_cases() -> dict[str, str]:
     # degenerate arcs: zero radius (centre on the start point), R arc ending where it starts
     cases["arctol_mm_ijk_zero_radius"] = (
         "(centre format with the centre on the start point: zero radius)\n"
-        "G21 G90 G17\nG0 X75 Y75 Z0\nG1 F300\nG2 X80 Y75 I0 J0\nG0 X0 Y0\nM2\n")
+        "G21 G90 G17\nG0 X75 Y75 Z0\nG1 F300\nG2 X80 Y75 I0 J0\nG0 X0 Y0\nM2\n"
+    )
     cases["arctol_mm_r_same_end"] = (
         "(radius format ending where it starts: no circle is defined)\n"
-        "G21 G90 G17\nG0 X75 Y75 Z0\nG1 F300\nG2 X75 Y75 R10\nG0 X0 Y0\nM2\n")
+        "G21 G90 G17\nG0 X75 Y75 Z0\nG1 F300\nG2 X75 Y75 R10\nG0 X0 Y0\nM2\n"
+    )
     return cases
 
 

@@ -56,7 +56,9 @@ _N_COLUMN = re.compile(r"^(\s*\d+ )N(?:\d+|\.+)\s*")
 def rs274_version() -> str:
     out = subprocess.run(
         ["dpkg-query", "-W", "-f", "${Package} ${Version}", "linuxcnc-uspace"],
-        capture_output=True, text=True, check=False,
+        capture_output=True,
+        text=True,
+        check=False,
     )
     return out.stdout.strip() if out.returncode == 0 else "unknown linuxcnc version"
 
@@ -70,7 +72,7 @@ def number_lines(text: str) -> str:
             out.append(line)
             continue
         m = _LEADING_N.match(line)
-        out.append(f"{m.group(1)}N{k} {line[m.end():]}")
+        out.append(f"{m.group(1)}N{k} {line[m.end() :]}")
     return "\n".join(out) + newline
 
 
@@ -83,8 +85,13 @@ def run_rs274(program: str, extra: tuple[str, ...] = ()) -> tuple[int, str, str]
         env = {"HOME": tmp, "PATH": "/usr/bin:/bin", "LANG": "C", "LC_ALL": "C"}
         proc = subprocess.run(
             ["rs274", "-g", *extra, "-t", "tool.tbl", "program.ngc"],
-            cwd=tmp, env=env, stdin=subprocess.DEVNULL, capture_output=True, text=True,
-            timeout=120, check=False,
+            cwd=tmp,
+            env=env,
+            stdin=subprocess.DEVNULL,
+            capture_output=True,
+            text=True,
+            timeout=120,
+            check=False,
         )
     return proc.returncode, proc.stdout, proc.stderr
 
@@ -147,8 +154,7 @@ def main(argv: list[str] | None = None) -> int:
         if args.names and not any(n in source.stem for n in args.names):
             continue
         runs = {source.stem: ()}
-        runs.update({f"{source.stem}+{tag}": extra
-                     for tag, extra in VARIANTS.get(source.stem, {}).items()})
+        runs.update({f"{source.stem}+{tag}": extra for tag, extra in VARIANTS.get(source.stem, {}).items()})
         for name, extra in runs.items():
             text = record(source, extra)
             (DATA / f"{name}.canon").write_text(text)
