@@ -1,0 +1,142 @@
+"""Command ids, one command in flight at a time, same-id retries and timeouts.
+
+docs/protocol.md: ``C <id> <VERB> [args]``; a repeated id (the same as the last one)
+is not executed again. The machine only remembers the *last* id, so the host keeps
+exactly one command outstanding and retries it with the same id until ``O``/``E``
+arrives (every ``RETRY_S``, doubling up to 1 s, so the retries double as the
+heartbeat); other commands wait in a FIFO. ``PING`` and ``STATUS`` are answered by
+an ``S`` frame. A command unanswered by its verb's deadline ends with ``TIMEOUT``.
+Urgent commands (``STOP``) supersede the outstanding one.
+"""
+
+from __future__ import annotations
+
+from collections import deque
+from dataclasses import dataclass, field
+
+from app.comm.events import CommandResult
+from app.comm.frame import Command, Error, Info, Ok
+
+RETRY_S = 0.25
+MAX_RETRY_S = 1.0
+DEFAULT_DEADLINE = 4.0
+DEADLINES = {
+    "HOME": 240.0, "JOG": 600.0, "PAUSE": 120.0, "STOP": 60.0, "SD": 60.0,
+    "RESET": 10.0, "RESUME": 10.0, "JOB": 6.0,
+}
+STATUS_VERBS = frozenset({"PING", "STATUS"})
+
+
+@dataclass
+class Pending:
+    """One command on the wire."""
+
+    frame: Command
+    deadline: float
+    first_sent: float = 0.0
+    last_sent: float = 0.0
+    interval: float = RETRY_S
+    tries: int = 0
+    rows: list[str] = field(default_factory=list)
+    acknowledged: bool = False
+
+    @property
+    def id(self) -> int:
+        return self.frame.id
+
+
+def deadline_for(verb: str, args: tuple[str, ...]) -> float | None:
+    """Seconds a verb may take; None for ``SD PUT`` (it answers when the upload ends)."""
+    if verb == "SD" and args[:1] == ("PUT",):
+        return None
+    return DEADLINES.get(verb, DEFAULT_DEADLINE)
+
+
+@dataclass
+class CommandQueue:
+    """Assigns ids, sends one command at a time, matches answers, retries, times out."""
+
+    next_id: int = 1
+    outstanding: Pending | None = None
+    waiting: deque[Command] = field(default_factory=deque)
+
+    def submit(self, verb: str, args: tuple[str, ...] = (), urgent: bool = False) -> Command:
+        """Queue a command and return its frame (with its id)."""
+        command = Command(self.next_id, verb, tuple(str(a) for a in args))
+        self.next_id += 1
+        if urgent:
+            self.waiting.appendleft(command)
+        else:
+            self.waiting.append(command)
+        return command
+
+    def supersede(self) -> Pending | None:
+        """Drop the outstanding command (an urgent one goes next); return it."""
+        dropped, self.outstanding = self.outstanding, None
+        return dropped
+
+    def idle(self) -> bool:
+        return self.outstanding is None and not self.waiting
+
+    def due(self, now: float) -> tuple[list[Command], list[CommandResult]]:
+        """Frames to send at ``now`` and the commands that timed out."""
+        timed_out = []
+        pending = self.outstanding
+        if pending is not None and pending.deadline and now - pending.first_sent > pending.deadline:
+            timed_out.append(_result(pending, ok=False, code="TIMEOUT", info="no answer"))
+            self.outstanding = pending = None
+        if pending is None and self.waiting:
+            command = self.waiting.popleft()
+            self.outstanding = Pending(command, deadline_for(command.verb, command.args) or 0.0, now, now)
+            return [command], timed_out
+        if pending is not None and not pending.acknowledged and now - pending.last_sent >= pending.interval:
+            pending.last_sent, pending.tries = now, pending.tries + 1
+            pending.interval = min(MAX_RETRY_S, pending.interval * 2)
+            return [pending.frame], timed_out
+        return [], timed_out
+
+    def on_answer(self, frame: Ok | Error | Info) -> CommandResult | None:
+        """An ``O``/``E``/``I`` frame; the result if it ended the outstanding command."""
+        pending = self.outstanding
+        if pending is None or frame.id != pending.id:
+            return None
+        if isinstance(frame, Info):
+            pending.rows.append(frame.text)
+            return None
+        self.outstanding = None
+        if isinstance(frame, Ok):
+            return _result(pending, ok=True, info=frame.info)
+        return _result(pending, ok=False, code=frame.code, info=frame.text)
+
+    def on_status(self) -> CommandResult | None:
+        """An ``S`` frame: it answers an outstanding PING or STATUS."""
+        pending = self.outstanding
+        if pending is not None and pending.frame.verb in STATUS_VERBS:
+            self.outstanding = None
+            return _result(pending, ok=True)
+        return None
+
+    def acknowledge(self) -> None:
+        """The machine showed it has the outstanding command (e.g. the first ``A`` of SD PUT)."""
+        if self.outstanding is not None:
+            self.outstanding.acknowledged = True
+
+    def heartbeat(self) -> Command | None:
+        """A ``PING`` with a fresh id, if nothing else is being retried (else None)."""
+        if self.waiting or (self.outstanding is not None and not self.outstanding.acknowledged):
+            return None
+        command = Command(self.next_id, "PING")
+        self.next_id += 1
+        return command
+
+    def fail_all(self, code: str, info: str) -> list[CommandResult]:
+        """End every command (link lost, disconnect): results for each."""
+        pendings = ([self.outstanding] if self.outstanding else []) + [Pending(c, 0) for c in self.waiting]
+        self.outstanding = None
+        self.waiting.clear()
+        return [_result(p, ok=False, code=code, info=info) for p in pendings]
+
+
+def _result(pending: Pending, ok: bool, code: str = "", info: str = "") -> CommandResult:
+    frame = pending.frame
+    return CommandResult(frame.id, frame.verb, frame.args, ok, info, code, tuple(pending.rows))

@@ -1,0 +1,307 @@
+"""Jobs, SD uploads, pause/stop and recovery: the stream half of ``Session``.
+
+``JobControl`` is mixed into ``Session`` (it uses its ``submit``, ``_set_state``,
+``_send``, listener and clock). Contract of the operator calls:
+
+- ``start_job(program)`` (a ``Program`` with ``device_lines`` or a list of lines):
+  only when READY with nothing in flight; sends ``JOB n`` and streams once it is open.
+- ``pause()`` sends ``!`` (repeated until the status shows HOLD); ``resume()`` sends
+  ``RESUME``; ``stop()`` sends 0x18 (repeated until IDLE) and an urgent ``STOP``; no
+  D frame is sent after a stop.
+- ``upload_to_sd(name, lines)`` sends ``SD PUT name n crc32`` and streams the lines.
+- ``resume_after_reconnect()`` (RESUME_OFFERED) sends ``RESUME FROM acc+1`` and the
+  missing frames; ``confirm_restart()`` (RESTART_REQUIRED, homed) restarts at done+1.
+Each returns True if accepted; a refusal is reported with ``on_error`` and False.
+"""
+
+from __future__ import annotations
+
+from app.comm import frame as fr
+from app.comm.events import CommandResult, ResumeOffer, StatusEvent
+from app.comm.listener import JOB_STATES, RECOVERY_STATES, SENDING_STATES, SessionState
+from app.comm.modal import restart_preamble
+from app.comm.stream import Stream, sd_crc32
+
+S = SessionState
+STOP_ALARMS = frozenset({"LIMIT", "SOFT_LIMIT", "COVER_OPEN", "FOLLOWING_ERROR"})
+
+
+def device_lines(program) -> list[str]:
+    """The lines to stream: ``program.device_lines`` or the sequence itself."""
+    return list(getattr(program, "device_lines", program))
+
+
+class JobControl:
+    """Operator calls and frame handlers for streams (see the module docstring)."""
+
+    # ------------------------------------------------------------------ operator calls
+
+    def start_job(self, program) -> bool:
+        lines = device_lines(program)
+        if not self._can_start(lines, "job"):
+            return False
+        self.lines = lines
+        free = self.status.free if self.status else 1
+        self.stream = Stream.job(lines, self.rtt, free, boot=self.boot or "")
+        self._set_state(S.STARTING)
+        self.submit("JOB", len(lines), then=self._job_opened)
+        return True
+
+    def upload_to_sd(self, name: str, lines) -> bool:
+        lines = device_lines(lines)
+        if not self._can_start(lines, "upload"):
+            return False
+        self.stream = Stream.upload(name, lines, self.rtt)
+        self._set_state(S.UPLOADING)
+        self.submit("SD", "PUT", name, len(lines), f"{sd_crc32(lines):08X}", then=self._upload_answered)
+        return True
+
+    def run_from_sd(self, name: str) -> int:
+        return self.submit("SD", "RUN", name)
+
+    def list_sd(self) -> int:
+        return self.submit("SD", "LIST")
+
+    def delete_sd(self, name: str) -> int:
+        return self.submit("SD", "DEL", name)
+
+    def home(self, mode: str = "NORMAL") -> int:
+        return self.submit("HOME", mode)
+
+    def jog(self, axis: str, distance_mm: float, feed_mm_min: float) -> int:
+        return self.submit("JOG", axis.upper(), f"{distance_mm:g}", f"{feed_mm_min:g}")
+
+    def pause(self) -> bool:
+        """Feed hold now (real-time ``!``, repeated until the status shows HOLD)."""
+        if not self.attached:
+            return self._refuse("NOT_CONNECTED", "not connected")
+        self.realtime.request(fr.FEED_HOLD, self.clock())
+        self.tick()
+        return True
+
+    def resume(self) -> bool:
+        """Leave a feed hold (``RESUME``); a job after a reconnect uses resume_after_reconnect."""
+        if self.state is S.RESUME_OFFERED:
+            return self.resume_after_reconnect()
+        self.submit("RESUME")
+        return True
+
+    def stop(self) -> bool:
+        """Stop and flush now (0x18 repeated until IDLE, and an urgent ``STOP``)."""
+        if self.state in RECOVERY_STATES:
+            self._finish_stream(False, "abandoned by the operator")
+        if self.attached:
+            self.realtime.request(fr.STOP_FLUSH, self.clock())
+            if self.state in JOB_STATES or self.state is S.UPLOADING:
+                self._stop_stream()
+            self.submit("STOP", urgent=True, then=self._stop_answered)
+        return True
+
+    def resume_after_reconnect(self) -> bool:
+        if self.state is not S.RESUME_OFFERED or self.status is None:
+            return self._refuse("NO_RESUME", "there is no interrupted job to resume")
+        seq = self.status.acc + 1
+        self._set_state(S.RESUMING)
+        self.submit("RESUME", "FROM", seq, then=lambda r: self._resumed(r, seq))
+        return True
+
+    def confirm_restart(self) -> bool:
+        """After a machine reset and re-homing: restart the job at done+1 (modal state restored)."""
+        if self.state is not S.RESTART_REQUIRED or self.stream is None:
+            return self._refuse("NO_RESTART", "there is no job waiting for a restart")
+        if self.status is None or not self.status.homed:
+            return self._refuse("HOME_REQUIRED", "home the machine before restarting the job")
+        start = self.stream.program_index(self.stream.done) + 1
+        pre = restart_preamble(self.lines, start)
+        self.stream = Stream.job(self.lines, self.rtt, self.status.free, start, pre, self.boot or "")
+        self._set_state(S.STARTING)
+        self.submit("JOB", self.stream.window.total, then=self._job_opened)
+        return True
+
+    # ------------------------------------------------------------------ checks
+
+    def _can_start(self, lines: list[str], what: str) -> bool:
+        if self.state is not S.READY or self.stream is not None:
+            return self._refuse("BUSY", f"cannot start a {what} while {self.state.name.lower()}")
+        if not lines:
+            return self._refuse("EMPTY", f"the {what} has no lines")
+        for seq, line in enumerate(lines):
+            try:
+                fr.seal(f"D {seq} {line}")
+            except fr.FrameError as exc:
+                return self._refuse("BAD_LINE", f"line {seq} cannot be sent: {exc}")
+        return True
+
+    def _refuse(self, code: str, text: str) -> bool:
+        self._error(code, text)
+        return False
+
+    # ------------------------------------------------------------------ command answers
+
+    def _job_opened(self, result: CommandResult) -> None:
+        if self.state is not S.STARTING:
+            return
+        if result.ok:
+            if self.status is not None:
+                self.stream.window.on_ack(-1, self.status.free, self.clock())
+            self._set_state(S.STREAMING)
+        else:
+            self._finish_stream(False, f"JOB refused: {result.code} {result.info}".strip())
+
+    def _upload_answered(self, result: CommandResult) -> None:
+        if self.state is not S.UPLOADING:
+            return
+        stored = result.ok and self.stream.window.all_acked
+        reason = "stored" if stored else f"{result.code} {result.info}".strip() or "upload failed"
+        self._finish_stream(stored, reason)
+
+    def _resumed(self, result: CommandResult, seq: int) -> None:
+        if self.state is not S.RESUMING:
+            return
+        if not result.ok:
+            self._finish_stream(False, f"RESUME FROM refused: {result.code} {result.info}".strip())
+            return
+        free = self.status.free if self.status else 1
+        self.stream.window.restart_at(seq, free)
+        self._set_state(S.STREAMING)
+        if self.status is not None and self.status.state == "HOLD":
+            self.submit("RESUME")
+
+    def _stop_answered(self, result: CommandResult) -> None:
+        if result.ok and self.state is S.STOPPING:
+            self._finish_stream(False, "stopped by the operator")
+
+    def _stop_stream(self) -> None:
+        if self.state is S.UPLOADING:
+            self._finish_stream(False, "upload stopped by the operator")
+        elif self.state is not S.STOPPING:
+            self._set_state(S.STOPPING)
+
+    def _realtime_confirmed(self, byte: bytes) -> None:
+        if byte == fr.STOP_FLUSH and self.state is S.STOPPING:
+            self._finish_stream(False, "stopped by the operator")
+
+    # ------------------------------------------------------------------ frames of a stream
+
+    def _tick_stream(self, now: float) -> None:
+        stream = self.stream
+        if stream is None or self.state not in SENDING_STATES or not self.attached:
+            return
+        for frame in stream.window.due(now):
+            self._send(frame)
+        if stream.window.failed:
+            self._error("RETRIES_EXHAUSTED", stream.window.failed)
+            if stream.kind == "job":
+                self.realtime.request(fr.STOP_FLUSH, now)
+            self._finish_stream(False, stream.window.failed)
+            return
+        self._check_quality()
+        self._report_progress(now)
+
+    def _on_ack(self, frame: fr.Ack, now: float) -> None:
+        if self.stream is None or self.state not in SENDING_STATES:
+            return
+        if self.stream.window.on_ack(frame.seq, frame.free, now) and self.state is S.UPLOADING:
+            self.commands.acknowledge()
+
+    def _on_nak(self, frame: fr.Nak, now: float) -> None:
+        if self.stream is not None and self.state in SENDING_STATES:
+            self.stream.window.on_nak(frame.seq, now)
+
+    def _on_finished(self, frame: fr.Finished, now: float) -> None:
+        if self.stream is None or self.stream.kind != "job" or self.state not in SENDING_STATES:
+            return
+        self.stream.window.on_ack(frame.seq, 0, now)
+        self._lines_finished(frame.seq, now)
+
+    def _lines_finished(self, seq: int, now: float) -> None:
+        if self.stream.finish_line(seq):
+            self._report_progress(now, force=True)
+            if self.stream.complete:
+                self._finish_stream(True, "completed")
+
+    def _line_refused(self, frame: fr.Error) -> None:
+        reason = f"line refused: {frame.code} {frame.text}".strip()
+        self._error("LINE_REFUSED", reason)
+        if self.stream is not None and self.state in JOB_STATES | SENDING_STATES:
+            if self.stream.kind == "job" and self.status is not None:
+                line = self.stream.program_index(self.status.done + 1)
+                reason = f"line {line} refused: {frame.code} {frame.text}".strip()
+            self._finish_stream(False, reason)
+
+    def _job_alarm(self, code: str, text: str) -> None:
+        if self.stream is None:
+            return
+        if code == "UART_LOST" and self.state in JOB_STATES - {S.STOPPING}:
+            self._interrupt("the UART hop to the CNC MCU is down")
+        elif code in STOP_ALARMS and self.state in JOB_STATES | SENDING_STATES:
+            self._finish_stream(False, f"alarm {code} {text}".strip())
+
+    def _job_status(self, event: StatusEvent, now: float) -> None:
+        stream = self.stream
+        if stream is None:
+            return
+        if self.state is S.INTERRUPTED and self.link.state.value == "CONNECTED" and "U" not in event.flags:
+            self._offer_recovery(event)
+            return
+        if stream.kind != "job" or self.state not in SENDING_STATES:
+            return
+        if "U" in event.flags:
+            self._interrupt("the UART hop to the CNC MCU is down")
+            return
+        stream.window.on_status_ack(event.acc, event.free, now)
+        if event.state == "HOLD" and self.state is S.STREAMING:
+            self._set_state(S.PAUSED)
+        elif event.state == "RUN" and self.state is S.PAUSED:
+            self._set_state(S.STREAMING)
+        self._lines_finished(event.done, now)
+        if self.stream is not None and event.state == "ALARM":
+            self._finish_stream(False, "the machine is in ALARM")
+
+    def _report_progress(self, now: float, force: bool = False) -> None:
+        progress = self.stream.progress()
+        last, when = self._last_progress
+        if progress != last and (force or now - when >= 0.1):
+            self._last_progress = (progress, now)
+            self.listener.on_progress(progress)
+
+    # ------------------------------------------------------------------ recovery
+
+    def _interrupt(self, reason: str) -> None:
+        if self.state is not S.INTERRUPTED:
+            self._log("warning", f"job interrupted: {reason}")
+            self._set_state(S.INTERRUPTED)
+
+    def _job_link_lost(self, reason: str) -> None:
+        if self.stream is None:
+            return
+        if self.state is S.UPLOADING:
+            self._finish_stream(False, f"upload failed: {reason}")
+        elif self.state is S.STOPPING:
+            self._finish_stream(False, f"stopped (link lost before the machine confirmed: {reason})")
+        elif self.state in JOB_STATES or self.state in RECOVERY_STATES:
+            self._interrupt(reason)
+
+    def _offer_recovery(self, event: StatusEvent) -> None:
+        stream = self.stream
+        if event.boot == stream.boot:
+            start = stream.program_index(event.acc) + 1
+            offer = ResumeOffer(True, start, stream.program_index(stream.done), stream.program_total, False,
+                                "the machine kept its position")
+            self._offer(offer, S.RESUME_OFFERED)
+        else:
+            self._offer_restart("the machine was reset")
+
+    def _offer_restart(self, reason: str) -> None:
+        stream = self.stream
+        done = stream.program_index(stream.done)
+        offer = ResumeOffer(False, done + 1, done, stream.program_total, True, reason)
+        self._offer(offer, S.RESTART_REQUIRED)
+
+    def _machine_reset(self, event: StatusEvent) -> None:
+        self._error("MACHINE_RESET", f"the machine was reset (new boot id {event.boot}); position unknown")
+        if self.stream is not None and self.stream.kind == "job" and self.state is not S.STOPPING:
+            if self.state in JOB_STATES or self.state in RECOVERY_STATES:
+                self._offer_restart("the machine was reset: home it, then confirm the restart")
+        elif self.stream is not None:
+            self._finish_stream(False, "the machine was reset")

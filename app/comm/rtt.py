@@ -1,0 +1,55 @@
+"""Adaptive retransmission timeout (Jacobson/Karels, RFC 6298) as docs/protocol.md fixes it.
+
+``timeout`` is ``max(100 ms, srtt + 4 rttvar)``, doubled after each expiry up to
+2 s, and back to the computed value once a fresh sample arrives. Only frames sent
+once give samples (Karn's rule), which the caller enforces.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+MIN_TIMEOUT = 0.1
+MAX_TIMEOUT = 2.0
+INITIAL_TIMEOUT = 0.5
+ALPHA = 1 / 8
+BETA = 1 / 4
+
+
+@dataclass
+class RttEstimator:
+    """Smoothed round-trip time and the resend timeout derived from it."""
+
+    srtt: float | None = None
+    rttvar: float = 0.0
+    backoffs: int = 0
+
+    def sample(self, rtt: float) -> None:
+        """Fold one measured round trip (seconds) in and clear the backoff."""
+        rtt = max(0.0, rtt)
+        if self.srtt is None:
+            self.srtt, self.rttvar = rtt, rtt / 2
+        else:
+            self.rttvar = (1 - BETA) * self.rttvar + BETA * abs(self.srtt - rtt)
+            self.srtt = (1 - ALPHA) * self.srtt + ALPHA * rtt
+        self.backoffs = 0
+
+    def base_timeout(self) -> float:
+        """``max(100 ms, srtt + 4 rttvar)``, or 0.5 s before the first sample."""
+        if self.srtt is None:
+            return INITIAL_TIMEOUT
+        return max(MIN_TIMEOUT, self.srtt + 4 * self.rttvar)
+
+    @property
+    def timeout(self) -> float:
+        """The current timeout: the base doubled once per expiry, at most 2 s."""
+        return min(MAX_TIMEOUT, self.base_timeout() * (2**self.backoffs))
+
+    def expired(self) -> None:
+        """A timeout fired: double the next one (capped at 2 s)."""
+        if self.timeout < MAX_TIMEOUT:
+            self.backoffs += 1
+
+    def progressed(self) -> None:
+        """New data was acknowledged: the backoff ends even without a clean sample."""
+        self.backoffs = 0

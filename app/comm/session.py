@@ -1,0 +1,308 @@
+"""The host side of docs/protocol.md as a plain object: bytes in, time, calls; frames out.
+
+``Session(write, listener, clock)`` never sleeps, never starts a thread and never
+reads a port: the owner (the worker, the console, a test) calls ``feed(bytes)`` with
+whatever arrived, ``tick()`` as time passes (every 5-10 ms), and the operator calls
+(``start_job``, ``pause``, ``stop``, ...). Frames are written with ``write(bytes)``;
+an ``OSError`` from it (pyserial's ``SerialException`` is one) is a link loss, never
+a crash. ``clock()`` gives seconds; inject a fake one for deterministic tests.
+
+Everything observable goes to the ``SessionListener`` as frozen events. Streams
+(``stream.py``) use the go-back-N credit window of ``window.py``; commands
+(``commands.py``) carry one outstanding id retried with the same id; the link
+monitor (``heartbeat.py``) pings every second and calls the link degraded after 2 s
+and lost after 3 s of silence; real-time bytes (``realtime.py``) repeat every 100 ms
+until a status confirms them. Job recovery after a link loss: same boot id ->
+``RESUME_OFFERED`` (``resume_after_reconnect``); new boot id -> ``RESTART_REQUIRED``
+(home, then ``confirm_restart`` restarts at done+1 behind the modal preamble).
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Callable
+
+from app.comm import frame as fr
+from app.comm.commands import CommandQueue
+from app.comm.events import (
+    AlarmEvent,
+    CommandResult,
+    ErrorEvent,
+    FrameEvent,
+    JobEvent,
+    LinkEvent,
+    LogEvent,
+    ResumeOffer,
+    StateEvent,
+    StatusEvent,
+)
+from app.comm.heartbeat import LinkMonitor, LinkState
+from app.comm.jobs import JobControl
+from app.comm.listener import JOB_STATES, SENDING_STATES, TRANSITIONS, SessionListener, SessionState
+from app.comm.realtime import NAMES, RealtimeRepeater
+from app.comm.rtt import RttEstimator
+from app.comm.stream import Stream
+from app.profile import Link
+
+S = SessionState
+QUALITY_LIMIT = 0.10
+QUALITY_MIN_FRAMES = 20
+PROGRESS_EVERY_S = 0.1
+
+
+class Session(JobControl):
+    """One connection to the machine; see the module docstring for the contract."""
+
+    def __init__(self, write: Callable[[bytes], object] | None = None,
+                 listener: SessionListener | None = None,
+                 clock: Callable[[], float] = time.monotonic, link: Link | None = None) -> None:
+        link = link or Link()
+        self.listener = listener or SessionListener()
+        self.clock = clock
+        self.state = S.DISCONNECTED
+        self.link = LinkMonitor(link.heartbeat_s, link.degraded_s, link.lost_s)
+        self.commands = CommandQueue()
+        self.realtime = RealtimeRepeater()
+        self.deframer = fr.Deframer()
+        self.rtt = RttEstimator()
+        self.stream: Stream | None = None
+        self.status: StatusEvent | None = None
+        self.boot: str | None = None
+        self.lines: list[str] = []
+        self._write = write
+        self._out = bytearray()
+        self._then: dict[int, Callable[[CommandResult], None]] = {}
+        self._warned = False
+        self._last_progress = (None, 0.0)
+        self._handlers: dict[str, Callable] = {
+            "A": self._on_ack, "N": self._on_nak, "F": self._on_finished, "O": self._on_answer,
+            "E": self._on_answer, "I": self._on_answer, "S": self._on_status,
+            "X": self._on_alarm, "L": self._on_machine_log, "D": self._on_unexpected,
+            "C": self._on_unexpected,
+        }
+
+    # ------------------------------------------------------------------ connection
+
+    def attach(self, write: Callable[[bytes], object]) -> None:
+        """A transport was opened: start talking (ask for a status)."""
+        self._write = write
+        self.deframer = fr.Deframer()
+        self.link.attach(self.clock())
+        self._emit_link()
+        if self.state is S.DISCONNECTED:
+            self._set_state(S.CONNECTING)
+        self.submit("STATUS")
+
+    def detach(self, reason: str = "disconnected") -> None:
+        """The transport is gone (closed, unplugged, write failed): a link loss."""
+        if self._write is None:
+            return
+        self._write = None
+        self._out.clear()
+        self.link.detach()
+        self._emit_link(reason)
+        self._link_lost(reason)
+        if self.state in (S.READY, S.CONNECTING, S.UPLOADING, S.STOPPING):
+            self._set_state(S.DISCONNECTED)
+
+    @property
+    def attached(self) -> bool:
+        return self._write is not None
+
+    # ------------------------------------------------------------------ bytes in, time
+
+    def feed(self, data: bytes) -> None:
+        """Bytes read from the transport; frames are handled at once."""
+        now = self.clock()
+        for item in self.deframer.feed(data, now):
+            self._receive(item, now)
+        self.tick()
+
+    def tick(self) -> None:
+        """Let time pass: timeouts, heartbeat, resends, real-time repeats, new D frames."""
+        now = self.clock()
+        for item in self.deframer.poll(now):
+            self._receive(item, now)
+        if self.link.update(now):
+            self._emit_link()
+            if self.link.state is LinkState.LOST:
+                self._link_lost(f"no valid frame for {self.link.lost_s:g} s")
+        self._tick_realtime(now)
+        self._tick_commands(now)
+        self._tick_stream(now)
+        self._flush()
+
+    # ------------------------------------------------------------------ commands
+
+    def submit(self, verb: str, *args: object, urgent: bool = False,
+               then: Callable[[CommandResult], None] | None = None) -> int:
+        """Queue command ``verb args`` and return its id; the result comes to on_command_done."""
+        command = self.commands.submit(verb, tuple(str(a) for a in args), urgent)
+        if urgent and self.commands.outstanding is not None:
+            dropped = self.commands.supersede()
+            self._command_done(CommandResult(dropped.id, dropped.frame.verb, dropped.frame.args,
+                                             False, f"superseded by {verb}", "SUPERSEDED"))
+        if then is not None:
+            self._then[command.id] = then
+        if self.attached:
+            self.tick()
+        return command.id
+
+    def send_command(self, text: str) -> int | None:
+        """A command typed by the operator (``HOME``, ``JOG X 10 300``); None if empty."""
+        words = text.strip().upper().split()
+        return self.submit(words[0], *words[1:]) if words else None
+
+    def _command_done(self, result: CommandResult) -> None:
+        then = self._then.pop(result.id, None)
+        self.listener.on_command_done(result)
+        if then is not None:
+            then(result)
+
+    def _tick_commands(self, now: float) -> None:
+        if not self.attached:
+            return
+        frames, timed_out = self.commands.due(now)
+        for result in timed_out:
+            self._command_done(result)
+        if not frames and self.link.ping_due(now):
+            ping = self.commands.heartbeat()
+            frames = [ping] if ping else []
+        for command in frames:
+            self._send(command)
+            self.link.pinged(now)
+
+    # ------------------------------------------------------------------ real time
+
+    def _tick_realtime(self, now: float) -> None:
+        for byte in self.realtime.expired(now):
+            self._error("REALTIME_UNCONFIRMED", f"the machine did not confirm the {NAMES[byte]}")
+        data = self.realtime.due(now) if self.attached else b""
+        if data:
+            self._out += data
+            for byte in data:
+                self.listener.on_frame(FrameEvent("tx", "!" if byte == 0x21 else "^X", NAMES[bytes([byte])]))
+
+    # ------------------------------------------------------------------ incoming
+
+    def _receive(self, item: fr.Frame | fr.Dropped | fr.Realtime, now: float) -> None:
+        if isinstance(item, fr.Dropped):
+            text = item.raw.decode("ascii", "replace")
+            self.listener.on_frame(FrameEvent("rx", "?", f"{item.reason}: {text!r}", ok=False))
+            return
+        if isinstance(item, fr.Realtime):
+            return
+        self.link.heard(now)
+        if self.link.update(now):
+            self._emit_link()
+        self.listener.on_frame(FrameEvent("rx", item.KIND, item.body()))
+        self._handlers[item.KIND](item, now)
+
+    def _on_unexpected(self, frame: fr.Frame, now: float) -> None:
+        self._log("warning", f"unexpected frame from the machine: {frame.body()}")
+
+    def _on_answer(self, frame: fr.Ok | fr.Error | fr.Info, now: float) -> None:
+        if isinstance(frame, fr.Error) and frame.id is None:
+            self._line_refused(frame)
+            return
+        result = self.commands.on_answer(frame)
+        if result is not None:
+            self._command_done(result)
+
+    def _on_alarm(self, frame: fr.Alarm, now: float) -> None:
+        self.listener.on_alarm(AlarmEvent(frame.code, frame.text))
+        self._log("error", f"alarm {frame.code} {frame.text}".strip(), "machine")
+        self._job_alarm(frame.code, frame.text)
+
+    def _on_machine_log(self, frame: fr.Log, now: float) -> None:
+        self._log("info", frame.text, "machine")
+
+    def _on_status(self, frame: fr.Status, now: float) -> None:
+        event = StatusEvent(frame.boot, frame.state, frame.x, frame.y, frame.z, frame.acc,
+                            frame.done, frame.free, frame.rpm, frame.flags, now)
+        self.status = event
+        self.listener.on_status(event)
+        old_boot, self.boot = self.boot, event.boot
+        if self.state is S.CONNECTING:
+            self._set_state(S.READY)
+        if old_boot is not None and old_boot != event.boot:
+            self._log("warning", f"the machine was reset (boot id {old_boot} -> {event.boot})")
+            self._machine_reset(event)
+        result = self.commands.on_status()
+        if result is not None:
+            self._command_done(result)
+        for byte in self.realtime.confirm(event.state):
+            self._realtime_confirmed(byte)
+        self._job_status(event, now)
+
+    # ------------------------------------------------------------------ link
+
+    def _link_lost(self, reason: str) -> None:
+        for result in self.commands.fail_all("LINK_LOST", reason):
+            self._command_done(result)
+        self._error("LINK_LOST", f"link to the machine lost: {reason}")
+        self._job_link_lost(reason)
+
+    def _emit_link(self, reason: str = "") -> None:
+        rate = self.stream.window.resend_rate if self.stream else 0.0
+        silent = self.link.silent_for(self.clock()) if self.attached else 0.0
+        self.listener.on_link_changed(LinkEvent(self.link.state.value, silent, rate, self._warned, reason))
+
+    def _check_quality(self) -> None:
+        window = self.stream.window if self.stream else None
+        bad = bool(window and window.sent >= QUALITY_MIN_FRAMES and window.resend_rate > QUALITY_LIMIT)
+        if bad != self._warned:
+            self._warned = bad
+            if bad:
+                self._log("warning", f"poor link: {window.resend_rate:.0%} of the frames were resent")
+            self._emit_link()
+
+    # ------------------------------------------------------------------ output and helpers
+
+    def _send(self, frame: fr.Frame) -> None:
+        self._out += frame.encode()
+        self.listener.on_frame(FrameEvent("tx", frame.KIND, frame.body()))
+
+    def _flush(self) -> None:
+        if not self._out or self._write is None:
+            return
+        data, self._out = bytes(self._out), bytearray()
+        try:
+            self._write(data)
+        except OSError as exc:
+            self.detach(f"write failed: {exc}")
+
+    def _set_state(self, new: SessionState) -> None:
+        """The one place the state changes: checked against TRANSITIONS, logged, notified."""
+        old = self.state
+        if new is old:
+            return
+        if new not in TRANSITIONS[old]:
+            raise RuntimeError(f"session state {old.name} -> {new.name} is not allowed")
+        self.state = new
+        self.listener.on_state_changed(StateEvent(old.name, new.name))
+
+    def _log(self, level: str, text: str, source: str = "host") -> None:
+        self.listener.on_log(LogEvent(level, text, source))
+
+    def _error(self, code: str, text: str) -> None:
+        self.listener.on_error(ErrorEvent(code, text))
+        self._log("error", text)
+
+    def _finish_stream(self, completed: bool, reason: str) -> None:
+        stream, self.stream = self.stream, None
+        if stream is not None:
+            event = JobEvent(stream.kind, completed, reason, stream.program_index(stream.done),
+                             stream.program_total, stream.name)
+            self.listener.on_progress(stream.progress())
+            self.listener.on_job_finished(event)
+        self._warned = False
+        self._set_state(S.READY if self.attached else S.DISCONNECTED)
+
+    def _offer(self, offer: ResumeOffer, state: SessionState) -> None:
+        self._set_state(state)
+        self.listener.on_resume_offer(offer)
+
+    @property
+    def busy(self) -> bool:
+        return self.state in JOB_STATES or self.state in SENDING_STATES

@@ -1,0 +1,156 @@
+"""Go-back-N sender of one stream of ``D`` frames with the credit window of docs/protocol.md.
+
+``SendWindow`` knows the lines of one stream and the machine's acknowledgements; it
+never writes. ``due(now)`` returns the frames to send now; ``on_ack``/``on_nak``/
+``on_status_ack`` take the machine's answers. Contract:
+
+- at most ``min(free, 8)`` frames are unacknowledged, where ``free`` comes from the
+  newest ``A`` (or ``S``) snapshot: frame ``s`` is sent only if ``s <= acked + 8`` and
+  ``s <= acc + free`` of some snapshot (that sum never decreases within a stream);
+- ``N n`` means every frame below ``n`` arrived; frames from ``n`` are resent, except
+  a repeat ``N n`` within one timeout of the go-back it would repeat;
+- no acknowledgement within ``rtt.timeout`` of the last progress resends from the
+  first unacknowledged frame and doubles the timeout;
+- after ``MAX_RETRIES`` go-backs to one seq, ``failed`` names the error.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from app.comm.frame import Data
+from app.comm.rtt import RttEstimator
+
+MAX_WINDOW = 8
+MAX_RETRIES = 10
+
+
+@dataclass
+class SendWindow:
+    """Sender state of one stream; seqs run from ``start`` to ``len(lines) - 1``."""
+
+    lines: list[str]
+    start: int = 0
+    free: int = 1
+    rtt: RttEstimator = field(default_factory=RttEstimator)
+    max_window: int = MAX_WINDOW
+    max_retries: int = MAX_RETRIES
+    acked: int = -1
+    next_seq: int = 0
+    room_end: int = 0
+    sent: int = 0
+    resent: int = 0
+    high_sent: int = -1
+    failed: str = ""
+    _first_sent: dict[int, float] = field(default_factory=dict)
+    _resent_seqs: set[int] = field(default_factory=set)
+    _retries: dict[int, int] = field(default_factory=dict)
+    _timer: float | None = None
+    _last_goback: tuple[int, float] | None = None
+
+    def __post_init__(self) -> None:
+        self.acked = self.high_sent = self.start - 1
+        self.next_seq = self.start
+        self.room_end = self.acked + self.free
+
+    @property
+    def total(self) -> int:
+        return len(self.lines)
+
+    @property
+    def in_flight(self) -> int:
+        """Frames sent and not yet acknowledged."""
+        return self.next_seq - self.acked - 1
+
+    @property
+    def all_acked(self) -> bool:
+        return self.acked >= self.total - 1
+
+    @property
+    def resend_rate(self) -> float:
+        return self.resent / self.sent if self.sent else 0.0
+
+    def due(self, now: float) -> list[Data]:
+        """Frames to send at ``now`` (resends first after a timeout); empty once failed."""
+        if self.failed:
+            return []
+        if self.in_flight > 0 and self._timer is not None and now - self._timer > self.rtt.timeout:
+            self.rtt.expired()
+            self._go_back(self.acked + 1, now)
+        out = []
+        limit = min(self.room_end, self.acked + self.max_window, self.total - 1)
+        while not self.failed and self.next_seq <= limit:
+            out.append(self._send(self.next_seq, now))
+            self.next_seq += 1
+        return out
+
+    def on_ack(self, seq: int, free: int, now: float) -> bool:
+        """``A seq free``; True if it acknowledged something new."""
+        self.room_end = max(self.room_end, seq + free)
+        return self._advance(seq, now)
+
+    def on_status_ack(self, acc: int, free: int, now: float) -> bool:
+        """The ``acc``/``free`` of an ``S`` frame: the same snapshot as an ``A``."""
+        return self.on_ack(acc, free, now)
+
+    def on_nak(self, seq: int, now: float) -> None:
+        """``N seq``: everything below arrived; resend from ``seq`` unless a repeat."""
+        self._advance(seq - 1, now)
+        if seq <= self.acked or seq >= self.next_seq:
+            return
+        last = self._last_goback
+        if last and last[0] == seq and now - last[1] < self.rtt.timeout:
+            return
+        self._go_back(seq, now)
+
+    def restart_at(self, seq: int, free: int) -> None:
+        """Forget what was in flight: the machine has everything below ``seq`` (RESUME FROM)."""
+        self.acked = self.high_sent = seq - 1
+        self.next_seq = seq
+        self._first_sent.clear()
+        self._resent_seqs.clear()
+        self.room_end = self.acked + free
+        self._timer = None
+        self._last_goback = None
+        self._retries.clear()
+
+    # ------------------------------------------------------------------ internals
+
+    def _send(self, seq: int, now: float) -> Data:
+        if seq in self._first_sent:
+            self.resent += 1
+            self._resent_seqs.add(seq)
+        else:
+            self._first_sent[seq] = now
+        self.sent += 1
+        self.high_sent = max(self.high_sent, seq)
+        if self._timer is None:
+            self._timer = now
+        return Data(seq, self.lines[seq])
+
+    def _advance(self, seq: int, now: float) -> bool:
+        seq = min(seq, self.high_sent)
+        if seq <= self.acked:
+            return False
+        if seq not in self._resent_seqs and seq in self._first_sent:
+            self.rtt.sample(now - self._first_sent[seq])
+        else:
+            self.rtt.progressed()
+        for old in range(self.acked + 1, seq + 1):
+            self._first_sent.pop(old, None)
+            self._resent_seqs.discard(old)
+            self._retries.pop(old, None)
+        self.acked = seq
+        self.next_seq = max(self.next_seq, seq + 1)
+        self._timer = now if self.in_flight > 0 else None
+        return True
+
+    def _go_back(self, seq: int, now: float) -> None:
+        tries = self._retries.get(seq, 0) + 1
+        self._retries[seq] = tries
+        if tries > self.max_retries:
+            self.failed = f"line {seq} was resent {self.max_retries} times without an acknowledgement"
+            return
+        self.next_seq = seq
+        self._timer = now
+        self._last_goback = (seq, now)
