@@ -33,7 +33,7 @@ gt() {
     "$PY" "$GT" --biarc-max-split-depth=4 --path-to-gcode-depth-function=d \
         --path-to-gcode-sort-paths=true --Zscale=1 --Zoffset=0 --auto_select_paths=true \
         --min-arc-radius=0.05 --comment-gcode= --comment-gcode-from-properties=false \
-        --add-numeric-suffix-to-filename=false "--postprocessor= " --postprocessor-custom= \
+        --add-numeric-suffix-to-filename=false --postprocessor-custom= \
         --create-log=false "$@"
 }
 
@@ -105,17 +105,19 @@ sample() {
     cd "$WORK"
     inkscape --actions="select-all:all;object-to-path" --export-type=svg \
         --export-filename="$name.paths.svg" "$name.design.svg" 2>/dev/null
-    gt --active-tab=orientation --orientation-points-count=2 --Zsurface="$zsurface" \
+    gt "--postprocessor= " --active-tab=orientation --orientation-points-count=2 --Zsurface="$zsurface" \
         --Zdepth="$zdepth" "--unit=$unitarg" "$name.paths.svg" > "$name.oriented.svg"
     if [ "$unit" = in ]; then
         # Gcodetools puts the inch points 5 user units apart: on this mm page that would be
         # 5 in per 5 mm. Drag the second point to 127 mm so 1 in = 25.4 mm.
         move_orientation_point "$name.oriented.svg" 127
     fi
-    gt --active-tab=tools_library "--tools-library-type=cylinder cutter" \
+    gt "--postprocessor= " --active-tab=tools_library "--tools-library-type=cylinder cutter" \
         "$name.oriented.svg" > "$name.svg"
     set_tool "$name.svg" "$@"
+    # POST: the dialog's "Post-processor" choice (" " = None)
     gt --active-tab=path-to-gcode --biarc-tolerance="$tol" "--path-to-gcode-order=$order" \
+        "--postprocessor=${POST:- }" \
         --Zsafe="$zsafe" "--unit=$unitarg" --directory="$WORK" --filename="$name.ngc" \
         "$name.svg" > "$name.preview.svg"
     cp "$name.svg" "$name.ngc" "$HERE/"
@@ -204,3 +206,16 @@ EOF
 cp "$WORK/logo.png" "$HERE/"
 sample potrace_logo mm 0 -0.8 5 "subpath by subpath" 0.05 \
     "feed=350" "penetration feed=80" "depth step=1" "diameter=1"
+
+# 5. text_round4: the word "Mill" (DejaVu Serif Italic, text -> path) engraved 1 mm deep
+#    in two 0.5 mm passes cut "pass by pass" (every path at one depth, then the next),
+#    with the post-processor "Round all values to 4 digits" (round(4);): the rounded arc
+#    ends are no longer exactly on their circles.
+{ page; cat <<EOF
+    <text id="word" x="75" y="90" style="font-family:'DejaVu Serif';font-style:italic;font-size:48px;text-anchor:middle;fill:none;stroke:#000000;stroke-width:0.3">Mill</text>
+  </g>
+</svg>
+EOF
+} > "$WORK/text_round4.design.svg"
+POST="round(4);" sample text_round4 mm 0 -1 3 "pass by pass" 0.02 \
+    "feed=250" "penetration feed=50" "depth step=0.5" "diameter=0.8"

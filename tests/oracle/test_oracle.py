@@ -1,0 +1,180 @@
+"""The G-code core against LinuxCNC's interpreter, from the committed rs274 recordings.
+
+``tests/oracle/record.py`` ran ``rs274 -g`` on every sample and case; these tests only
+read ``tests/oracle/data/*.canon`` (CI has no rs274) and compare them with
+``app.gcode.load(path).moves``, move by move:
+
+* same count, same kind (rapid / feed / arc / dwell), same 1-based source line;
+* end points and arc centres within 0.001 mm, plus rs274's print resolution (``%.4f``
+  in the program's units: 0.00005 mm, or 0.00005 in = 0.00127 mm in inch programs);
+* arcs: same plane and same direction (sign of ``turn``); feeds within 0.001 mm/min
+  plus the print resolution; dwell times within 0.0001 s.
+
+Where rs274 refused a program, the loader must report an error on exactly that line
+(and nowhere else, in these one-arc files); where rs274 accepted it, no error at all.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import math
+import re
+from pathlib import Path
+
+import pytest
+
+from app.gcode import load
+from tests.oracle.canon import MM_PER_INCH, CanonRecord, compare_moves, read_record
+
+ROOT = Path(__file__).resolve().parents[2]
+DATA = Path(__file__).resolve().parent / "data"
+SAMPLES = ROOT / "resources" / "samples"
+CASES = Path(__file__).resolve().parent / "cases"
+
+RECORDS = sorted(p for p in DATA.glob("*.canon") if "+" not in p.stem)
+ACCEPTED = [p for p in RECORDS if read_record(p).error_line is None]
+REFUSED = [p for p in RECORDS if read_record(p).error_line is not None]
+SAMPLE_FILES = sorted(SAMPLES.glob("*.ngc"))
+
+
+def _ids(paths: list[Path]) -> list[str]:
+    return [p.stem for p in paths]
+
+
+# --- the loader's interface, as docs/architecture.md describes it -------------------------
+
+
+def _diagnostics(program, severity: str) -> list:
+    """``Program.diagnostics.errors`` / ``.warnings`` (a list of Diagnostic)."""
+    diags = program.diagnostics
+    return list(getattr(diags, "errors" if severity == "error" else "warnings"))
+
+
+def error_lines(program) -> list[int]:
+    return sorted({d.line for d in _diagnostics(program, "error")})
+
+
+def describe_errors(program) -> str:
+    return "; ".join(str(d) for d in _diagnostics(program, "error")[:5]) or "none"
+
+
+def source_of(rec: CanonRecord) -> Path:
+    assert rec.source, f"{rec.path}: no source in the header"
+    return ROOT / rec.source
+
+
+# --- the recordings themselves ------------------------------------------------------------
+
+
+def test_every_sample_and_case_has_a_recording():
+    sources = sorted(SAMPLES.glob("*.ngc")) + sorted(CASES.glob("*.ngc"))
+    recorded = {p.stem for p in RECORDS}
+    missing = [p.name for p in sources if p.stem not in recorded]
+    assert not missing, f"run tests/oracle/record.py for {missing}"
+    assert len(SAMPLE_FILES) >= 4
+
+
+@pytest.mark.parametrize("path", sorted(DATA.glob("*.canon")), ids=lambda p: p.stem)
+def test_recording_matches_its_source(path):
+    rec = read_record(path)
+    assert rec.header["rs274"].startswith("linuxcnc"), rec.header
+    source = source_of(rec)
+    digest = hashlib.sha256(source.read_bytes()).hexdigest()
+    assert digest == rec.header["sha256"], f"{source} changed since it was recorded: rerun record.py"
+
+
+# --- moves ----------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("path", ACCEPTED, ids=_ids(ACCEPTED))
+def test_moves_match_rs274(path):
+    rec = read_record(path)
+    program = load(source_of(rec))
+    assert not error_lines(program), f"rs274 accepts it; errors: {describe_errors(program)}"
+    problems = compare_moves(list(program.moves), rec.moves)
+    assert not problems, "\n".join(problems)
+
+
+@pytest.mark.parametrize("path", SAMPLE_FILES, ids=_ids(SAMPLE_FILES))
+def test_sample_loads_without_error(path):
+    program = load(path)
+    assert not error_lines(program), describe_errors(program)
+    assert len(program.moves) > 50
+
+
+def test_block_delete_matches_rs274_with_the_switch_off_or_on():
+    """LinuxCNC runs "/" lines when its block delete switch is off (rs274's default) and
+    skips them when it is on (-b); the loader must behave as one of the two."""
+    off = read_record(DATA / "block_delete.canon")
+    on = read_record(DATA / "block_delete+b.canon")
+    moves = list(load(source_of(off)).moves)
+    p_off, p_on = compare_moves(moves, off.moves), compare_moves(moves, on.moves)
+    assert not p_off or not p_on, "switch off:\n" + "\n".join(p_off) + "\nswitch on:\n" + "\n".join(p_on)
+
+
+# --- refusals -------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("path", REFUSED, ids=_ids(REFUSED))
+def test_refused_where_rs274_refuses(path):
+    rec = read_record(path)
+    program = load(source_of(rec))
+    assert error_lines(program) == [rec.error_line], (
+        f"rs274 refused line {rec.error_line}: {rec.error_message}\nour errors: {describe_errors(program)}"
+    )
+    before = [m for m in program.moves if m.get("line", 0) < rec.error_line]
+    problems = compare_moves(before, rec.moves)
+    assert not problems, "\n".join(problems)
+
+
+def test_refusal_cases_cover_both_outcomes_in_mm_and_inch_centre_and_radius():
+    kinds = {}
+    for p in sorted(DATA.glob("arctol_*.canon")):
+        m = re.match(r"arctol_(mm|in)_(ijk|r)_", p.stem)
+        if m:
+            kinds.setdefault(m.groups(), set()).add(read_record(p).error_line is None)
+    for units in ("mm", "in"):
+        for fmt in ("ijk", "r"):
+            assert kinds.get((units, fmt)) == {True, False}, (units, fmt, kinds)
+
+
+# --- the rule rs274 applies, checked against what it did ----------------------------------
+
+_WORD = re.compile(r"([A-Z])\s*([-+]?(?:\d+\.?\d*|\.\d+))")
+
+
+def _words(line: str) -> dict[str, float]:
+    return {k: float(v) for k, v in _WORD.findall(line.upper().split("(")[0])}
+
+
+def linuxcnc_refuses(text: str) -> bool:
+    """LinuxCNC 2.9's arc check (interp_arc.cc, no ini) for the one-arc arctol files."""
+    lines = text.splitlines()
+    inch = "G20" in lines[1]
+    plane = "XZ" if "G18" in lines[1] else "XY"
+    start, arc = _words(lines[2]), _words(lines[4])
+    a, b, i, j = ("Z", "X", "K", "I") if plane == "XZ" else ("X", "Y", "I", "J")
+    s1, s2 = start[a], start[b]
+    e1, e2 = arc.get(a, s1), arc.get(b, s2)
+    if "R" in arc:  # arc_data_r: half chord longer than |R| by more than RADIUS_TOLERANCE
+        if (e1, e2) == (s1, s2):
+            return True
+        tol = 0.00005 if inch else 0.00005 * MM_PER_INCH
+        return math.hypot(e1 - s1, e2 - s2) / 2 - abs(arc["R"]) > tol
+    c1, c2 = s1 + arc.get(i, 0.0), s2 + arc.get(j, 0.0)
+    r1, r2 = math.hypot(s1 - c1, s2 - c2), math.hypot(e1 - c1, e2 - c2)
+    if min(r1, r2) < (0.00005 if inch else 0.00005 * MM_PER_INCH):
+        return True  # zero-radius arc
+    tol = 2 * (0.001 if inch else 0.01) * math.sqrt(2)  # CENTER_ARC_RADIUS_TOLERANCE
+    err = abs(r1 - r2)
+    return err > 100 * tol or (err / max(r1, r2) > 0.001 and err > tol)
+
+
+ARCTOL = sorted(DATA.glob("arctol_*.canon"))
+
+
+@pytest.mark.parametrize("path", ARCTOL, ids=_ids(ARCTOL))
+def test_documented_tolerance_rule_predicts_rs274(path):
+    rec = read_record(path)
+    refused = rec.error_line is not None
+    assert linuxcnc_refuses(source_of(rec).read_text()) == refused, rec.error_message
