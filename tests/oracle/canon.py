@@ -171,6 +171,38 @@ def canon_to_moves(calls: Iterable[CanonCall]) -> list[dict]:
     return moves
 
 
+_COMMENTS = re.compile(r"\([^)]*\)|;.*$")
+_AXIS_WORD = re.compile(r"[XYZ][+-]?[0-9.]")
+
+
+def has_axis_word(source_line: str) -> bool:
+    """True if the line (comments removed) has an X, Y or Z word."""
+    text = _COMMENTS.sub("", source_line).upper().replace(" ", "").replace("\t", "")
+    return bool(_AXIS_WORD.search(text))
+
+
+def drop_axisless_moves(moves: list[dict], source_lines: list[str]) -> list[dict]:
+    """Moves without the ones rs274 makes from a G0/G1 block with no axis word.
+
+    LinuxCNC turns a block such as ``G1 F300`` (motion mode and feed, no X/Y/Z) into a
+    zero-length ``STRAIGHT_FEED`` to where the tool already is. That moves nothing and is
+    not a move of the ``cnc-gcode moves`` format, so it is dropped before comparing. A
+    zero-length move that does name an axis (Gcodetools closes each path with one) stays.
+    """
+    out = []
+    for move in moves:
+        line = move.get("line")
+        if (
+            move["kind"] in ("rapid", "feed")
+            and line is not None
+            and 1 <= line <= len(source_lines)
+            and not has_axis_word(source_lines[line - 1])
+        ):
+            continue
+        out.append(move)
+    return out
+
+
 def parse_record(text: str, path: Path | None = None) -> CanonRecord:
     """Parse a ``.canon`` file written by ``record.py``.
 

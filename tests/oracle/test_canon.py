@@ -10,6 +10,8 @@ from tests.oracle.canon import (
     canon_to_moves,
     compare_move,
     compare_moves,
+    drop_axisless_moves,
+    has_axis_word,
     parse_call,
     parse_canon_lines,
     parse_record,
@@ -175,3 +177,23 @@ def test_compare_moves_reports_counts_and_dwells():
     assert compare_moves([theirs[0], _arc()], theirs) == []
     assert "1 moves, rs274 2" in compare_moves([theirs[0]], theirs)[-1]
     assert "dwell" in compare_moves([{"line": 3, "kind": "dwell", "seconds": 0.6}, _arc()], theirs)[0]
+
+
+def test_has_axis_word_ignores_comments():
+    assert has_axis_word("G1 X10 F100")
+    assert has_axis_word("g01z-.5f100")
+    assert has_axis_word("G00 X 114.0234 Y 62.4844")
+    assert not has_axis_word("G1 F300")
+    assert not has_axis_word("G1 F300 (move to X10) ; Y5")
+    assert not has_axis_word("N40")
+
+
+def test_drop_axisless_moves_keeps_zero_length_moves_with_axis_words():
+    lines = ["G0 X1 Y1", "G1 F300", "G1 X1 Y1", "G4 P1"]
+    moves = [
+        {"line": 1, "kind": "rapid", "end": [1.0, 1.0, 0.0]},
+        {"line": 2, "kind": "feed", "end": [1.0, 1.0, 0.0], "feed": 300.0},
+        {"line": 3, "kind": "feed", "end": [1.0, 1.0, 0.0], "feed": 300.0},
+        {"line": 4, "kind": "dwell", "seconds": 1.0},
+    ]
+    assert [m["line"] for m in drop_axisless_moves(moves, lines)] == [1, 3, 4]
