@@ -13,7 +13,7 @@ cases are also run with other rs274 switches (``VARIANTS``): ``<stem>+<tag>.cano
 
 How rs274 is run, for each source:
 
-* ``rs274 -g -t tool.tbl FILE`` (batch mode, an empty tool table, no ini file so the
+* ``rs274 -g -t tool.tbl FILE`` (batch mode, a tool table with only T1, no ini file so the
   interpreter's built-in defaults apply, block delete switch off, stop at the first
   error), with stdin from /dev/null, in its own temporary directory that is also its
   ``HOME``: rs274 truncates and maps ``$HOME/.tool.mmap`` and runs would trample on each
@@ -46,6 +46,7 @@ DATA = HERE / "data"
 SOURCE_DIRS = (ROOT / "resources" / "samples", HERE / "cases")
 
 COMMAND = "rs274 -g -t tool.tbl FILE"
+TOOL_TABLE = "T1 P1 D3.175 ;3.175 mm end mill\n"  # so that "T1 M6" is a valid tool change
 _LEADING_N = re.compile(r"^(\s*/?\s*)(?:[nN]\s*\d+\s*)?")
 _ERROR_LINE = re.compile(r"^\s*/?\s*N(\d+)\b")
 # Extra runs with other rs274 switches, stored as data/<stem>+<tag>.canon.
@@ -80,7 +81,7 @@ def run_rs274(program: str, extra: tuple[str, ...] = ()) -> tuple[int, str, str]
     """Run rs274 on ``program`` text in a fresh temporary HOME; (exit code, stdout, stderr)."""
     with tempfile.TemporaryDirectory(prefix="rs274-") as tmp:
         tmpdir = Path(tmp)
-        (tmpdir / "tool.tbl").write_text("")
+        (tmpdir / "tool.tbl").write_text(TOOL_TABLE)
         (tmpdir / "program.ngc").write_text(program)
         env = {"HOME": tmp, "PATH": "/usr/bin:/bin", "LANG": "C", "LC_ALL": "C"}
         proc = subprocess.run(
@@ -117,7 +118,7 @@ def record(source: Path, extra: tuple[str, ...] = ()) -> str:
     command = COMMAND.replace("-g", "-g " + " ".join(extra)) if extra else COMMAND
     head = [
         f"# rs274: {rs274_version()}; command: {command} "
-        "(own temporary HOME, empty tool table, no ini; FILE = source with line k numbered N<k>)",
+        "(own temporary HOME, tool table with only T1, no ini; FILE = source with line k numbered N<k>)",
         f"# source: {rel}",
         f"# sha256: {hashlib.sha256(source.read_bytes()).hexdigest()}",
         f"# exit: {rc}",
