@@ -1,0 +1,142 @@
+"""Arc geometry, with LinuxCNC's rs274ngc (interp_arc.cc) as the reference.
+
+Tolerances are in the program's units, as LinuxCNC applies them:
+
+- centre format (I J K): the radius to the start ``r1`` and to the end ``r2`` must
+  both be at least ``RADIUS_TOL`` (else "zero-radius arc"), and the arc is refused
+  when ``|r1 - r2| > SPIRAL_ABS`` (2 * 0.01 * sqrt 2 mm, 2 * 0.001 * sqrt 2 inch) or
+  ``|r1 - r2| / max(r1, r2) > SPIRAL_REL`` (0.1 %);
+- radius format (R): refused when the start equals the end, or when half the chord
+  exceeds ``|R|`` by more than ``RADIUS_TOL`` (0.00005 inch, 0.00127 mm); a negative
+  R takes the long way round.
+
+``sweep`` and ``chord_points`` turn arcs into points for drawing and for the G01
+chords of arcs outside the XY plane. Pure numpy, no state.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+SPIRAL_REL = 0.001
+RADIUS_TOL = {False: 0.00005 * 25.4, True: 0.00005}  # key: inch mode
+SPIRAL_ABS = {False: 2 * 0.01 * math.sqrt(2), True: 2 * 0.001 * math.sqrt(2)}
+TINY = 1e-12
+
+
+def _unit(inch: bool) -> str:
+    return "inch" if inch else "mm"
+
+
+def ijk_error(start, end, center, inch: bool) -> str | None:
+    """Why LinuxCNC refuses this centre-format arc (plane coordinates), or None."""
+    r1 = math.hypot(center[0] - start[0], center[1] - start[1])
+    r2 = math.hypot(center[0] - end[0], center[1] - end[1])
+    if r1 < RADIUS_TOL[inch] or r2 < RADIUS_TOL[inch]:
+        return "zero-radius arc (the centre is on the start or end point)"
+    err = abs(r1 - r2)
+    if err > SPIRAL_ABS[inch] or err / max(r1, r2) > SPIRAL_REL:
+        return radius_message(r1, r2, inch)
+    return None
+
+
+def radius_message(r1: float, r2: float, inch: bool) -> str:
+    """The refusal text for an arc whose end is not on its circle."""
+    unit = _unit(inch)
+    return (
+        f"arc end is not on its circle: radius to start {r1:.4f}, to end {r2:.4f} {unit} "
+        f"(LinuxCNC allows {SPIRAL_ABS[inch]:.4f} {unit} and {SPIRAL_REL:.1%})"
+    )
+
+
+def r_center(start, end, radius: float, clockwise: bool, inch: bool):
+    """(centre, None) of an R-format arc, or (None, why LinuxCNC refuses it)."""
+    if end[0] == start[0] and end[1] == start[1]:
+        return None, "R-format arc whose end is its start (use I J K for a full circle)"
+    r = abs(radius)
+    mid = ((end[0] + start[0]) / 2.0, (end[1] + start[1]) / 2.0)
+    half = math.hypot(mid[0] - end[0], mid[1] - end[1])
+    if half - r > RADIUS_TOL[inch]:
+        return None, f"arc radius R{radius:g} is too small to reach the end point"
+    if r == 0 or half / r > 1 - TINY:
+        half = r
+    angle = math.atan2(end[1] - start[1], end[0] - start[0])
+    angle += -math.pi / 2 if clockwise == (radius > 0) else math.pi / 2
+    offset = r * math.cos(math.asin(half / r)) if r else 0.0
+    return (mid[0] + offset * math.cos(angle), mid[1] + offset * math.sin(angle)), None
+
+
+def sweep(start, end, center, turn):
+    """Signed swept angle (radians, > 0 counter-clockwise) in plane coordinates.
+
+    Works on arrays: ``start``, ``end``, ``center`` are (n, 2), ``turn`` (n,).
+    A zero sweep (end on start) is a full circle, as in LinuxCNC.
+    """
+    a0 = np.arctan2(start[:, 1] - center[:, 1], start[:, 0] - center[:, 0])
+    a1 = np.arctan2(end[:, 1] - center[:, 1], end[:, 0] - center[:, 0])
+    turn = np.asarray(turn)
+    ccw = np.mod(a1 - a0, 2 * np.pi)
+    ccw = np.where(ccw <= 1e-12, 2 * np.pi, ccw) + (np.abs(turn) - 1) * 2 * np.pi
+    cw = np.mod(a0 - a1, 2 * np.pi)
+    cw = np.where(cw <= 1e-12, 2 * np.pi, cw) + (np.abs(turn) - 1) * 2 * np.pi
+    return np.where(turn > 0, ccw, -cw)
+
+
+def segments(radius, angle, tolerance: float):
+    """Chords needed so no chord strays more than ``tolerance`` from its arc (arrays)."""
+    radius = np.maximum(np.asarray(radius, float), 1e-12)
+    ratio = np.clip(1.0 - tolerance / radius, -1.0, 1.0)
+    step = 2.0 * np.arccos(ratio)
+    step = np.where(step <= 0, np.pi / 2, np.minimum(step, np.pi / 2))
+    return np.maximum(1, np.ceil(np.abs(angle) / step)).astype(np.int64)
+
+
+def chord_points(start3, end3, center3, plane_axes, turn, tolerance):
+    """Points (k, 3) along arcs, excluding each start: returns (points, owner index).
+
+    ``start3``/``end3``/``center3`` are (n, 3) in XYZ; ``plane_axes`` gives per arc
+    the (first, second, normal) axis indices; the normal axis moves linearly (helix).
+    """
+    n = len(start3)
+    idx = np.arange(n)
+    a1, a2, a3 = (np.asarray(plane_axes)[:, i] for i in range(3))
+    s = np.stack([start3[idx, a1], start3[idx, a2]], axis=1)
+    e = np.stack([end3[idx, a1], end3[idx, a2]], axis=1)
+    c = np.stack([center3[idx, a1], center3[idx, a2]], axis=1)
+    ang = sweep(s, e, c, turn)
+    r = np.hypot(s[:, 0] - c[:, 0], s[:, 1] - c[:, 1])
+    r_end = np.hypot(e[:, 0] - c[:, 0], e[:, 1] - c[:, 1])
+    count = segments(np.maximum(r, r_end), ang, tolerance)
+    owner = np.repeat(idx, count)
+    first = np.cumsum(count) - count
+    frac = (np.arange(len(owner)) - first[owner] + 1) / count[owner]
+    theta0 = np.arctan2(s[:, 1] - c[:, 1], s[:, 0] - c[:, 0])
+    theta = theta0[owner] + ang[owner] * frac
+    rad = r[owner] + (r_end - r)[owner] * frac  # spiral slightly if r1 != r2
+    pts = np.empty((len(owner), 3))
+    rows = np.arange(len(owner))
+    pts[rows, a1[owner]] = c[owner, 0] + rad * np.cos(theta)
+    pts[rows, a2[owner]] = c[owner, 1] + rad * np.sin(theta)
+    n3 = a3[owner]
+    pts[rows, n3] = start3[owner, n3] + (end3[owner, n3] - start3[owner, n3]) * frac
+    last = np.cumsum(count) - 1
+    pts[last] = end3  # land exactly on the programmed end
+    return pts, owner
+
+
+def arc_length(start3, end3, center3, plane_axes, turn):
+    """Length of each (helical) arc, arrays as in ``chord_points``."""
+    n = len(start3)
+    if n == 0:
+        return np.empty(0)
+    idx = np.arange(n)
+    a1, a2, a3 = (np.asarray(plane_axes)[:, i] for i in range(3))
+    s = np.stack([start3[idx, a1], start3[idx, a2]], axis=1)
+    e = np.stack([end3[idx, a1], end3[idx, a2]], axis=1)
+    c = np.stack([center3[idx, a1], center3[idx, a2]], axis=1)
+    ang = sweep(s, e, c, turn)
+    r = np.hypot(s[:, 0] - c[:, 0], s[:, 1] - c[:, 1])
+    dz = end3[idx, a3] - start3[idx, a3]
+    return np.hypot(np.abs(ang) * r, dz)

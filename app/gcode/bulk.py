@@ -1,0 +1,169 @@
+"""The fast path: read every plain line of a program at once, with numpy.
+
+``scan(data)`` takes the whole source as bytes and returns a ``Scan``: one row per
+physical line with the values of the words G (0-3), X, Y, Z, I, J, F (NaN when
+absent) and a ``simple`` flag. A line is simple when it holds only those words (and N),
+each at most once, well formed, with nothing but spaces and well-closed comments
+around them: the shape of nearly every line Inkscape's Gcodetools writes. Every other
+line is left to the general lexer and interpreter, which are the reference; the tests
+check that both paths agree. Numbers are parsed by numpy's C ``strtod``, so a value
+here is bit-identical to ``float()`` of the same text.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+import numpy as np
+
+CHUNK_BYTES = 1 << 20
+LETTERS = "GXYZIJF"
+_COMMENT = re.compile(rb"\([^()\n]*\)")
+_SEMI = re.compile(rb";[^\n]*")
+
+# character classes
+SPACE, LETTER, DIGIT, DOT, SIGN, NEWLINE, BAD = range(7)
+_CLASS = np.full(256, BAD, np.uint8)
+_CLASS[[ord(c) for c in " \t\r"]] = SPACE
+_CLASS[[ord(c) for c in "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"]] = LETTER
+_CLASS[[ord(c) for c in "0123456789"]] = DIGIT
+_CLASS[ord(".")] = DOT
+_CLASS[[ord("+"), ord("-")]] = SIGN
+_CLASS[ord("\n")] = NEWLINE
+_NUMBERS_ONLY = bytes(c if chr(c) in "0123456789.+-" else 32 for c in range(256))
+
+
+@dataclass
+class Scan:
+    """Per-line table of the fast path; rows where ``simple`` is False are unread."""
+
+    simple: np.ndarray  # bool (n,)
+    g: np.ndarray  # int8 (n,), -1 when no G word
+    values: dict[str, np.ndarray]  # letter -> float64 (n,), NaN when absent
+
+
+def _chunks(data: bytes):
+    """(start, end) byte ranges of about CHUNK_BYTES, each ending after a newline."""
+    start = 0
+    while start < len(data):
+        end = data.find(b"\n", start + CHUNK_BYTES)
+        end = len(data) if end < 0 else end + 1
+        yield start, end
+        start = end
+
+
+def _kinds(b: np.ndarray, cls: np.ndarray):
+    """Positions and kinds (1 letter, 2 number start, 3 newline, 4 dot, 6 bad) in order."""
+    isnum = (cls >= DIGIT) & (cls <= SIGN)
+    prev = np.empty_like(isnum)
+    prev[0] = False
+    prev[1:] = isnum[:-1]
+    t = np.zeros(len(b), np.uint8)
+    t[cls == LETTER] = 1
+    t[cls == NEWLINE] = 3
+    t[(cls == DOT) & prev] = 4
+    t[((cls == SIGN) & prev) | (cls == BAD)] = 6
+    t[isnum & ~prev] = 2
+    pos = np.flatnonzero(t)
+    return pos, t[pos]
+
+
+def _bad_tokens(b: np.ndarray, cls: np.ndarray, pos: np.ndarray, k: np.ndarray) -> np.ndarray:
+    """Mask over ``pos`` of elements that make their line unusable by the fast path."""
+    bad = k == 6
+    nxt = np.empty_like(k)
+    nxt[:-1] = k[1:]
+    nxt[-1] = 3
+    prv = np.empty_like(k)
+    prv[1:] = k[:-1]
+    prv[0] = 3
+    bad |= (k == 1) & (nxt != 2)
+    bad |= (k == 2) & (prv != 1)
+    bad |= (k == 4) & (prv == 4)
+    starts = pos[k == 2]
+    c0 = b[starts]
+    pad = np.append(cls, [SPACE, SPACE])
+    c1, c2 = pad[starts + 1], pad[starts + 2]
+    first = _CLASS[c0]
+    ok = (first == DIGIT) | ((first == DOT) & (c1 == DIGIT))
+    ok |= (first == SIGN) & ((c1 == DIGIT) | ((c1 == DOT) & (c2 == DIGIT)))
+    bad[np.flatnonzero(k == 2)[~ok]] = True
+    dotted_start = np.zeros(len(k), bool)
+    dotted_start[np.flatnonzero(k == 2)[first == DOT]] = True
+    prev_dot_start = np.empty_like(dotted_start)
+    prev_dot_start[0] = False
+    prev_dot_start[1:] = dotted_start[:-1]
+    bad |= (k == 4) & prev_dot_start
+    return bad
+
+
+def _line_of(k: np.ndarray) -> np.ndarray:
+    nl = k == 3
+    return np.cumsum(nl) - nl
+
+
+def _scan_chunk(raw: bytes, n_lines: int):
+    """Words of the good lines of one chunk: (odd mask, line, letter, value)."""
+    text = _SEMI.sub(b"", _COMMENT.sub(b" ", raw))
+    b = np.frombuffer(text, np.uint8)
+    cls = _CLASS[b]
+    pos, k = _kinds(b, cls)
+    line = _line_of(k)
+    odd = np.zeros(n_lines, bool)
+    odd[line[_bad_tokens(b, cls, pos, k)]] = True
+    if odd.any():
+        text = _blank_lines(text, pos[k == 3], odd)
+    numbers = text.translate(_NUMBERS_ONLY)
+    values = np.fromstring(numbers, dtype=np.float64, sep=" ") if numbers.strip() else np.empty(0)
+    good = ~odd[line]
+    letters = b[pos[(k == 1) & good]] & 0xDF
+    if len(values) != len(letters):  # cannot happen for well-formed tokens; be safe
+        return np.ones(n_lines, bool), *(np.empty(0, t) for t in (np.int64, np.uint8, np.float64))
+    return odd, line[(k == 1) & good], letters, values
+
+
+def _blank_lines(text: bytes, newlines: np.ndarray, odd: np.ndarray) -> bytes:
+    buf = bytearray(text)
+    starts = np.concatenate(([0], newlines + 1))
+    for i in np.flatnonzero(odd):
+        buf[starts[i] : newlines[i]] = b" " * int(newlines[i] - starts[i])
+    return bytes(buf)
+
+
+def _fill(scan: Scan, base: int, odd, line, letters, values) -> None:
+    n = len(odd)
+    simple = ~odd
+    allowed = np.zeros(256, bool)
+    allowed[[ord(c) for c in LETTERS + "N"]] = True
+    simple[line[~allowed[letters]]] = False
+    for c in LETTERS + "N":
+        sel = letters == ord(c)
+        rows = line[sel]
+        simple[rows[np.bincount(rows, minlength=n)[rows] > 1]] = False
+        if c == "G":
+            code = values[sel]
+            okg = (code == np.floor(code)) & (code >= 0) & (code <= 3)
+            simple[rows[~okg]] = False
+            scan.g[base + rows[okg]] = code[okg].astype(np.int8)
+        elif c != "N":
+            scan.values[c][base + rows] = values[sel]
+    scan.simple[base : base + n] = simple
+
+
+def scan(data: bytes, n_lines: int) -> Scan:
+    """Scan ``data`` (``n_lines`` lines joined by newlines) with the fast path."""
+    result = Scan(
+        simple=np.zeros(n_lines, bool),
+        g=np.full(n_lines, -1, np.int8),
+        values={c: np.full(n_lines, np.nan) for c in LETTERS[1:]},
+    )
+    if not data.endswith(b"\n"):
+        data += b"\n"
+    base = 0
+    for start, end in _chunks(data):
+        raw = data[start:end]
+        count = raw.count(b"\n")
+        _fill(result, base, *_scan_chunk(raw, count))
+        base += count
+    return result

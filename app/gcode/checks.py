@@ -1,0 +1,90 @@
+"""Warnings about moves the machine can run but the operator should know of.
+
+- out of the envelope: a move (or the bulge of an arc) past the machine's travel,
+  with the profile's default work offset: ``line 12, column 5: X+ beyond travel
+  (152.300 > 150)``, in work coordinates, one per line, axis and direction;
+- feed moves at feed 0 (no F yet, or F0): LinuxCNC would refuse them; here they warn
+  and the time estimate uses the maximum feed.
+Vectorised over all rows; at most ``Report.limit`` of each kind are listed.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from app.profile import MachineProfile
+
+from .arcs import sweep
+from .diagnostics import Report
+from .lexer import lex_line
+from .ops import ARC_CCW, ARC_CW, FEED, PLANE_AXES, Ops
+
+
+def _column(lines: list[str], line_no: int, letter: str) -> int:
+    words = lex_line(lines[line_no - 1], line_no).words
+    return next((w.column for w in words if w.letter == letter), 0)
+
+
+def _arc_extremes(ops: Ops, rows: np.ndarray):
+    """Per arc row, (low xyz, high xyz) of the whole arc."""
+    start = ops.starts()[rows]
+    end, center = ops.end[rows], ops.center[rows]
+    low, high = np.minimum(start, end), np.maximum(start, end)
+    axes = np.array(PLANE_AXES)[ops.plane[rows]]
+    idx = np.arange(len(rows))
+    s = np.stack([start[idx, axes[:, 0]], start[idx, axes[:, 1]]], axis=1)
+    e = np.stack([end[idx, axes[:, 0]], end[idx, axes[:, 1]]], axis=1)
+    c = np.stack([center[idx, axes[:, 0]], center[idx, axes[:, 1]]], axis=1)
+    ang = sweep(s, e, c, ops.turn[rows])
+    a0 = np.arctan2(s[:, 1] - c[:, 1], s[:, 0] - c[:, 0])
+    r = np.hypot(s[:, 0] - c[:, 0], s[:, 1] - c[:, 1])
+    for k, (axis, sign) in enumerate(((0, 1), (1, 1), (0, -1), (1, -1))):
+        cardinal = k * np.pi / 2
+        rel = np.where(ang > 0, np.mod(cardinal - a0, 2 * np.pi), np.mod(a0 - cardinal, 2 * np.pi))
+        hit = rel <= np.abs(ang)
+        which = axes[idx, axis]
+        value = c[:, axis] + sign * r
+        sel = np.flatnonzero(hit)
+        tgt = high if sign > 0 else low
+        op = np.maximum if sign > 0 else np.minimum
+        tgt[sel, which[sel]] = op(tgt[sel, which[sel]], value[sel])
+    return low, high
+
+
+def _envelope(ops: Ops, profile: MachineProfile, lines: list[str], report: Report) -> None:
+    moves = np.flatnonzero(ops.kind <= ARC_CCW)
+    low, high = ops.end[moves].copy(), ops.end[moves].copy()
+    still = ops.end[moves] == ops.starts()[moves]  # an axis a move leaves alone is not news
+    low[still], high[still] = np.inf, -np.inf
+    arcs = np.flatnonzero((ops.kind[moves] == ARC_CW) | (ops.kind[moves] == ARC_CCW))
+    if len(arcs):
+        low[arcs], high[arcs] = _arc_extremes(ops, moves[arcs])
+    offset = profile.travel.work_offset()
+    for axis, (lo, hi) in enumerate(profile.travel.limits()):
+        name = "XYZ"[axis]
+        lo_w, hi_w = lo - offset[axis], hi - offset[axis]
+        for sign, values, limit, beyond in (("+", high, hi_w, np.greater), ("-", low, lo_w, np.less)):
+            out = moves[beyond(values[:, axis], limit + (1e-9 if sign == "+" else -1e-9))]
+            vals = values[beyond(values[:, axis], limit + (1e-9 if sign == "+" else -1e-9)), axis]
+            rel = ">" if sign == "+" else "<"
+            for row, value in zip(out[: report.limit].tolist(), vals[: report.limit].tolist(), strict=True):
+                line = int(ops.line[row])
+                report.warning(line, _column(lines, line, name),
+                               f"{name}{sign} beyond travel ({value:.3f} {rel} {limit:g})",
+                               f"{name}{sign} beyond travel")
+            report.overflow("warning", f"{name}{sign} beyond travel", len(out) - report.limit)
+
+
+def _feed_zero(ops: Ops, lines: list[str], report: Report) -> None:
+    kind = ops.kind
+    rows = np.flatnonzero(((kind == FEED) | (kind == ARC_CW) | (kind == ARC_CCW)) & (ops.value <= 0))
+    message = "feed move at feed 0 (no F word yet, or F0)"
+    for row in rows[: report.limit].tolist():
+        report.warning(int(ops.line[row]), 0, message, message)
+    report.overflow("warning", message, len(rows) - report.limit)
+
+
+def run(ops: Ops, profile: MachineProfile, lines: list[str], report: Report) -> None:
+    """Add the envelope and feed warnings of ``ops`` to ``report``."""
+    _envelope(ops, profile, lines, report)
+    _feed_zero(ops, lines, report)

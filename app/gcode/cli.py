@@ -1,0 +1,71 @@
+"""``cnc-gcode check|normalize|moves FILE`` (also ``python -m app.gcode``).
+
+- ``check``: a summary (lines, moves, bounds, cut and rapid length, estimated time,
+  warnings, errors with their lines); exit status 1 when there are errors;
+- ``normalize``: the device lines, one per line;
+- ``moves``: the interpreted motion as JSON Lines (see ``moves.py``).
+Exit status 2 for a usage error. Diagnostics go to standard error for
+``normalize`` and ``moves``, to standard output for ``check``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+
+from .moves import to_jsonl
+from .program import Program, load
+
+
+def _summary(p: Program) -> str:
+    tp = p.toolpath
+    low, high = tp.bounds
+    minutes, seconds = divmod(tp.estimated_time, 60)
+    rows = [
+        f"file: {p.name}",
+        f"lines: {len(p.source_lines)}  device lines: {p.plan.total}  moves: {len(tp)}",
+        "bounds: " + "  ".join(f"{a} {lo:.3f}..{hi:.3f}" for a, lo, hi in zip("XYZ", low, high, strict=True)),
+        f"cut length: {tp.cut_length:.1f} mm  rapid length: {tp.rapid_length:.1f} mm",
+        f"estimated time: {int(minutes)} min {seconds:.0f} s",
+        f"warnings: {len(p.warnings)}  errors: {len(p.errors)}",
+    ]
+    rows += [f"warning: {d}" for d in p.warnings]
+    rows += [f"error: {d}" for d in p.errors]
+    return "\n".join(rows) + "\n"
+
+
+def _check(p: Program) -> int:
+    sys.stdout.write(_summary(p))
+    return 1 if p.errors else 0
+
+
+def _print_diagnostics(p: Program) -> None:
+    for d in p.diagnostics:
+        print(f"{p.name}: {d.severity}: {d}", file=sys.stderr)
+
+
+def _normalize(p: Program) -> int:
+    _print_diagnostics(p)
+    sys.stdout.write("".join(line + "\n" for line in p.device_lines))
+    return 1 if p.errors else 0
+
+
+def _moves(p: Program) -> int:
+    _print_diagnostics(p)
+    sys.stdout.write(to_jsonl(p.moves))
+    return 1 if p.errors else 0
+
+
+COMMANDS = {"check": _check, "normalize": _normalize, "moves": _moves}
+
+
+def main(argv: list[str] | None = None) -> int:
+    """Run the command line; return the exit status."""
+    parser = argparse.ArgumentParser(prog="cnc-gcode", description="Check and convert G-code for the mill.")
+    parser.add_argument("command", choices=sorted(COMMANDS))
+    parser.add_argument("file")
+    args = parser.parse_args(argv)
+    try:
+        return COMMANDS[args.command](load(args.file))
+    except BrokenPipeError:
+        return 0

@@ -1,0 +1,69 @@
+"""Diagnostics: what the G-code core reports instead of raising.
+
+A ``Diagnostic`` names the 1-based physical source line, the 1-based column (0 when
+the whole line is meant), its severity (``"error"`` or ``"warning"``) and a message.
+``str(d)`` reads ``line 12, column 5: message``. ``Report`` collects them; it keeps
+at most ``limit`` of each kind of message key and counts the rest, so a million-line
+file with one repeated problem stays small.
+"""
+
+from __future__ import annotations
+
+from collections import Counter
+from dataclasses import dataclass, field
+
+ERROR = "error"
+WARNING = "warning"
+
+
+@dataclass(frozen=True, order=True)
+class Diagnostic:
+    """One problem found in a source line."""
+
+    line: int
+    column: int
+    severity: str
+    message: str
+
+    def __str__(self) -> str:
+        where = f"line {self.line}" + (f", column {self.column}" if self.column else "")
+        return f"{where}: {self.message}"
+
+
+@dataclass
+class Report:
+    """Collects diagnostics; at most ``limit`` per ``key`` are kept, the rest counted."""
+
+    limit: int = 200
+    items: list[Diagnostic] = field(default_factory=list)
+    dropped: Counter = field(default_factory=Counter)
+    _seen: Counter = field(default_factory=Counter)
+
+    def add(self, line: int, column: int, severity: str, message: str, key: str = "") -> None:
+        """Record one diagnostic (or count it once ``limit`` of its key are kept)."""
+        key = key or message
+        self._seen[severity, key] += 1
+        if self._seen[severity, key] > self.limit:
+            self.dropped[severity, key] += 1
+            return
+        self.items.append(Diagnostic(line, column, severity, message))
+
+    def overflow(self, severity: str, key: str, count: int) -> None:
+        """Count ``count`` more diagnostics of ``key`` that were not listed one by one."""
+        if count > 0:
+            self._seen[severity, key] += count
+            self.dropped[severity, key] += count
+
+    def error(self, line: int, column: int, message: str, key: str = "") -> None:
+        self.add(line, column, ERROR, message, key)
+
+    def warning(self, line: int, column: int, message: str, key: str = "") -> None:
+        self.add(line, column, WARNING, message, key)
+
+    def finish(self) -> list[Diagnostic]:
+        """All diagnostics sorted by line, plus one summary per key that overflowed."""
+        out = sorted(self.items)
+        for (severity, key), count in sorted(self.dropped.items()):
+            last = max((d.line for d in self.items if d.severity == severity), default=0)
+            out.append(Diagnostic(last, 0, severity, f"... and {count} more like: {key}"))
+        return out

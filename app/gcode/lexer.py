@@ -1,0 +1,126 @@
+"""The general lexer: one physical source line -> words, or a diagnostic.
+
+Accepted (as LinuxCNC's rs274ngc reads it): words of one letter and a number, in
+either case (``g1x10Y-2.5``); spaces and tabs anywhere outside comments, even inside
+a number (``X1 0.5`` is ``X10.5``); numbers ``1``, ``.5``, ``-0.``, ``+3``; comments
+``( ... )`` anywhere and ``; ...`` to the end of the line; a ``%`` line; a leading
+``/`` (block delete: the line is skipped); a ``*checksum`` suffix (ignored).
+
+Refused with the line and the 1-based column: ``#`` parameters, ``[`` expressions,
+o-words, an unclosed comment, a letter without a number, any other character.
+``lex_line`` never raises. The fast path (``bulk.py``) reads the common shapes of
+line in bulk and hands every line it is unsure of to this module.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from .diagnostics import Diagnostic
+
+_SPACE = " \t\r"
+_DIGITS = "0123456789"
+_SPECIAL = {
+    "#": "'#' parameters are not supported (a later version adds macros)",
+    "[": "'[' expressions are not supported",
+    "o": "o-words (subroutines, loops) are not supported",
+}
+
+
+@dataclass(frozen=True)
+class Word:
+    """One letter (upper case) and its number, at a 1-based column."""
+
+    letter: str
+    value: float
+    column: int
+
+
+@dataclass
+class LexedLine:
+    """Result of lexing one line: the words, or an error; ``skip`` marks / and % lines."""
+
+    words: list[Word] = field(default_factory=list)
+    error: Diagnostic | None = None
+    skip: str = ""
+
+
+def _fail(line_no: int, col: int, message: str) -> LexedLine:
+    return LexedLine(error=Diagnostic(line_no, col + 1, "error", message))
+
+
+def _skip_space(text: str, i: int) -> int:
+    while i < len(text) and text[i] in _SPACE:
+        i += 1
+    return i
+
+
+def _read_number(text: str, i: int) -> tuple[str, int]:
+    """The characters of the number starting at ``i`` (spaces dropped) and the end index."""
+    chars = []
+    seen_dot = False
+    while i < len(text):
+        c = text[i]
+        if c in _DIGITS:
+            chars.append(c)
+        elif c == "." and not seen_dot:
+            seen_dot = True
+            chars.append(c)
+        elif c in "+-" and not chars:
+            chars.append(c)
+        elif c not in _SPACE:
+            break
+        i += 1
+    return "".join(chars), i
+
+
+def _number_ok(token: str) -> bool:
+    return any(c in _DIGITS for c in token)
+
+
+def _skip_comment(text: str, i: int) -> int:
+    """Index after the ``)`` closing the comment opened at ``i``, or -1."""
+    end = text.find(")", i + 1)
+    return -1 if end < 0 else end + 1
+
+
+def _lead(text: str, line_no: int) -> tuple[int, LexedLine | None]:
+    """Handle a leading ``/`` or ``%``; return where words start or a finished result."""
+    i = _skip_space(text, 0)
+    if i < len(text) and text[i] == "/":
+        return i, LexedLine(skip="block delete")
+    if i < len(text) and text[i] == "%":
+        rest = lex_line(text[i + 1 :], line_no)
+        if rest.error is None and not rest.words:
+            return i, LexedLine(skip="%")
+        return i, _fail(line_no, i, "unexpected text after '%'")
+    return i, None
+
+
+def lex_line(text: str, line_no: int) -> LexedLine:
+    """Split one source line into words; errors name ``line_no`` and the column."""
+    i, done = _lead(text, line_no)
+    if done is not None:
+        return done
+    words: list[Word] = []
+    while i < len(text):
+        c = text[i]
+        if c in _SPACE:
+            i += 1
+        elif c == "(":
+            i = _skip_comment(text, i)
+            if i < 0:
+                return _fail(line_no, text.index("("), "comment '(' is not closed on this line")
+        elif c == ";" or c == "*":
+            break
+        elif c.lower() in _SPECIAL:
+            return _fail(line_no, i, _SPECIAL[c.lower()])
+        elif c.isascii() and c.isalpha():
+            token, end = _read_number(text, i + 1)
+            if not _number_ok(token):
+                return _fail(line_no, i, f"word {c.upper()} has no number")
+            words.append(Word(c.upper(), float(token), i + 1))
+            i = end
+        else:
+            return _fail(line_no, i, f"unexpected character {c!r}")
+    return LexedLine(words=words)

@@ -1,0 +1,182 @@
+"""Normaliser: interpreted rows -> the machine's dialect (DESIGN.md).
+
+Output lines, each at most 80 characters:
+
+- ``G00``/``G01`` with the axes whose rounded value changed (all three on the first
+  move; a move that changes nothing repeats X) and, for G01, ``F`` when it changed;
+- ``G02``/``G03 X Y I J [Z] [F]`` for arcs in the XY plane. **I and J are relative to
+  the start point of the arc** (the device's current position, rounded as sent), the
+  device's convention; X and Y are always given. Z appears when it changes (a helix);
+- arcs in the XZ or YZ plane, arcs of more than one turn, and arcs whose rounded
+  numbers would no longer pass LinuxCNC's circle check become ``G01`` chords that
+  stay within ``arc_tolerance_mm`` of the true arc (rounding included);
+- ``G04 P<seconds>``, ``M03 S<rpm>`` (``M4`` was already turned into M3; a spindle
+  started with no S runs at the profile's no-load rpm), ``M05``, ``M02`` (also for M30).
+
+Numbers are absolute millimetres rounded to 0.001 with trailing zeros dropped.
+Pauses (M0, M1, M6) are not device lines: they are listed as (device index, message)
+so the job can stop before that line. ``plan`` decides, vectorised, how many device
+lines each row becomes (the device index of every move is known without formatting);
+``render`` writes the text. Normalising the output again gives the same lines.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .arcs import RADIUS_TOL, SPIRAL_ABS, SPIRAL_REL, chord_points, segments, sweep
+from .numbers import fmt, milli, rounded
+from .ops import ARC_CCW, ARC_CW, DWELL, END, FEED, PAUSE, PLANE_AXES, RAPID, SPINDLE, XY, Ops
+
+ROUNDING = 0.001
+
+
+@dataclass
+class Plan:
+    """Per row: device lines it becomes, first device index, and whether it is chords."""
+
+    count: np.ndarray
+    first: np.ndarray
+    chords: np.ndarray
+    total: int
+
+
+def _arc_ok_rounded(start, end, center) -> np.ndarray:
+    """True where the arc, with its numbers rounded as sent, passes the circle check."""
+    rs, re_ = rounded(start), rounded(end)
+    c = rs + rounded(center - rs)
+    r1 = np.hypot(c[:, 0] - rs[:, 0], c[:, 1] - rs[:, 1])
+    r2 = np.hypot(c[:, 0] - re_[:, 0], c[:, 1] - re_[:, 1])
+    err = np.abs(r1 - r2)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        ok = (r1 >= RADIUS_TOL[False]) & (r2 >= RADIUS_TOL[False]) & (err <= SPIRAL_ABS[False])
+        ok &= err / np.maximum(r1, r2) <= SPIRAL_REL
+    # a short arc whose ends round together would become a full circle on the device
+    same = np.all(milli(start[:, :2]) == milli(end[:, :2]), axis=1)
+    full = np.all(start[:, :2] == end[:, :2], axis=1)
+    return ok & (~same | full)
+
+
+def _axes(ops: Ops, rows) -> np.ndarray:
+    return np.array(PLANE_AXES)[ops.plane[rows]]
+
+
+def plan(ops: Ops, tolerance: float) -> Plan:
+    """How many device lines each row becomes (vectorised)."""
+    kind = ops.kind
+    count = np.where(kind == PAUSE, 0, 1).astype(np.int64)
+    chords = np.zeros(len(ops), bool)
+    arcs = np.flatnonzero((kind == ARC_CW) | (kind == ARC_CCW))
+    if len(arcs):
+        start = ops.starts()[arcs]
+        end, center = ops.end[arcs], ops.center[arcs]
+        ok = (ops.plane[arcs] == XY) & (np.abs(ops.turn[arcs]) == 1)
+        ok &= _arc_ok_rounded(start, end, center)
+        chords[arcs[~ok]] = True
+        bad = arcs[~ok]
+        if len(bad):
+            count[bad] = _chord_counts(ops, bad, tolerance)
+    first = np.cumsum(count) - count
+    return Plan(count, first, chords, int(count.sum()))
+
+
+def _plane_pts(ops: Ops, rows, pts3):
+    ax = _axes(ops, rows)
+    idx = np.arange(len(rows))
+    return np.stack([pts3[idx, ax[:, 0]], pts3[idx, ax[:, 1]]], axis=1)
+
+
+def _chord_counts(ops: Ops, rows, tolerance: float) -> np.ndarray:
+    start = ops.starts()[rows]
+    s, e, c = (_plane_pts(ops, rows, p) for p in (start, ops.end[rows], ops.center[rows]))
+    r = np.maximum(np.hypot(*(s - c).T), np.hypot(*(e - c).T))
+    return segments(r, sweep(s, e, c, ops.turn[rows]), tolerance - ROUNDING)
+
+
+class _Writer:
+    """Keeps what the device already knows (rounded position, feed) while writing."""
+
+    def __init__(self, default_rpm: float):
+        self.pos: tuple | None = None
+        self.feed: int | None = None
+        self.default_rpm = default_rpm
+        self.lines: list[str] = []
+
+    def _axes(self, target: tuple) -> str:
+        if self.pos is None:
+            changed = "XYZ"
+        else:
+            changed = "".join(c for c, a, b in zip("XYZ", target, self.pos, strict=True) if a != b) or "X"
+        words = " ".join(f"{c}{fmt(target['XYZ'.index(c)])}" for c in changed)
+        return words
+
+    def _feed(self, feed: float) -> str:
+        f = int(milli(feed))
+        if f == self.feed:
+            return ""
+        self.feed = f
+        return f" F{fmt(f)}"
+
+    def straight(self, code: str, target: tuple, feed: float) -> None:
+        words = self._axes(target)
+        extra = self._feed(feed) if code == "G01" else ""
+        self.lines.append(f"{code} {words}{extra}")
+        self.pos = target
+
+    def arc(self, code: str, target: tuple, ij: tuple, feed: float) -> None:
+        z = "" if self.pos is not None and self.pos[2] == target[2] else f" Z{fmt(target[2])}"
+        extra = self._feed(feed)
+        self.lines.append(f"{code} X{fmt(target[0])} Y{fmt(target[1])}{z} I{fmt(ij[0])} J{fmt(ij[1])}{extra}")
+        self.pos = target
+
+    def spindle(self, rpm: float) -> None:
+        if rpm == 0:
+            self.lines.append("M05")
+            return
+        rpm = self.default_rpm if rpm < 0 else rpm
+        self.lines.append(f"M03 S{fmt(int(milli(rpm)))}")
+
+
+def render(ops: Ops, the_plan: Plan, tolerance: float, default_rpm: float):
+    """Device lines, line map (device index -> source line) and pauses."""
+    w = _Writer(default_rpm)
+    ends = milli(ops.end)
+    ij_all = milli(np.nan_to_num(ops.center[:, :2] - rounded(ops.starts()[:, :2])))
+    chord_rows = np.flatnonzero(the_plan.chords)
+    chord_pts, owner = _chords(ops, chord_rows, tolerance)
+    chord_at = dict(zip(chord_rows.tolist(), np.searchsorted(owner, np.arange(len(chord_rows))).tolist(),
+                        strict=True))
+    pauses: list[tuple[int, str]] = []
+    messages = iter(ops.messages)
+    lines, kinds, values = ops.line, ops.kind.tolist(), ops.value.tolist()
+    for i, kind in enumerate(kinds):
+        target = tuple(ends[i].tolist())
+        if kind in (RAPID, FEED):
+            w.straight("G00" if kind == RAPID else "G01", target, values[i])
+        elif i in chord_at:
+            a = chord_at[i]
+            for p in chord_pts[a : a + int(the_plan.count[i])].tolist():
+                w.straight("G01", tuple(p), values[i])
+        elif kind in (ARC_CW, ARC_CCW):
+            w.arc("G02" if kind == ARC_CW else "G03", target, tuple(ij_all[i].tolist()), values[i])
+        elif kind == DWELL:
+            w.lines.append(f"G04 P{fmt(int(milli(values[i])))}")
+        elif kind == SPINDLE:
+            w.spindle(values[i])
+        elif kind == END:
+            w.lines.append("M02")
+        elif kind == PAUSE:
+            pauses.append((len(w.lines), next(messages)))
+    line_map = np.repeat(lines, the_plan.count)
+    return w.lines, line_map, pauses
+
+
+def _chords(ops: Ops, rows, tolerance: float):
+    if not len(rows):
+        return np.empty((0, 3), np.int64), np.empty(0, np.int64)
+    start = ops.starts()[rows]
+    pts, owner = chord_points(start, ops.end[rows], ops.center[rows], _axes(ops, rows), ops.turn[rows],
+                              tolerance - ROUNDING)
+    return milli(pts), owner

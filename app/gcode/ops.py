@@ -1,0 +1,95 @@
+"""The interpreted program as columns: one row per operation, in program order.
+
+An operation is a move (RAPID, FEED, ARC_CW, ARC_CCW), a DWELL, or an event the
+normaliser needs (SPINDLE on/off, PAUSE, END). Every row has the 1-based source
+line, the end position in absolute machine-program millimetres (the position after
+the row; events keep the position), the arc centre (NaN for non-arcs), the plane
+(XY, XZ, YZ), the signed number of turns of an arc (< 0 clockwise), and ``value``:
+the feed in mm/min for moves, seconds for a dwell, rpm for SPINDLE (0 = off).
+``OpBuffer`` gathers rows from the fast path (whole arrays) and the general path
+(one row at a time) and ``finish()`` returns one ``Ops`` of numpy arrays.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+RAPID, FEED, ARC_CW, ARC_CCW, DWELL, SPINDLE, PAUSE, END = range(8)
+MOTION_KINDS = (RAPID, FEED, ARC_CW, ARC_CCW)
+XY, XZ, YZ = range(3)
+PLANE_NAMES = ("XY", "XZ", "YZ")
+# (first, second, normal) axis index per plane, in LinuxCNC's order: XZ is (Z, X).
+PLANE_AXES = ((0, 1, 2), (2, 0, 1), (1, 2, 0))
+
+_NAN3 = (float("nan"),) * 3
+
+
+@dataclass
+class Ops:
+    """Columns of the interpreted program (see the module docstring)."""
+
+    line: np.ndarray
+    kind: np.ndarray
+    end: np.ndarray
+    center: np.ndarray
+    plane: np.ndarray
+    turn: np.ndarray
+    value: np.ndarray
+    messages: list[str]  # one per PAUSE row, in order
+
+    def __len__(self) -> int:
+        return len(self.line)
+
+    def starts(self, origin=(0.0, 0.0, 0.0)) -> np.ndarray:
+        """Start point of every row: the previous row's end (``origin`` for the first)."""
+        start = np.empty_like(self.end)
+        if len(start):
+            start[0] = origin
+            start[1:] = self.end[:-1]
+        return start
+
+
+@dataclass
+class OpBuffer:
+    """Collects rows; single rows are batched and flushed before each array block."""
+
+    blocks: list[tuple] = field(default_factory=list)
+    rows: list[tuple] = field(default_factory=list)
+    messages: list[str] = field(default_factory=list)
+
+    def add(self, line, kind, end, center=_NAN3, plane=XY, turn=0, value=0.0, message=None):
+        """Append one row (the general path)."""
+        self.rows.append((line, kind, *end, *center, plane, turn, value))
+        if message is not None:
+            self.messages.append(message)
+
+    def add_block(self, line, kind, end, center, turn, value) -> None:
+        """Append many XY rows at once (the fast path); arrays of equal length."""
+        self._flush()
+        n = len(line)
+        plane = np.zeros(n, np.int8)
+        self.blocks.append((line, kind, end, center, plane, turn, value))
+
+    def _flush(self) -> None:
+        if not self.rows:
+            return
+        a = np.array(self.rows, dtype=np.float64).reshape(-1, 11)
+        self.rows = []
+        self.blocks.append(
+            (a[:, 0].astype(np.int64), a[:, 1].astype(np.int8), a[:, 2:5], a[:, 5:8],
+             a[:, 8].astype(np.int8), a[:, 9].astype(np.int32), a[:, 10])
+        )
+
+    def finish(self) -> Ops:
+        """All rows as one ``Ops``."""
+        self._flush()
+        if not self.blocks:
+            empty = np.empty((0, 3))
+            return Ops(np.empty(0, np.int64), np.empty(0, np.int8), empty, empty.copy(),
+                       np.empty(0, np.int8), np.empty(0, np.int32), np.empty(0), [])
+        cols = list(zip(*self.blocks, strict=True))
+        dtypes = (np.int64, np.int8, np.float64, np.float64, np.int8, np.int32, np.float64)
+        arrays = [np.concatenate(c).astype(t, copy=False) for c, t in zip(cols, dtypes, strict=True)]
+        return Ops(*arrays, messages=self.messages)

@@ -1,0 +1,123 @@
+"""Loading a program: text -> interpreted rows -> diagnostics, device lines, Toolpath.
+
+``load(path)`` and ``load_text(text, name)`` never raise for bad input: unreadable,
+non-UTF-8 or binary files give a ``Program`` with one error; a file with errors loads
+as far as it can (refused lines change nothing), so every error is listed at once.
+Lines are physical lines split at ``\\n`` (a ``\\r`` before it is dropped).
+``device_lines``, ``line_map``, ``pauses`` and ``moves`` are computed on first use;
+the device index of each move (``toolpath.device_index``) is known at once.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from functools import cached_property
+from pathlib import Path
+
+import numpy as np
+
+from app.profile import MachineProfile
+
+from . import bulk, checks, normalize, runner
+from .diagnostics import ERROR, WARNING, Diagnostic, Report
+from .moves import moves_of
+from .ops import OpBuffer, Ops
+from .toolpath import Toolpath, build
+
+
+@dataclass
+class Program:
+    """A loaded G-code program (see the module docstring)."""
+
+    name: str
+    source_lines: list[str]
+    diagnostics: list[Diagnostic]
+    ops: Ops
+    toolpath: Toolpath
+    profile: MachineProfile
+    plan: normalize.Plan
+    _render: tuple | None = field(default=None, repr=False)
+
+    @property
+    def errors(self) -> list[Diagnostic]:
+        return [d for d in self.diagnostics if d.severity == ERROR]
+
+    @property
+    def warnings(self) -> list[Diagnostic]:
+        return [d for d in self.diagnostics if d.severity == WARNING]
+
+    def _rendered(self) -> tuple:
+        if self._render is None:
+            tol = self.profile.motion.arc_tolerance_mm
+            self._render = normalize.render(self.ops, self.plan, tol, self.profile.spindle.no_load_rpm)
+        return self._render
+
+    @property
+    def device_lines(self) -> list[str]:
+        """The program in the machine's dialect, one string per line."""
+        return self._rendered()[0]
+
+    @property
+    def line_map(self) -> np.ndarray:
+        """Device index -> 1-based source line."""
+        return self._rendered()[1]
+
+    @property
+    def pauses(self) -> list[tuple[int, str]]:
+        """(device index to pause before, message) for M0, M1 and tool changes."""
+        return self._rendered()[2]
+
+    @cached_property
+    def moves(self) -> list[dict]:
+        """The interpreted motion in the ``cnc-gcode moves`` JSON format."""
+        return moves_of(self.ops)
+
+
+def _split(text: str) -> list[str]:
+    lines = text.split("\n")
+    if lines and lines[-1] == "":
+        lines.pop()
+    if "\r" in text:
+        lines = [line[:-1] if line.endswith("\r") else line for line in lines]
+    return lines
+
+
+def _empty(name: str, message: str, profile: MachineProfile) -> Program:
+    program = load_text("", name, profile)
+    program.diagnostics = [Diagnostic(1, 0, ERROR, message)]
+    return program
+
+
+def load_text(text: str, name: str = "<text>", profile: MachineProfile | None = None) -> Program:
+    """Interpret G-code ``text``; errors and warnings are in the result, never raised."""
+    profile = profile or MachineProfile()
+    if "\x00" in text:
+        return _empty(name, "not a text file (it contains NUL bytes)", profile)
+    lines = _split(text)
+    data = "\n".join(lines).encode("utf-8", "replace")
+    scan = bulk.scan(data, len(lines))
+    report = Report()
+    buffer = OpBuffer()
+    runner.run(lines, scan, buffer, report)
+    ops = buffer.finish()
+    checks.run(ops, profile, lines, report)
+    the_plan = normalize.plan(ops, profile.motion.arc_tolerance_mm)
+    toolpath = build(ops, the_plan.first, profile)
+    return Program(name, lines, report.finish(), ops, toolpath, profile, the_plan)
+
+
+def load(path: str | Path, profile: MachineProfile | None = None) -> Program:
+    """Read and interpret a G-code file; unreadable or non-UTF-8 files give an error."""
+    path = Path(path)
+    profile = profile or MachineProfile()
+    try:
+        raw = path.read_bytes()
+    except OSError as exc:
+        return _empty(str(path), f"cannot read {path}: {exc.strerror or exc}", profile)
+    try:
+        text = raw.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        line = raw.count(b"\n", 0, exc.start) + 1
+        return _empty(str(path), f"not a UTF-8 text file (bad byte at line {line}, offset {exc.start})",
+                      profile)
+    return load_text(text, str(path), profile)

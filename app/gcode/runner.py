@@ -1,0 +1,72 @@
+"""Drive the two interpreters over a whole program, line by line or run by run.
+
+Simple lines (``bulk.Scan``) in a state the fast path handles go to ``vector.run``
+in runs; every other line is lexed and interpreted by the general path. After a
+line the general path refused, the next ``SLOW_AFTER_ERROR`` lines also take the
+general path so a file full of errors costs linear time. After M2/M30 nothing more
+is interpreted; words after it earn one warning.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from . import vector
+from .bulk import Scan
+from .diagnostics import Report
+from .interp import interpret_line
+from .lexer import lex_line
+from .ops import OpBuffer
+from .state import State
+
+SLOW_AFTER_ERROR = 64
+RUN_MAX = 1 << 16
+RUN_AFTER_ERROR = 256
+
+
+def _general(state: State, text: str, line_no: int, ops: OpBuffer, report: Report) -> tuple[State, bool]:
+    """One line through the general lexer and interpreter; (state, refused?)."""
+    lexed = lex_line(text, line_no)
+    if lexed.error is not None:
+        report.add(lexed.error.line, lexed.error.column, lexed.error.severity, lexed.error.message)
+        return state, True
+    if lexed.skip == "block delete":
+        report.warning(line_no, 0, "block delete '/': line skipped", "block delete")
+    if lexed.skip or not lexed.words:
+        return state, False
+    return interpret_line(state, lexed.words, line_no, ops, report)
+
+
+def _after_end(lines: list[str], start: int, end_line: int, report: Report) -> None:
+    for i in range(start, len(lines)):
+        lexed = lex_line(lines[i], i + 1)
+        if lexed.words or lexed.error:
+            report.warning(i + 1, 0, f"ignored: the program ended at line {end_line} (M2/M30)")
+            return
+
+
+def run(lines: list[str], scan: Scan, ops: OpBuffer, report: Report, state: State | None = None) -> State:
+    """Interpret every line; rows go to ``ops``, diagnostics to ``report``."""
+    state = state or State()
+    n = len(lines)
+    simple = scan.simple
+    complex_lines = np.flatnonzero(~simple)
+    i = 0
+    slow_until = 0
+    run_len = RUN_MAX
+    while i < n and not state.ended:
+        if simple[i] and i >= slow_until and state.fast_path_ok():
+            k = int(np.searchsorted(complex_lines, i))
+            end = min(int(complex_lines[k]) if k < len(complex_lines) else n, i + run_len)
+            state, stop = vector.run(scan, i, end, state, ops)
+            run_len = min(run_len * 2, RUN_MAX) if stop == end else RUN_AFTER_ERROR
+            if stop > i or stop == end:
+                i = stop
+                continue
+        state, refused = _general(state, lines[i], i + 1, ops, report)
+        if refused:
+            slow_until = i + 1 + SLOW_AFTER_ERROR
+        i += 1
+    if state.ended:
+        _after_end(lines, i, state.ended, report)
+    return state

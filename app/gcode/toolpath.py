@@ -1,0 +1,132 @@
+"""Toolpath: the moves of a program as numpy arrays, for the preview and estimates.
+
+One row per move or dwell, in program order (spindle, pause and end events are not
+rows): ``start``/``end`` (n, 3) mm, ``kind`` (RAPID, FEED, ARC_CW, ARC_CCW, DWELL),
+``center`` (n, 3) (NaN except for arcs), ``plane``, ``turn``, ``source_line``
+(1-based), ``device_index`` (first device line of the move), ``feed`` mm/min (rapids
+at the profile's rapid rate, feeds capped at its maximum), ``length`` mm and ``time``
+s. The time of a move is a trapezoid: accelerate at ``accel_mm_s2`` to the feed,
+cruise, decelerate to a stop (a triangle when the move is too short); a dwell takes its
+seconds. ``polyline(tolerance)`` gives drawable points with arcs as chords.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from functools import cached_property
+
+import numpy as np
+
+from app.profile import MachineProfile
+
+from .arcs import arc_length, chord_points
+from .ops import ARC_CCW, ARC_CW, DWELL, FEED, PLANE_AXES, RAPID, Ops
+
+KIND_NAMES = {RAPID: "rapid", FEED: "feed", ARC_CW: "arc", ARC_CCW: "arc", DWELL: "dwell"}
+
+
+def move_times(length, feed_mm_min, accel: float) -> np.ndarray:
+    """Trapezoidal time (s) of moves of ``length`` mm at ``feed`` mm/min from rest to rest."""
+    v = np.asarray(feed_mm_min, float) / 60.0
+    length = np.asarray(length, float)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        cruise = length / v + v / accel
+        short = 2.0 * np.sqrt(length / accel)
+    return np.where(length * accel >= v * v, cruise, short)
+
+
+@dataclass
+class Toolpath:
+    """Arrays of the moves (see the module docstring)."""
+
+    start: np.ndarray
+    end: np.ndarray
+    kind: np.ndarray
+    center: np.ndarray
+    plane: np.ndarray
+    turn: np.ndarray
+    source_line: np.ndarray
+    device_index: np.ndarray
+    feed: np.ndarray
+    length: np.ndarray
+    time: np.ndarray
+    _cache: dict = field(default_factory=dict, repr=False)
+
+    def __len__(self) -> int:
+        return len(self.kind)
+
+    @property
+    def cut_length(self) -> float:
+        """Millimetres moved at feed (lines and arcs)."""
+        return float(self.length[(self.kind == FEED) | (self.kind == ARC_CW) | (self.kind == ARC_CCW)].sum())
+
+    @property
+    def rapid_length(self) -> float:
+        """Millimetres moved at rapid rate."""
+        return float(self.length[self.kind == RAPID].sum())
+
+    @property
+    def estimated_time(self) -> float:
+        """Seconds for the whole program, dwells included."""
+        return float(self.time.sum())
+
+    @cached_property
+    def bounds(self) -> tuple[np.ndarray, np.ndarray]:
+        """(min xyz, max xyz) of everything the tool visits (arcs included)."""
+        pts, _ = self.polyline(0.01)
+        if not len(pts):
+            zero = np.zeros(3)
+            return zero, zero.copy()
+        return pts.min(axis=0), pts.max(axis=0)
+
+    def polyline(self, tolerance: float = 0.01) -> tuple[np.ndarray, np.ndarray]:
+        """Points (m, 3) to draw, arcs as chords within ``tolerance``, and per point the
+        index of the move that ends there (the first point, the start, gets 0)."""
+        key = round(tolerance, 9)
+        if key not in self._cache:
+            self._cache[key] = self._polyline(tolerance)
+        return self._cache[key]
+
+    def _polyline(self, tolerance: float):
+        moves = np.flatnonzero(self.kind != DWELL)
+        if not len(moves):
+            return np.empty((0, 3)), np.empty(0, np.int64)
+        arc = (self.kind[moves] == ARC_CW) | (self.kind[moves] == ARC_CCW)
+        count = np.ones(len(moves), np.int64)
+        arcs = moves[arc]
+        pts_arc, owner = chord_points(self.start[arcs], self.end[arcs], self.center[arcs],
+                                      np.array(PLANE_AXES)[self.plane[arcs]], self.turn[arcs], tolerance)
+        count[arc] = np.bincount(owner, minlength=len(arcs))
+        index = np.repeat(moves, count)
+        pts = np.empty((len(index), 3))
+        first = np.cumsum(count) - count
+        line_rows = first[~arc]
+        pts[line_rows] = self.end[moves[~arc]]
+        if len(arcs):
+            owner_first = np.cumsum(count[arc]) - count[arc]
+            pts[first[arc][owner] + np.arange(len(owner)) - owner_first[owner]] = pts_arc
+        start = self.start[moves[0]][None, :]
+        return np.concatenate([start, pts]), np.concatenate([[moves[0]], index])
+
+
+def build(ops: Ops, device_first: np.ndarray, profile: MachineProfile) -> Toolpath:
+    """The Toolpath of interpreted rows; ``device_first`` from the normaliser's plan."""
+    rows = np.flatnonzero(ops.kind <= DWELL)
+    start = ops.starts()[rows]
+    end = ops.end[rows]
+    kind = ops.kind[rows]
+    center = ops.center[rows]
+    plane, turn = ops.plane[rows], ops.turn[rows]
+    motion = profile.motion
+    feed = np.minimum(ops.value[rows], motion.max_feed_mm_min)
+    feed = np.where(feed > 0, feed, motion.max_feed_mm_min)
+    feed[kind == RAPID] = motion.rapid_mm_min
+    length = np.linalg.norm(end - start, axis=1)
+    arc = np.flatnonzero((kind == ARC_CW) | (kind == ARC_CCW))
+    length[arc] = arc_length(start[arc], end[arc], center[arc], np.array(PLANE_AXES)[plane[arc]], turn[arc])
+    time = move_times(length, feed, motion.accel_mm_s2)
+    dwell = kind == DWELL
+    time[dwell] = ops.value[rows][dwell]
+    feed[dwell] = 0.0
+    source, device = ops.line[rows], device_first[rows]
+    return Toolpath(start, end, kind, center, plane, turn, source, device, feed, length, time)
