@@ -3,9 +3,12 @@
 Tolerances are in the program's units, as LinuxCNC applies them:
 
 - centre format (I J K): the radius to the start ``r1`` and to the end ``r2`` must
-  both be at least ``RADIUS_TOL`` (else "zero-radius arc"), and the arc is refused
-  when ``|r1 - r2| > SPIRAL_ABS`` (2 * 0.01 * sqrt 2 mm, 2 * 0.001 * sqrt 2 inch) or
-  ``|r1 - r2| / max(r1, r2) > SPIRAL_REL`` (0.1 %);
+  both be at least ``RADIUS_TOL`` (else "zero-radius arc"); with ``T = SPIRAL_ABS``
+  (2 * 0.01 * sqrt 2 mm, 2 * 0.001 * sqrt 2 inch) and ``err = |r1 - r2|`` the arc is
+  refused when ``err > 100 T``, or when ``err > T`` and ``err / max(r1, r2) > 0.1 %``.
+  That is what rs274 of LinuxCNC 2.9 does with no ini file (recorded in
+  ``tests/oracle/data/arctol_*.canon``): an arc is accepted when its end is within
+  ``T`` of the circle *or* within 0.1 % of the radius, up to ``100 T``;
 - radius format (R): refused when the start equals the end, or when half the chord
   exceeds ``|R|`` by more than ``RADIUS_TOL`` (0.00005 inch, 0.00127 mm); a negative
   R takes the long way round.
@@ -36,10 +39,17 @@ def ijk_error(start, end, center, inch: bool) -> str | None:
     r2 = math.hypot(center[0] - end[0], center[1] - end[1])
     if r1 < RADIUS_TOL[inch] or r2 < RADIUS_TOL[inch]:
         return "zero-radius arc (the centre is on the start or end point)"
-    err = abs(r1 - r2)
-    if err > SPIRAL_ABS[inch] or err / max(r1, r2) > SPIRAL_REL:
+    if spiral_refused(abs(r1 - r2), max(r1, r2), inch):
         return radius_message(r1, r2, inch)
     return None
+
+
+def spiral_refused(err, radius, inch: bool):
+    """LinuxCNC's rule for |r1 - r2| = ``err`` (scalars or arrays, program units)."""
+    tol = SPIRAL_ABS[inch]
+    with np.errstate(invalid="ignore", divide="ignore"):
+        rel = np.asarray(err) / np.asarray(radius)
+    return (err > 100 * tol) | ((err > tol) & ~(rel <= SPIRAL_REL))
 
 
 def radius_message(r1: float, r2: float, inch: bool) -> str:
@@ -47,7 +57,7 @@ def radius_message(r1: float, r2: float, inch: bool) -> str:
     unit = _unit(inch)
     return (
         f"arc end is not on its circle: radius to start {r1:.4f}, to end {r2:.4f} {unit} "
-        f"(LinuxCNC allows {SPIRAL_ABS[inch]:.4f} {unit} and {SPIRAL_REL:.1%})"
+        f"(LinuxCNC allows {SPIRAL_ABS[inch]:.4f} {unit} or {SPIRAL_REL:.1%} of the radius)"
     )
 
 

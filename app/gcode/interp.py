@@ -62,9 +62,10 @@ def _check_codes(words: list[Word]) -> tuple[dict[str, tuple], dict[str, tuple]]
     return groups, mgroups
 
 
-def _set_feed_speed(state: State, params, inch_next: bool) -> None:
+def _set_feed_speed(state: State, params) -> None:
+    """F and S come first, as in rs274ngc: F is read in the units before this line's G20/G21."""
     if "F" in params:
-        state.feed = params["F"].value * (25.4 if inch_next else 1.0)
+        state.feed = params["F"].value * state.scale
     if "S" in params:
         state.speed = params["S"].value
 
@@ -126,8 +127,7 @@ def interpret_line(
         if "coolant" in mgroups:
             report.warning(line_no, mgroups["coolant"][1].column,
                            "coolant M7/M8/M9 ignored: this machine has no coolant", "coolant ignored")
-        inch_next = G_CODES[groups["units"][0]][2] if "units" in groups else state.inch
-        _set_feed_speed(new, params, inch_next)
+        _set_feed_speed(new, params)
         _tool_change(new, mgroups, params, line_no, line_ops, report)
         _spindle(new, mgroups, params, line_no, line_ops, report)
         _modes(new, groups)

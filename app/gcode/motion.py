@@ -4,7 +4,8 @@
 motion when the line has axis words; I J K R need an arc, P a dwell or an arc (turns),
 and axis words with no motion mode (G80, or none yet) are refused. A line with G0/G1
 and no axis word sets the mode and moves nowhere. Arc centres are checked with
-LinuxCNC's tolerances (``arcs.py``) in the program's units; positions and centres
+LinuxCNC's tolerances (``arcs.py``) in the program's units; an arc with no axis word
+is a full circle (LinuxCNC 2.9 accepts ``G2 I10``); positions and centres
 leave here in millimetres. Raises ``LineError``; changes ``state`` in place.
 """
 
@@ -72,11 +73,8 @@ def _target(state: State, params) -> list[float]:
 
 
 def _arc_words(state: State, params) -> None:
-    a1, a2, a3 = PLANE_AXES[state.plane]
+    a3 = PLANE_AXES[state.plane][2]
     name = PLANE_NAMES[state.plane]
-    if AXES[a1] not in params and AXES[a2] not in params:
-        first, second = sorted((AXES[a1], AXES[a2]))
-        raise LineError(0, f"{first} and {second} words missing for arc in {name} plane")
     has_ijk = any(c in params for c in _OFFSETS)
     if "R" in params and has_ijk:
         raise LineError(params["R"].column, "arc with both R and I/J/K words")

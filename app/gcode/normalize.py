@@ -26,7 +26,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .arcs import RADIUS_TOL, SPIRAL_ABS, SPIRAL_REL, chord_points, segments, sweep
+from .arcs import RADIUS_TOL, chord_points, segments, spiral_refused, sweep
 from .numbers import fmt, milli, rounded
 from .ops import ARC_CCW, ARC_CW, DWELL, END, FEED, PAUSE, PLANE_AXES, RAPID, SPINDLE, XY, Ops
 
@@ -49,10 +49,8 @@ def _arc_ok_rounded(start, end, center) -> np.ndarray:
     c = rs + rounded(center - rs)
     r1 = np.hypot(c[:, 0] - rs[:, 0], c[:, 1] - rs[:, 1])
     r2 = np.hypot(c[:, 0] - re_[:, 0], c[:, 1] - re_[:, 1])
-    err = np.abs(r1 - r2)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        ok = (r1 >= RADIUS_TOL[False]) & (r2 >= RADIUS_TOL[False]) & (err <= SPIRAL_ABS[False])
-        ok &= err / np.maximum(r1, r2) <= SPIRAL_REL
+    ok = (r1 >= RADIUS_TOL[False]) & (r2 >= RADIUS_TOL[False])
+    ok &= ~spiral_refused(np.abs(r1 - r2), np.maximum(r1, r2), False)
     # a short arc whose ends round together would become a full circle on the device
     same = np.all(milli(start[:, :2]) == milli(end[:, :2]), axis=1)
     full = np.all(start[:, :2] == end[:, :2], axis=1)

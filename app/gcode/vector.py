@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .arcs import RADIUS_TOL, SPIRAL_ABS, SPIRAL_REL
+from .arcs import RADIUS_TOL, spiral_refused
 from .bulk import Scan
 from .ops import ARC_CW, OpBuffer
 from .state import State
@@ -39,10 +39,8 @@ def _arc_bad(start, end, center, inch: bool) -> np.ndarray:
     k = 25.4 if inch else 1.0
     r1 = np.hypot(center[:, 0] - start[:, 0], center[:, 1] - start[:, 1]) / k
     r2 = np.hypot(center[:, 0] - end[:, 0], center[:, 1] - end[:, 1]) / k
-    err = np.abs(r1 - r2)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        rel = err / np.maximum(r1, r2)
-    return (r1 < RADIUS_TOL[inch]) | (r2 < RADIUS_TOL[inch]) | (err > SPIRAL_ABS[inch]) | ~(rel <= SPIRAL_REL)
+    zero = (r1 < RADIUS_TOL[inch]) | (r2 < RADIUS_TOL[inch])
+    return zero | spiral_refused(np.abs(r1 - r2), np.maximum(r1, r2), inch)
 
 
 def _first(mask: np.ndarray) -> int:
@@ -66,10 +64,10 @@ def run(scan: Scan, a: int, b: int, state: State, ops: OpBuffer) -> tuple[State,
     g, v, has_axis, has_ij, mode = _modes(scan, a, b, state)
     bad, to_be = _bad_words(g, has_axis, has_ij, mode)
     arc = (to_be == 2) | (to_be == 3)
-    bad |= arc & ~(has_ij & (~np.isnan(v["X"]) | ~np.isnan(v["Y"])))
+    bad |= arc & ~has_ij
     stop = _first(bad)
     k = state.scale
-    moving = has_axis[:stop] & (to_be[:stop] >= 0)
+    moving = (has_axis[:stop] | arc[:stop]) & (to_be[:stop] >= 0)
     end = np.stack([_ffill(v[c][:stop] * k, state.pos[i]) for i, c in enumerate("XYZ")], axis=1)
     rows = np.flatnonzero(moving)
     ends = end[rows]
