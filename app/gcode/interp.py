@@ -122,8 +122,8 @@ def interpret_line(
     new = state.copy()
     line_ops = OpBuffer()
     try:
-        params = _check_letters(words)
         groups, mgroups = _check_codes(words)
+        params = _check_letters(words)
         if "coolant" in mgroups:
             report.warning(line_no, mgroups["coolant"][1].column,
                            "coolant M7/M8/M9 ignored: this machine has no coolant", "coolant ignored")

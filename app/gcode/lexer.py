@@ -117,6 +117,8 @@ def lex_line(text: str, line_no: int) -> LexedLine:
             return _fail(line_no, i, _SPECIAL[c.lower()])
         elif c.isascii() and c.isalpha():
             token, end = _read_number(text, i + 1)
+            if end < len(text) and text[end] in "#[":
+                return _fail(line_no, end, _SPECIAL[text[end]])
             if not _number_ok(token):
                 return _fail(line_no, i, f"word {c.upper()} has no number")
             words.append(Word(c.upper(), float(token), i + 1))

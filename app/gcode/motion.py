@@ -102,10 +102,14 @@ def _arc(state: State, params, target, line_no: int, ops: OpBuffer, clockwise: b
     start = (state.pos[a1] / k, state.pos[a2] / k)
     end = (target[a1] / k, target[a2] / k)
     if "R" in params:
+        if abs(params["R"].value) * k > LIMIT_MM:
+            raise LineError(params["R"].column, "arc radius out of range")
         center, why = r_center(start, end, params["R"].value, clockwise, state.inch)
     else:
         o1 = params[_OFFSETS[a1]].value if _OFFSETS[a1] in params else 0.0
         o2 = params[_OFFSETS[a2]].value if _OFFSETS[a2] in params else 0.0
+        if max(abs(o1), abs(o2)) * k > LIMIT_MM:
+            raise LineError(_col(params, _OFFSETS), "arc centre out of range")
         center = (o1, o2) if state.ijk_absolute else (start[0] + o1, start[1] + o2)
         why = ijk_error(start, end, center, state.inch)
     if why:

@@ -14,6 +14,7 @@ import numpy as np
 
 from .arcs import RADIUS_TOL, spiral_refused
 from .bulk import Scan
+from .motion import LIMIT_MM
 from .ops import ARC_CW, OpBuffer
 from .state import State
 
@@ -65,6 +66,9 @@ def run(scan: Scan, a: int, b: int, state: State, ops: OpBuffer) -> tuple[State,
     bad, to_be = _bad_words(g, has_axis, has_ij, mode)
     arc = (to_be == 2) | (to_be == 3)
     bad |= arc & ~has_ij
+    with np.errstate(invalid="ignore"):
+        for c in "XYZIJ":
+            bad |= np.abs(v[c]) * state.scale > LIMIT_MM
     stop = _first(bad)
     k = state.scale
     moving = (has_axis[:stop] | arc[:stop]) & (to_be[:stop] >= 0)

@@ -1,0 +1,82 @@
+"""Toolpath arrays, lengths, time estimate, chords for drawing, bounds."""
+
+import math
+
+import numpy as np
+import pytest
+
+from app.gcode import ARC_CW, DWELL, FEED, RAPID, load_text
+from app.gcode.toolpath import move_times
+from app.profile import MachineProfile
+
+
+def toolpath(text):
+    program = load_text(text)
+    assert not program.errors, program.errors
+    return program.toolpath
+
+
+def test_arrays_and_fields():
+    tp = toolpath("G0 X10 Y0\nG1 X20 F300\nG2 X30 Y0 I5 J0\nG4 P2")
+    assert tp.kind.tolist() == [RAPID, FEED, ARC_CW, DWELL]
+    assert tp.start.shape == tp.end.shape == tp.center.shape == (4, 3)
+    assert tp.start[1].tolist() == [10, 0, 0] and tp.end[1].tolist() == [20, 0, 0]
+    assert tp.center[2].tolist() == [25, 0, 0] and np.isnan(tp.center[0]).all()
+    assert tp.source_line.tolist() == [1, 2, 3, 4]
+    assert tp.device_index.tolist() == [0, 1, 2, 3]
+    assert tp.length[:3] == pytest.approx([10, 10, 5 * math.pi])
+    assert tp.cut_length == pytest.approx(10 + 5 * math.pi)
+    assert tp.rapid_length == pytest.approx(10)
+    assert tp.time[3] == 2
+    assert tp.feed.tolist()[:3] == [600, 300, 300]
+
+
+def test_trapezoid_and_triangle_times():
+    accel = 50.0
+    v = 600 / 60  # 10 mm/s reaches full speed in 0.2 s over 1 mm
+    t_long, t_short = move_times([100.0, 1.0], [600.0, 600.0], accel)
+    assert t_long == pytest.approx(100 / v + v / accel)
+    assert t_short == pytest.approx(2 * math.sqrt(1.0 / accel))
+
+
+def test_estimated_time_includes_dwells_and_uses_profile():
+    tp = toolpath("G1 X60 F600\nG4 P3")
+    assert tp.estimated_time == pytest.approx(6.2 + 3)
+    profile = MachineProfile()
+    assert tp.feed[0] <= profile.motion.max_feed_mm_min
+
+
+def test_feeds_are_capped_at_the_profile_maximum():
+    tp = toolpath("G1 X10 F5000")
+    assert tp.feed[0] == 600
+
+
+def test_polyline_arcs_as_chords_within_tolerance():
+    tp = toolpath("G0 X10\nG3 I-10 F100")
+    for tol in (0.1, 0.01):
+        pts, index = tp.polyline(tol)
+        assert len(pts) == len(index)
+        arc_pts = pts[index == 1]
+        r = np.hypot(arc_pts[:, 0], arc_pts[:, 1])
+        assert np.allclose(r, 10)
+        mid = (arc_pts[1:] + arc_pts[:-1]) / 2  # chord midpoints sag at most tol
+        assert (10 - np.hypot(mid[:, 0], mid[:, 1])).max() <= tol + 1e-9
+    assert len(tp.polyline(0.01)[0]) > len(tp.polyline(0.1)[0])
+
+
+def test_bounds_include_arc_bulge():
+    low, high = toolpath("G0 X10\nG3 I-10 F100").bounds
+    assert low[:2] == pytest.approx([-10, -10], abs=0.01)
+    assert high[:2] == pytest.approx([10, 10], abs=0.01)
+
+
+def test_helix_length():
+    tp = toolpath("G0 X10\nG2 I-10 Z-5 F100")
+    assert tp.length[1] == pytest.approx(math.hypot(2 * math.pi * 10, 5))
+
+
+def test_empty_program():
+    tp = toolpath("(nothing)\n")
+    assert len(tp) == 0 and tp.estimated_time == 0 and tp.cut_length == 0
+    assert tp.bounds[0].tolist() == [0, 0, 0]
+    assert tp.polyline()[0].shape == (0, 3)
