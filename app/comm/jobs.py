@@ -26,6 +26,12 @@ S = SessionState
 STOP_ALARMS = frozenset({"LIMIT", "SOFT_LIMIT", "COVER_OPEN", "FOLLOWING_ERROR"})
 
 
+def _refused_seq(text: str, default: int) -> int:
+    """The seq an ``E -`` names as the first word of its text (the machine's), else ``default``."""
+    first = text.split(" ", 1)[0]
+    return int(first) if first.isdigit() else default
+
+
 def device_lines(program) -> list[str]:
     """The lines to stream: ``program.device_lines`` or the sequence itself."""
     return list(getattr(program, "device_lines", program))
@@ -224,9 +230,9 @@ class JobControl:
         reason = f"line refused: {frame.code} {frame.text}".strip()
         self._error("LINE_REFUSED", reason)
         if self.stream is not None and self.state in JOB_STATES | SENDING_STATES:
-            if self.stream.kind == "job" and self.status is not None:
-                line = self.stream.program_index(self.status.done + 1)
-                reason = f"line {line} refused: {frame.code} {frame.text}".strip()
+            seq = _refused_seq(frame.text, self.status.done + 1 if self.status else 0)
+            line = self.stream.program_index(seq)
+            reason = f"line {line} refused: {frame.code} {frame.text}".strip()
             self._finish_stream(False, reason)
 
     def _job_alarm(self, code: str, text: str) -> None:
@@ -241,8 +247,9 @@ class JobControl:
         stream = self.stream
         if stream is None:
             return
-        if self.state is S.INTERRUPTED and self.link.state.value == "CONNECTED" and "U" not in event.flags:
-            self._offer_recovery(event)
+        if self.state is S.INTERRUPTED:
+            if self.link.state.value == "CONNECTED":
+                self._offer_recovery(event)
             return
         if stream.kind != "job" or self.state not in SENDING_STATES:
             return
@@ -284,6 +291,12 @@ class JobControl:
 
     def _offer_recovery(self, event: StatusEvent) -> None:
         stream = self.stream
+        if event.boot == stream.boot and stream.kind == "job":
+            self._lines_finished(event.done, self.clock())
+            if self.stream is None:
+                return
+        if "U" in event.flags:
+            return
         if event.boot == stream.boot:
             start = stream.program_index(event.acc) + 1
             offer = ResumeOffer(True, start, stream.program_index(stream.done), stream.program_total, False,

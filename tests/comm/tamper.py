@@ -1,0 +1,74 @@
+"""Exact, test-side faults on one wire of the simulator: mutate chosen frames byte by byte.
+
+``Tamper(sim, "usb_down", match, mutate, times=1)`` rewrites the next ``times`` complete
+lines written on that wire for which ``match(line)`` is true, with ``mutate(line)``
+(bytes; empty drops the frame). The wire's own fault injection still applies after.
+"""
+
+from __future__ import annotations
+
+SPECIAL = frozenset(b"\n!\x18")
+WIRES = ("usb_down", "usb_up", "uart_down", "uart_up")
+
+
+def pieces(data: bytes) -> list[bytes]:
+    parts = data.split(b"\n")
+    out = [p + b"\n" for p in parts[:-1]]
+    return out + ([parts[-1]] if parts[-1] else [])
+
+
+class Tamper:
+    def __init__(self, sim, wire: str, match, mutate, times: int = 1) -> None:
+        self.faults = sim.wires[wire].faults
+        self.original = self.faults.process
+        self.match, self.mutate, self.times = match, mutate, times
+        self.hits = 0
+        self.faults.process = self.process
+
+    def process(self, data: bytes):
+        out = bytearray()
+        for piece in pieces(data):
+            if self.times and piece.endswith(b"\n") and self.match(piece):
+                self.times -= 1
+                self.hits += 1
+                piece = self.mutate(piece)
+            out += piece
+        return self.original(bytes(out)) if out else []
+
+    def remove(self) -> None:
+        self.faults.process = self.original
+
+
+def frame_of(kind: str, seq: int):
+    """Match the frame ``<kind> <seq> ...`` (``D 5 ...``, ``A 5 16``, ``F 5``)."""
+    head = f"{kind} {seq}".encode()
+    return lambda line: line.startswith(head + b" ") or line.startswith(head + b"*")
+
+
+def flip(position: int, bit: int = 0):
+    """Flip one bit of the byte at ``position``; never into a newline or real-time byte."""
+
+    def mutate(line: bytes) -> bytes:
+        buf = bytearray(line)
+        for step in range(8):
+            value = buf[position] ^ (1 << ((bit + step) % 7))
+            if value not in SPECIAL:
+                buf[position] = value
+                break
+        return bytes(buf)
+
+    return mutate
+
+
+def drop_byte(position: int):
+    return lambda line: line[:position] + line[position + 1 :]
+
+
+def swap_adjacent_digits(line: bytes) -> bytes:
+    """Swap the first two adjacent, different digits of the body."""
+    body = line[: line.rindex(b"*")]
+    for i in range(len(body) - 1):
+        a, b = body[i : i + 1], body[i + 1 : i + 2]
+        if a.isdigit() and b.isdigit() and a != b:
+            return line[:i] + b + a + line[i + 2 :]
+    raise AssertionError(f"no adjacent digits to swap in {line!r}")
