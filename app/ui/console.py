@@ -1,0 +1,108 @@
+"""Console dock: frame traffic (TX/RX) with a filter, pause scrolling and the resend
+counters, and an MDI line to send one G-code line or a command.
+
+Frames arrive by the hundred per second; ``add_frame`` only queues them and a 10 Hz
+timer appends what passes the filter in one go (the view keeps the last lines only).
+"""
+
+from __future__ import annotations
+
+from collections import deque
+
+from PySide6.QtCore import QTimer, Signal
+from PySide6.QtGui import QFontDatabase
+from PySide6.QtWidgets import (
+    QCheckBox,
+    QHBoxLayout,
+    QLabel,
+    QLineEdit,
+    QPlainTextEdit,
+    QPushButton,
+    QVBoxLayout,
+    QWidget,
+)
+
+MAX_LINES = 4000
+NOISY_KINDS = frozenset("SAFD")  # status and stream frames, hidden unless asked for
+
+
+class ConsoleView(QWidget):
+    mdi_submitted = Signal(str)
+
+    def __init__(self, parent=None):
+        super().__init__(parent)
+        self._pending: deque[str] = deque(maxlen=MAX_LINES)
+        self.log = QPlainTextEdit(readOnly=True)
+        self.log.setMaximumBlockCount(MAX_LINES)
+        self.log.setFont(QFontDatabase.systemFont(QFontDatabase.SystemFont.FixedFont))
+        self.filter = QLineEdit(placeholderText="filter (text)")
+        self.show_tx = QCheckBox("TX", checked=True)
+        self.show_rx = QCheckBox("RX", checked=True)
+        self.show_stream = QCheckBox("stream/status frames", checked=False)
+        self.pause = QCheckBox("pause scrolling")
+        self.counters = QLabel("resends 0 (0.0 %)")
+        hint = "MDI: a G-code line (G0 X10) or a command (HOME, SD LIST, GET KP_X)"
+        self.mdi = QLineEdit(placeholderText=hint)
+        self.mdi.returnPressed.connect(self._submit)
+        send = QPushButton("Send")
+        send.clicked.connect(self._submit)
+        clear = QPushButton("Clear")
+        clear.clicked.connect(self.log.clear)
+        top = QHBoxLayout()
+        for widget in (self.filter, self.show_tx, self.show_rx, self.show_stream):
+            top.addWidget(widget)
+        for widget in (self.pause, self.counters, clear):
+            top.addWidget(widget)
+        bottom = QHBoxLayout()
+        bottom.addWidget(self.mdi, 1)
+        bottom.addWidget(send)
+        layout = QVBoxLayout(self)
+        layout.setContentsMargins(4, 4, 4, 4)
+        layout.addLayout(top)
+        layout.addWidget(self.log, 1)
+        layout.addLayout(bottom)
+        self.mdi_history: list[str] = []
+        self.timer = QTimer(self, interval=100, timeout=self.flush)
+        self.timer.start()
+
+    def add_frame(self, direction: str, kind: str, text: str, ok: bool = True) -> None:
+        if not self._passes(direction, kind, text):
+            return
+        mark = "→" if direction == "tx" else "←"
+        self._pending.append(f"{mark} {text}" + ("" if ok else "   [dropped]"))
+
+    def add_log(self, level: str, text: str, source: str = "host") -> None:
+        needle = self.filter.text().strip().lower()
+        if needle and needle not in text.lower():
+            return
+        self._pending.append(f"# {source} {level}: {text}")
+
+    def _passes(self, direction: str, kind: str, text: str) -> bool:
+        if (direction == "tx" and not self.show_tx.isChecked()) or (
+            direction == "rx" and not self.show_rx.isChecked()
+        ):
+            return False
+        if kind in NOISY_KINDS and not self.show_stream.isChecked():
+            return False
+        needle = self.filter.text().strip().lower()
+        return not needle or needle in text.lower()
+
+    def flush(self) -> None:
+        if not self._pending or self.pause.isChecked():
+            return
+        text = "\n".join(self._pending)
+        self._pending.clear()
+        self.log.appendPlainText(text)
+        bar = self.log.verticalScrollBar()
+        bar.setValue(bar.maximum())
+
+    def set_resends(self, resends: int, rate: float, warning: bool = False) -> None:
+        colour = "#e05050" if warning else "palette(window-text)"
+        self.counters.setText(f"<span style='color:{colour}'>resends {resends} ({rate * 100:.1f} %)</span>")
+
+    def _submit(self) -> None:
+        text = self.mdi.text().strip()
+        if text:
+            self.mdi_history.append(text)
+            self.mdi_submitted.emit(text)
+            self.mdi.clear()

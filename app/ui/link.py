@@ -1,0 +1,140 @@
+"""The GUI's end of the link: the serial worker on its thread, and the built-in
+simulator kept alive across disconnects.
+
+A real machine does not vanish when its USB cable is pulled; so the simulator behind
+``sim://`` is created once (per speed and SD folder) and a disconnect only closes its
+host port. Reconnecting reaches the same machine, which is what resume needs; the
+machine panel dock keeps showing it meanwhile. ``MachineLink.shutdown()`` stops both.
+"""
+
+from __future__ import annotations
+
+import threading
+import time
+
+from PySide6.QtCore import QObject
+
+from app.comm.transport import is_sim, open_transport, sim_options
+from app.comm.worker import SerialController, SerialWorker
+
+
+class SimPortTransport:
+    """The simulator's host port as a transport whose ``close()`` leaves the machine running."""
+
+    def __init__(self, sim):
+        self.sim = sim
+        self.port = sim.host_port
+
+    @property
+    def in_waiting(self) -> int:
+        return self.port.in_waiting
+
+    @property
+    def timeout(self):
+        return self.port.timeout
+
+    def read(self, size: int = 1) -> bytes:
+        return self.port.read(size)
+
+    def write(self, data: bytes) -> int:
+        return self.port.write(data)
+
+    def reset_input_buffer(self) -> None:
+        self.port.reset_input_buffer()
+
+    def close(self) -> None:
+        self.port.close()
+
+
+class LinkClock:
+    """The session's clock: wall seconds for a real port, the simulator's own clock for
+    ``sim://``, so heartbeats and timeouts keep their meaning when the simulated machine
+    runs faster than real time (or falls behind it). Continuous when the source changes."""
+
+    def __init__(self):
+        self._source = time.monotonic
+        self._base = 0.0
+        self._t0 = time.monotonic()
+
+    def __call__(self) -> float:
+        return self._base + (self._source() - self._t0)
+
+    def follow(self, source) -> None:
+        """Continue from now on with ``source`` (a callable giving seconds)."""
+        self._base, self._t0, self._source = self(), source(), source
+
+
+def _sim_seconds(sim):
+    return lambda: sim.clock.now_ms / 1000.0
+
+
+class SimOpener:
+    """``open_transport`` for the worker, reusing one running simulator for ``sim://``."""
+
+    def __init__(self, profile=None, clock: LinkClock | None = None):
+        self.profile = profile
+        self.clock = clock or LinkClock()
+        self.sim = None
+        self._key = None
+        self._lock = threading.Lock()
+
+    def __call__(self, url: str):
+        if not is_sim(url):
+            self.clock.follow(time.monotonic)
+            return open_transport(url)
+        options = sim_options(url)
+        key = (options.get("speed", "1"), options.get("sd"))
+        with self._lock:
+            if self.sim is None or key != self._key:
+                self._replace(key, options)
+            self.clock.follow(_sim_seconds(self.sim))
+            port = self.sim.host_port
+            if not port.is_open:
+                port.open()
+            return SimPortTransport(self.sim)
+
+    def _replace(self, key, options) -> None:
+        from backend_sim import Simulator
+
+        self.stop()
+        try:
+            speed = float(options.get("speed", "1"))
+        except ValueError:
+            raise ValueError(f"sim:// speed {options['speed']!r} is not a number") from None
+        sim = Simulator(profile=self.profile, sd_dir=options.get("sd"))
+        sim.start(speed=speed)
+        self.sim, self._key = sim, key
+
+    def stop(self) -> None:
+        sim, self.sim = self.sim, None
+        if sim is not None:
+            sim.stop()
+
+
+class MachineLink(QObject):
+    """Owns the ``SerialController`` (worker thread) and the simulator opener."""
+
+    def __init__(self, parent=None, profile=None):
+        super().__init__(parent)
+        self.clock = LinkClock()
+        self.opener = SimOpener(profile, self.clock)
+        self.controller = SerialController(self, SerialWorker(clock=self.clock, opener=self.opener))
+        self.worker = self.controller.worker
+        self.url = ""
+        self.controller.start()
+
+    @property
+    def sim(self):
+        """The built-in simulator, once ``sim://`` has been opened (else None)."""
+        return self.opener.sim
+
+    def call(self, name: str, *args) -> None:
+        self.controller.call(name, *args)
+
+    def connect_to(self, url: str) -> None:
+        self.url = url
+        self.controller.call("connect_to", url)
+
+    def shutdown(self) -> None:
+        self.controller.shutdown()
+        self.opener.stop()

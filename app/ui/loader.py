@@ -1,0 +1,102 @@
+"""Loads a G-code file off the GUI thread: parse, normalise, toolpath, and the
+preview's drawing model, then hands the result back with a queued signal.
+
+Anything that is not G-code ends in ``failed`` with a sentence for the operator: a
+missing or unreadable file, a binary file, or text in which nothing could be run.
+"""
+
+from __future__ import annotations
+
+import threading
+import time
+from dataclasses import dataclass
+from pathlib import Path
+
+from PySide6.QtCore import QObject, Signal
+
+from app.ui.preview.model import PreviewModel
+
+SNIFF_BYTES = 4096
+
+
+@dataclass(frozen=True)
+class LoadedProgram:
+    path: Path
+    program: object
+    preview: PreviewModel
+    load_s: float  # parse + normalise + toolpath
+    model_s: float  # preview model
+
+
+class ProgramLoader(QObject):
+    loaded = Signal(object)  # LoadedProgram
+    failed = Signal(str, str)  # path, message
+
+    def __init__(self, parent=None, tolerance: float = 0.01):
+        super().__init__(parent)
+        self.tolerance = tolerance
+        self.busy = False
+
+    def load(self, path: str | Path, wait: bool = False) -> None:
+        self.busy = True
+        thread = threading.Thread(target=self._run, args=(Path(path),), name="gcode-load", daemon=True)
+        thread.start()
+        if wait:
+            thread.join()
+
+    def _run(self, path: Path) -> None:
+        try:
+            result = load_program(path, self.tolerance)
+        except LoadError as exc:
+            self.busy = False
+            self.failed.emit(str(path), str(exc))
+            return
+        self.busy = False
+        self.loaded.emit(result)
+
+
+class LoadError(Exception):
+    """A file that cannot be shown as a program; the message says why."""
+
+
+def load_program(path: Path, tolerance: float = 0.01) -> LoadedProgram:
+    _sniff(path)
+    from app.gcode import load
+
+    started = time.perf_counter()
+    try:
+        program = load(path)
+    except (OSError, UnicodeError, ValueError) as exc:
+        raise LoadError(f"{path.name} could not be read as G-code: {exc}") from None
+    loaded = time.perf_counter()
+    _check_runnable(path, program)
+    preview = PreviewModel(program.toolpath, tolerance)
+    return LoadedProgram(path, program, preview, loaded - started, time.perf_counter() - loaded)
+
+
+def _sniff(path: Path) -> None:
+    try:
+        head = path.open("rb").read(SNIFF_BYTES)
+    except FileNotFoundError:
+        raise LoadError(f"{path} does not exist (moved or deleted?).") from None
+    except OSError as exc:
+        raise LoadError(f"{path} cannot be opened: {exc.strerror or exc}.") from None
+    if b"\0" in head or _mostly_binary(head):
+        raise LoadError(f"{path.name} is not a G-code file (it holds binary data, such as an image).")
+
+
+def _mostly_binary(head: bytes) -> bool:
+    if not head:
+        return False
+    odd = sum(1 for b in head if b < 9 or 13 < b < 32 or b == 127)
+    return odd > len(head) // 20
+
+
+def _check_runnable(path: Path, program) -> None:
+    errors = list(program.errors)
+    if len(program.toolpath) == 0 and errors:
+        first = errors[0]
+        raise LoadError(
+            f"{path.name} does not look like G-code: nothing in it can be run "
+            f"({len(errors)} errors; first, line {first.line}: {first.message})."
+        )

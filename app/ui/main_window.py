@@ -1,0 +1,167 @@
+"""The operator's main window: the preview in the middle, program on the left,
+machine controls / SD card / machine panel on the right, live plot and console below,
+connection bar on top, progress in the status bar. Window state is restored on start.
+
+Wiring lives elsewhere: ``menus.py`` (actions and shortcuts), ``session_binder.py``
+(worker events -> widgets), ``operator.py`` (operator requests -> worker calls).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from PySide6.QtCore import QSettings, QStandardPaths, Qt
+from PySide6.QtWidgets import QDockWidget, QMainWindow, QTabWidget, QWidget
+
+from app.ui.connection_bar import ConnectionBar
+from app.ui.console import ConsoleView
+from app.ui.controls import MachineControls
+from app.ui.keep_awake import KeepAwake
+from app.ui.link import MachineLink
+from app.ui.link_alert import LinkAlert
+from app.ui.loader import ProgramLoader
+from app.ui.machine_panel import MachinePanelView
+from app.ui.notifier import Notifier
+from app.ui.plot.diagnostics import DiagnosticsView
+from app.ui.plot.history import PositionHistory
+from app.ui.plot.position_plot import PositionPlot
+from app.ui.preview.widget import PreviewWidget
+from app.ui.program.program_panel import ProgramPanel
+from app.ui.sd_panel import SdPanel
+from app.ui.settings.store import FILE_NAME, load_settings
+from app.ui.status_bar import JobStatusBar
+
+STATE_VERSION = 1
+
+
+def default_config_dir() -> Path:
+    return Path(QStandardPaths.writableLocation(QStandardPaths.StandardLocation.AppConfigLocation))
+
+
+class MainWindow(QMainWindow):
+    def __init__(self, config_dir: Path | None = None, notifier: Notifier | None = None, port_lister=None,
+                 restore: bool = True):
+        super().__init__()
+        self.setWindowTitle("CNC mill controller")
+        self.setAcceptDrops(True)
+        self.config_dir = Path(config_dir) if config_dir else default_config_dir()
+        self.qsettings = QSettings(str(self.config_dir / "window.ini"), QSettings.Format.IniFormat)
+        self.notifier = notifier or Notifier(self)
+        loaded = load_settings(self.config_dir / FILE_NAME)
+        self.profile = loaded.profile
+        self.loaded = None  # LoadedProgram of the open file
+        self.history = PositionHistory()
+        self.keep_awake = KeepAwake()
+        self.link = MachineLink(self, self.profile)
+        self.loader = ProgramLoader(self, self.profile.motion.arc_tolerance_mm)
+        self._build_widgets(port_lister)
+        self._build_docks()
+        from app.ui.menus import build_menus
+        from app.ui.operator_actions import OperatorActions
+        from app.ui.session_binder import SessionBinder
+
+        self.operator = OperatorActions(self)
+        self.binder = SessionBinder(self)
+        self.actions_by_name = build_menus(self)
+        if restore:
+            self.restore_state()
+        if loaded.problem:
+            self.notifier.warning("Settings", loaded.problem)
+
+    def _build_widgets(self, port_lister) -> None:
+        travel = (self.profile.travel.x_max, self.profile.travel.y_max)
+        offset = self.profile.travel.work_offset()[:2]
+        self.preview = PreviewWidget(travel=travel, offset=offset)
+        self.setCentralWidget(self.preview)
+        kwargs = {"lister": port_lister} if port_lister else {}
+        self.connection = ConnectionBar(**kwargs)
+        bar = self.addToolBar("Connection")
+        bar.setObjectName("connection_toolbar")
+        bar.addWidget(self.connection)
+        self.program_panel = ProgramPanel()
+        self.controls = MachineControls()
+        self.sd_panel = SdPanel()
+        self.machine_panel = MachinePanelView()
+        self.position_plot = PositionPlot(self.history)
+        self.diagnostics = DiagnosticsView(self.history)
+        self.plots = QTabWidget()
+        self.plots.addTab(self.position_plot, "Position")
+        self.plots.addTab(self.diagnostics, "Diagnostics (commanded vs measured)")
+        self.console = ConsoleView()
+        self.status = JobStatusBar()
+        self.setStatusBar(self.status)
+        self.alert = LinkAlert(self)
+
+    def _dock(self, title: str, name: str, widget: QWidget, area) -> QDockWidget:
+        dock = QDockWidget(title, self)
+        dock.setObjectName(name)
+        dock.setWidget(widget)
+        self.addDockWidget(area, dock)
+        return dock
+
+    def _build_docks(self) -> None:
+        left, right, bottom = (Qt.DockWidgetArea.LeftDockWidgetArea, Qt.DockWidgetArea.RightDockWidgetArea,
+                               Qt.DockWidgetArea.BottomDockWidgetArea)
+        self.docks = {
+            "program": self._dock("Program", "program_dock", self.program_panel, left),
+            "controls": self._dock("Machine controls", "controls_dock", self.controls, right),
+            "sd": self._dock("SD card", "sd_dock", self.sd_panel, right),
+            "panel": self._dock("Machine panel", "panel_dock", self.machine_panel, right),
+            "plot": self._dock("Live position", "plot_dock", self.plots, bottom),
+            "console": self._dock("Console", "console_dock", self.console, bottom),
+        }
+        self.tabifyDockWidget(self.docks["sd"], self.docks["panel"])
+        self.tabifyDockWidget(self.docks["plot"], self.docks["console"])
+        self.docks["sd"].raise_()
+        self.docks["plot"].raise_()
+        self.resize(1400, 900)
+        side = [self.docks["program"], self.docks["controls"]]
+        self.resizeDocks(side, [330, 360], Qt.Orientation.Horizontal)
+        self.resizeDocks([self.docks["plot"]], [230], Qt.Orientation.Vertical)
+        self._default_state = self.saveState(STATE_VERSION)
+
+    # -- files ------------------------------------------------------------------------
+
+    def open_file(self, path: str | Path, wait: bool = False) -> None:
+        self.status.showMessage(f"Loading {Path(path).name}…")
+        self.loader.load(path, wait=wait)
+
+    def dragEnterEvent(self, event) -> None:  # noqa: N802 (Qt override)
+        if event.mimeData().hasUrls():
+            event.acceptProposedAction()
+
+    def dropEvent(self, event) -> None:  # noqa: N802 (Qt override)
+        urls = [u for u in event.mimeData().urls() if u.isLocalFile()]
+        if urls:
+            self.open_file(urls[0].toLocalFile())
+            event.acceptProposedAction()
+
+    # -- window state -----------------------------------------------------------------
+
+    def restore_state(self) -> None:
+        geometry = self.qsettings.value("geometry")
+        state = self.qsettings.value("state")
+        if geometry is not None:
+            self.restoreGeometry(geometry)
+        if state is not None:
+            self.restoreState(state, STATE_VERSION)
+
+    def save_state(self) -> None:
+        self.qsettings.setValue("geometry", self.saveGeometry())
+        self.qsettings.setValue("state", self.saveState(STATE_VERSION))
+        self.qsettings.sync()
+
+    def reset_layout(self) -> None:
+        self.restoreState(self._default_state, STATE_VERSION)
+        for dock in self.docks.values():
+            dock.show()
+
+    def closeEvent(self, event) -> None:  # noqa: N802 (Qt override)
+        self.save_state()
+        self.shutdown()
+        super().closeEvent(event)
+
+    def shutdown(self) -> None:
+        self.keep_awake.stop()
+        self.machine_panel.set_panel(None)
+        self.link.shutdown()

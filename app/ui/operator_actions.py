@@ -1,0 +1,197 @@
+"""What the operator asks for, turned into worker calls (every call returns at once).
+
+Checks that need no machine are made here so the message is immediate and clear: no
+program open, a program with errors, a bad SD name, not homed.
+"""
+
+from __future__ import annotations
+
+from PySide6.QtCore import QObject
+
+from app.ui.recent import add_recent
+from app.ui.settings.dialog import SettingsDialog
+from app.ui.settings.store import FILE_NAME, machine_settings, save_settings
+
+VERBS = frozenset({"PING", "STATUS", "HOME", "PAUSE", "RESUME", "STOP", "RESET", "JOG", "SPINDLE",
+                   "SET", "GET", "ZERO", "SD"})
+
+
+class OperatorActions(QObject):
+    def __init__(self, window):
+        super().__init__(window)
+        self.w = window
+        self.link = window.link
+        self._connect_widgets()
+
+    def _connect_widgets(self) -> None:
+        w, c = self.w, self.w.controls
+        w.connection.connect_requested.connect(self.connect_to)
+        w.connection.disconnect_requested.connect(self.disconnect)
+        c.home_requested.connect(self.home)
+        c.start_requested.connect(self.start)
+        c.pause_requested.connect(self.pause)
+        c.resume_requested.connect(self.resume)
+        c.stop_requested.connect(self.stop)
+        c.spindle_requested.connect(self.spindle)
+        c.zero_requested.connect(self.zero)
+        c.check_mode_toggled.connect(self.set_check_mode)
+        c.jog.jog_requested.connect(self.jog)
+        w.sd_panel.upload_requested.connect(self.upload)
+        w.sd_panel.list_requested.connect(lambda: self.link.call("list_sd"))
+        w.sd_panel.delete_requested.connect(lambda name: self.link.call("delete_sd", name))
+        w.sd_panel.run_requested.connect(self.run_from_sd)
+        w.console.mdi_submitted.connect(self.mdi)
+        w.alert.reconnect_requested.connect(self.reconnect)
+        w.alert.resume_requested.connect(self.resume_after_reconnect)
+        w.alert.restart_requested.connect(self.restart_after_reset)
+        w.alert.abandon_requested.connect(self.abandon)
+        w.program_panel.line_activated.connect(self.show_source_line)
+
+    # -- connection -----------------------------------------------------------------
+
+    def connect_to(self, url: str, baud: int = 115200) -> None:
+        self.w.connection.set_link("CONNECTING")
+        self.link.connect_to(url)
+
+    def disconnect(self) -> None:
+        self.link.call("disconnect_from")
+
+    def reconnect(self) -> None:
+        self.w.alert.body.setText("Reconnecting…")
+        self.link.connect_to(self.link.url)
+
+    # -- job ------------------------------------------------------------------------
+
+    def home(self, mode: str = "NORMAL") -> None:
+        self.link.call("home", mode)
+
+    def start(self) -> None:
+        loaded = self.w.loaded
+        if loaded is None:
+            self.w.notifier.warning("No program", "Open a G-code file first (File ▸ Open…).")
+            return
+        errors = list(loaded.program.errors)
+        if errors:
+            self.w.notifier.error(
+                "Program has errors",
+                f"{loaded.path.name} has {len(errors)} errors (first: line {errors[0].line}: "
+                f"{errors[0].message}). Fix them before running.",
+            )
+            return
+        status = self.w.binder.status
+        if status is not None and not status.homed and not self.w.controls.check_mode.isChecked():
+            self.w.notifier.warning("Not homed", "Home the machine before starting a job (Machine ▸ Home).")
+            return
+        self.w.binder.begin_job(loaded)
+        self.link.call("start_job", loaded.program)
+
+    def pause(self) -> None:
+        self.link.call("pause")
+
+    def resume(self) -> None:
+        self.link.call("resume")
+
+    def stop(self) -> None:
+        self.link.call("stop")
+
+    def jog(self, axis: str, distance: float, feed: float) -> None:
+        self.link.call("jog", axis, float(distance), float(feed))
+
+    def spindle(self, rpm: int) -> None:
+        self.link.call("send_command", f"SPINDLE {rpm}" if rpm > 0 else "SPINDLE OFF")
+
+    def zero(self, axes: str) -> None:
+        self.link.call("send_command", f"ZERO {axes}")
+
+    def set_check_mode(self, on: bool) -> None:
+        self.link.call("send_command", f"SET CHECK {1 if on else 0}")
+
+    def resume_after_reconnect(self) -> None:
+        self.w.alert.hide()
+        self.link.call("resume_after_reconnect")
+
+    def restart_after_reset(self) -> None:
+        status = self.w.binder.status
+        if status is None or not status.homed:
+            self.w.alert.body.setText("Homing first; press “Home and restart” again once homed.")
+            self.home("NORMAL")
+            return
+        self.w.alert.hide()
+        self.link.call("confirm_restart")
+
+    def abandon(self) -> None:
+        self.w.alert.hide()
+        self.link.call("stop")
+
+    # -- SD card --------------------------------------------------------------------
+
+    def upload(self, name: str) -> None:
+        if self.w.loaded is None:
+            self.w.notifier.warning("No program", "Open a G-code file to save it to the card.")
+            return
+        self.w.sd_panel.set_progress(0, len(self.w.loaded.program.device_lines))
+        self.link.call("upload_to_sd", name, list(self.w.loaded.program.device_lines))
+
+    def run_from_sd(self, name: str) -> None:
+        self.link.call("run_from_sd", name)
+
+    # -- MDI ------------------------------------------------------------------------
+
+    def mdi(self, text: str) -> None:
+        words = text.split()
+        if words and words[0].upper() in VERBS:
+            self.link.call("send_command", text)
+            return
+        from app.gcode import load_text
+
+        program = load_text(text, name="MDI")
+        errors = list(program.errors)
+        if errors:
+            self.w.console.add_log("error", f"MDI: {errors[0].message}")
+            return
+        self.link.call("start_job", list(program.device_lines))
+
+    # -- files and settings ---------------------------------------------------------
+
+    def program_loaded(self, loaded) -> None:
+        self.w.loaded = loaded
+        self.w.program_panel.show_program(loaded.program, loaded.path.name)
+        self.w.preview.show_model(loaded.preview)
+        loaded.preview.prebuild()
+        self.w.sd_panel.suggest_for(loaded.path)
+        self.w.setWindowTitle(f"{loaded.path.name} — CNC mill controller")
+        add_recent(self.w.qsettings, loaded.path)
+        self.w.binder.refresh_enabled()
+        errors = list(loaded.program.errors)
+        self.w.status.showMessage(
+            f"Opened {loaded.path.name}: {len(loaded.program.source_lines):,} lines in "
+            f"{loaded.load_s + loaded.model_s:.2f} s", 10000
+        )
+        if errors:
+            self.w.notifier.warning(
+                "Program has errors",
+                f"{loaded.path.name}: {len(errors)} errors; see the Problems list. "
+                "It can be previewed but not run.",
+            )
+
+    def show_source_line(self, line: int) -> None:
+        if self.w.loaded is not None:
+            self.w.preview.highlight_move(self.w.loaded.preview.move_of_source_line(line))
+
+    def edit_settings(self) -> SettingsDialog:
+        dialog = SettingsDialog(self.w.profile, self.w)
+        dialog.accepted.connect(lambda: self.apply_settings(dialog.profile))
+        dialog.open()
+        return dialog
+
+    def apply_settings(self, profile) -> None:
+        self.w.profile = profile
+        try:
+            save_settings(self.w.config_dir / FILE_NAME, profile)
+        except OSError as exc:
+            self.w.notifier.error("Settings not saved", f"Cannot write the settings file: {exc}")
+        if self.w.binder.connected:
+            for name, value in machine_settings(profile):
+                self.link.call("send_command", f"SET {name} {value}")
+        self.w.status.showMessage("Settings saved" + (" and sent to the machine" if self.w.binder.connected
+                                                      else ""), 5000)

@@ -1,0 +1,56 @@
+"""Diagnostics for tuning the PID gains by eye: per axis, commanded vs measured
+position and the following error (commanded - measured), redrawn by a ~30 Hz timer."""
+
+from __future__ import annotations
+
+import pyqtgraph as pg
+from PySide6.QtCore import Qt, QTimer
+from PySide6.QtWidgets import QVBoxLayout, QWidget
+
+from app.ui.plot.history import COMMANDED, MEASURED, PositionHistory, T
+from app.ui.plot.position_plot import AXIS_COLOURS, REDRAW_MS
+
+
+class DiagnosticsView(QWidget):
+    def __init__(self, history: PositionHistory, parent=None, seconds: float = 10.0):
+        super().__init__(parent)
+        self.history = history
+        self.seconds = seconds
+        self._drawn_version = -1
+        self.layout_widget = pg.GraphicsLayoutWidget()
+        self.position_curves, self.error_curves, self.plots = [], [], []
+        for row, (axis, colour) in enumerate(zip("XYZ", AXIS_COLOURS, strict=True)):
+            self._add_axis(row, axis, colour)
+        layout = QVBoxLayout(self)
+        layout.setContentsMargins(0, 0, 0, 0)
+        layout.addWidget(self.layout_widget)
+        self.timer = QTimer(self, interval=REDRAW_MS, timeout=self.redraw)
+        self.timer.start()
+
+    def _add_axis(self, row: int, axis: str, colour: str) -> None:
+        pos = self.layout_widget.addPlot(row=row, col=0, title=f"{axis}: commanded / measured (mm)")
+        err = self.layout_widget.addPlot(row=row, col=1, title=f"{axis}: following error (mm)")
+        for plot in (pos, err):
+            plot.showGrid(x=True, y=True, alpha=0.2)
+            plot.setMenuEnabled(False)
+        err.setXLink(pos)
+        commanded = pos.plot(pen=pg.mkPen("#c0c0c0", width=1, style=Qt.PenStyle.DashLine))
+        measured = pos.plot(pen=pg.mkPen(colour, width=1.5))
+        self.position_curves.append((commanded, measured))
+        self.error_curves.append(err.plot(pen=pg.mkPen(colour, width=1.5)))
+        self.plots += [pos, err]
+
+    def redraw(self, force: bool = False) -> bool:
+        if not force and (self.history.version == self._drawn_version or not self.isVisible()):
+            return False
+        self._drawn_version = self.history.version
+        rows = self.history.window(self.seconds)
+        t = rows[:, T] - (rows[-1, T] if len(rows) else 0.0)
+        measured, commanded = rows[:, MEASURED].T, rows[:, COMMANDED].T
+        for axis in range(3):
+            cmd_curve, meas_curve = self.position_curves[axis]
+            cmd_curve.setData(t, commanded[axis])
+            meas_curve.setData(t, measured[axis])
+            self.error_curves[axis].setData(t, commanded[axis] - measured[axis])
+        self.plots[0].setXRange(-self.seconds, 0, padding=0)
+        return True

@@ -1,0 +1,30 @@
+"""Port discovery for the connection bar: the simulator first, then serial ports."""
+
+from __future__ import annotations
+
+SIMULATOR = ("sim://", "Built-in simulator (sim://)")
+
+
+def available_ports() -> list[tuple[str, str]]:
+    """(url, description) pairs; never raises (a vanished port is simply not listed)."""
+    try:
+        from app.comm.transport import list_ports
+
+        found = list(list_ports())
+    except Exception:  # noqa: BLE001 (discovery must never break the window)
+        found = [SIMULATOR]
+    ports = [_pair(entry) for entry in found]
+    if not any(url.startswith("sim://") for url, _ in ports):
+        ports.insert(0, SIMULATOR)
+    return ports
+
+
+def _pair(entry) -> tuple[str, str]:
+    if isinstance(entry, str):
+        return entry, entry
+    if isinstance(entry, tuple | list):
+        url = str(entry[0])
+        return url, (f"{url} — {entry[1]}" if len(entry) > 1 and entry[1] else url)
+    url = str(getattr(entry, "url", None) or getattr(entry, "device", entry))
+    text = getattr(entry, "description", "") or ""
+    return url, (f"{url} — {text}" if text and text != url else url)

@@ -1,0 +1,83 @@
+"""What the preview shows, apart from how it is drawn (no Qt).
+
+``PreviewModel(toolpath)`` splits the path into drawing groups (rapids, cuts above
+the stock, depth bands), each a ``LodSegments``; the finished part is the same
+segments cut at a move. ``frame(view, pixel)`` gives the arrays to draw for a view.
+"""
+
+from __future__ import annotations
+
+import threading
+
+import numpy as np
+
+from app.ui.preview.geometry import PathGeometry
+from app.ui.preview.lod import LodSegments, group_segments
+
+FRAME_BUDGET = 50_000  # segments drawn per frame, shared by the groups
+MIN_BUDGET = 4_096
+
+
+class PreviewModel:
+    def __init__(self, toolpath, tolerance: float = 0.01):
+        self.toolpath = toolpath
+        self.geometry = PathGeometry.from_toolpath(toolpath, tolerance)
+        g = self.geometry
+        self.groups = [
+            LodSegments(*group_segments(g.points, g.move, g.group, i)) for i in range(g.group_count)
+        ]
+        self.device_index = _device_index(toolpath)
+
+    @property
+    def empty(self) -> bool:
+        return len(self.geometry.points) == 0
+
+    def bounds(self) -> tuple[float, float, float, float]:
+        """xmin, xmax, ymin, ymax of every vertex (the extents of what is plotted)."""
+        if self.empty:
+            return (0.0, 0.0, 0.0, 0.0)
+        p = self.geometry.points
+        return (float(p[:, 0].min()), float(p[:, 0].max()), float(p[:, 1].min()), float(p[:, 1].max()))
+
+    def frame(self, view, pixel: float):
+        """A list of (x, y) point pairs per group for this view."""
+        return [group.visible(view, pixel, self._budget(group)) for group in self.groups]
+
+    def _budget(self, group) -> int:
+        total = max(sum(len(g) for g in self.groups), 1)
+        return max(MIN_BUDGET, FRAME_BUDGET * len(group) // total)
+
+    def done_frame(self, view, pixel: float, upto_move: int):
+        """(x, y) point pairs of every segment of moves up to ``upto_move``, all groups."""
+        if upto_move < 0:
+            return np.zeros(0), np.zeros(0)
+        parts = [g.visible(view, pixel, self._budget(g), upto=upto_move) for g in self.groups[1:]]
+        return np.concatenate([p[0] for p in parts]), np.concatenate([p[1] for p in parts])
+
+    def move_of_device_line(self, seq: int) -> int:
+        """The last move produced by device lines up to ``seq`` (-1 when none)."""
+        if self.device_index is None:
+            return seq
+        return int(np.searchsorted(self.device_index, seq, "right")) - 1
+
+    def move_of_source_line(self, line: int) -> int | None:
+        source = getattr(self.toolpath, "source_line", None)
+        if source is None or not len(source):
+            return None
+        hits = np.flatnonzero(np.asarray(source) == line)
+        return int(hits[0]) if len(hits) else None
+
+    def prebuild(self) -> threading.Thread:
+        """Build every level of detail on a background thread (numpy releases the GIL)."""
+        thread = threading.Thread(target=self._build_all, name="preview-lod", daemon=True)
+        thread.start()
+        return thread
+
+    def _build_all(self) -> None:
+        for polyline in self.groups:
+            polyline.build_all()
+
+
+def _device_index(toolpath):
+    index = getattr(toolpath, "device_index", None)
+    return None if index is None else np.asarray(index)

@@ -1,0 +1,184 @@
+"""The toolpath preview: XY view of the program drawn with pyqtgraph.
+
+Few large items: one curve per drawing group (rapids dashed, cuts coloured by depth),
+one for the finished part, the travel rectangle, the program's bounding box, the tool
+marker and a highlighted move. After every pan or zoom the curves are refilled from
+the model's level of detail for the new view (coalesced to one refill per event-loop
+turn), so the cost of a redraw stays bounded for a file of a million lines.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pyqtgraph as pg
+from PySide6.QtCore import Qt, QTimer, Signal
+from PySide6.QtGui import QColor, QPen
+from PySide6.QtWidgets import QVBoxLayout, QWidget
+
+from app.ui.preview.geometry import AIR_GROUP, DEPTH_BANDS, RAPID_GROUP
+from app.ui.preview.model import PreviewModel
+
+DONE_COLOUR = "#39d353"
+MARKER_COLOUR = "#ff4040"
+HIGHLIGHT_COLOUR = "#00e5ff"
+
+
+def _depth_colours() -> list[QColor]:
+    cmap = pg.colormap.get("plasma")
+    return [cmap.map(0.85 - 0.7 * i / max(DEPTH_BANDS - 1, 1), mode="qcolor") for i in range(DEPTH_BANDS)]
+
+
+class PreviewWidget(QWidget):
+    """``show_program(toolpath)``, ``fit()``, ``set_tool(x, y)``, ``set_done(seq)``."""
+
+    frame_drawn = Signal()
+
+    def __init__(self, parent=None, travel=(150.0, 150.0), offset=(0.0, 0.0)):
+        super().__init__(parent)
+        self.model: PreviewModel | None = None
+        self._done_move = -1
+        self.plot = pg.PlotWidget()
+        self.plot.setAspectLocked(True)
+        self.plot.showGrid(x=True, y=True, alpha=0.2)
+        self.plot.setLabel("bottom", "X", units="mm")
+        self.plot.setLabel("left", "Y", units="mm")
+        for side in ("left", "bottom"):
+            self.plot.getAxis(side).enableAutoSIPrefix(False)
+        self.plot.getPlotItem().setMenuEnabled(False)
+        self.view = self.plot.getViewBox()
+        self.view.disableAutoRange()
+        self.legend = self.plot.addLegend(offset=(10, 10), labelTextSize="8pt")
+        layout = QVBoxLayout(self)
+        layout.setContentsMargins(0, 0, 0, 0)
+        layout.addWidget(self.plot)
+        self._make_items()
+        self.set_travel(travel, offset)
+        self._refill = QTimer(self, singleShot=True, interval=0, timeout=self._refill_now)
+        self.view.sigRangeChanged.connect(self._refill.start)
+        self.view.setRange(xRange=(0, travel[0]), yRange=(0, travel[1]))
+
+    def _make_items(self) -> None:
+        self.travel_item = self._curve(pg.mkPen("#808080", width=1), z=-10)
+        self.bounds_item = self._curve(pg.mkPen("#c8a000", width=1, style=Qt.PenStyle.DashLine), z=-5)
+        rapid_pen = pg.mkPen("#9a9a9a", width=1, style=Qt.PenStyle.DashLine)
+        pens = [rapid_pen, pg.mkPen("#5fa8d3", width=1)]
+        pens += [pg.mkPen(colour, width=1) for colour in _depth_colours()]
+        self.group_items = [self._curve(pen, z=i) for i, pen in enumerate(pens)]
+        self.done_item = self._curve(pg.mkPen(DONE_COLOUR, width=2), z=20)
+        self.highlight_item = self._curve(pg.mkPen(HIGHLIGHT_COLOUR, width=3), z=30)
+        self.marker = pg.ScatterPlotItem(size=14, symbol="+", pen=pg.mkPen(MARKER_COLOUR, width=2))
+        self.marker.setZValue(40)
+        self.plot.addItem(self.marker)
+
+    def _curve(self, pen: QPen, z: int) -> pg.PlotCurveItem:
+        item = pg.PlotCurveItem(pen=pen, connect="pairs", skipFiniteCheck=True)
+        item.setZValue(z)
+        self.plot.addItem(item)
+        return item
+
+    # -- the program ----------------------------------------------------------------
+
+    def set_travel(self, travel, offset) -> None:
+        """The machine's travel rectangle, drawn in work coordinates (shifted by -offset)."""
+        x0, y0 = -offset[0], -offset[1]
+        x1, y1 = x0 + travel[0], y0 + travel[1]
+        self.travel_item.setData([x0, x1, x1, x0, x0], [y0, y0, y1, y1, y0])
+
+    def show_program(self, toolpath, tolerance: float = 0.01) -> None:
+        self.show_model(PreviewModel(toolpath, tolerance) if toolpath is not None else None)
+
+    def show_model(self, model: PreviewModel | None) -> None:
+        self.model = model
+        self._done_move = -1
+        self.highlight_item.setData([], [])
+        self._update_legend()
+        if model is None or model.empty:
+            self.bounds_item.setData([], [])
+            self._refill_now()
+            return
+        xmin, xmax, ymin, ymax = model.bounds()
+        self.bounds_item.setData([xmin, xmax, xmax, xmin, xmin], [ymin, ymin, ymax, ymax, ymin])
+        self.fit()
+        self._refill_now()
+
+    def _update_legend(self) -> None:
+        self.legend.clear()
+        if self.model is None or self.model.empty:
+            return
+        edges = self.model.geometry.depth_edges
+        self.legend.addItem(self.group_items[RAPID_GROUP], "rapid")
+        self.legend.addItem(self.group_items[AIR_GROUP], "feed Z ≥ 0")
+        for band in range(DEPTH_BANDS):
+            if len(self.model.groups[2 + band]):
+                label = f"Z {edges[band]:.2f} … {edges[band + 1]:.2f}"
+                self.legend.addItem(self.group_items[2 + band], label)
+
+    def fit(self) -> None:
+        """Zoom to the program (or to the travel when no program is open)."""
+        if self.model is None or self.model.empty:
+            self.view.autoRange(items=[self.travel_item])
+            return
+        xmin, xmax, ymin, ymax = self.model.bounds()
+        pad = max(xmax - xmin, ymax - ymin, 1.0) * 0.03
+        self.view.setRange(xRange=(xmin - pad, xmax + pad), yRange=(ymin - pad, ymax + pad), padding=0)
+
+    def zoom(self, factor: float) -> None:
+        self.view.scaleBy((1 / factor, 1 / factor))
+
+    # -- live -----------------------------------------------------------------------
+
+    def set_tool(self, x: float, y: float) -> None:
+        self.marker.setData([x], [y])
+
+    def set_done(self, seq: int) -> None:
+        """Recolour the path up to device line ``seq`` as finished."""
+        if self.model is None:
+            return
+        move = self.model.move_of_device_line(seq)
+        if move != self._done_move:
+            self._done_move = move
+            self._refill_done(*self._view_and_pixel())
+
+    def highlight_move(self, index: int | None) -> None:
+        """Draw one move thick and centre the view on it."""
+        if self.model is None or index is None:
+            self.highlight_item.setData([], [])
+            return
+        pts = self.model.geometry.move_vertices(index)
+        self.highlight_item.setData(pts[:, 0], pts[:, 1])
+        if len(pts):
+            cx, cy = pts[:, 0].mean(), pts[:, 1].mean()
+            half = max(np.ptp(pts[:, 0]), np.ptp(pts[:, 1]), 5.0)
+            self.view.setRange(xRange=(cx - half, cx + half), yRange=(cy - half, cy + half), padding=0)
+
+    # -- drawing --------------------------------------------------------------------
+
+    def _view_and_pixel(self):
+        (x0, x1), (y0, y1) = self.view.viewRange()
+        px, py = self.view.viewPixelSize()
+        return (x0, x1, y0, y1), max(px, py)
+
+    def _refill_now(self) -> None:
+        view, pixel = self._view_and_pixel()
+        if self.model is None or self.model.empty:
+            for item in [*self.group_items, self.done_item]:
+                item.setData([], [])
+        else:
+            for item, (x, y) in zip(self.group_items, self.model.frame(view, pixel), strict=True):
+                item.setData(x, y)
+            self._refill_done(view, pixel)
+        self.frame_drawn.emit()
+
+    def _refill_done(self, view, pixel) -> None:
+        x, y = self.model.done_frame(view, pixel, self._done_move)
+        self.done_item.setData(x, y)
+
+    def plotted_bounds(self) -> tuple[float, float, float, float]:
+        """Extents of the toolpath curves as drawn now (for tests)."""
+        xs, ys = [], []
+        for item in self.group_items:
+            x, y = item.getData()
+            if x is not None and len(x) and np.isfinite(x).any():
+                xs += [np.nanmin(x), np.nanmax(x)]
+                ys += [np.nanmin(y), np.nanmax(y)]
+        return (min(xs), max(xs), min(ys), max(ys)) if xs else (0.0, 0.0, 0.0, 0.0)

@@ -1,0 +1,109 @@
+"""The program panel: summary, source listing with line numbers (the executing line
+highlighted), and the problems list (double-click jumps to the line)."""
+
+from __future__ import annotations
+
+from PySide6.QtCore import Qt, Signal
+from PySide6.QtGui import QFontDatabase
+from PySide6.QtWidgets import (
+    QAbstractItemView,
+    QLabel,
+    QListView,
+    QTabWidget,
+    QTreeWidget,
+    QTreeWidgetItem,
+    QVBoxLayout,
+    QWidget,
+)
+
+from app.ui.program.source_model import SourceModel
+from app.ui.program.summary import describe
+
+MAX_PROBLEMS = 2000
+
+
+class ProgramPanel(QWidget):
+    line_activated = Signal(int)  # 1-based source line chosen by the operator
+
+    def __init__(self, parent=None):
+        super().__init__(parent)
+        self.summary = QLabel("No program open. File ▸ Open… or drop a G-code file on the window.")
+        self.summary.setWordWrap(True)
+        self.summary.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
+        self.source_model = SourceModel(self)
+        self.source = QListView()
+        self.source.setModel(self.source_model)
+        self.source.setUniformItemSizes(True)
+        self.source.setFont(QFontDatabase.systemFont(QFontDatabase.SystemFont.FixedFont))
+        self.source.setEditTriggers(QAbstractItemView.EditTrigger.NoEditTriggers)
+        self.source.doubleClicked.connect(lambda index: self.line_activated.emit(index.row() + 1))
+        self.problems = QTreeWidget()
+        self.problems.setHeaderLabels(["Line", "Col", "", "Message"])
+        self.problems.setRootIsDecorated(False)
+        self.problems.itemActivated.connect(self._problem_activated)
+        self.tabs = QTabWidget()
+        self.tabs.addTab(self.source, "Source")
+        self.tabs.addTab(self.problems, "Problems")
+        layout = QVBoxLayout(self)
+        layout.setContentsMargins(4, 4, 4, 4)
+        layout.addWidget(self.summary)
+        layout.addWidget(self.tabs, 1)
+
+    def show_program(self, program, name: str = "") -> None:
+        errors = list(_diagnostics(program, "errors"))
+        warnings = list(_diagnostics(program, "warnings"))
+        self.source_model.set_lines(program.source_lines, [d.line for d in errors])
+        self.summary.setText(describe(program, name))
+        self._fill_problems(errors, warnings)
+
+    def clear(self) -> None:
+        self.source_model.set_lines([])
+        self.problems.clear()
+        self.summary.setText("No program open.")
+
+    def _fill_problems(self, errors, warnings) -> None:
+        self.problems.clear()
+        rows = [("error", d) for d in errors] + [("warning", d) for d in warnings]
+        items = [_problem_item(kind, d) for kind, d in rows[:MAX_PROBLEMS]]
+        if len(rows) > MAX_PROBLEMS:
+            items.append(QTreeWidgetItem(["", "", "", f"… and {len(rows) - MAX_PROBLEMS} more"]))
+        self.problems.addTopLevelItems(items)
+        for column in range(3):
+            self.problems.resizeColumnToContents(column)
+        self.tabs.setTabText(1, f"Problems ({len(errors)} errors, {len(warnings)} warnings)")
+        if errors:
+            self.tabs.setCurrentWidget(self.problems)
+
+    def _problem_activated(self, item: QTreeWidgetItem) -> None:
+        line = item.data(0, Qt.ItemDataRole.UserRole)
+        if line:
+            self.go_to_line(line)
+            self.line_activated.emit(line)
+
+    def go_to_line(self, line: int) -> None:
+        index = self.source_model.index(line - 1)
+        self.source.setCurrentIndex(index)
+        self.source.scrollTo(index, QAbstractItemView.ScrollHint.PositionAtCenter)
+        self.tabs.setCurrentWidget(self.source)
+
+    def set_current_line(self, line: int, follow: bool = True) -> None:
+        """Highlight the executing 1-based source line and keep it in view."""
+        if line == self.source_model.current_line:
+            return
+        self.source_model.set_current_line(line)
+        if follow and line > 0:
+            index = self.source_model.index(line - 1)
+            self.source.scrollTo(index, QAbstractItemView.ScrollHint.PositionAtCenter)
+
+
+def _diagnostics(program, kind: str):
+    return getattr(program, kind, ()) or ()
+
+
+def _problem_item(kind: str, diagnostic) -> QTreeWidgetItem:
+    line = int(getattr(diagnostic, "line", 0) or 0)
+    column = getattr(diagnostic, "column", "") or ""
+    item = QTreeWidgetItem([str(line), str(column), kind, str(diagnostic.message)])
+    item.setData(0, Qt.ItemDataRole.UserRole, line)
+    item.setForeground(2, Qt.GlobalColor.red if kind == "error" else Qt.GlobalColor.darkYellow)
+    return item

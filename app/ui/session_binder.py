@@ -1,0 +1,232 @@
+"""Worker events -> widgets. Handlers only store what arrived; a ~30 Hz timer moves
+the latest status and progress to the labels, the preview's tool marker and finished
+part, and the source listing, so a flood of frames never floods the GUI."""
+
+from __future__ import annotations
+
+import time
+
+import numpy as np
+from PySide6.QtCore import QObject, QTimer
+
+from app.comm.listener import BUSY_STATES, JOB_STATES, RECOVERY_STATES, SessionState
+from app.ui.commanded import commanded_position
+from app.ui.progress import ProgressTracker, line_times
+
+UI_TICK_MS = 33
+BUSY = frozenset(s.value for s in BUSY_STATES)
+JOB = frozenset(s.value for s in JOB_STATES)
+RECOVERY = frozenset(s.value for s in RECOVERY_STATES)
+
+
+class SessionBinder(QObject):
+    def __init__(self, window):
+        super().__init__(window)
+        self.w = window
+        self.status = None  # latest StatusEvent
+        self.state = SessionState.DISCONNECTED.value
+        self.link_state = "DISCONNECTED"
+        self.connected = False
+        self.job = None  # LoadedProgram being run
+        self.tracker: ProgressTracker | None = None
+        self.job_done = -1  # last finished device line of the job
+        self.last_job_event = None
+        self.alert_at: float | None = None
+        self._dirty = False
+        self._connect(window.link.worker)
+        window.loader.loaded.connect(window.operator.program_loaded)
+        window.loader.failed.connect(self.on_load_failed)
+        self.timer = QTimer(self, interval=UI_TICK_MS, timeout=self.tick)
+        self.timer.start()
+
+    def _connect(self, worker) -> None:
+        worker.connected.connect(self.on_connected)
+        worker.connect_failed.connect(self.on_connect_failed)
+        worker.disconnected.connect(self.on_disconnected)
+        worker.state_changed.connect(self.on_state)
+        worker.status_changed.connect(self.on_status)
+        worker.progress_changed.connect(self.on_progress)
+        worker.link_changed.connect(self.on_link)
+        worker.alarm_raised.connect(self.on_alarm)
+        worker.log_added.connect(self.on_log)
+        worker.frame_logged.connect(self.on_frame)
+        worker.command_finished.connect(self.on_command)
+        worker.job_finished.connect(self.on_job_finished)
+        worker.error_occurred.connect(self.on_error)
+        worker.resume_offered.connect(self.on_resume_offer)
+
+    # Cross-thread signals must reach bound methods of this QObject (queued into the GUI
+    # thread); a lambda would run in the emitting thread.
+
+    def on_load_failed(self, path: str, text: str) -> None:
+        self.w.status.showMessage("Open failed", 5000)
+        self.w.notifier.error("Cannot open file", text)
+
+    def on_log(self, event) -> None:
+        self.w.console.add_log(event.level, event.text, event.source)
+
+    def on_frame(self, event) -> None:
+        self.w.console.add_frame(event.direction, event.kind, event.text, event.ok)
+
+    def on_error(self, event) -> None:
+        if event.code == "LINK_LOST":
+            self.w.console.add_log("error", event.text)
+            return
+        self.w.notifier.error("Link error", f"{event.code}: {event.text}")
+
+    # -- connection -----------------------------------------------------------------
+
+    def on_connected(self, url: str) -> None:
+        self.connected = True
+        self.w.connection.set_connected(True)
+        sim = self.w.link.sim
+        self.w.machine_panel.set_panel(sim.panel if sim is not None and url.startswith("sim") else None)
+        self.w.link.call("list_sd")
+        self.refresh_enabled()
+
+    def on_connect_failed(self, text: str) -> None:
+        self.w.connection.set_connected(False)
+        self.w.connection.set_link("DISCONNECTED")
+        self.w.notifier.error("Cannot connect", f"The port could not be opened: {text}")
+
+    def on_disconnected(self, reason: str) -> None:
+        self.connected = False
+        self.w.connection.set_connected(False)
+        if "operator" in reason or "shut down" in reason:
+            self.w.connection.set_link("DISCONNECTED")
+        else:
+            self.w.connection.set_link("LOST", reason)
+            self._alert("usb", reason)
+        self.refresh_enabled()
+
+    def on_link(self, event) -> None:
+        self.link_state = event.state
+        detail = f"{event.resend_rate * 100:.0f} % resends" if event.quality_warning else ""
+        self.w.connection.set_link(event.state, detail)
+        self.w.console.set_resends(0, event.resend_rate, event.quality_warning)
+        if event.state == "LOST":
+            self._alert("usb", event.reason)
+
+    def on_alarm(self, event) -> None:
+        self.w.console.add_log("warning", f"alarm {event.code}: {event.text}", "machine")
+        if event.code == "UART_LOST":
+            self._alert("uart", event.text)
+        elif event.code not in ("HOST_LOST", "BOOT"):
+            self.w.notifier.warning("Machine alarm", f"{event.code}: {event.text}")
+
+    def _alert(self, what: str, detail: str) -> None:
+        if self.alert_at is None or not self.w.alert.isVisible():
+            self.alert_at = time.monotonic()
+        from_sd = self.status is not None and "S" in self.status.flags
+        self.w.alert.show_lost(what, self.state in JOB or self.state in RECOVERY, from_sd, detail)
+
+    def on_resume_offer(self, offer) -> None:
+        self.w.alert.show_offer(offer.same_boot, offer.from_seq, offer.total)
+
+    # -- state, status, progress ----------------------------------------------------
+
+    def on_state(self, event) -> None:
+        self.state = event.new
+        self.w.connection.set_machine_state(self._machine_state(), self.status.flags if self.status else "")
+        if event.new in JOB:
+            self.w.keep_awake.start()
+        elif event.new not in RECOVERY:
+            self.w.keep_awake.stop()
+        if event.new == "READY" and self.w.alert.isVisible() and self.link_state == "CONNECTED":
+            self.w.alert.show_restored()
+        self.refresh_enabled()
+
+    def _machine_state(self) -> str:
+        return self.status.state if self.status else "—"
+
+    def on_status(self, event) -> None:
+        self.status = event
+        measured = event.position
+        commanded = measured
+        if self.job is not None and self.state in JOB:
+            commanded = commanded_position(self.job.preview, event.done + 1, measured)
+        self.history.append(event.time or time.monotonic(), measured, commanded)
+        self._dirty = True
+
+    @property
+    def history(self):
+        return self.w.history
+
+    def on_progress(self, event) -> None:
+        if event.kind == "upload":
+            self.w.sd_panel.set_progress(event.done + 1, event.total)
+        elif self.tracker is not None:
+            self.job_done = event.done
+            self.tracker.update(event.done + 1)
+            self._dirty = True
+        self.w.console.set_resends(event.resends, event.resend_rate, event.resend_rate > 0.1)
+
+    def begin_job(self, loaded) -> None:
+        """Called when the operator starts ``loaded``: fresh progress and plot."""
+        self.job = loaded
+        self.job_done = -1
+        program = loaded.program
+        cumulative = line_times(program.toolpath, len(program.device_lines))
+        self.tracker = ProgressTracker(cumulative, len(program.device_lines), time.monotonic())
+        self.w.preview.set_done(-1)
+        self._dirty = True
+
+    def on_job_finished(self, event) -> None:
+        self.last_job_event = event
+        if event.kind == "upload":
+            text = (f"saved as {event.name}: {event.total} lines, verified by the card's CRC32"
+                    if event.completed else f"not saved: {event.reason}")
+            self.w.sd_panel.upload_finished(event.completed, text)
+            self.w.link.call("list_sd")
+            return
+        if self.tracker is not None and event.completed:
+            self.tracker.update(event.total)
+            self.job_done = event.total - 1
+        self._dirty = True
+        self.tick()
+        if event.completed:
+            self.w.status.showMessage("Job finished", 15000)
+        else:
+            self.w.notifier.warning("Job ended", f"The job did not complete: {event.reason}")
+
+    def on_command(self, result) -> None:
+        if result.verb == "SD" and result.args[:1] == ("LIST",) and result.ok:
+            self.w.sd_panel.set_files(result.rows)
+        elif result.verb == "SD" and result.args[:1] == ("DEL",) and result.ok:
+            self.w.link.call("list_sd")
+        if not result.ok and result.code not in ("SUPERSEDED",) and result.verb != "PING":
+            text = f"{result.verb} {' '.join(result.args)}: {result.code} {result.info}".strip()
+            self.w.console.add_log("error", text, "machine")
+            self.w.status.showMessage(text, 10000)
+            if result.verb in ("HOME", "JOG", "SD", "ZERO", "SPINDLE", "SET"):
+                self.w.notifier.warning("Machine refused", text)
+
+    # -- the ~30 Hz refresh -----------------------------------------------------------
+
+    def tick(self) -> None:
+        if not self._dirty:
+            return
+        self._dirty = False
+        if self.status is not None:
+            s = self.status
+            self.w.status.set_position(s.x, s.y, s.z)
+            self.w.preview.set_tool(s.x, s.y)
+            self.w.connection.set_machine_state(s.state, s.flags)
+            self.w.controls.set_rpm(s.rpm)
+        if self.tracker is not None:
+            self.w.status.set_progress(self.tracker.view(time.monotonic()))
+            self.w.preview.set_done(self.job_done)
+            self._show_current_line()
+
+    def _show_current_line(self) -> None:
+        line_map = getattr(self.job.program, "line_map", None)
+        seq = min(self.job_done + 1, len(self.job.program.device_lines) - 1)
+        if line_map is not None and 0 <= seq < len(line_map):
+            self.w.program_panel.set_current_line(int(np.asarray(line_map)[seq]))
+
+    def refresh_enabled(self) -> None:
+        busy = self.state in BUSY
+        paused = self.state == "PAUSED" or (self.status is not None and self.status.state == "HOLD")
+        has_program = self.w.loaded is not None
+        self.w.controls.set_state(self.connected, busy, paused, has_program)
+        self.w.sd_panel.set_enabled(self.connected, has_program, busy)

@@ -1,0 +1,78 @@
+"""Persisted settings: the machine profile (with PID gains, feeds, heartbeat period,
+arc tolerance), as JSON in the per-user config folder. No Qt here: the caller passes
+the path (``QStandardPaths.AppConfigLocation`` in the GUI, ``tmp_path`` in tests).
+
+``load_settings(path)`` never raises: a missing file gives the defaults; a corrupt or
+out-of-range file gives the defaults and a message saying what was wrong.
+"""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass
+from pathlib import Path
+
+from app.profile import MachineProfile, ProfileError, with_overrides
+
+VERSION = 1
+FILE_NAME = "settings.json"
+
+
+@dataclass(frozen=True)
+class Loaded:
+    profile: MachineProfile
+    problem: str = ""  # why the defaults were used instead of the file ("" when fine)
+
+
+def load_settings(path: Path) -> Loaded:
+    try:
+        text = path.read_text(encoding="utf-8")
+    except FileNotFoundError:
+        return Loaded(MachineProfile())
+    except (OSError, UnicodeDecodeError) as exc:
+        return Loaded(MachineProfile(), f"{path}: cannot read ({exc}); using the defaults")
+    try:
+        data = _migrate(json.loads(text))
+        return Loaded(with_overrides(MachineProfile(), data["profile"], str(path)))
+    except (json.JSONDecodeError, ProfileError, KeyError, TypeError, ValueError) as exc:
+        return Loaded(MachineProfile(), f"The settings file is damaged ({exc}); using the defaults.")
+
+
+def _migrate(data) -> dict:
+    """Bring an older file to the current layout (version 0 was the bare profile)."""
+    if not isinstance(data, dict):
+        raise ValueError("not a JSON object")
+    version = data.get("version", 0)
+    if version == 0:
+        return {"version": VERSION, "profile": data}
+    if version != VERSION:
+        raise ValueError(f"unknown settings version {version!r}")
+    if not isinstance(data.get("profile"), dict):
+        raise ValueError("no 'profile' table")
+    return data
+
+
+def save_settings(path: Path, profile: MachineProfile) -> None:
+    path.parent.mkdir(parents=True, exist_ok=True)
+    tmp = path.with_suffix(".tmp")
+    tmp.write_text(json.dumps({"version": VERSION, "profile": profile.to_dict()}, indent=2), encoding="utf-8")
+    tmp.replace(path)
+
+
+# Profile fields the machine takes with ``SET <name> <value>`` (per axis for the PID).
+MACHINE_SETTINGS = {
+    ("pid", "kp"): "KP_{axis}",
+    ("pid", "ki"): "KI_{axis}",
+    ("pid", "kd"): "KD_{axis}",
+    ("pid", "following_error_mm"): "FERR",
+}
+
+
+def machine_settings(profile: MachineProfile) -> list[tuple[str, str]]:
+    """The ``SET`` commands (name, value) that push ``profile`` to the machine."""
+    out = []
+    for (section, key), pattern in MACHINE_SETTINGS.items():
+        value = getattr(getattr(profile, section), key)
+        names = [pattern.format(axis=a) for a in "XYZ"] if "{axis}" in pattern else [pattern]
+        out += [(name, f"{value:g}") for name in names]
+    return out
