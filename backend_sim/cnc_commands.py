@@ -1,0 +1,240 @@
+"""Commands the CNC MCU carries out (``C <id> <VERB> [args]``), one handler per verb.
+
+Each handler answers ``O <id> <VERB> [info]`` when the command has been carried out
+(at once, or when the motion controller reports it: ``HOME`` on Homed, ``PAUSE`` on
+Held, ``STOP`` on Stopped, ``JOG`` back in IDLE) or ``E <id> <code> <text>``:
+NOT_HOMED, SOFT_LIMIT, BUSY, COVER_OPEN, ALARM, BAD_ARGS, BAD_PARAM, BAD_SEQ,
+UNKNOWN_VERB. ``PING``/``STATUS`` answer with ``S``.
+"""
+
+from __future__ import annotations
+
+from app.comm.frame import Command, Error, Ok
+from backend_sim.motion import events as ev
+from backend_sim.motion.dialect import DialectError, DialectParser
+from backend_sim.motion.events import MotionError
+
+AXES = "XYZ"
+RUNNING = frozenset({"RUN", "HOLD", "HOMING", "JOG"})
+
+
+class Refused(Exception):
+    """A command refused with ``E <id> <code> <text>``."""
+
+    def __init__(self, code: str, text: str = "") -> None:
+        super().__init__(code, text)
+        self.code, self.text = code, text
+
+
+def dispatch(mcu, cmd: Command) -> None:
+    handler = HANDLERS.get(cmd.verb)
+    try:
+        if handler is None:
+            raise Refused("UNKNOWN_VERB", cmd.verb)
+        info = handler(mcu, cmd)
+    except Refused as exc:
+        mcu.send(Error(cmd.id, exc.code, exc.text))
+    except MotionError as exc:
+        mcu.send(Error(cmd.id, exc.code, exc.text))
+    except ValueError as exc:
+        mcu.send(Error(cmd.id, "BAD_ARGS", str(exc)))
+    else:
+        if info is not None:
+            mcu.send(Ok(cmd.id, cmd.verb, info))
+
+
+# ---------------------------------------------------------------------- checks
+
+
+def _not_running(mcu) -> None:
+    if mcu.job.open or mcu.mc.state in RUNNING:
+        raise Refused("BUSY", f"machine is {mcu.mc.state}" + (" with a job open" if mcu.job.open else ""))
+
+
+def _cover_closed(mcu) -> None:
+    if mcu.cover_open:
+        raise Refused("COVER_OPEN", "close the cover first")
+
+
+def _homed(mcu) -> None:
+    if not mcu.mc.homed:
+        raise Refused("NOT_HOMED", "home first")
+
+
+def _number(text: str, what: str) -> float:
+    try:
+        return float(text)
+    except ValueError:
+        raise Refused("BAD_ARGS", f"{what} {text!r} is not a number") from None
+
+
+def _args(cmd: Command, low: int, high: int) -> tuple[str, ...]:
+    if not low <= len(cmd.args) <= high:
+        raise Refused("BAD_ARGS", f"{cmd.verb} takes {low}..{high} arguments")
+    return cmd.args
+
+
+# ---------------------------------------------------------------------- handlers
+
+
+def _status(mcu, cmd: Command) -> None:
+    mcu.send_status()
+
+
+def _home(mcu, cmd: Command) -> None:
+    (mode,) = _args(cmd, 0, 1) or ("NORMAL",)
+    if mode not in ("NORMAL", "RECOVER"):
+        raise Refused("BAD_ARGS", f"HOME {mode}: NORMAL or RECOVER")
+    _cover_closed(mcu)
+    if mcu.mc.state != "ALARM":
+        _not_running(mcu)
+    mcu.job.close()
+    mcu.mc.home(mode)
+    mcu.await_event(cmd.id, "HOME", ev.Homed, mode)
+
+
+def _job(mcu, cmd: Command) -> str:
+    (count,) = _args(cmd, 1, 1)
+    if not count.isdigit() or int(count) < 1:
+        raise Refused("BAD_ARGS", f"JOB {count}: a line count >= 1")
+    _not_running(mcu)
+    _alarm_free(mcu)
+    if not mcu.check_mode:
+        _homed(mcu)
+        _cover_closed(mcu)
+    mcu.reset_parser()
+    mcu.job.start(int(count))
+    mcu.lines.clear()
+    return count
+
+
+def _alarm_free(mcu) -> None:
+    if mcu.mc.state == "ALARM":
+        raise Refused("ALARM", "clear the alarm: HOME RECOVER or RESET")
+
+
+def _pause(mcu, cmd: Command) -> str | None:
+    if mcu.mc.state not in ("RUN", "JOG", "HOMING"):
+        return mcu.mc.state
+    mcu.mc.feed_hold()
+    mcu.await_event(cmd.id, "PAUSE", ev.Held)
+    return None
+
+
+def _resume(mcu, cmd: Command) -> str:
+    if cmd.args:
+        return _resume_from(mcu, cmd)
+    _cover_closed(mcu)
+    _alarm_free(mcu)
+    mcu.mc.resume()
+    return ""
+
+
+def _resume_from(mcu, cmd: Command) -> str:
+    if len(cmd.args) != 2 or cmd.args[0] != "FROM" or not cmd.args[1].isdigit():
+        raise Refused("BAD_ARGS", "RESUME FROM <seq>")
+    seq = int(cmd.args[1])
+    if not mcu.job.open:
+        raise Refused("BAD_SEQ", "no job open (new boot or job ended): re-home and restart")
+    if seq != mcu.job.acc + 1:
+        raise Refused("BAD_SEQ", f"next line is {mcu.job.acc + 1}, not {seq}")
+    _cover_closed(mcu)
+    mcu.job.expected = seq
+    mcu.job.bad_stretch = False
+    mcu.mc.resume()
+    return f"FROM {seq}"
+
+
+def _stop(mcu, cmd: Command) -> None:
+    mcu.await_event(cmd.id, "STOP", ev.Stopped)
+    mcu.stop_job()
+
+
+def _reset(mcu, cmd: Command) -> None:
+    mcu.send(Ok(cmd.id, "RESET", ""))
+    mcu.reset()
+
+
+def _jog(mcu, cmd: Command) -> None:
+    axis, dist, feed = _args(cmd, 3, 3)
+    if axis not in AXES:
+        raise Refused("BAD_ARGS", f"axis {axis}: X, Y or Z")
+    distance, rate = _number(dist, "distance"), _number(feed, "feed")
+    if rate <= 0:
+        raise Refused("BAD_ARGS", "feed must be > 0")
+    _cover_closed(mcu)
+    if mcu.job.open:
+        raise Refused("BUSY", "a job is open")
+    _alarm_free(mcu)
+    mcu.mc.jog(axis, distance, rate)
+    mcu.await_event(cmd.id, "JOG", ev.StateChanged, f"{axis} {dist}")
+
+
+def _spindle(mcu, cmd: Command) -> str:
+    (value,) = _args(cmd, 1, 1)
+    line = "M05" if value == "OFF" else f"M03 S{_number(value, 'rpm'):g}"
+    if mcu.job.open:
+        raise Refused("BUSY", "a job is open: use M03/M05 in the program")
+    _alarm_free(mcu)
+    try:
+        move = DialectParser(mcu.offset, tuple(mcu.mc.commanded_mm)).parse(-1, line)
+    except DialectError as exc:
+        raise Refused(exc.code, exc.text) from None
+    mcu.mc.enqueue(move)
+    return value
+
+
+def _set(mcu, cmd: Command) -> str:
+    name, value = _args(cmd, 2, 2)
+    number = _number(value, name)
+    if name == "CHECK":
+        if mcu.job.open:
+            raise Refused("BUSY", "a job is open")
+        mcu.check_mode = bool(number)
+    else:
+        _param(mcu.mc.set_param, name, number)
+    return f"{name} {value}"
+
+
+def _get(mcu, cmd: Command) -> str:
+    (name,) = _args(cmd, 1, 1)
+    value = int(mcu.check_mode) if name == "CHECK" else _param(mcu.mc.get_param, name)
+    return f"{name} {value:g}"
+
+
+def _param(call, *args):
+    try:
+        return call(*args)
+    except ValueError as exc:
+        raise Refused("BAD_PARAM", str(exc)) from None
+
+
+def _zero(mcu, cmd: Command) -> str:
+    axes = "".join(cmd.args) or AXES
+    if not axes or any(a not in AXES for a in axes):
+        raise Refused("BAD_ARGS", f"ZERO {axes}: axes among X Y Z")
+    _homed(mcu)
+    _not_running(mcu)
+    position = mcu.mc.commanded_mm
+    mcu.offset = tuple(position[k] if AXES[k] in axes else mcu.offset[k] for k in range(3))
+    mcu.reset_parser()
+    return " ".join(f"{a}{o:.3f}" for a, o in zip(AXES, mcu.offset, strict=True))
+
+
+HANDLERS = {
+    "PING": _status,
+    "STATUS": _status,
+    "HOME": _home,
+    "JOB": _job,
+    "PAUSE": _pause,
+    "RESUME": _resume,
+    "STOP": _stop,
+    "RESET": _reset,
+    "JOG": _jog,
+    "SPINDLE": _spindle,
+    "SET": _set,
+    "GET": _get,
+    "ZERO": _zero,
+}
+
+__all__ = ["HANDLERS", "Refused", "dispatch"]

@@ -1,0 +1,293 @@
+"""The CNC MCU's protocol layer around the motion controller (docs/protocol.md).
+
+Contract: ``CncMcu`` receives the bytes the UART lands (``receive``), runs the motion
+controller for whole milliseconds (``run``), then turns what happened into frames on
+its UART TX wire (``service``). It owns the ``D`` stream of a job (expected seq, ``A``
+with free slots, duplicates re-acked, gaps and bad CRCs answered ``N expected`` once per
+bad stretch), reports ``F <seq>`` cumulatively as lines finish, and sends ``S`` on every
+state change, on ``PING``/``STATUS`` and at least every 50 ms while moving. A refused
+line (``E - <code> <seq> <text>``) flushes the queue and ends the job. Commands are in
+``cnc_commands``. Nothing here knows about the host or the SD card.
+"""
+
+from __future__ import annotations
+
+import random
+from collections.abc import Callable
+from dataclasses import dataclass
+
+from app.comm.frame import Ack as AckFrame
+from app.comm.frame import (
+    Alarm,
+    Command,
+    Data,
+    Deframer,
+    Dropped,
+    Error,
+    Finished,
+    Frame,
+    Log,
+    Nak,
+    Ok,
+    Realtime,
+    Status,
+    encode,
+)
+from app.profile import MachineProfile
+from backend_sim import cnc_commands
+from backend_sim.exec_log import ExecLog
+from backend_sim.job_stream import JobStream, Verdict
+from backend_sim.motion import events as ev
+from backend_sim.motion.dialect import DialectError, DialectParser, soft_limit_violation
+from backend_sim.wire import Wire
+
+STATUS_PERIOD_MS = 50
+MOTION_CHUNK_MS = 5
+
+
+@dataclass
+class Pending:
+    """A command whose ``O`` waits for an event (``HOME`` -> Homed, ``PAUSE`` -> Held ...)."""
+
+    id: int
+    verb: str
+    awaits: type
+    info: str = ""
+
+
+class CncMcu:
+    """The CNC MCU: D stream, commands, motion controller, status reports."""
+
+    def __init__(self, profile: MachineProfile, clock, tx: Wire, motion_factory: Callable,
+                 exec_log: ExecLog, rng: random.Random) -> None:
+        self.profile, self.clock, self.tx = profile, clock, tx
+        self.motion_factory = motion_factory
+        self.exec_log = exec_log
+        self.rng = rng
+        self.offset = profile.travel.work_offset()
+        self.cover_open = False
+        self.boot()
+
+    # ------------------------------------------------------------------ life cycle
+
+    def boot(self) -> None:
+        """Power-up or reset: new boot id, position unknown, queue and job gone."""
+        self.boot_id = f"{self.rng.getrandbits(32):08X}"
+        if getattr(self, "mc", None) is None:
+            self.mc = self.motion_factory()
+        else:
+            self.mc.reset()
+        self.mc.events()
+        self.mc.cover_open = self.cover_open
+        self.rx = Deframer(realtime=True)
+        self.job = JobStream()
+        self.parser = DialectParser(self.offset, tuple(self.mc.commanded_mm))
+        self.check_mode = False
+        self.pending: list[Pending] = []
+        self.lines: dict[int, str] = {}
+        self.state = self.mc.state
+        self.next_status = 0
+        self.send(Alarm("BOOT", self.boot_id))
+        self.send_status()
+
+    def reset(self) -> None:
+        """The RESET button or command: same machine, new boot, position unknown."""
+        self.boot()
+
+    # ------------------------------------------------------------------ time
+
+    @property
+    def busy(self) -> bool:
+        """Whether the motion controller needs its 1 ms ticks."""
+        return not self.mc.idle()
+
+    def next_due_ms(self) -> int | None:
+        if not self.busy:
+            return None
+        return min(self.clock.now_ms + MOTION_CHUNK_MS, max(self.next_status, self.clock.now_ms + 1))
+
+    def run(self, ms: int) -> None:
+        if ms > 0 and self.busy:
+            self.mc.advance(ms)
+
+    def service(self) -> None:
+        self._drain_events()
+        if self.rx.pending():
+            self._frames(self.rx.poll(self.clock.now))
+        if self.busy and self.clock.now_ms >= self.next_status:
+            self.send_status()
+
+    # ------------------------------------------------------------------ input
+
+    def receive(self, data: bytes) -> None:
+        self._frames(self.rx.feed(data, self.clock.now))
+
+    def _frames(self, items: list) -> None:
+        for item in items:
+            _INPUT[type(item)](self, item)
+        self._drain_events()
+
+    def _on_realtime(self, item: Realtime) -> None:
+        if item.byte == b"!":
+            self.mc.feed_hold()
+        else:
+            self.stop_job()
+
+    def _on_dropped(self, item: Dropped) -> None:
+        if self.job.open and self.job.bad_frame() is Verdict.NAK:
+            self.send(Nak(self.job.expected))
+
+    def _on_frame(self, frame: Frame) -> None:
+        if isinstance(frame, Command):
+            cnc_commands.dispatch(self, frame)
+        elif isinstance(frame, Data):
+            self._on_data(frame)
+
+    def _on_data(self, frame: Data) -> None:
+        if not self.job.open:
+            return
+        verdict = self.job.offer(frame.seq)
+        if verdict is Verdict.REACK:
+            self.send(AckFrame(self.job.expected - 1, self.free_slots()))
+        elif verdict is Verdict.NAK:
+            self.send(Nak(self.job.expected))
+        elif verdict is Verdict.QUEUE:
+            self._queue_line(frame.seq, frame.line)
+
+    def _queue_line(self, seq: int, line: str) -> None:
+        if seq >= self.job.total:
+            return self.refuse_line(seq, "BAD_SEQ", f"beyond JOB {self.job.total}")
+        if not self.check_mode and self.mc.free_slots() <= 0:
+            self.send(Nak(seq))
+            return None
+        start = self.parser.position
+        try:
+            move = self.parser.parse(seq, line)
+        except DialectError as exc:
+            return self.refuse_line(seq, exc.code, exc.text)
+        violation = soft_limit_violation(start, move, self.profile.travel)
+        if violation:
+            return self.refuse_line(seq, "SOFT_LIMIT", violation)
+        if move.moves_axes and not self.mc.homed and not self.check_mode:
+            return self.refuse_line(seq, "NOT_HOMED", "home first")
+        self.job.accepted(seq)
+        if self.check_mode:
+            self.send(AckFrame(seq, self.free_slots()))
+            self._finished_up_to(seq)
+            return None
+        self.lines[seq] = line
+        self.mc.enqueue(move)
+        self.send(AckFrame(seq, self.free_slots()))
+        return None
+
+    def refuse_line(self, seq: int, code: str, text: str) -> None:
+        """``E - code seq text``: the line is refused, the queue flushed, the job ended."""
+        self.send(Error(None, code, f"{seq} {text}"))
+        self.stop_job()
+
+    # ------------------------------------------------------------------ motion events
+
+    def _drain_events(self) -> None:
+        finished = -2
+        for event in self.mc.events():
+            if isinstance(event, ev.Finished):
+                finished = max(finished, self._on_finished(event))
+                continue
+            if finished >= -1:
+                self._finished_up_to(finished)
+                finished = -2
+            _EVENTS[type(event)](self, event)
+        if finished >= -1:
+            self._finished_up_to(finished)
+
+    def _on_finished(self, event: ev.Finished) -> int:
+        if event.seq < 0 or event.seq not in self.lines:
+            return -2
+        self.exec_log.add(event.seq, self.lines.pop(event.seq))
+        return event.seq
+
+    def _finished_up_to(self, seq: int) -> None:
+        last = self.job.finished(seq)
+        self.send(Finished(self.job.done))
+        if last and self.job.open:
+            self.job.close()
+            self.send(Log(f"job done, {self.job.total} lines"))
+            self.send_status()
+
+    def _on_alarm(self, event: ev.Alarm) -> None:
+        self.send(Alarm(event.code, event.text))
+        if event.code == "COVER_OPEN":
+            return
+        for pending in self.pending:
+            self.send(Error(pending.id, event.code, event.text))
+        self.pending.clear()
+        self.job.close()
+        self.lines.clear()
+
+    def _on_state(self, event: ev.StateChanged) -> None:
+        self.state = event.state
+        if event.state == "IDLE":
+            self._on_done_event(event)
+        self.send_status()
+
+    def _on_done_event(self, event) -> None:
+        kind = type(event)
+        for pending in [p for p in self.pending if p.awaits is kind]:
+            self.pending.remove(pending)
+            self.send(Ok(pending.id, pending.verb, pending.info))
+        if kind is ev.Homed:
+            self.reset_parser()
+
+    # ------------------------------------------------------------------ helpers
+
+    def await_event(self, cid: int, verb: str, awaits: type, info: str = "") -> None:
+        self.pending.append(Pending(cid, verb, awaits, info))
+
+    def stop_job(self) -> None:
+        self.mc.stop()
+        self.job.close()
+        self.lines.clear()
+        self.reset_parser()
+
+    def reset_parser(self) -> None:
+        self.parser = DialectParser(self.offset, tuple(self.mc.commanded_mm))
+
+    def free_slots(self) -> int:
+        return self.mc.free_slots() if not self.check_mode else self.mc.capacity
+
+    def flags(self) -> str:
+        flags = "H" if self.mc.homed else ""
+        flags += "C" if self.cover_open else ""
+        flags += "P" if self.mc.spindle_on else ""
+        return flags
+
+    def status(self) -> Status:
+        pos = self.mc.measured_mm
+        x, y, z = (pos[k] - self.offset[k] for k in range(3))
+        return Status(self.boot_id, self.mc.state, x, y, z, self.job.acc, self.job.done,
+                      self.free_slots(), int(round(self.mc.spindle_rpm)), self.flags())
+
+    def send_status(self) -> None:
+        self.send(self.status())
+        self.next_status = self.clock.now_ms + STATUS_PERIOD_MS
+
+    def send(self, frame: Frame) -> None:
+        self.tx.write(encode(frame), self.clock.now)
+
+    def set_cover(self, is_open: bool) -> None:
+        self.cover_open = is_open
+        self.mc.cover_open = is_open
+        self._drain_events()
+        self.send_status()
+
+
+_INPUT = {cls: CncMcu._on_frame for cls in Frame.__subclasses__()}
+_INPUT.update({Realtime: CncMcu._on_realtime, Dropped: CncMcu._on_dropped})
+
+_EVENTS = {
+    ev.Alarm: CncMcu._on_alarm,
+    ev.StateChanged: CncMcu._on_state,
+    ev.Homed: CncMcu._on_done_event,
+    ev.Held: CncMcu._on_done_event,
+    ev.Stopped: CncMcu._on_done_event,
+}

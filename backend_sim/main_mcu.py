@@ -1,0 +1,326 @@
+"""The main MCU: relay between host (USB) and CNC MCU (UART), its own commands, watchdogs.
+
+Contract:
+- host frames: ``D`` and the commands that are not its own go down the UART; its own
+  commands are ``PING``/``STATUS`` (answered with the last ``S`` of the CNC MCU, with
+  the flags it owns: ``L``, ``U``, ``S``) and ``SD ...`` (``main_sd``). A repeated
+  command id (the same as the last) is not executed again: its first answer is sent
+  again. A bad host frame is answered ``N expected`` once per bad stretch, with
+  ``expected`` mirrored from the stream (an ``N`` of the CNC MCU for the same seq in
+  the same stretch is not passed on twice).
+- real-time bytes go down ahead of every queue (``Wire.write_urgent``).
+- CNC frames go up (``S`` with merged flags), except the answers to the main MCU's own
+  commands (ids from ``OWN_ID0``) and, during ``SD RUN``, the stream's ``A``/``N``/``F``.
+- heartbeat: 3 s without a valid host frame while connected -> flag ``L``,
+  ``X HOST_LOST``, LED blinks fast, buzzer beeps, a host job feed-holds (an SD job
+  carries on). The UART hop likewise (it pings the CNC MCU every second): ``U``,
+  ``X UART_LOST``. Until the host has sent one valid frame nothing goes up (as USB CDC
+  with no host reading).
+"""
+
+from __future__ import annotations
+
+from app.comm.frame import (
+    FEED_HOLD,
+    STOP_FLUSH,
+    Ack,
+    Alarm,
+    Command,
+    Data,
+    Deframer,
+    Dropped,
+    Error,
+    Frame,
+    Info,
+    Nak,
+    Ok,
+    Realtime,
+    Status,
+    encode,
+)
+from backend_sim import main_sd
+from backend_sim.sd_card import SdCard
+from backend_sim.wire import Wire, to_ms
+
+OWN_ID0 = 1_000_000_000
+PING_PERIOD_S = 1.0
+HOUSEKEEPING_S = 0.1
+
+
+class MainMcu:
+    def __init__(self, profile, clock, host_tx: Wire, uart_tx: Wire, sd: SdCard) -> None:
+        self.profile, self.clock = profile, clock
+        self.host_tx, self.uart_tx, self.sd = host_tx, uart_tx, sd
+        self.lost_s = profile.link.lost_s
+        self.menu = None
+        self.boot()
+
+    def boot(self) -> None:
+        """Power-up or MRESET: links unknown, no upload, no SD job, nothing cached."""
+        now = self.clock.now
+        self.host_rx = Deframer(realtime=True)
+        self.uart_rx = Deframer(realtime=False)
+        self.host_connected = False
+        self.host_lost = False
+        self.uart_lost = False
+        self.last_host = now
+        self.last_uart = now
+        self.next_ping = now + PING_PERIOD_S
+        self.next_housekeeping = now + HOUSEKEEPING_S
+        self.status: Status | None = None
+        self.last_relayed: Status | None = None
+        self.last_id: int | None = None
+        self.last_answer: list[bytes] = []
+        self.expected = 0
+        self.nak_sent: int | None = None
+        self.upload = None
+        self.sd_job = None
+        self.own_id = OWN_ID0
+        self.own_pending: dict[int, object] = {}
+        self.notice = "ready"
+
+    # ------------------------------------------------------------------ time
+
+    def next_due_ms(self) -> int:
+        due = min(self.next_ping, self.next_housekeeping)
+        if self.host_connected and not self.host_lost:
+            due = min(due, self.last_host + self.lost_s)
+        if not self.uart_lost:
+            due = min(due, self.last_uart + self.lost_s)
+        if self.sd_job is not None and self.sd_job.next_due() is not None:
+            due = min(due, self.sd_job.next_due())
+        return max(to_ms(due), self.clock.now_ms + 1)
+
+    def service(self) -> None:
+        now = self.clock.now
+        if now >= self.next_housekeeping:
+            self.next_housekeeping = now + HOUSEKEEPING_S
+            self._host_items(self.host_rx.poll(now))
+            self._uart_items(self.uart_rx.poll(now))
+        if now >= self.next_ping:
+            self.next_ping = now + PING_PERIOD_S
+            self.send_cnc_own("PING", callback=None)
+        self._watchdogs(now)
+        if self.sd_job is not None:
+            self.sd_job.poll(now)
+            main_sd.check_job(self)
+
+    def _watchdogs(self, now: float) -> None:
+        if self.host_connected and not self.host_lost and now - self.last_host >= self.lost_s:
+            self.host_lost = True
+            self.notice = "HOST LOST"
+            self.to_host(Alarm("HOST_LOST", f"no valid host frame for {self.lost_s:g} s"))
+            if self.sd_job is None and self.status is not None and self.status.state == "RUN":
+                self.uart_tx.write_urgent(FEED_HOLD, now)
+        if not self.uart_lost and now - self.last_uart >= self.lost_s:
+            self.uart_lost = True
+            self.notice = "UART LOST"
+            self.to_host(Alarm("UART_LOST", f"no frame from the CNC MCU for {self.lost_s:g} s"))
+            self.to_host(self.merged_status())
+
+    # ------------------------------------------------------------------ host side
+
+    def receive_host(self, data: bytes) -> None:
+        self._host_items(self.host_rx.feed(data, self.clock.now))
+
+    def _host_items(self, items: list) -> None:
+        for item in items:
+            if isinstance(item, Realtime):
+                self._realtime(item.byte)
+            elif isinstance(item, Dropped):
+                self._host_bad()
+            else:
+                self._host_alive()
+                self._host_frame(item)
+
+    def _host_alive(self) -> None:
+        self.last_host = self.clock.now
+        self.host_connected = True
+        if self.host_lost:
+            self.host_lost = False
+            self.notice = "host back"
+
+    def _realtime(self, byte: bytes) -> None:
+        self.uart_tx.write_urgent(byte, self.clock.now)
+        if byte == STOP_FLUSH and self.sd_job is not None:
+            main_sd.stop_job(self, "stopped by host")
+
+    def _host_bad(self) -> None:
+        if self.upload is not None:
+            return main_sd.upload_bad_frame(self)
+        if self.nak_sent is None:
+            self.nak_sent = self.expected
+            self.to_host(Nak(self.expected))
+        return None
+
+    def _host_frame(self, frame: Frame) -> None:
+        if isinstance(frame, Command):
+            self._host_command(frame)
+        elif isinstance(frame, Data):
+            self._host_data(frame)
+
+    def _host_data(self, frame: Data) -> None:
+        if self.upload is not None:
+            return main_sd.upload_data(self, frame)
+        if self.sd_job is not None:
+            return None
+        if frame.seq == self.expected:
+            self.expected += 1
+            self.nak_sent = None
+        self.to_cnc(frame)
+        return None
+
+    def _host_command(self, cmd: Command) -> None:
+        if cmd.id == self.last_id:
+            for raw in self.last_answer:
+                self.host_tx.write(raw, self.clock.now)
+            return
+        self.last_id, self.last_answer = cmd.id, []
+        handler = _OWN.get(cmd.verb)
+        if handler is not None:
+            handler(self, cmd)
+        else:
+            self._forward(cmd)
+
+    def _forward(self, cmd: Command) -> None:
+        hook = _BEFORE_FORWARD.get(cmd.verb)
+        if hook is not None and hook(self, cmd) is False:
+            return
+        self.to_cnc(cmd)
+
+    def _before_job(self, cmd: Command) -> bool:
+        if self.sd_job is not None or self.upload is not None:
+            self.answer(Error(cmd.id, "BUSY", "SD job or upload in progress"))
+            return False
+        self.expected, self.nak_sent = 0, None
+        return True
+
+    def _before_resume(self, cmd: Command) -> bool:
+        if cmd.args[:1] == ("FROM",) and len(cmd.args) == 2 and cmd.args[1].isdigit():
+            self.expected, self.nak_sent = int(cmd.args[1]), None
+        return True
+
+    def _before_stop(self, cmd: Command) -> bool:
+        if self.sd_job is not None:
+            main_sd.stop_job(self, "stopped by host")
+        return True
+
+    def _ping(self, cmd: Command) -> None:
+        self.answer(self.merged_status())
+
+    def answer(self, frame: Frame) -> None:
+        """Send an answer to the last host command, and keep it for a repeated id."""
+        raw = encode(frame)
+        self.last_answer.append(raw)
+        self.host_tx.write(raw, self.clock.now)
+
+    def to_host(self, frame: Frame) -> None:
+        if self.host_connected:
+            self.host_tx.write(encode(frame), self.clock.now)
+
+    # ------------------------------------------------------------------ CNC side
+
+    def to_cnc(self, frame: Frame) -> None:
+        self.uart_tx.write(encode(frame), self.clock.now)
+
+    def send_cnc_own(self, verb: str, *args: str, callback=None) -> int:
+        """Send one of the main MCU's own commands down; ``callback(frame)`` gets its O/E."""
+        self.own_id += 1
+        self.own_pending[self.own_id] = callback
+        self.to_cnc(Command(self.own_id, verb, tuple(args)))
+        return self.own_id
+
+    def receive_uart(self, data: bytes) -> None:
+        self._uart_items(self.uart_rx.feed(data, self.clock.now))
+
+    def _uart_items(self, items: list) -> None:
+        for item in items:
+            if isinstance(item, Frame):
+                self._uart_alive()
+                self._uart_frame(item)
+
+    def _uart_alive(self) -> None:
+        now = self.clock.now
+        self.last_uart = now
+        self.next_ping = now + PING_PERIOD_S
+        if self.uart_lost:
+            self.uart_lost = False
+            self.notice = "UART back"
+
+    def _uart_frame(self, frame: Frame) -> None:
+        if isinstance(frame, Status):
+            return self._cnc_status(frame)
+        cid = getattr(frame, "id", None)
+        if isinstance(frame, Ok | Error | Info) and cid in self.own_pending:
+            return self._own_answer(frame)
+        if self.sd_job is not None and main_sd.job_frame(self, frame):
+            return None
+        if isinstance(frame, Nak):
+            return self._cnc_nak(frame)
+        if isinstance(frame, Ack):
+            self.expected = max(self.expected, frame.seq + 1)
+        if cid is not None and cid == self.last_id and isinstance(frame, Ok | Error | Info):
+            return self.answer(frame)
+        self.to_host(frame)
+        return None
+
+    def _cnc_nak(self, frame: Nak) -> None:
+        if self.nak_sent == frame.seq:
+            return
+        self.expected, self.nak_sent = frame.seq, frame.seq
+        self.to_host(frame)
+
+    def _cnc_status(self, frame: Status) -> None:
+        """Keep the CNC's status; pass it on unless it repeats the last one (ping answers)."""
+        self.status = frame
+        if self.sd_job is not None:
+            self.sd_job.on_status(frame.free)
+        merged = self.merged_status()
+        if merged != self.last_relayed:
+            self.last_relayed = merged
+            self.to_host(merged)
+
+    def _own_answer(self, frame: Frame) -> None:
+        callback = self.own_pending.pop(frame.id, None)
+        if callback is not None:
+            callback(frame)
+
+    # ------------------------------------------------------------------ status, panel
+
+    def flags(self) -> str:
+        own = ("L" if self.host_lost else "") + ("U" if self.uart_lost else "")
+        own += "S" if self.sd_job is not None else ""
+        cnc = self.status.flags if self.status is not None else ""
+        return "".join(f for f in "HCLUPS" if f in cnc + own)
+
+    def merged_status(self) -> Status:
+        s = self.status or Status("0", "ALARM", 0.0, 0.0, 0.0, -1, -1, 0, 0)
+        return Status(s.boot, s.state, s.x, s.y, s.z, s.acc, s.done, s.free, s.rpm, self.flags())
+
+    @property
+    def alert(self) -> bool:
+        return self.host_lost or self.uart_lost
+
+    @property
+    def led(self) -> bool:
+        """Heartbeat: 1 Hz blink; fast 5 Hz blink while a link is lost."""
+        period = 200 if self.alert else 1000
+        return self.clock.now_ms % period < period // 2
+
+    @property
+    def buzzer(self) -> bool:
+        """Beeps 200 ms every second while a link is lost."""
+        return self.alert and self.clock.now_ms % 1000 < 200
+
+
+_OWN = {
+    "PING": MainMcu._ping,
+    "STATUS": MainMcu._ping,
+    "SD": main_sd.command,
+}
+
+_BEFORE_FORWARD = {
+    "JOB": MainMcu._before_job,
+    "RESUME": MainMcu._before_resume,
+    "STOP": MainMcu._before_stop,
+}

@@ -1,0 +1,129 @@
+"""The micro-SD card of the main MCU: a folder on the host.
+
+Contract: file names are 1-32 characters of letters, digits, ``_ - .`` and do not
+start with a dot (so ``..``, ``/`` and hidden temporary files are refused with
+``BAD_NAME``). ``SdUpload`` receives an ``SD PUT`` stream into a hidden temporary
+file and renames it only when the line count and the CRC32 (over the lines joined
+with ``\\n`` plus a final ``\\n``) match; otherwise no file is left. ``capacity_bytes``
+models a full card (``SD_FULL``).
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import zlib
+from pathlib import Path
+
+from backend_sim.job_stream import JobStream
+
+_NAME = re.compile(r"[A-Za-z0-9_.\-]{1,32}")
+UPLOAD_FREE_SLOTS = 16
+
+
+class SdError(Exception):
+    """Refused SD operation: ``code`` (BAD_NAME, NO_FILE, SD_FULL, CRC_MISMATCH) and text."""
+
+    def __init__(self, code: str, text: str) -> None:
+        super().__init__(code, text)
+        self.code, self.text = code, text
+
+
+def check_name(name: str) -> str:
+    if not _NAME.fullmatch(name) or name.startswith("."):
+        raise SdError("BAD_NAME", f"{name[:40]!r}: 1-32 of A-Z a-z 0-9 _ - . not starting with '.'")
+    return name
+
+
+def crc32_of_lines(lines: list[str]) -> int:
+    """CRC32 of the lines joined with ``\\n`` plus a final ``\\n``."""
+    return zlib.crc32(("\n".join(lines) + "\n").encode("ascii", "replace"))
+
+
+class SdCard:
+    def __init__(self, folder: str | Path, capacity_bytes: int = 1 << 30) -> None:
+        self.folder = Path(folder)
+        self.folder.mkdir(parents=True, exist_ok=True)
+        self.capacity_bytes = capacity_bytes
+
+    def path(self, name: str) -> Path:
+        return self.folder / check_name(name)
+
+    def names(self) -> list[str]:
+        return sorted(p.name for p in self.folder.iterdir() if p.is_file() and not p.name.startswith("."))
+
+    def list(self) -> list[tuple[str, int, int]]:
+        """(name, bytes, lines) of every file, sorted by name."""
+        rows = []
+        for name in self.names():
+            data = (self.folder / name).read_bytes()
+            rows.append((name, len(data), data.count(b"\n")))
+        return rows
+
+    def used_bytes(self) -> int:
+        return sum(p.stat().st_size for p in self.folder.iterdir() if p.is_file())
+
+    def read_lines(self, name: str) -> list[str]:
+        path = self.path(name)
+        if not path.is_file():
+            raise SdError("NO_FILE", name)
+        return path.read_text(encoding="ascii", errors="replace").splitlines()
+
+    def delete(self, name: str) -> None:
+        path = self.path(name)
+        if not path.is_file():
+            raise SdError("NO_FILE", name)
+        path.unlink()
+
+    def begin_put(self, name: str, lines: int, crc_hex: str) -> SdUpload:
+        check_name(name)
+        if lines < 1:
+            raise SdError("BAD_ARGS", f"line count {lines}: at least 1")
+        if self.used_bytes() >= self.capacity_bytes:
+            raise SdError("SD_FULL", f"{self.used_bytes()} of {self.capacity_bytes} bytes used")
+        try:
+            crc = int(crc_hex, 16)
+        except ValueError:
+            raise SdError("BAD_ARGS", f"CRC {crc_hex!r} is not hex") from None
+        return SdUpload(self, name, lines, crc)
+
+
+class SdUpload:
+    """One ``SD PUT`` in progress: the D stream, the temporary file, the running CRC."""
+
+    def __init__(self, card: SdCard, name: str, lines: int, crc: int) -> None:
+        self.card, self.name, self.lines, self.crc = card, name, lines, crc
+        self.stream = JobStream()
+        self.stream.start(lines)
+        self.tmp = card.folder / f".{name}.part"
+        self._out = self.tmp.open("wb")
+        self._crc = 0
+        self._bytes = 0
+
+    def write(self, seq: int, line: str) -> None:
+        data = line.encode("ascii", "replace") + b"\n"
+        self._crc = zlib.crc32(data, self._crc)
+        self._bytes += len(data)
+        self._out.write(data)
+        self.stream.accepted(seq)
+
+    @property
+    def complete(self) -> bool:
+        return self.stream.acc >= self.lines - 1
+
+    def finish(self) -> None:
+        """Rename into place, or raise SdError (no file is left)."""
+        self._out.close()
+        count = self.stream.acc + 1
+        if count != self.lines or self._crc != self.crc:
+            self.tmp.unlink(missing_ok=True)
+            raise SdError("CRC_MISMATCH", f"got {count} lines CRC {self._crc:08X}, "
+                                          f"announced {self.lines} lines CRC {self.crc:08X}")
+        if self.card.used_bytes() > self.card.capacity_bytes:
+            self.tmp.unlink(missing_ok=True)
+            raise SdError("SD_FULL", "card full")
+        os.replace(self.tmp, self.card.path(self.name))
+
+    def abort(self) -> None:
+        self._out.close()
+        self.tmp.unlink(missing_ok=True)

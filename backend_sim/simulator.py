@@ -1,0 +1,202 @@
+"""The whole machine in one object: both MCUs, the links, the panel, faults, one clock.
+
+Contract (docs/architecture.md): ``Simulator(profile=None, sd_dir=None, clock=None,
+mode="planner")``; ``host_port`` is the pyserial-shaped host end; ``run_for(seconds)``
+and ``run_until(predicate, timeout)`` advance the simulated clock as fast as possible
+(deterministic for a given ``seed``); ``start(speed=1.0)`` / ``stop()`` run it on its
+own thread in real time, at a speed factor, or (``speed=None``) as fast as possible.
+``panel``, ``faults`` and ``exec_log`` are the test and GUI APIs.
+
+The loop is event driven: it jumps straight to the next thing that can happen (a byte
+that matters landing on a wire, a timer of the main MCU, the next chunk of at most
+``MOTION_CHUNK_MS`` of motion) and skips the 1 ms ticks while the machine is at rest.
+"""
+
+from __future__ import annotations
+
+import random
+import threading
+import time
+from collections.abc import Callable
+from pathlib import Path
+
+from app.profile import MachineProfile
+from backend_sim.clock import SimClock
+from backend_sim.cnc_mcu import CncMcu
+from backend_sim.exec_log import ExecLog
+from backend_sim.fault_api import Faults
+from backend_sim.host_port import HostPort
+from backend_sim.main_mcu import MainMcu
+from backend_sim.panel import Panel
+from backend_sim.sd_card import SdCard
+from backend_sim.wire import USB_BYTE_TIME, USB_LATENCY, Wire, to_ms, uart_byte_time
+
+FAR_MS = 1 << 62
+THREAD_SLICE_MS = 50
+
+
+def default_sd_dir() -> Path:
+    """The per-user folder that stands for the SD card."""
+    import platformdirs
+
+    return Path(platformdirs.user_data_dir("cnc-mill-controller")) / "sd"
+
+
+def default_motion_factory(profile: MachineProfile, mode: str) -> Callable:
+    from backend_sim.motion.controller import MotionController
+
+    return lambda: MotionController(profile, mode=mode)
+
+
+class Simulator:
+    def __init__(self, profile: MachineProfile | None = None, sd_dir: str | Path | None = None,
+                 clock: SimClock | None = None, mode: str = "planner", *, seed: int | None = None,
+                 exec_log: str | Path | None = None, motion_factory: Callable | None = None) -> None:
+        self.profile = profile or MachineProfile()
+        self.clock = clock or SimClock()
+        self.lock = threading.RLock()
+        self.condition = threading.Condition(self.lock)
+        self.rng = random.Random(seed)
+        self.wires = self._make_wires(0 if seed is None else seed)
+        self.exec_log = ExecLog(exec_log)
+        self.sd = SdCard(sd_dir if sd_dir is not None else default_sd_dir())
+        factory = motion_factory or default_motion_factory(self.profile, mode)
+        self.cnc = CncMcu(self.profile, self.clock, self.wires["uart_up"], factory, self.exec_log, self.rng)
+        self.main = MainMcu(self.profile, self.clock, self.wires["usb_up"], self.wires["uart_down"], self.sd)
+        self.host_port = HostPort(self)
+        self.panel = Panel(self)
+        self.faults = Faults(self)
+        self._thread: threading.Thread | None = None
+        self._running = False
+
+    def _make_wires(self, seed: int) -> dict[str, Wire]:
+        uart = uart_byte_time(self.profile.link.baud)
+        return {
+            "usb_down": Wire("usb_down", USB_BYTE_TIME, USB_LATENCY, seed),
+            "usb_up": Wire("usb_up", USB_BYTE_TIME, USB_LATENCY, seed),
+            "uart_down": Wire("uart_down", uart, 0.0, seed),
+            "uart_up": Wire("uart_up", uart, 0.0, seed),
+        }
+
+    # ------------------------------------------------------------------ as fast as possible
+
+    def run_for(self, seconds: float) -> None:
+        """Advance the simulated clock by ``seconds``."""
+        with self.lock:
+            end = self.clock.now_ms + round(seconds * 1000)
+            if self._running:
+                self._wait_running(lambda: False, end)
+            else:
+                self._step_to(end)
+
+    def run_until(self, predicate: Callable[[], bool], timeout: float = 60.0) -> bool:
+        """Advance until ``predicate()`` is true (checked after every event) or ``timeout``
+        simulated seconds have passed; returns whether the predicate became true."""
+        with self.lock:
+            return self.run_until_locked(predicate, self.clock.now_ms + round(timeout * 1000))
+
+    def run_until_locked(self, predicate: Callable[[], bool], end_ms: int | None) -> bool:
+        if self._running:
+            return self._wait_running(predicate, end_ms)
+        end = FAR_MS if end_ms is None else end_ms
+        while not predicate():
+            if self.clock.now_ms >= end:
+                return False
+            self._step_to(min(end, self.clock.now_ms + 1000), predicate)
+        return True
+
+    def _wait_running(self, predicate: Callable[[], bool], end_ms: int | None) -> bool:
+        while not predicate():
+            if end_ms is not None and self.clock.now_ms >= end_ms:
+                return False
+            self.condition.wait(0.05)
+        return True
+
+    def _step_to(self, end_ms: int, predicate: Callable[[], bool] | None = None) -> None:
+        clock, cnc, main = self.clock, self.cnc, self.main
+        while clock.now_ms < end_ms:
+            due = self._next_due(end_ms)
+            cnc.run(due - clock.now_ms)
+            clock.advance_to(due)
+            self._deliver()
+            main.service()
+            cnc.service()
+            if predicate is not None and predicate():
+                return
+
+    def _next_due(self, end_ms: int) -> int:
+        now = self.clock.now_ms
+        due = min(end_ms, self.main.next_due_ms())
+        cnc_due = self.cnc.next_due_ms()
+        if cnc_due is not None and cnc_due < due:
+            due = cnc_due
+        for wire in self.wires.values():
+            t = wire.next_time()
+            if t is not None:
+                due = min(due, to_ms(t))
+        return max(due, now + 1)
+
+    def _deliver(self) -> None:
+        now, wires = self.clock.now, self.wires
+        data = wires["usb_down"].take(now)
+        if data:
+            self.main.receive_host(data)
+        data = wires["uart_down"].take(now)
+        if data:
+            self.cnc.receive(data)
+        data = wires["uart_up"].take(now)
+        if data:
+            self.main.receive_uart(data)
+        data = wires["usb_up"].take(now)
+        if data:
+            self.host_port.deliver(data)
+            self.condition.notify_all()
+
+    # ------------------------------------------------------------------ own thread
+
+    @property
+    def running(self) -> bool:
+        return self._running
+
+    def start(self, speed: float | None = 1.0) -> None:
+        """Run on a daemon thread: real time (1.0), a factor (20.0) or unpaced (None)."""
+        if self._running:
+            self.clock.set_speed(speed)
+            return
+        with self.lock:
+            self.clock.set_speed(speed)
+            self._running = True
+        self._thread = threading.Thread(target=self._thread_main, name="cnc-sim", daemon=True)
+        self._thread.start()
+
+    def stop(self) -> None:
+        with self.lock:
+            self._running = False
+            self.condition.notify_all()
+        if self._thread is not None and self._thread is not threading.current_thread():
+            self._thread.join(timeout=5)
+        self._thread = None
+
+    def wake(self) -> None:
+        """Something changed from outside (host write, button): recompute the next event."""
+        self.condition.notify_all()
+
+    def _thread_main(self) -> None:
+        while True:
+            with self.lock:
+                if not self._running:
+                    return
+                self._thread_slice()
+            time.sleep(0)
+
+    def _thread_slice(self) -> None:
+        target = self.clock.target_ms()
+        if target is None:
+            self._step_to(self.clock.now_ms + THREAD_SLICE_MS)
+            self.condition.notify_all()
+            return
+        if target > self.clock.now_ms:
+            self._step_to(min(target, self.clock.now_ms + THREAD_SLICE_MS))
+            self.condition.notify_all()
+        wait = self.clock.wall_until(self._next_due(FAR_MS))
+        self.condition.wait(min(max(wait, 0.002), 0.05))

@@ -1,0 +1,127 @@
+"""One direction of one hop: when each written byte lands at the far end.
+
+Bytes leave back to back: a write at time ``t`` on an idle wire lands its first byte
+at ``t + latency + byte_time`` and each further byte ``byte_time`` later; a write on a
+busy wire queues behind the bytes already waiting (a UART TX buffer). Delivery is
+event driven: ``next_time()`` is when the next byte that matters (a newline, a
+real-time byte, or the last byte waiting) lands, and ``take(now)`` returns every byte
+landed by ``now``. Nothing is ticked per bit or per byte.
+
+``write_urgent`` puts a real-time byte right behind the byte being shifted out, ahead
+of everything queued. ``cut`` models an unplugged cable: bytes written are lost.
+
+The UART between the MCUs runs at 115200 8N1 (10 bits per byte); the USB CDC hop to
+the host is fast but not instant (``USB_LATENCY``, about 1 MB/s).
+"""
+
+from __future__ import annotations
+
+import heapq
+import math
+import re
+
+from backend_sim.faults import ChannelFaults
+
+UART_BITS_PER_BYTE = 10
+USB_LATENCY = 0.0005
+USB_BYTE_TIME = 1e-6
+_EVENT = re.compile(rb"[\n!\x18]")
+
+
+def uart_byte_time(baud: int) -> float:
+    """Seconds one byte takes on an 8N1 UART: 10 bits."""
+    return UART_BITS_PER_BYTE / baud
+
+
+def to_ms(t: float) -> int:
+    """The first whole simulated ms at or after ``t`` seconds."""
+    return math.ceil(t * 1000 - 1e-6)
+
+
+class Wire:
+    """Bytes in flight in one direction, with their landing times and faults."""
+
+    def __init__(self, name: str, byte_time: float, latency: float = 0.0, seed: int = 0) -> None:
+        self.name = name
+        self.byte_time = byte_time
+        self.latency = latency
+        self.faults = ChannelFaults(name, seed)
+        self.cut = False
+        self.sent = 0
+        self._pending = bytearray()
+        self._t_first = 0.0
+        self._delayed: list[tuple[float, int, bytes]] = []
+        self._order = 0
+
+    def write(self, data: bytes, now: float) -> None:
+        if self.cut or not data:
+            return
+        self.sent += len(data)
+        for delay, piece in self.faults.process(bytes(data)):
+            if delay > 0:
+                self._order += 1
+                heapq.heappush(self._delayed, (now + delay, self._order, piece))
+            else:
+                self._queue(piece, now)
+
+    def write_urgent(self, data: bytes, now: float) -> None:
+        """Send ``data`` ahead of every queued byte (behind the one in the shifter)."""
+        if self.cut:
+            return
+        if not self._pending:
+            self._queue(data, now)
+            return
+        index = min(len(self._pending), self._count(now) + 1)
+        self._pending[index:index] = data
+
+    def take(self, now: float) -> bytes:
+        """Every byte landed by ``now`` (seconds), in order."""
+        out = self._landed(now)
+        while self._delayed and self._delayed[0][0] <= now:
+            t, _, piece = heapq.heappop(self._delayed)
+            self._queue(piece, t)
+            out += self._landed(now)
+        return bytes(out)
+
+    def next_time(self) -> float | None:
+        """When the next newline, real-time byte or last waiting byte lands."""
+        times = []
+        if self._pending:
+            match = _EVENT.search(self._pending)
+            index = match.start() if match else len(self._pending) - 1
+            times.append(self._t_first + index * self.byte_time)
+        if self._delayed:
+            times.append(self._delayed[0][0])
+        return min(times) if times else None
+
+    def clear(self) -> None:
+        self._pending.clear()
+        self._delayed.clear()
+
+    def set_cut(self, cut: bool) -> None:
+        self.cut = cut
+        if cut:
+            self.clear()
+
+    @property
+    def in_flight(self) -> int:
+        return len(self._pending) + sum(len(p) for _, _, p in self._delayed)
+
+    def _queue(self, data: bytes, now: float) -> None:
+        if not self._pending:
+            self._t_first = now + self.latency + self.byte_time
+        self._pending += data
+
+    def _count(self, now: float) -> int:
+        if not self._pending or now < self._t_first - 1e-12:
+            return 0
+        return min(len(self._pending), int((now - self._t_first) / self.byte_time + 1e-6) + 1)
+
+    def _landed(self, now: float) -> bytearray:
+        count = self._count(now)
+        if not count:
+            return bytearray()
+        out = self._pending[:count]
+        del self._pending[:count]
+        self._t_first += count * self.byte_time
+        return out
