@@ -1,0 +1,75 @@
+"""``cnc-sim`` / ``python -m backend_sim``: the simulated machine behind a pty or a socket.
+
+``--pty`` prints exactly one line ``PTY /dev/pts/N`` on stdout, then serves until
+SIGINT/SIGTERM; ``--tcp PORT`` prints ``TCP 127.0.0.1:PORT`` and serves
+``socket://127.0.0.1:PORT``. ``--speed`` sets the clock's speed factor (1 = real time).
+Fault flags set seeded per-byte error rates on the chosen hop(s) and direction(s).
+"""
+
+from __future__ import annotations
+
+import argparse
+import signal
+import sys
+import threading
+
+from app.profile import ProfileError, load_profile
+
+
+def build_parser() -> argparse.ArgumentParser:
+    p = argparse.ArgumentParser(prog="cnc-sim", description="The simulated CNC mill (both MCUs).")
+    where = p.add_mutually_exclusive_group(required=True)
+    where.add_argument("--pty", action="store_true", help="serve on a pseudo-terminal")
+    where.add_argument("--tcp", type=int, metavar="PORT", help="serve on 127.0.0.1:PORT")
+    p.add_argument("--speed", type=float, default=1.0, help="speed factor of the clock (default 1)")
+    p.add_argument("--sd", metavar="DIR", help="folder standing for the SD card")
+    p.add_argument("--profile", metavar="FILE", help="machine profile (TOML or JSON)")
+    p.add_argument("--exec-log", metavar="FILE", help="append seq<TAB>line of every executed line")
+    p.add_argument("--mode", choices=("planner", "simple"), default="planner")
+    p.add_argument("--seed", type=int, default=None, help="seed of boot ids and random faults")
+    for kind in ("drop", "corrupt", "duplicate", "noise"):
+        p.add_argument(f"--{kind}-rate", type=float, default=0.0, metavar="P",
+                       help=f"per-byte probability of a {kind} fault")
+    p.add_argument("--fault-hop", choices=("usb", "uart", "both"), default="usb")
+    p.add_argument("--fault-direction", choices=("down", "up", "both"), default="both")
+    return p
+
+
+def _apply_faults(sim, args) -> None:
+    rates = {k: getattr(args, f"{k}_rate") for k in ("drop", "corrupt", "duplicate", "noise")}
+    if not any(rates.values()):
+        return
+    hop = None if args.fault_hop == "both" else args.fault_hop
+    direction = None if args.fault_direction == "both" else args.fault_direction
+    sim.faults.set_rates(hop, direction, seed=args.seed or 0, **rates)
+
+
+def main(argv: list[str] | None = None) -> int:
+    args = build_parser().parse_args(argv)
+    try:
+        profile = load_profile(args.profile) if args.profile else None
+    except ProfileError as exc:
+        print(f"cnc-sim: {exc}", file=sys.stderr)
+        return 2
+    from backend_sim.serve import PtyServer, TcpServer
+    from backend_sim.simulator import Simulator
+
+    sim = Simulator(profile, sd_dir=args.sd, mode=args.mode, seed=args.seed, exec_log=args.exec_log)
+    _apply_faults(sim, args)
+    server = PtyServer(sim) if args.pty else TcpServer(sim, args.tcp)
+    where = f"PTY {server.path}" if args.pty else f"TCP 127.0.0.1:{server.address[1]}"
+    stop = threading.Event()
+    for sig in (signal.SIGINT, signal.SIGTERM):
+        signal.signal(sig, lambda *_: stop.set())
+    sim.start(args.speed)
+    server.start()
+    print(where, flush=True)
+    while not stop.wait(0.5):
+        pass
+    server.close()
+    sim.stop()
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
