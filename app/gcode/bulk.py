@@ -1,10 +1,12 @@
 """The fast path: read every plain line of a program at once, with numpy.
 
 ``scan(data)`` takes the whole source as bytes and returns a ``Scan``: one row per
-physical line with the values of the words G (0-3), X, Y, Z, I, J, F (NaN when
-absent) and a ``simple`` flag. A line is simple when it holds only those words (and N),
-each at most once, well formed, with nothing but spaces and well-closed comments
-around them: the shape of nearly every line Inkscape's Gcodetools writes. Every other
+physical line with the motion code ``g`` (G0-G3), the ``units`` code (G20 = 1,
+G21 = 0), the values of X, Y, Z, I, J, F, M (3 or 5 only) and S (NaN when absent) and
+a ``simple`` flag. A line is simple when it holds only those words (and N), each at
+most once, well formed, with nothing but spaces and well-closed comments around them,
+and M or S only on a line with no motion word: the shape of nearly every line
+Inkscape's Gcodetools writes. Every other
 line is left to the general lexer and interpreter, which are the reference; the tests
 check that both paths agree. Numbers are parsed by numpy's C ``strtod``, so a value
 here is bit-identical to ``float()`` of the same text.
@@ -18,7 +20,8 @@ from dataclasses import dataclass
 import numpy as np
 
 CHUNK_BYTES = 1 << 20
-LETTERS = "GXYZIJF"
+LETTERS = "GXYZIJFMS"
+VALUE_LETTERS = "XYZIJFMS"
 _COMMENT = re.compile(rb"\([^()\n]*\)")
 _SEMI = re.compile(rb";[^\n]*")
 
@@ -39,7 +42,8 @@ class Scan:
     """Per-line table of the fast path; rows where ``simple`` is False are unread."""
 
     simple: np.ndarray  # bool (n,)
-    g: np.ndarray  # int8 (n,), -1 when no G word
+    g: np.ndarray  # int8 (n,), motion code 0-3, -1 when none
+    units: np.ndarray  # int8 (n,), 1 for G20, 0 for G21, -1 when none
     values: dict[str, np.ndarray]  # letter -> float64 (n,), NaN when absent
 
 
@@ -143,12 +147,27 @@ def _fill(scan: Scan, base: int, odd, line, letters, values) -> None:
         simple[rows[np.bincount(rows, minlength=n)[rows] > 1]] = False
         if c == "G":
             code = values[sel]
-            okg = (code == np.floor(code)) & (code >= 0) & (code <= 3)
-            simple[rows[~okg]] = False
-            scan.g[base + rows[okg]] = code[okg].astype(np.int8)
+            motion = (code == 0) | (code == 1) | (code == 2) | (code == 3)
+            units = (code == 20) | (code == 21)
+            simple[rows[~(motion | units)]] = False
+            scan.g[base + rows[motion]] = code[motion].astype(np.int8)
+            scan.units[base + rows[units]] = (code[units] == 20).astype(np.int8)
         elif c != "N":
             scan.values[c][base + rows] = values[sel]
     scan.simple[base : base + n] = simple
+    _spindle_alone(scan, base, n)
+
+
+def _spindle_alone(scan: Scan, base: int, n: int) -> None:
+    """M (3 or 5 only) and S words are simple only on lines without motion words."""
+    rows = slice(base, base + n)
+    m, s = scan.values["M"][rows], scan.values["S"][rows]
+    spindle = ~np.isnan(m) | ~np.isnan(s)
+    bad_m = ~np.isnan(m) & (m != 3) & (m != 5)
+    motion = scan.g[rows] >= 0
+    for c in "XYZIJF":
+        motion |= ~np.isnan(scan.values[c][rows])
+    scan.simple[rows] &= ~(bad_m | (spindle & motion))
 
 
 def scan(data: bytes, n_lines: int) -> Scan:
@@ -156,7 +175,8 @@ def scan(data: bytes, n_lines: int) -> Scan:
     result = Scan(
         simple=np.zeros(n_lines, bool),
         g=np.full(n_lines, -1, np.int8),
-        values={c: np.full(n_lines, np.nan) for c in LETTERS[1:]},
+        units=np.full(n_lines, -1, np.int8),
+        values={c: np.full(n_lines, np.nan) for c in VALUE_LETTERS},
     )
     if not data.endswith(b"\n"):
         data += b"\n"

@@ -1,11 +1,13 @@
 """The fast interpreter: a run of simple lines (bulk.py) in G90 G17 G91.1, at once.
 
 For lines ``a..b`` of a ``Scan`` and the state before them, modal values are
-forward-filled with numpy: the motion mode from the G words, each axis from its
-words, the feed from F. Rows go to the ``OpBuffer`` as arrays. The run stops before
-the first line the general interpreter must judge (an error of any kind), so
-both paths report the same errors; ``run`` returns the new state and where it
-stopped. The semantics are those of ``interp.py``, which the tests compare against.
+forward-filled with numpy: the motion mode from the G words, the units from G20/G21,
+each axis from its words, the feed from F (read in the units before the line's
+G20/G21, as rs274ngc does), the spindle from M3/M5/S. Rows go to the ``OpBuffer`` as
+arrays. The run stops before the first line the general interpreter must judge (an
+error of any kind), so both paths report the same errors; ``run`` returns the new
+state and where it stopped. The semantics are those of ``interp.py``/``motion.py``;
+the tests compare the two paths on random programs.
 """
 
 from __future__ import annotations
@@ -15,7 +17,7 @@ import numpy as np
 from .arcs import RADIUS_TOL, spiral_refused
 from .bulk import Scan
 from .motion import LIMIT_MM
-from .ops import ARC_CW, OpBuffer
+from .ops import ARC_CW, SPINDLE, OpBuffer
 from .state import State
 
 
@@ -27,77 +29,110 @@ def _ffill(values: np.ndarray, first: float) -> np.ndarray:
     return arr[idx][1:]
 
 
-def _bad_words(g, has_axis, has_ij, mode):
-    """Lines the general path must judge, from the words alone."""
-    to_be = np.where(g >= 0, g, np.where(has_axis, mode, -1))
-    arc = (to_be == 2) | (to_be == 3)
-    bad = has_axis & (to_be < 0)
-    bad |= has_ij & ~arc
-    return bad, to_be
-
-
-def _arc_bad(start, end, center, inch: bool) -> np.ndarray:
-    k = 25.4 if inch else 1.0
-    r1 = np.hypot(center[:, 0] - start[:, 0], center[:, 1] - start[:, 1]) / k
-    r2 = np.hypot(center[:, 0] - end[:, 0], center[:, 1] - end[:, 1]) / k
-    zero = (r1 < RADIUS_TOL[inch]) | (r2 < RADIUS_TOL[inch])
-    return zero | spiral_refused(np.abs(r1 - r2), np.maximum(r1, r2), inch)
-
-
 def _first(mask: np.ndarray) -> int:
     hits = np.flatnonzero(mask)
     return int(hits[0]) if len(hits) else len(mask)
 
 
-def _modes(scan: Scan, a: int, b: int, state: State):
-    g = scan.g[a:b]
-    v = {c: scan.values[c][a:b] for c in "XYZIJF"}
-    has_axis = ~(np.isnan(v["X"]) & np.isnan(v["Y"]) & np.isnan(v["Z"]))
-    has_ij = ~(np.isnan(v["I"]) & np.isnan(v["J"]))
-    gf = np.where(g >= 0, g, np.nan).astype(np.float64)
-    mode = _ffill(gf, np.nan if state.motion is None else state.motion)
-    mode = np.where(np.isnan(mode), -1, mode).astype(np.int8)
-    return g, v, has_axis, has_ij, mode
+def _nan(x):
+    return np.nan if x is None else float(x)
 
 
-def run(scan: Scan, a: int, b: int, state: State, ops: OpBuffer) -> tuple[State, int]:
-    """Interpret lines ``a..b`` (0-based) on the fast path; return (state, stop line)."""
-    g, v, has_axis, has_ij, mode = _modes(scan, a, b, state)
-    bad, to_be = _bad_words(g, has_axis, has_ij, mode)
-    arc = (to_be == 2) | (to_be == 3)
-    bad |= arc & ~has_ij
-    with np.errstate(invalid="ignore"):
-        for c in "XYZIJ":
-            bad |= np.abs(v[c]) * state.scale > LIMIT_MM
-    stop = _first(bad)
-    k = state.scale
-    moving = (has_axis[:stop] | arc[:stop]) & (to_be[:stop] >= 0)
-    end = np.stack([_ffill(v[c][:stop] * k, state.pos[i]) for i, c in enumerate("XYZ")], axis=1)
-    rows = np.flatnonzero(moving)
+class _Run:
+    """Columns of lines ``a..b`` and the modal values forward-filled over them."""
+
+    def __init__(self, scan: Scan, a: int, b: int, state: State):
+        self.v = {c: scan.values[c][a:b] for c in "XYZIJFMS"}
+        g = scan.g[a:b]
+        units = scan.units[a:b]
+        self.inch = _ffill(np.where(units >= 0, units, np.nan), float(state.inch)) > 0.5
+        self.scale = np.where(self.inch, 25.4, 1.0)
+        self.scale_before = np.concatenate(([state.scale], self.scale[:-1]))
+        v = self.v
+        self.has_axis = ~(np.isnan(v["X"]) & np.isnan(v["Y"]) & np.isnan(v["Z"]))
+        self.has_ij = ~(np.isnan(v["I"]) & np.isnan(v["J"]))
+        mode = _ffill(np.where(g >= 0, g, np.nan), _nan(state.motion))
+        self.mode = np.where(np.isnan(mode), -1, mode).astype(np.int8)
+        self.to_be = np.where(g >= 0, g, np.where(self.has_axis, self.mode, -1))
+        self.arc = (self.to_be == 2) | (self.to_be == 3)
+
+    def bad_words(self) -> np.ndarray:
+        """Lines the general path must judge, from the words alone."""
+        bad = self.has_axis & (self.to_be < 0)
+        bad |= self.has_ij & ~self.arc
+        bad |= self.arc & ~self.has_ij
+        with np.errstate(invalid="ignore"):
+            for c in "XYZIJ":
+                bad |= np.abs(self.v[c]) * self.scale > LIMIT_MM
+        return bad
+
+    def spindle(self, stop: int, state: State):
+        """(event mask, rpm value) of M3/M5/S lines before ``stop``."""
+        m, s = self.v["M"][:stop], self.v["S"][:stop]
+        on = _ffill(np.where(m == 3, 1.0, np.where(m == 5, 0.0, np.nan)), float(state.spindle_on)) > 0.5
+        speed = _ffill(s, _nan(state.speed))
+        event = ~np.isnan(m) | (~np.isnan(s) & on)
+        value = np.where(m == 5, 0.0, np.where(np.isnan(speed), -1.0, speed))
+        return event, value, on, speed
+
+
+def _arc_bad(start, end, center, inch) -> np.ndarray:
+    k = np.where(inch, 25.4, 1.0)
+    r1 = np.hypot(center[:, 0] - start[:, 0], center[:, 1] - start[:, 1]) / k
+    r2 = np.hypot(center[:, 0] - end[:, 0], center[:, 1] - end[:, 1]) / k
+    zero = (r1 < np.where(inch, RADIUS_TOL[True], RADIUS_TOL[False])) | (r2 < np.where(inch, RADIUS_TOL[True],
+                                                                                      RADIUS_TOL[False]))
+    err, r = np.abs(r1 - r2), np.maximum(r1, r2)
+    return zero | np.where(inch, spiral_refused(err, r, True), spiral_refused(err, r, False))
+
+
+def _geometry(run: _Run, stop: int, rows: np.ndarray, state: State):
+    """End points, kinds and centres of the rows; the first arc LinuxCNC refuses."""
+    end = np.stack([_ffill(run.v[c][:stop] * run.scale[:stop], state.pos[i])
+                    for i, c in enumerate("XYZ")], axis=1)
     ends = end[rows]
     starts = np.empty_like(ends)
     if len(rows):
         starts[0] = state.pos
         starts[1:] = ends[:-1]
-    kinds = to_be[:stop][rows]
-    is_arc = (kinds == 2) | (kinds == 3)
+    is_arc = run.arc[rows] & (run.to_be[rows] >= 0)
     center = np.full_like(ends, np.nan)
-    ij = np.nan_to_num(np.stack([v["I"][:stop][rows], v["J"][:stop][rows]], axis=1)) * k
-    center[is_arc, :2] = starts[is_arc, :2] + ij[is_arc]
-    center[is_arc, 2] = starts[is_arc, 2]
-    arc_bad = np.zeros(len(rows), bool)
-    arc_bad[is_arc] = _arc_bad(starts[is_arc], ends[is_arc], center[is_arc], state.inch)
+    sel = np.flatnonzero(is_arc)
+    arc_rows = rows[sel]
+    ij = np.stack([run.v["I"][arc_rows], run.v["J"][arc_rows]], axis=1)
+    ij = np.where(np.isnan(ij), 0.0, ij) * run.scale[arc_rows, None]
+    center[sel, :2] = starts[sel, :2] + ij
+    center[sel, 2] = starts[sel, 2]
+    bad = np.zeros(len(rows), bool)
+    bad[sel] = _arc_bad(starts[sel], ends[sel], center[sel], run.inch[arc_rows])
+    return end, ends, center, bad
+
+
+def run(scan: Scan, a: int, b: int, state: State, ops: OpBuffer) -> tuple[State, int]:
+    """Interpret lines ``a..b`` (0-based) on the fast path; return (state, stop line)."""
+    r = _Run(scan, a, b, state)
+    stop = _first(r.bad_words())
+    event, rpm, on, speed = r.spindle(stop, state)
+    moving = (r.has_axis[:stop] | r.arc[:stop]) & (r.to_be[:stop] >= 0)
+    rows = np.flatnonzero(moving | event)
+    end, ends, center, arc_bad = _geometry(r, stop, rows, state)
     if arc_bad.any():
         cut = _first(arc_bad)
-        stop, rows, ends, kinds, center = int(rows[cut]), rows[:cut], ends[:cut], kinds[:cut], center[:cut]
-    feed = _ffill(v["F"][:stop] * k, state.feed)
-    turn = np.where(kinds == 2, -1, np.where(kinds == 3, 1, 0)).astype(np.int32)
-    kind = np.where(kinds >= 2, kinds - 2 + ARC_CW, kinds).astype(np.int8)
-    ops.add_block(rows + a + 1, kind, ends, center, turn, feed[rows])
+        stop, rows, ends, center = int(rows[cut]), rows[:cut], ends[:cut], center[:cut]
+    feed = _ffill(r.v["F"][:stop] * r.scale_before[:stop], state.feed)
+    to_be = r.to_be[rows]
+    kind = np.where(event[rows], SPINDLE, np.where(to_be >= 2, to_be - 2 + ARC_CW, to_be)).astype(np.int8)
+    turn = np.where(to_be == 2, -1, np.where(to_be == 3, 1, 0)).astype(np.int32)
+    turn[event[rows]] = 0
+    value = np.where(event[rows], rpm[rows], feed[rows])
+    ops.add_block(rows + a + 1, kind, ends, center, turn, value)
     new = state.copy()
     if stop > 0:
-        new.pos = [float(x) for x in end[stop - 1]]
-        new.feed = float(feed[stop - 1])
-        last_mode = int(mode[stop - 1])
-        new.motion = None if last_mode < 0 else last_mode
+        last = stop - 1
+        new.pos = [float(x) for x in end[last]]
+        new.feed = float(feed[last])
+        new.motion = None if r.mode[last] < 0 else int(r.mode[last])
+        new.inch = bool(r.inch[last])
+        new.spindle_on = bool(on[last])
+        new.speed = None if np.isnan(speed[last]) else float(speed[last])
     return new, a + stop

@@ -13,6 +13,7 @@ from app.gcode.lexer import lex_line
 SETTINGS = settings(max_examples=80, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 
 ALPHABET = "GXYZIJKFRPMSTNgxyzij0123456789.-+ \t()%;*/#[]\r\n"
+WORDISH = st.lists(st.sampled_from(["G21", "G20", "M3", "M5", "S100", "G1", "X1.5", "F10", " ", "(c)"]))
 gcodeish = st.text(alphabet=ALPHABET, max_size=200)
 coord = st.floats(-200, 200, allow_nan=False).map(lambda v: round(v, 4))
 
@@ -46,7 +47,8 @@ def _lexed_row(line: str):
 
 
 @SETTINGS
-@given(st.lists(gcodeish.filter(lambda s: "\n" not in s), min_size=1, max_size=20))
+@given(st.lists(st.one_of(gcodeish.filter(lambda s: "\n" not in s), WORDISH.map("".join)), min_size=1,
+                max_size=20))
 def test_bulk_reads_what_the_lexer_reads(lines):
     lines = [line.replace("\r", "") for line in lines]
     scan = bulk.scan("\n".join(lines).encode(), len(lines))
@@ -55,9 +57,11 @@ def test_bulk_reads_what_the_lexer_reads(lines):
             continue
         row = _lexed_row(line)
         assert row is not None, line
-        got = {c: scan.values[c][i] for c in "XYZIJF" if not np.isnan(scan.values[c][i])}
+        got = {c: scan.values[c][i] for c in "XYZIJFMS" if not np.isnan(scan.values[c][i])}
         if scan.g[i] >= 0:
             got["G"] = float(scan.g[i])
+        if scan.units[i] >= 0:
+            got["G"] = 20.0 if scan.units[i] else 21.0
         row.pop("N", None)
         assert got == row, line
 
@@ -158,11 +162,12 @@ def test_fast_path_and_general_path_agree(text):
     assert fast.diagnostics == slow.diagnostics
 
 
+NUMBERS = ["0", "1", "-1", "3", "5", "5.5", ".5", "-0.", "+3", "10", "2.0001", "1e"]
 simple_line = st.builds(
     lambda g, words, comment: " ".join(([f"G{g}"] if g is not None else []) + words) + comment,
-    st.one_of(st.none(), st.sampled_from(["0", "1", "2", "3", "01", "02", "80", "4", "17"])),
-    st.lists(st.builds(lambda c, v: f"{c}{v}", st.sampled_from("XYZIJFNR"),
-                       st.sampled_from(["0", "1", "-1", "5.5", ".5", "-0.", "+3", "10", "2.0001", "1e"])),
+    st.one_of(st.none(), st.sampled_from(["0", "1", "2", "3", "01", "02", "80", "4", "17", "20", "21"])),
+    st.lists(st.builds(lambda c, v: f"{c}{v}", st.sampled_from("XYZIJFNRMS"),
+                       st.sampled_from(NUMBERS)),
              max_size=5, unique_by=lambda w: w[0]),
     st.sampled_from(["", "(c)", " ; x", "(a)(b)"]),
 )

@@ -1,0 +1,128 @@
+"""G-code load benchmark: 1,000,000+ lines -> Program with Toolpath arrays.
+
+Builds (or reuses) ``bench/data/big.ngc`` from shifted copies of the Inkscape samples
+in ``resources/samples/*.ngc`` (each copy moved a little in X and Y, its ``%`` and
+``M2``/``M30`` lines dropped, one ``M2`` at the end), then prints: the best of three
+wall-clock times of ``app.gcode.load`` (Toolpath included), the peak resident memory of
+a fresh process doing one load, the time to render the device lines (done on first
+use), and the time PyPI ``gcodeparser`` takes to parse the same file, with the ratio.
+Figures are printed, never asserted.
+"""
+
+from __future__ import annotations
+
+import re
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+DATA = ROOT / "bench" / "data"
+BIG = DATA / "big.ngc"
+TARGET_LINES = 1_000_000
+_AXIS = re.compile(r"([XY])(-?\d*\.?\d+)")
+_DROP = re.compile(r"^\s*(%|M0?2\b|M30\b)", re.IGNORECASE)
+
+
+def _shift(text: str, dx: float, dy: float) -> str:
+    def repl(m: re.Match) -> str:
+        d = dx if m.group(1) == "X" else dy
+        return f"{m.group(1)}{float(m.group(2)) + d:.6f}"
+
+    return _AXIS.sub(repl, text)
+
+
+def _sources() -> tuple[list[str], str]:
+    samples = sorted((ROOT / "resources" / "samples").glob("*.ngc"))
+    texts = []
+    for path in samples:
+        lines = [line for line in path.read_text().splitlines() if not _DROP.match(line)]
+        texts.append("\n".join(lines) + "\n")
+    if texts:
+        return texts, f"{len(texts)} samples from resources/samples"
+    return [_generated()], "a generated Inkscape-like file (no samples found)"
+
+
+def _generated() -> str:
+    rows = ["G21", "G00 Z5.000000", "G00 X10.000000 Y10.000000", "G01 Z-0.125000 F100.0(Penetrate)"]
+    for k in range(200):
+        rows.append(f"G01 X{10 + k * 0.1:.6f} Y{10 + (k % 7) * 0.3:.6f} Z-0.125000 F400.000000")
+    rows.append("G02 X30.000000 Y10.000000 Z-0.125000 I0.000000 J5.000000 F400.000000")
+    rows.append("G00 Z5.000000")
+    return "\n".join(rows) + "\n"
+
+
+def build() -> tuple[Path, str]:
+    """The big file (built once, then reused) and a description of its origin."""
+    texts, origin = _sources()
+    if BIG.exists() and sum(1 for _ in BIG.open()) >= TARGET_LINES:
+        return BIG, origin + " (reused)"
+    DATA.mkdir(parents=True, exist_ok=True)
+    out, count, copy = [], 0, 0
+    while count < TARGET_LINES:
+        for text in texts:
+            inch = re.search(r"\bG20\b", text) is not None
+            step = (copy % 10) * (0.5 / 25.4 if inch else 0.5)
+            shifted = _shift(text, step, step)
+            out.append(shifted)
+            out.append("G21\n" if inch else "")
+            count += shifted.count("\n") + inch
+            copy += 1
+    out.append("M5\nM2\n")
+    BIG.write_text("".join(out))
+    return BIG, origin
+
+
+def _best_of(n: int, fn) -> tuple[float, object]:
+    best, result = float("inf"), None
+    for _ in range(n):
+        started = time.perf_counter()
+        result = fn()
+        best = min(best, time.perf_counter() - started)
+    return best, result
+
+
+_PEAK = """
+import resource, sys
+from app.gcode import load
+base = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
+program = load(sys.argv[1]); program.toolpath.length.sum()
+peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
+print(base // 1024, peak // 1024)
+"""
+
+
+def _peak_mb(path: Path) -> tuple[int, int]:
+    out = subprocess.run([sys.executable, "-c", _PEAK, str(path)], capture_output=True, text=True,
+                         check=True, cwd=ROOT).stdout.split()
+    return int(out[0]), int(out[1])
+
+
+def _gcodeparser_seconds(text: str) -> float:
+    from gcodeparser import parse_gcode_lines
+
+    started = time.perf_counter()
+    for _ in parse_gcode_lines(text):
+        pass
+    return time.perf_counter() - started
+
+
+def main() -> None:
+    from app.gcode import load
+
+    path, origin = build()
+    text = path.read_text()
+    lines = text.count("\n")
+    print(f"file: {path.relative_to(ROOT)}: {lines:,} lines, {len(text) / 1e6:.1f} MB, from {origin}")
+    seconds, program = _best_of(3, lambda: load(path))
+    tp = program.toolpath
+    print(f"load -> Toolpath: {seconds:.2f} s best of 3 ({lines / seconds / 1e6:.2f} M lines/s); "
+          f"{len(tp):,} moves, {len(program.errors)} errors, {len(program.warnings)} warnings")
+    base, peak = _peak_mb(path)
+    print(f"peak resident memory of one load: {peak} MB (python + numpy + app alone: {base} MB)")
+    started = time.perf_counter()
+    device = program.device_lines
+    print(f"device lines (rendered on first use): {len(device):,} in {time.perf_counter() - started:.2f} s")
+    theirs = _gcodeparser_seconds(text)
+    print(f"gcodeparser parse_gcode_lines: {theirs:.2f} s; ours is {theirs / seconds:.1f}x faster")
