@@ -2,9 +2,9 @@
 
 Contract: ``run_lines(lines, mode=..., profile=...)`` homes a fresh controller, feeds the
 lines as the CNC MCU would (parse, enqueue while slots are free), records the encoder-
-measured position every 1 ms, and returns a ``JobResult``: job time, contour error
-(distance of each measured point from the programmed path: lines exact, arcs chorded
-to 1 um; max and RMS), final position error and any alarms. Used by tests and the bench;
+measured position every 1 ms (``ctl.trace``), and returns a ``JobResult``: job time,
+contour error (distance of each measured point from the programmed path: lines exact,
+arcs chorded to 1 um; max and RMS), final position error and any alarms. Used by tests and the bench;
 never by the simulator itself.
 """
 
@@ -18,8 +18,6 @@ from backend_sim.motion.controller import MotionController
 from backend_sim.motion.dialect import DialectParser
 from backend_sim.motion.events import Alarm, Finished
 from backend_sim.motion.geometry import Segment
-
-_WINDOW = 6  # moves either side of the one being executed that may be nearest
 
 
 @dataclass
@@ -43,35 +41,40 @@ def home(ctl: MotionController, limit_ms: int = 200_000) -> None:
     raise RuntimeError(f"homing did not finish: {ctl.events()}")
 
 
-def run_lines(lines, mode: str = "planner", profile=None, record: bool = True,
-              limit_s: float = 3600.0) -> JobResult:
+def run_lines(lines, mode: str = "planner", profile=None, limit_s: float = 3600.0,
+              chunk_ms: int = 20) -> JobResult:
+    """Home a fresh controller, run ``lines`` (device dialect, work mm) and measure."""
     ctl = MotionController(profile, mode=mode, start_mm=(0.0, 0.0, 30.0))
     home(ctl)
     parser = DialectParser(ctl.profile.travel.work_offset(), ctl.commanded_mm)
+    start = ctl.commanded_mm
     moves = [parser.parse(seq, line) for seq, line in enumerate(lines)]
-    polylines = _polylines(moves, ctl.commanded_mm)
-    samples, seqs, alarms = [], [], []
-    t0, nxt, done = ctl.now_ms, 0, -1
+    trace: list = []
+    ctl.trace = trace.append
+    alarms, finished, t0, nxt = [], [], ctl.now_ms, 0
     while (nxt < len(moves) or not ctl.idle()) and ctl.now_ms - t0 < limit_s * 1000:
         while nxt < len(moves) and ctl.free_slots() > 0 and ctl.state != "ALARM":
             ctl.enqueue(moves[nxt])
             nxt += 1
-        ctl.advance(1)
+        ctl.advance(chunk_ms)
         for ev in ctl.events():
-            if isinstance(ev, Finished):
-                done = ev.seq
-            elif isinstance(ev, Alarm):
+            if isinstance(ev, Alarm):
                 alarms.append(ev)
+            elif isinstance(ev, Finished):
+                finished.append((ev.at_ms - t0 - 1, ev.seq))
         if ctl.state == "ALARM":
             break
-        if record:
-            samples.append(ctl.measured_mm)
-            seqs.append(done)
-    return _result(ctl, moves, polylines, samples, seqs, alarms, ctl.now_ms - t0)
+    ctl.trace = None
+    offsets = np.array([a[6] for a in ctl.axes])  # servo.STATE "off"
+    measured = np.array(trace) / ctl.model.counts_per_mm + offsets
+    done = np.full(len(measured), -1)
+    for tick, seq in finished:  # sample index -> last move finished by then
+        done[max(0, tick):] = seq
+    return _result(ctl, moves, polylines(moves, start), measured, done, alarms, ctl.now_ms - t0)
 
 
-def _polylines(moves, start) -> list[np.ndarray]:
-    """Per move, its programmed path as points (arcs chorded to 1 um)."""
+def polylines(moves, start) -> list[np.ndarray]:
+    """Per move, its programmed path as points (arcs chorded to 1 um), machine mm."""
     out, pos = [], tuple(start)
     for m in moves:
         if m.moves_axes:
@@ -82,11 +85,11 @@ def _polylines(moves, start) -> list[np.ndarray]:
     return out
 
 
-def _result(ctl, moves, polylines, samples, seqs, alarms, job_ms) -> JobResult:
-    end = np.array(moves[-1].target if moves else ctl.commanded_mm)
+def _result(ctl, moves, paths, measured, done, alarms, job_ms) -> JobResult:
+    end = np.array(paths[-1][-1])
     final = np.array(ctl.measured_mm) - end
     final_true = np.array(ctl.true_mm) - end
-    err = contour_errors(np.array(samples), np.array(seqs), polylines) if samples else np.zeros(1)
+    err = contour_errors(measured, done, paths) if len(measured) else np.zeros(1)
     return JobResult(
         job_s=job_ms / 1000.0,
         contour_max_mm=float(err.max()),
@@ -98,26 +101,33 @@ def _result(ctl, moves, polylines, samples, seqs, alarms, job_ms) -> JobResult:
     )
 
 
-def contour_errors(points: np.ndarray, seqs: np.ndarray, polylines: list[np.ndarray]) -> np.ndarray:
-    """Distance of each point from the path of the moves near the one it was executing."""
+def contour_errors(points: np.ndarray, done: np.ndarray, paths: list[np.ndarray],
+                   window: int = 8) -> np.ndarray:
+    """Distance of each point from the programmed path near the move it was executing.
+
+    ``done[i]`` is the last move finished when point ``i`` was measured; the point is
+    compared with moves ``done+1-window .. done+1+window`` (the tool lags the setpoint
+    by far less than that). Leaving distant moves out can only raise a distance, so
+    the result errs on the safe side.
+    """
     out = np.empty(len(points))
-    n = len(polylines)
-    for d in np.unique(seqs):
-        mask = seqs == d
-        lo, hi = max(0, d + 1 - _WINDOW), min(n, d + 2 + _WINDOW)
-        segs_a = np.concatenate([p[:-1] for p in polylines[lo:hi]])
-        segs_b = np.concatenate([p[1:] for p in polylines[lo:hi]])
-        out[mask] = _distance(points[mask], segs_a, segs_b)
+    n = len(paths)
+    for d in np.unique(done):
+        mask = done == d
+        lo, hi = max(0, d + 1 - window), min(n, d + 2 + window)
+        a = np.concatenate([p[:-1] for p in paths[lo:hi]])
+        b = np.concatenate([p[1:] for p in paths[lo:hi]])
+        out[mask] = _distance(points[mask], a, b)
     return out
 
 
-def _distance(p: np.ndarray, a: np.ndarray, b: np.ndarray, chunk: int = 2048) -> np.ndarray:
+def _distance(p: np.ndarray, a: np.ndarray, b: np.ndarray, chunk: int = 512) -> np.ndarray:
+    """Distance of each point from the nearest of the segments a->b."""
     ab = b - a
     den = np.maximum(np.einsum("ij,ij->i", ab, ab), 1e-18)
     out = np.empty(len(p))
     for s in range(0, len(p), chunk):
         q = p[s:s + chunk, None, :]
         t = np.clip(np.einsum("pij,ij->pi", q - a[None], ab) / den, 0.0, 1.0)
-        nearest = a[None] + t[..., None] * ab[None]
-        out[s:s + chunk] = np.sqrt(((q - nearest) ** 2).sum(-1)).min(1)
+        out[s:s + chunk] = np.sqrt(((q - (a[None] + t[..., None] * ab[None])) ** 2).sum(-1).min(1))
     return out

@@ -11,7 +11,7 @@ import math
 
 from backend_sim.motion import servo
 from backend_sim.motion.dialect import Move, soft_limit_violation
-from backend_sim.motion.events import Alarm, Homed, MotionError, StateChanged, Stopped
+from backend_sim.motion.events import Alarm, Finished, Homed, MotionError, StateChanged, Stopped
 from backend_sim.motion.homing import Homing
 
 _S = {name: n for n, name in enumerate(servo.STATE)}
@@ -30,6 +30,8 @@ class ControllerOps:
             raise MotionError("BUSY", f"machine is {'stopping' if self.stopping else self.state}")
         if self.free_slots() <= 0:
             raise MotionError("QUEUE_FULL", f"all {self.capacity} slots in use")
+        if move.seq == 0:
+            self.done_seq = -1  # a new stream
         self.job.add(move)
         if self.state == "IDLE":
             if self._cover:
@@ -193,6 +195,7 @@ class ControllerOps:
             self.pressed[k] = self._is_pressed(k)
         old, self.state = self.state, "IDLE"
         self.homed, self.stopping, self.homing, self.servo_on = False, False, None, True
+        self.done_seq = -1
         self.brk = 0
         self.spindle.reset(self.now_ms)
         self.spindle_target = 0.0
@@ -231,7 +234,11 @@ class ControllerOps:
             elif self.state in ("JOG", "HOMING"):
                 self.stop()
 
-    # -- services for the planner's non-motion moves ---------------------------------
+    # -- services for the planner and the simple interpolator ---------------------------
+    def finished(self, move: Move) -> None:
+        self.done_seq = move.seq
+        self._events.append(Finished(move.seq, move.source, self.now_ms))
+
     def spindle_command(self, rpm: float, ms: int) -> bool:
         if ms == 1:
             self.spindle_target = rpm

@@ -11,10 +11,12 @@ from dataclasses import dataclass
 
 @dataclass(frozen=True)
 class Finished:
-    """Move ``seq`` has finished (setpoint at its end; ``end`` moves also settled)."""
+    """Move ``seq`` has finished (setpoint at its end; ``end`` moves also settled) at
+    controller time ``at_ms``."""
 
     seq: int
     source: str
+    at_ms: int = -1
 
 
 @dataclass(frozen=True)

@@ -20,7 +20,6 @@ from __future__ import annotations
 import math
 
 from backend_sim.motion.dialect import Move
-from backend_sim.motion.events import Finished
 from backend_sim.motion.geometry import Segment, junction_speed
 
 _EPS = 1e-9
@@ -47,6 +46,7 @@ class Planner:
         self.deviation = mo.junction_deviation_mm
         self.rapid = mo.rapid_mm_min / 60.0
         self.max_feed = mo.max_feed_mm_min / 60.0
+        self.vmax = max(self.rapid, self.max_feed)
         self.window = max(1, round(mo.accel_mm_s2 / mo.jerk_mm_s3 * 1000))
         self.ctx, self.events = ctx, events
         self.blocks: list[Block] = []
@@ -157,7 +157,7 @@ class Planner:
         if b.seg is not None and b.move.moves_axes:
             self.pos = b.seg.end
         if b.move.seq >= 0:
-            self.events.append(Finished(b.move.seq, b.move.source))
+            self.ctx.finished(b.move)
 
     @staticmethod
     def _point(b: Block, d: float):

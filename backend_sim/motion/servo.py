@@ -31,46 +31,36 @@ from __future__ import annotations
 
 import math
 
+from backend_sim.motion import fastpath
+
 # Per-axis state, in this order, in ctl.axes[k] (a list): see STATE.
 STATE = ("i", "v", "x", "c", "c0", "cpm", "off", "ig", "ep", "df", "sp", "pv", "lo", "hi",
          "kp", "ki", "kd", "rest")
 
 _HEAD = """
-def _run(ctl, n):
+def _run(ctl, n, fast=None):
     step = ctl.source_step
+    trace = ctl.trace
     events = ctl._events
     ne = len(events)
     err = ctl.errors
     on = ctl.servo_on
-    kv, ka, kc, vc = ctl.ff
-    kv *= 1000.0
-    ka *= 1e6
-    kcv = kc / (vc * 1e-3)
-    vc *= 1e-3
-    q_ii, q_iv, q_iu, q_id, q_vi, q_vv, q_vu, q_vd, q_xi, q_xv, q_xu, q_xd = ctl.model.moving
-    bus = ctl.model.bus_v
-    q_iu *= bus
-    q_vu *= bus
-    q_xu *= bus
-    ae, be = ctl.model.stuck
-    be *= bus
-    ib = ctl.model.tc / ctl.model.ke
-    mpc = 1.0 / ctl.model.counts_per_mm
-    ferr = ctl.ferr
-    db = 0.5 * mpc
-    fb = 1.0 - ctl.d_alpha
-    fg = ctl.d_alpha * 1000.0
+    (kv, ka, kc, kcv, vc, q_ii, q_iv, q_iu, q_id, q_vi, q_vv, q_vu, q_vd, q_xi, q_xv, q_xu, q_xd,
+     ae, be, ib, mpc, ferr, db, fb, fg) = ctl.loop_constants
     now = ctl.now_ms
     brk = 0
     {load}
     done = 0
     while done < n:
+        {guard}
         done += 1
         now += 1
         ctl.now_ms = now
-        s0, s1, s2 = step()
+        {setpoint}
         {body}
-        if brk or len(events) != ne:
+        if trace is not None:
+            trace((c0, c1, c2))
+        if brk or len(events) != ne{stop}:
             break
     {store}
     ctl.brk = brk
@@ -103,7 +93,7 @@ _AXIS = """
             if v{k} == 0.0:
                 t_i = ae * i{k} + be * u
                 if -ib < t_i < ib:
-                    if not vf and not pv{k} and -1e-12 < t_i - i{k} < 1e-12 and -db <= e <= db:
+                    if not vf and not pv{k} and -1e-12 < t_i - i{k} < 1e-12 and (-db <= e <= db or not on):
                         rest{k} = -1e-9 < df{k} < 1e-9
                     i{k} = t_i
                     d = 0.0
@@ -126,18 +116,42 @@ _AXIS = """
                 brk = brk or {k} + 11
 """
 
-def _generate():
+def constants(ctl) -> tuple:
+    """The loop's constants, in per-tick units (see ``_HEAD``); recomputed on changes."""
+    m = ctl.model
+    kv, ka, kc, vc = ctl.ff
+    bus = m.bus_v
+    q = list(m.moving)
+    for n in (2, 6, 10):  # voltage inputs: take the duty directly
+        q[n] *= bus
+    ae, be = m.stuck
+    mpc = 1.0 / m.counts_per_mm
+    return (kv * 1000.0, ka * 1e6, kc, kc / (vc * 1e-3), vc * 1e-3, *q, ae, be * bus, m.tc / m.ke,
+            mpc, ctl.ferr, 0.5 * mpc, 1.0 - ctl.d_alpha, ctl.d_alpha * 1000.0)
+
+
+def _generate(fused: bool):
     load = "\n    ".join(
         f"{', '.join(n + str(k) for n in STATE)} = ctl.axes[{k}]" for k in range(3)
     )
     store = "\n    ".join(
         f"ctl.axes[{k}][:] = ({', '.join(n + str(k) for n in STATE)})" for k in range(3)
     )
-    body = "".join(_AXIS.format(k=k) for k in range(3))
-    source = _HEAD.replace("{load}", load).replace("{store}", store).replace("{body}", body)
+    parts = {
+        "{load}": load + (fastpath.LOAD if fused else ""),
+        "{store}": store + (fastpath.STORE if fused else ""),
+        "{guard}": fastpath.GUARD.strip() if fused else "",
+        "{setpoint}": fastpath.SETPOINT.strip() if fused else "s0, s1, s2 = step()",
+        "{stop}": " or p_still" if fused else "",
+        "{body}": "".join(_AXIS.format(k=k) for k in range(3)),
+    }
+    source = _HEAD
+    for key, text in parts.items():
+        source = source.replace(key, text)
     namespace = {"math": math}
     exec(compile(source, "<servo loop>", "exec"), namespace)  # noqa: S102 - generated once, fixed text
     return namespace["_run"], source
 
 
-run, SOURCE = _generate()
+run, SOURCE = _generate(False)
+run_fused, SOURCE_FUSED = _generate(True)

@@ -14,7 +14,6 @@ import math
 from collections import deque
 
 from backend_sim.motion.dialect import Move
-from backend_sim.motion.events import Finished
 from backend_sim.motion.geometry import Segment
 from backend_sim.motion.planner import barrier_done
 
@@ -145,4 +144,4 @@ class SimpleInterpolator:
     def _finish(self) -> None:
         move, self.current = self.current, None
         if move.seq >= 0:
-            self.events.append(Finished(move.seq, move.source))
+            self.ctx.finished(move)
