@@ -23,6 +23,8 @@ from app.comm.modal import restart_preamble
 from app.comm.stream import Stream, sd_crc32
 
 S = SessionState
+PROGRESS_EVERY_S = 0.1
+UNKNOWN_BOOT = "0"
 STOP_ALARMS = frozenset({"LIMIT", "SOFT_LIMIT", "COVER_OPEN", "FOLLOWING_ERROR"})
 
 
@@ -115,7 +117,8 @@ class JobControl:
         """After a machine reset and re-homing: restart the job at done+1 (modal state restored)."""
         if self.state is not S.RESTART_REQUIRED or self.stream is None:
             return self._refuse("NO_RESTART", "there is no job waiting for a restart")
-        if self.status is None or not self.status.homed:
+        homed = self.status is not None and self.status.homed or self.homed_boot == self.boot
+        if self.status is None or not homed:
             return self._refuse("HOME_REQUIRED", "home the machine before restarting the job")
         start = self.stream.program_index(self.stream.done) + 1
         pre = restart_preamble(self.lines, start)
@@ -245,7 +248,7 @@ class JobControl:
 
     def _job_status(self, event: StatusEvent, now: float) -> None:
         stream = self.stream
-        if stream is None:
+        if stream is None or event.boot == UNKNOWN_BOOT:
             return
         if self.state is S.INTERRUPTED:
             if self.link.state.value == "CONNECTED":
@@ -268,7 +271,7 @@ class JobControl:
     def _report_progress(self, now: float, force: bool = False) -> None:
         progress = self.stream.progress()
         last, when = self._last_progress
-        if progress != last and (force or now - when >= 0.1):
+        if progress != last and (force or now - when >= PROGRESS_EVERY_S):
             self._last_progress = (progress, now)
             self.listener.on_progress(progress)
 

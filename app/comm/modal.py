@@ -4,8 +4,9 @@ After the machine was reset (new boot id) and re-homed, a job restarts at line
 ``start`` from the home position. ``restart_preamble(lines, start)`` returns the
 machine-dialect lines that put back what the lines before ``start`` left in force:
 spindle (``M03 S..``), a retract to the highest Z seen, a rapid to the XY where line
-``start - 1`` ended, and a feed move down to its Z that also restores the feed
-(``F``). Units need no line: the dialect is absolute millimetres only.
+``start - 1`` ended carrying the modal feed (``F``; the dialect keeps F modal from any
+motion line), and a feed move down to its Z. Units need no line: the dialect is
+absolute millimetres only.
 """
 
 from __future__ import annotations
@@ -71,10 +72,11 @@ def restart_preamble(lines: list[str], start: int) -> list[str]:
         out.append(f"M03 S{state.spindle_rpm:.0f}")
     if state.top_z is not None:
         out.append(f"G00 Z{_fmt(state.top_z)}")
+    feed = f" F{state.feed:g}" if state.feed is not None else ""
     if state.x is not None and state.y is not None:
-        out.append(f"G00 X{_fmt(state.x)} Y{_fmt(state.y)}")
-    if state.z is not None and state.feed is not None:
-        out.append(f"G01 Z{_fmt(state.z)} F{state.feed:g}")
-    elif state.z is not None:
-        out.append(f"G00 Z{_fmt(state.z)}")
+        out.append(f"G00 X{_fmt(state.x)} Y{_fmt(state.y)}{feed}")
+    if state.z is not None and state.z != state.top_z:
+        out.append(f"G01 Z{_fmt(state.z)}{feed}" if feed else f"G00 Z{_fmt(state.z)}")
+    elif feed and (state.x is None or state.y is None):
+        out.append(f"G01{feed}")
     return out

@@ -37,7 +37,7 @@ from app.comm.events import (
     StatusEvent,
 )
 from app.comm.heartbeat import LinkMonitor, LinkState
-from app.comm.jobs import JobControl
+from app.comm.jobs import UNKNOWN_BOOT, JobControl
 from app.comm.listener import JOB_STATES, SENDING_STATES, TRANSITIONS, SessionListener, SessionState
 from app.comm.realtime import NAMES, RealtimeRepeater
 from app.comm.rtt import RttEstimator
@@ -47,7 +47,6 @@ from app.profile import Link
 S = SessionState
 QUALITY_LIMIT = 0.10
 QUALITY_MIN_FRAMES = 20
-PROGRESS_EVERY_S = 0.1
 
 
 class Session(JobControl):
@@ -68,6 +67,7 @@ class Session(JobControl):
         self.stream: Stream | None = None
         self.status: StatusEvent | None = None
         self.boot: str | None = None
+        self.homed_boot: str | None = None
         self.lines: list[str] = []
         self._write = write
         self._out = bytearray()
@@ -154,6 +154,8 @@ class Session(JobControl):
         return self.submit(words[0], *words[1:]) if words else None
 
     def _command_done(self, result: CommandResult) -> None:
+        if result.verb == "HOME" and result.ok:
+            self.homed_boot = self.boot
         then = self._then.pop(result.id, None)
         self.listener.on_command_done(result)
         if then is not None:
@@ -222,10 +224,12 @@ class Session(JobControl):
                             frame.done, frame.free, frame.rpm, frame.flags, now)
         self.status = event
         self.listener.on_status(event)
-        old_boot, self.boot = self.boot, event.boot
+        old_boot = self.boot
+        if event.boot != UNKNOWN_BOOT:
+            self.boot = event.boot
         if self.state is S.CONNECTING:
             self._set_state(S.READY)
-        if old_boot is not None and old_boot != event.boot:
+        if old_boot is not None and event.boot not in (old_boot, UNKNOWN_BOOT):
             self._log("warning", f"the machine was reset (boot id {old_boot} -> {event.boot})")
             self._machine_reset(event)
         result = self.commands.on_status()

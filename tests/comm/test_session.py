@@ -334,7 +334,7 @@ def test_new_boot_requires_home_and_confirmation():
     job = h.command("JOB")
     h.reply(fr.Ok(job.id, "JOB", job.args[0]))
     sent = [f.line for f in h.take() if isinstance(f, fr.Data)]
-    preamble = ["M03 S1000", "G00 Z5.000", "G00 X1.000 Y1.000", "G01 Z-1.000 F100"]
+    preamble = ["M03 S1000", "G00 Z5.000", "G00 X1.000 Y1.000 F100", "G01 Z-1.000 F100"]
     assert sent == preamble + ["G01 X5 Y1", "G01 X5 Y5"]
     h.reply(fr.Ack(5, 10), fr.Finished(5))
     job = h.rec.last("on_job_finished")
