@@ -42,7 +42,7 @@ from backend_sim.motion.dialect import DialectError, DialectParser, soft_limit_v
 from backend_sim.wire import Wire
 
 STATUS_PERIOD_MS = 50
-MOTION_CHUNK_MS = 5
+MOTION_CHUNK_MS = 50
 
 
 @dataclass
@@ -87,6 +87,7 @@ class CncMcu:
         self.lines: dict[int, str] = {}
         self.state = self.mc.state
         self.next_status = 0
+        self._busy = True
         self.send(Alarm("BOOT", self.boot_id))
         self.send_status()
 
@@ -102,25 +103,32 @@ class CncMcu:
         return not self.mc.idle()
 
     def next_due_ms(self) -> int | None:
-        if not self.busy:
+        if not self._busy:
             return None
-        return min(self.clock.now_ms + MOTION_CHUNK_MS, max(self.next_status, self.clock.now_ms + 1))
+        now = self.clock.now_ms
+        return min(now + MOTION_CHUNK_MS, max(self.next_status, now + 1))
+
+    def wake(self) -> None:
+        """The motion controller was changed from outside (panel, faults): tick it again."""
+        self._busy = True
 
     def run(self, ms: int) -> None:
-        if ms > 0 and self.busy:
+        if ms > 0 and self._busy:
             self.mc.advance(ms)
 
     def service(self) -> None:
         self._drain_events()
         if self.rx.pending():
             self._frames(self.rx.poll(self.clock.now))
-        if self.busy and self.clock.now_ms >= self.next_status:
+        self._busy = busy = not self.mc.idle()
+        if busy and self.clock.now_ms >= self.next_status:
             self.send_status()
 
     # ------------------------------------------------------------------ input
 
     def receive(self, data: bytes) -> None:
         self._frames(self.rx.feed(data, self.clock.now))
+        self._busy = not self.mc.idle()
 
     def _frames(self, items: list) -> None:
         for item in items:

@@ -82,7 +82,9 @@ class MainMcu:
     # ------------------------------------------------------------------ time
 
     def next_due_ms(self) -> int:
-        due = min(self.next_ping, self.next_housekeeping)
+        due = self.next_ping
+        if self.host_rx.pending() or self.uart_rx.pending():
+            due = min(due, self.next_housekeeping)
         if self.host_connected and not self.host_lost:
             due = min(due, self.last_host + self.lost_s)
         if not self.uart_lost:
@@ -95,8 +97,13 @@ class MainMcu:
         now = self.clock.now
         if now >= self.next_housekeeping:
             self.next_housekeeping = now + HOUSEKEEPING_S
+            if not (self.host_rx.pending() or self.uart_rx.pending()):
+                return self._timers(now)
             self._host_items(self.host_rx.poll(now))
             self._uart_items(self.uart_rx.poll(now))
+        return self._timers(now)
+
+    def _timers(self, now: float) -> None:
         if now >= self.next_ping:
             self.next_ping = now + PING_PERIOD_S
             self.send_cnc_own("PING", callback=None)

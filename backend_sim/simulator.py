@@ -179,6 +179,7 @@ class Simulator:
 
     def wake(self) -> None:
         """Something changed from outside (host write, button): recompute the next event."""
+        self.cnc.wake()
         self.condition.notify_all()
 
     def _thread_main(self) -> None:

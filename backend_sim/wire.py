@@ -76,6 +76,9 @@ class Wire:
 
     def take(self, now: float) -> bytes:
         """Every byte landed by ``now`` (seconds), in order."""
+        if not (self._pending and now >= self._t_first - 1e-12) and not (
+                self._delayed and self._delayed[0][0] <= now):
+            return b""
         out = self._landed(now)
         while self._delayed and self._delayed[0][0] <= now:
             t, _, piece = heapq.heappop(self._delayed)
@@ -85,6 +88,8 @@ class Wire:
 
     def next_time(self) -> float | None:
         """When the next newline, real-time byte or last waiting byte lands."""
+        if not self._pending and not self._delayed:
+            return None
         times = []
         if self._pending:
             match = _EVENT.search(self._pending)

@@ -1,0 +1,66 @@
+"""Real-time factor of the whole simulator (both MCUs, the UART, three axes and the
+spindle at 1 kHz) running the largest sample of resources/samples as fast as possible.
+
+The program is normalised by ``app.gcode`` (the bench may import it; backend_sim never
+does), written to the simulated SD card and run with ``SD RUN``, so the main MCU
+streams it over the modelled UART to the CNC MCU. Prints the figure; target >= 100x.
+"""
+
+from __future__ import annotations
+
+import tempfile
+import time
+from pathlib import Path
+
+from app.comm.frame import seal
+from backend_sim.simulator import Simulator
+
+SAMPLES = Path(__file__).resolve().parent.parent / "resources" / "samples"
+
+
+def largest_sample() -> Path:
+    files = [p for p in SAMPLES.glob("*") if p.suffix.lower() in (".ngc", ".nc", ".gcode", ".tap")]
+    return max(files, key=lambda p: p.stat().st_size)
+
+
+def device_lines(path: Path) -> list[str]:
+    from app.gcode import load
+
+    return list(load(path).device_lines)
+
+
+def run_job(lines: list[str], mode: str = "planner") -> dict[str, float]:
+    with tempfile.TemporaryDirectory() as sd:
+        (Path(sd) / "job.nc").write_text("\n".join(lines) + "\n", encoding="ascii")
+        sim = Simulator(sd_dir=sd, seed=1, mode=mode)
+        sim.host_port.write(seal("C 1 HOME"))
+        homed_at = _timed(sim, lambda: sim.cnc.mc.homed and sim.cnc.mc.state == "IDLE", 300)
+        sim.host_port.write(seal("C 2 SD RUN job.nc"))
+        sim.run_for(0.05)
+        job = _timed(sim, lambda: sim.main.sd_job is None and sim.cnc.mc.idle(), 36000)
+        return {"lines": len(lines), "executed": len(sim.exec_log), "homing_sim": homed_at[0],
+                "homing_wall": homed_at[1], "job_sim": job[0], "job_wall": job[1]}
+
+
+def _timed(sim: Simulator, predicate, timeout: float) -> tuple[float, float]:
+    t_sim, t_wall = sim.clock.now, time.perf_counter()
+    if not sim.run_until(predicate, timeout):
+        raise RuntimeError(f"not done after {timeout} simulated s")
+    return sim.clock.now - t_sim, time.perf_counter() - t_wall
+
+
+def main() -> None:
+    path = largest_sample()
+    lines = device_lines(path)
+    r = run_job(lines)
+    total_sim, total_wall = r["homing_sim"] + r["job_sim"], r["homing_wall"] + r["job_wall"]
+    print(f"sample: {path.name}, {r['lines']} device lines, {r['executed']} executed")
+    print(f"homing: {r['homing_sim']:.1f} s simulated in {r['homing_wall']:.2f} s wall "
+          f"({r['homing_sim'] / r['homing_wall']:.0f}x)")
+    print(f"job:    {r['job_sim']:.1f} s simulated in {r['job_wall']:.2f} s wall "
+          f"({r['job_sim'] / r['job_wall']:.0f}x)")
+    print(f"real-time factor (homing + job, target >= 100x): {total_sim / total_wall:.0f}x")
+
+
+if __name__ == "__main__":
+    main()
