@@ -7,8 +7,9 @@ never writes. ``due(now)`` returns the frames to send now; ``on_ack``/``on_nak``
 - at most ``min(free, 8)`` frames are unacknowledged, where ``free`` comes from the
   newest ``A`` (or ``S``) snapshot: frame ``s`` is sent only if ``s <= acked + 8`` and
   ``s <= acc + free`` of some snapshot (that sum never decreases within a stream);
-- ``N n`` means every frame below ``n`` arrived; frames from ``n`` are resent, except
-  a repeat ``N n`` within one timeout of the go-back it would repeat;
+- ``N n``: frames from ``n`` are resent, except a repeat ``N n`` within one timeout of
+  the go-back it would repeat; it acknowledges nothing (with two hops, the main MCU's
+  ``N`` for a USB error can come before the CNC MCU has what lies below);
 - no acknowledgement within ``rtt.timeout`` of the last progress resends from the
   first unacknowledged frame and doubles the timeout;
 - after ``MAX_RETRIES`` go-backs to one seq, ``failed`` names the error.
@@ -94,9 +95,9 @@ class SendWindow:
         return self.on_ack(acc, free, now)
 
     def on_nak(self, seq: int, now: float) -> None:
-        """``N seq``: everything below arrived; resend from ``seq`` unless a repeat."""
-        self._advance(seq - 1, now)
-        if seq <= self.acked or seq >= self.next_seq:
+        """``N seq``: resend from ``seq`` unless stale or a repeat. Not an acknowledgement:
+        the main MCU answers for the USB hop before the CNC MCU has the frames below."""
+        if seq <= self.acked or seq > self.high_sent:
             return
         last = self._last_goback
         if last and last[0] == seq and now - last[1] < self.rtt.timeout:
