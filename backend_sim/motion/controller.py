@@ -106,7 +106,8 @@ class MotionController(ControllerOps):
 
     @property
     def following_error_mm(self) -> tuple[float, float, float]:
-        return tuple(self.errors)  # type: ignore[return-value]
+        """Setpoint minus encoder-measured position, per axis."""
+        return tuple(c - m for c, m in zip(self.commanded_mm, self.measured_mm, strict=True))  # type: ignore
 
     @property
     def counts(self) -> tuple[int, int, int]:
@@ -164,9 +165,11 @@ class MotionController(ControllerOps):
         brk, self.brk = self.brk, 0
         if 1 <= brk <= 3:
             self._switch_crossed(brk - 1)
-        elif brk > 10:
-            k = brk - 11
-            self._alarm("FOLLOWING_ERROR", f"{AXES[k]} {self.errors[k]:+.3f} mm beyond {self.ferr:g} mm")
+        if brk and self.servo_on:
+            for k, e in enumerate(self.errors):
+                if abs(e) > self.ferr:
+                    self._alarm("FOLLOWING_ERROR", f"{AXES[k]} {e:+.3f} mm beyond {self.ferr:g} mm")
+                    break
         if self.state == "RUN" and self.job.idle():
             self._set_state("IDLE")
 
@@ -201,7 +204,7 @@ class MotionController(ControllerOps):
             if self.job.just_held():
                 self._events.append(Held())
         elif self.state == "HOMING":
-            if self.homing is not None and self.homing.poll():
+            if self.homing is not None and self.homing.poll() and self.state == "HOMING":
                 self._homed()
         elif self.state == "JOG" and self.planner.idle():
             self._set_state("IDLE")
@@ -230,8 +233,9 @@ class MotionController(ControllerOps):
         pressed = x <= self.switch[k] if k < 2 else x >= self.switch[k]
         self.wake()
         if pressed == self.pressed[k]:  # against a hard stop
-            a[_S["x"]] = min(max(x, lo + 1e-6), hi - 1e-6)
+            a[_S["x"]] = x = min(max(x, lo + 1e-6), hi - 1e-6)
             a[_S["v"]] = 0.0
+            a[_S["c"]] = (x * a[_S["cpm"]]) // 1.0 - a[_S["c0"]]
             return
         self.pressed[k] = pressed
         a[_S["lo"]], a[_S["hi"]] = self._window(k, pressed)

@@ -265,3 +265,30 @@ class ControllerOps:
     @property
     def spindle_on(self) -> bool:
         return self.spindle_target > 0
+
+    # -- tests and tuning ---------------------------------------------------------------
+    def drive(self, setpoints) -> list:
+        """Feed raw setpoints (machine mm, one per 1 ms tick) to the servo loop, bypassing the
+        planner (step and ramp responses, tuning); returns the measured positions. IDLE only;
+        the machine then holds the last setpoint."""
+        if self.state != "IDLE":
+            raise MotionError("BUSY", f"machine is {self.state}")
+        points = [tuple(float(v) for v in p) for p in setpoints]
+        it = iter(points)
+        measured: list = []
+        self.source_step = it.__next__
+        self.trace = measured.append
+        try:
+            done = 0
+            while done < len(points):
+                done += servo.run(self, len(points) - done)
+                self._after_run()
+                if self.state == "ALARM":
+                    break
+        finally:
+            self.trace = None
+            if self.state != "ALARM":
+                self._hold_here(self.commanded_mm)
+        mpc = 1.0 / self.model.counts_per_mm
+        offs = [a[_S["off"]] for a in self.axes]
+        return [tuple(c * mpc + o for c, o in zip(m, offs, strict=True)) for m in measured]

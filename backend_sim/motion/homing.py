@@ -65,6 +65,11 @@ class Homing:
     def _script(self, recover: bool):
         ctl = self.ctl
         travel = ctl.profile.travel
+        pressed = [k for k in range(3) if ctl.pressed[k]]
+        if pressed and not recover:
+            yield
+            ctl.fail_homing(f"{'XYZ'[pressed[0]]} switch pressed: home with RECOVER")
+            return
         if recover:
             away = [p - t * travel.home_backoff_mm for p, t in zip(ctl.commanded_mm, TOWARDS, strict=True)]
             ctl.planner.add(self._move(away))
