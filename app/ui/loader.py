@@ -51,6 +51,10 @@ class ProgramLoader(QObject):
             self.busy = False
             self.failed.emit(str(path), str(exc))
             return
+        except Exception as exc:  # a bug must not leave the operator waiting forever
+            self.busy = False
+            self.failed.emit(str(path), f"{path.name} could not be loaded: {type(exc).__name__}: {exc}")
+            return
         self.busy = False
         self.loaded.emit(result)
 
@@ -76,7 +80,8 @@ def load_program(path: Path, tolerance: float = 0.01) -> LoadedProgram:
 
 def _sniff(path: Path) -> None:
     try:
-        head = path.open("rb").read(SNIFF_BYTES)
+        with path.open("rb") as file:
+            head = file.read(SNIFF_BYTES)
     except FileNotFoundError:
         raise LoadError(f"{path} does not exist (moved or deleted?).") from None
     except OSError as exc:

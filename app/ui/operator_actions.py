@@ -149,6 +149,7 @@ class OperatorActions(QObject):
         if errors:
             self.w.console.add_log("error", f"MDI: {errors[0].message}")
             return
+        self.w.binder.begin_job(None)
         self.link.call("start_job", list(program.device_lines))
 
     # -- files and settings ---------------------------------------------------------

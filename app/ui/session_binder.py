@@ -30,8 +30,9 @@ class SessionBinder(QObject):
         self.job = None  # LoadedProgram being run
         self.tracker: ProgressTracker | None = None
         self.job_done = -1  # last finished device line of the job
-        self.last_job_event = None
-        self.alert_at: float | None = None
+        self.last_job_event = None  # JobEvent of the last job (not upload)
+        self.last_upload_event = None
+        self.alert_clock: float | None = None  # link clock when the alert last appeared
         self._dirty = False
         self._connect(window.link.worker)
         window.loader.loaded.connect(window.operator.program_loaded)
@@ -115,8 +116,8 @@ class SessionBinder(QObject):
             self.w.notifier.warning("Machine alarm", f"{event.code}: {event.text}")
 
     def _alert(self, what: str, detail: str) -> None:
-        if self.alert_at is None or not self.w.alert.isVisible():
-            self.alert_at = time.monotonic()
+        if not self.w.alert.isVisible():
+            self.alert_clock = self.w.link.clock()
         from_sd = self.status is not None and "S" in self.status.flags
         self.w.alert.show_lost(what, self.state in JOB or self.state in RECOVERY, from_sd, detail)
 
@@ -162,9 +163,13 @@ class SessionBinder(QObject):
         self.w.console.set_resends(event.resends, event.resend_rate, event.resend_rate > 0.1)
 
     def begin_job(self, loaded) -> None:
-        """Called when the operator starts ``loaded``: fresh progress and plot."""
+        """Called when the operator starts ``loaded``: fresh progress (None: an MDI line)."""
         self.job = loaded
         self.job_done = -1
+        self.last_job_event = None
+        if loaded is None:
+            self.tracker = None
+            return
         program = loaded.program
         cumulative = line_times(program.toolpath, len(program.device_lines))
         self.tracker = ProgressTracker(cumulative, len(program.device_lines), time.monotonic())
@@ -172,13 +177,14 @@ class SessionBinder(QObject):
         self._dirty = True
 
     def on_job_finished(self, event) -> None:
-        self.last_job_event = event
         if event.kind == "upload":
+            self.last_upload_event = event
             text = (f"saved as {event.name}: {event.total} lines, verified by the card's CRC32"
                     if event.completed else f"not saved: {event.reason}")
             self.w.sd_panel.upload_finished(event.completed, text)
             self.w.link.call("list_sd")
             return
+        self.last_job_event = event
         if self.tracker is not None and event.completed:
             self.tracker.update(event.total)
             self.job_done = event.total - 1

@@ -1,0 +1,65 @@
+"""Fixtures for the window tests: isolated settings, a notifier that records instead
+of showing boxes, and a window that is shut down cleanly (worker thread, simulator)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+import app.ui  # noqa: F401 (applies the shiboken guard before any Qt object exists)
+
+SAMPLES = Path(__file__).resolve().parents[2] / "resources" / "samples"
+SAMPLE_FILES = sorted(SAMPLES.glob("*.ngc"))
+# The offscreen platform says so when a widget asks it for native window features.
+OFFSCREEN_NOISE = ("propagateSizeHints", "does not support raise", "does not support requestActivate")
+
+
+def pytest_collection_modifyitems(items):
+    for item in items:
+        if "tests/ui" in str(item.fspath).replace("\\", "/"):
+            item.add_marker(pytest.mark.qt_log_ignore(*OFFSCREEN_NOISE))
+
+
+@pytest.fixture(autouse=True)
+def _isolated_paths(qapp):
+    from PySide6.QtCore import QStandardPaths
+
+    QStandardPaths.setTestModeEnabled(True)
+
+
+@pytest.fixture
+def notifier():
+    from app.ui.notifier import Notifier
+
+    return Notifier(show_boxes=False)
+
+
+@pytest.fixture
+def make_window(qtbot, tmp_path, notifier):
+    from app.ui.main_window import MainWindow
+
+    windows = []
+
+    def make(port_lister=None, config_dir=None):
+        window = MainWindow(config_dir=config_dir or tmp_path / "config", notifier=notifier,
+                            port_lister=port_lister or (lambda: [("sim://", "Simulated machine")]))
+        qtbot.addWidget(window)
+        window.resize(1500, 950)
+        windows.append(window)
+        return window
+
+    yield make
+    for window in windows:
+        window.shutdown()
+
+
+@pytest.fixture
+def window(make_window):
+    return make_window()
+
+
+def open_and_wait(qtbot, window, path, timeout=20_000):
+    with qtbot.waitSignal(window.loader.loaded, timeout=timeout) as blocker:
+        window.open_file(path)
+    return blocker.args[0]

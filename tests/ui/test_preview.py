@@ -1,0 +1,105 @@
+"""The preview: plotted extents equal the program's bounds, level of detail stays
+within its budget, the finished part and the highlighted move."""
+
+import numpy as np
+import pytest
+
+from app.gcode import load, load_text
+from app.ui.preview.lod import CHUNK, LodSegments
+from app.ui.preview.model import PreviewModel
+from app.ui.preview.widget import PreviewWidget
+from app.ui.program.summary import bounds_array
+from tests.ui.conftest import SAMPLE_FILES
+
+
+def _count(item) -> int:
+    x = item.getData()[0]
+    return 0 if x is None else len(x)
+
+
+@pytest.fixture
+def preview(qtbot):
+    widget = PreviewWidget()
+    qtbot.addWidget(widget)
+    widget.resize(800, 600)
+    widget.show()
+    qtbot.waitExposed(widget)
+    return widget
+
+
+@pytest.mark.parametrize("path", SAMPLE_FILES, ids=lambda p: p.name)
+def test_plotted_extents_equal_program_bounds(preview, path):
+    program = load(path)
+    preview.show_program(program.toolpath)
+    (xmin, ymin, _), (xmax, ymax, _) = bounds_array(program.toolpath.bounds)
+    assert preview.plotted_bounds() == pytest.approx((xmin, xmax, ymin, ymax), abs=1e-3)
+    (x0, x1), (y0, y1) = preview.view.viewRange()
+    assert x0 <= xmin and x1 >= xmax and y0 <= ymin and y1 >= ymax
+
+
+def test_rapids_dashed_and_cuts_coloured_by_depth(preview):
+    program = load(next(p for p in SAMPLE_FILES if "star_passes" in p.name))
+    preview.show_program(program.toolpath)
+    rapid = preview.group_items[0]
+    assert rapid.opts["pen"].style() != preview.group_items[2].opts["pen"].style()
+    drawn = [i for i, item in enumerate(preview.group_items[2:]) if _count(item)]
+    assert len(drawn) >= 3  # four passes at -0.75 .. -3 fall in several depth bands
+
+
+def test_arcs_are_smooth(preview):
+    program = load_text("G21 G90\nG0 X10 Y0\nG1 Z-1 F100\nG2 X10 Y0 I-10 J0 F300\n")
+    model = PreviewModel(program.toolpath, tolerance=0.01)
+    circle = model.geometry.move_vertices(2)
+    radius = np.hypot(circle[:, 0], circle[:, 1])
+    assert len(circle) > 60 and np.allclose(radius, 10.0, atol=1e-9)
+
+
+def test_done_part_and_highlight(preview):
+    program = load(SAMPLE_FILES[0])
+    preview.show_program(program.toolpath)
+    assert _count(preview.done_item) == 0
+    preview.set_done(len(program.device_lines) - 1)
+    x, _ = preview.done_item.getData()
+    assert len(x) > 0
+    preview.highlight_move(5)
+    assert len(preview.highlight_item.getData()[0]) >= 2
+
+
+def test_zoom_and_fit(preview):
+    program = load(SAMPLE_FILES[0])
+    preview.show_program(program.toolpath)
+    before = preview.view.viewRange()
+    preview.zoom(4)
+    after = preview.view.viewRange()
+    assert after[0][1] - after[0][0] < (before[0][1] - before[0][0]) / 3
+    preview.fit()
+    assert preview.view.viewRange()[0] == pytest.approx(before[0])
+
+
+def _zigzag(n):
+    """A path that passes over the same few millimetres ``n`` times."""
+    t = np.arange(n + 1, dtype=float)
+    x = np.where(t % 2 == 0, 0.0, 100.0) + (t % 7) * 0.001
+    y = (t % 50) * 0.5
+    seg = np.column_stack([x[:-1], y[:-1], x[1:], y[1:]])
+    return LodSegments(seg, np.arange(n))
+
+
+def test_level_of_detail_bounds_what_is_drawn():
+    lod = _zigzag(200_000)
+    view = (-10, 110, -10, 40)
+    x, _ = lod.visible(view, pixel=0.2, budget=20_000)
+    assert 0 < len(x) // 2 <= 20_000
+    x_full, _ = lod.visible(view, pixel=1e-6, budget=10**9)
+    assert len(x_full) // 2 == 200_000
+    upto = lod.visible(view, pixel=0.2, budget=20_000, upto=999)
+    assert len(upto[0]) // 2 <= 1000
+
+
+def test_level_of_detail_keeps_extremes():
+    lod = _zigzag(50_000)
+    for index in range(len(lod.cells)):
+        level = lod.level(index)
+        xs = level.seg[:, [0, 2]]
+        assert xs.min() == pytest.approx(0.0) and xs.max() == pytest.approx(100.006, abs=1e-4)
+        assert len(level.boxes) == -(-len(level.move) // CHUNK)
