@@ -17,8 +17,11 @@ Where rs274 refused a program, the loader must report an error on exactly that l
 from __future__ import annotations
 
 import hashlib
+import json
 import math
 import re
+import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -216,3 +219,20 @@ def test_moves_have_exactly_the_cnc_gcode_moves_format(name):
         if move["kind"] == "arc":
             assert len(move["center"]) == 2 and move["plane"] in ("XY", "XZ", "YZ"), move
     assert {m["kind"] for m in moves} == {"rapid", "feed", "arc"}
+
+
+@pytest.mark.parametrize("source", ["resources/samples/inch_plate.ngc", "tests/oracle/cases/plane_g19.ngc"])
+def test_cli_moves_match_rs274(source):
+    """``cnc-gcode moves FILE`` (as ``python -m app.gcode``) prints the same moves, as JSON Lines."""
+    out = subprocess.run(
+        [sys.executable, "-m", "app.gcode", "moves", source],
+        cwd=ROOT,
+        capture_output=True,
+        text=True,
+        timeout=120,
+        check=True,
+    ).stdout
+    moves = [json.loads(line) for line in out.splitlines() if line.strip()]
+    rec = read_record(DATA / f"{Path(source).stem}.canon")
+    problems = compare_moves(moves, expected_moves(rec))
+    assert not problems, "\n".join(problems)
