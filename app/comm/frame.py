@@ -242,7 +242,8 @@ def _join(*parts: str) -> str:
 
 
 def _int(text: str, what: str, minimum: int = 0) -> int:
-    if not re.fullmatch(r"-?\d{1,10}", text) or int(text) < minimum:
+    digits = text[1:] if text[:1] == "-" else text
+    if not (0 < len(digits) <= 10 and digits.isascii() and digits.isdigit()) or int(text) < minimum:
         raise FrameError(f"bad {what} {text!r}")
     return int(text)
 
@@ -413,13 +414,37 @@ class Deframer:
 
     def feed(self, chunk: bytes, now: float) -> list[Frame | Dropped | Realtime]:
         out: list[Frame | Dropped | Realtime] = self.poll(now)
-        for line, complete in self._lines(chunk):
+        parts = chunk.split(b"\n")
+        for line in parts[:-1]:
             if self.realtime:
                 line = self._take_realtime(line, out)
-            self._append(line, now)
-            if complete and (self._buf or self._overlong):
+            if self._buf or self._overlong:
+                self._append(line, now)
                 out.append(self._finish())
+            else:
+                self._whole(line, out)
+        line = self._take_realtime(parts[-1], out) if self.realtime else parts[-1]
+        self._append(line, now)
         return out
+
+    def _whole(self, line: bytes, out: list) -> None:
+        """A complete line with nothing buffered before it (the common case, no copy)."""
+        if b"\r" in line:
+            line = line.replace(b"\r", b"")
+        if not line:
+            return
+        if len(line) >= MAX_FRAME:
+            self.stats.overlength += 1
+            out.append(Dropped("over-length frame", line[:MAX_FRAME]))
+            return
+        try:
+            frame = decode(line)
+        except FrameError as exc:
+            self.stats.bad += 1
+            out.append(Dropped(str(exc), line))
+            return
+        self.stats.frames += 1
+        out.append(frame)
 
     def poll(self, now: float) -> list[Frame | Dropped | Realtime]:
         """Drop a partial frame that has waited too long for its newline."""
@@ -434,14 +459,9 @@ class Deframer:
         """Bytes of a partial frame waiting for its newline."""
         return len(self._buf)
 
-    @staticmethod
-    def _lines(chunk: bytes):
-        parts = chunk.split(b"\n")
-        for part in parts[:-1]:
-            yield part, True
-        yield parts[-1], False
-
     def _take_realtime(self, line: bytes, out: list) -> bytes:
+        if FEED_HOLD not in line and STOP_FLUSH not in line:
+            return line
         for byte in (FEED_HOLD, STOP_FLUSH):
             if byte in line:
                 self.stats.realtime += line.count(byte)

@@ -269,9 +269,11 @@ class JobControl:
             self._finish_stream(False, "the machine is in ALARM")
 
     def _report_progress(self, now: float, force: bool = False) -> None:
-        progress = self.stream.progress()
         last, when = self._last_progress
-        if progress != last and (force or now - when >= PROGRESS_EVERY_S):
+        if not force and now - when < PROGRESS_EVERY_S:
+            return
+        progress = self.stream.progress()
+        if progress != last:
             self._last_progress = (progress, now)
             self.listener.on_progress(progress)
 
