@@ -2,7 +2,7 @@
 
 Each handler answers ``O <id> <VERB> [info]`` when the command has been carried out
 (at once, or when the motion controller reports it: ``HOME`` on Homed, ``PAUSE`` on
-Held, ``STOP`` on Stopped, ``JOG`` back in IDLE) or ``E <id> <code> <text>``:
+Held, ``STOP`` on Stopped, ``JOG`` back in IDLE, ``SPINDLE`` when at speed) or ``E <id> <code> <text>``:
 NOT_HOMED, SOFT_LIMIT, BUSY, COVER_OPEN, ALARM, BAD_ARGS, BAD_PARAM, BAD_SEQ,
 UNKNOWN_VERB. ``PING``/``STATUS`` answer with ``S``.
 """
@@ -170,7 +170,7 @@ def _jog(mcu, cmd: Command) -> None:
     mcu.await_event(cmd.id, "JOG", ev.StateChanged, f"{axis} {dist}")
 
 
-def _spindle(mcu, cmd: Command) -> str:
+def _spindle(mcu, cmd: Command) -> None:
     (value,) = _args(cmd, 1, 1)
     line = "M05" if value == "OFF" else f"M03 S{_number(value, 'rpm'):g}"
     if mcu.job.open:
@@ -181,7 +181,7 @@ def _spindle(mcu, cmd: Command) -> str:
     except DialectError as exc:
         raise Refused(exc.code, exc.text) from None
     mcu.mc.enqueue(move)
-    return value
+    mcu.await_event(cmd.id, "SPINDLE", ev.StateChanged, value)
 
 
 def _set(mcu, cmd: Command) -> str:
