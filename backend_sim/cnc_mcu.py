@@ -31,7 +31,6 @@ from app.comm.frame import (
     Ok,
     Realtime,
     Status,
-    encode,
 )
 from app.profile import MachineProfile
 from backend_sim import cnc_commands
@@ -39,6 +38,7 @@ from backend_sim.exec_log import ExecLog
 from backend_sim.job_stream import JobStream, Verdict
 from backend_sim.motion import events as ev
 from backend_sim.motion.dialect import DialectError, DialectParser, soft_limit_violation
+from backend_sim.outgoing import encode_fit
 from backend_sim.wire import Wire
 
 STATUS_PERIOD_MS = 50
@@ -280,7 +280,7 @@ class CncMcu:
         self.next_status = self.clock.now_ms + STATUS_PERIOD_MS
 
     def send(self, frame: Frame) -> None:
-        self.tx.write(encode(frame), self.clock.now)
+        self.tx.write(encode_fit(frame), self.clock.now)
 
     def set_cover(self, is_open: bool) -> None:
         self.cover_open = is_open

@@ -36,9 +36,9 @@ from app.comm.frame import (
     Ok,
     Realtime,
     Status,
-    encode,
 )
 from backend_sim import main_sd
+from backend_sim.outgoing import encode_fit
 from backend_sim.sd_card import SdCard
 from backend_sim.wire import Wire, to_ms
 
@@ -217,18 +217,18 @@ class MainMcu:
 
     def answer(self, frame: Frame) -> None:
         """Send an answer to the last host command, and keep it for a repeated id."""
-        raw = encode(frame)
+        raw = encode_fit(frame)
         self.last_answer.append(raw)
         self.host_tx.write(raw, self.clock.now)
 
     def to_host(self, frame: Frame) -> None:
         if self.host_connected:
-            self.host_tx.write(encode(frame), self.clock.now)
+            self.host_tx.write(encode_fit(frame), self.clock.now)
 
     # ------------------------------------------------------------------ CNC side
 
     def to_cnc(self, frame: Frame) -> None:
-        self.uart_tx.write(encode(frame), self.clock.now)
+        self.uart_tx.write(encode_fit(frame), self.clock.now)
 
     def send_cnc_own(self, verb: str, *args: str, callback=None) -> int:
         """Send one of the main MCU's own commands down; ``callback(frame)`` gets its O/E."""

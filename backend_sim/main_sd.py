@@ -12,6 +12,7 @@ from __future__ import annotations
 
 from app.comm.frame import Ack, Alarm, Command, Data, Error, Finished, Frame, Info, Log, Nak, Ok
 from backend_sim.job_stream import Verdict
+from backend_sim.outgoing import encode_fit
 from backend_sim.sd_card import UPLOAD_FREE_SLOTS, SdError
 from backend_sim.sd_job import SdJob, SdJobState
 
@@ -114,7 +115,7 @@ def _upload_answer(mcu, cid: int, frame: Frame) -> None:
     if cid == mcu.last_id:
         mcu.answer(frame)
     else:
-        mcu.host_tx.write(frame.encode(), mcu.clock.now)
+        mcu.host_tx.write(encode_fit(frame), mcu.clock.now)
 
 
 # ---------------------------------------------------------------------- SD RUN

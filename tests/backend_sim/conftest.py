@@ -8,7 +8,6 @@ from app.profile import MachineProfile, with_overrides
 from backend_sim.simulator import Simulator
 from tests.backend_sim.helpers import Host
 
-
 FAST_HOMING = with_overrides(MachineProfile(), {"motion": {"homing_mm_min": 900}})
 
 
