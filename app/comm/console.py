@@ -1,0 +1,268 @@
+"""``python -m app.comm.console URL [COMMAND ...]``: a headless second client of the link.
+
+Commands (several may follow each other, separated by ``,``; with none, one command
+per line is read from stdin): ``ping``, ``status``, ``home``, ``run FILE``,
+``sd put FILE [NAME]``, ``sd ls``, ``sd run NAME``, ``sd rm NAME``, ``pause``,
+``resume``, ``stop``, ``check on|off``, or any raw verb (``JOG X 10 300``).
+
+Frames are printed as ``> `` (sent) and ``< `` (received); ``-q`` hides the stream
+traffic (D, A, F, S). ``run`` homes if the machine is not homed, streams the file,
+waits for the last ``F``, prints the final status line and exits 0 only if the job
+completed; otherwise it exits 1 with the reason. Exit 2: bad usage or file; 3: the
+port cannot be opened or the link was lost.
+"""
+
+from __future__ import annotations
+
+import argparse
+import shlex
+import sys
+import time
+from pathlib import Path
+
+from app.comm.events import FrameEvent
+from app.comm.listener import SessionListener, SessionState
+from app.comm.session import Session
+from app.comm.transport import open_transport
+
+PUMP_S = 0.005
+QUIET = frozenset("DAFS")
+
+
+class ConsoleError(Exception):
+    """A command failed; ``code`` is the exit status."""
+
+    def __init__(self, text: str, code: int = 1) -> None:
+        super().__init__(text)
+        self.code = code
+
+
+class Printer(SessionListener):
+    """Prints traffic, logs, alarms, errors and throttled progress."""
+
+    def __init__(self, out, quiet: bool) -> None:
+        self.out, self.quiet = out, quiet
+        self.results, self.jobs, self.errors = [], [], []
+        self._last_progress = 0.0
+
+    def on_frame(self, event: FrameEvent):
+        if event.kind != "L" and not (self.quiet and event.kind in QUIET and event.ok):
+            print(("> " if event.direction == "tx" else "< ") + event.text, file=self.out)
+
+    def on_progress(self, event):
+        now = time.monotonic()
+        if now - self._last_progress >= 0.5 or event.done + 1 == event.total:
+            self._last_progress = now
+            print(f"progress {event.kind}: {event.done + 1}/{event.total} done, "
+                  f"{event.acked + 1} queued, {event.resends} resends", file=self.out)
+
+    def on_log(self, event):
+        print(f"[{event.source} {event.level}] {event.text}", file=self.out)
+
+    def on_alarm(self, event):
+        print(f"ALARM {event.code} {event.text}", file=self.out)
+
+    def on_link_changed(self, event):
+        print(f"link {event.state}" + (" (poor quality)" if event.quality_warning else ""), file=self.out)
+
+    def on_command_done(self, event):
+        self.results.append(event)
+
+    def on_job_finished(self, event):
+        self.jobs.append(event)
+
+    def on_error(self, event):
+        self.errors.append(event)
+
+
+class Console:
+    """Drives one Session over one transport, synchronously, for the commands above."""
+
+    def __init__(self, transport, out=None, quiet: bool = False, timeout: float = 3600.0) -> None:
+        self.transport, self.out, self.timeout = transport, out or sys.stdout, timeout
+        self.printer = Printer(self.out, quiet)
+        self.session = Session(None, self.printer)
+        self.session.attach(transport.write)
+
+    def pump(self) -> None:
+        try:
+            waiting = self.transport.in_waiting
+            if waiting:
+                self.session.feed(self.transport.read(waiting))
+        except OSError as exc:
+            self.session.detach(f"read failed: {exc}")
+        self.session.tick()
+        if not self.session.attached:
+            raise ConsoleError("link lost: the port went away", 3)
+
+    def wait(self, predicate, timeout: float | None = None, what: str = "an answer") -> None:
+        end = time.monotonic() + (self.timeout if timeout is None else timeout)
+        while not predicate():
+            if time.monotonic() > end:
+                raise ConsoleError(f"timed out waiting for {what}", 3)
+            self.pump()
+            time.sleep(PUMP_S)
+
+    def command(self, verb: str, *args, timeout: float | None = None):
+        cid = self.session.submit(verb, *args)
+        found = lambda: [r for r in self.printer.results if r.id == cid]  # noqa: E731
+        self.wait(lambda: bool(found()), timeout, f"{verb} to be answered")
+        result = found()[0]
+        if not result.ok:
+            raise ConsoleError(f"{verb} refused: {result.code} {result.info}".strip())
+        return result
+
+    def connect(self) -> None:
+        self.wait(lambda: self.session.state is SessionState.READY, 5.0, "the machine's status")
+        self.wait(lambda: self.session.boot is not None, 5.0, "the CNC MCU")
+
+    # ------------------------------------------------------------------ commands
+
+    def do(self, words: list[str]) -> None:
+        verb = words[0].lower()
+        handler = getattr(self, f"cmd_{verb}", None)
+        if handler is None:
+            self.command(*[w.upper() for w in words])
+            return
+        handler(*words[1:])
+
+    def cmd_ping(self) -> None:
+        self.command("PING", timeout=5.0)
+        self.print_status()
+
+    def cmd_status(self) -> None:
+        self.command("STATUS", timeout=5.0)
+        self.print_status()
+
+    def cmd_home(self, mode: str = "NORMAL") -> None:
+        self.command("HOME", mode.upper())
+
+    def cmd_check(self, state: str = "on") -> None:
+        self.command("SET", "CHECK", 1 if state.lower() in ("on", "1") else 0)
+
+    def cmd_pause(self) -> None:
+        self.session.pause()
+        self.wait(lambda: self.session.status.state in ("HOLD", "IDLE"), 10.0, "the hold")
+
+    def cmd_resume(self) -> None:
+        self.command("RESUME")
+
+    def cmd_stop(self) -> None:
+        self.session.stop()
+        self.wait(lambda: self.session.status.state in ("IDLE", "ALARM"), 30.0, "the stop")
+
+    def cmd_run(self, path: str) -> None:
+        lines = load_lines(path)
+        if not self.session.status.homed and not self.checking():
+            print("not homed: homing first", file=self.out)
+            self.cmd_home()
+            self.command("STATUS")
+        jobs = len(self.printer.jobs)
+        if not self.session.start_job(lines):
+            raise ConsoleError(f"job refused: {self.printer.errors[-1].text}")
+        self.wait(lambda: len(self.printer.jobs) > jobs or self.session.state is SessionState.INTERRUPTED,
+                  what="the job to end")
+        self.command("STATUS", timeout=5.0)
+        self.print_status()
+        job = self.printer.jobs[-1] if len(self.printer.jobs) > jobs else None
+        if job is None:
+            raise ConsoleError("job interrupted: link lost", 3)
+        if not job.completed:
+            raise ConsoleError(f"job failed at line {job.done + 1} of {job.total}: {job.reason}")
+        print(f"job completed: {job.total} lines", file=self.out)
+
+    def cmd_sd(self, action: str, *args) -> None:
+        action = action.lower()
+        if action == "put":
+            lines = load_lines(args[0])
+            name = args[1] if len(args) > 1 else Path(args[0]).name
+            jobs = len(self.printer.jobs)
+            if not self.session.upload_to_sd(name, lines):
+                raise ConsoleError(f"upload refused: {self.printer.errors[-1].text}")
+            self.wait(lambda: len(self.printer.jobs) > jobs, what="the upload")
+            job = self.printer.jobs[-1]
+            if not job.completed:
+                raise ConsoleError(f"upload failed: {job.reason}")
+            print(f"stored {name}: {len(lines)} lines", file=self.out)
+        elif action in ("ls", "list"):
+            for row in self.command("SD", "LIST").rows:
+                print(row, file=self.out)
+        elif action == "run":
+            self.command("SD", "RUN", args[0])
+        elif action in ("rm", "del"):
+            self.command("SD", "DEL", args[0])
+        else:
+            raise ConsoleError(f"unknown sd action {action!r}: put, ls, run, rm", 2)
+
+    def checking(self) -> bool:
+        return any(r.ok and r.info == "CHECK 1" for r in self.printer.results[-50:])
+
+    def print_status(self) -> None:
+        s = self.session.status
+        print(f"status {s.state} X{s.x:.3f} Y{s.y:.3f} Z{s.z:.3f} acc {s.acc} done {s.done} "
+              f"free {s.free} rpm {s.rpm} flags {s.flags or '-'} boot {s.boot}", file=self.out)
+
+
+def load_lines(path: str) -> list[str]:
+    """The normalised device lines of a G-code file; ConsoleError(2) if unusable."""
+    from app.gcode import load
+
+    try:
+        program = load(path)
+    except OSError as exc:
+        raise ConsoleError(f"cannot read {path}: {exc}", 2) from None
+    errors = [d for d in program.diagnostics if d.severity == "error"]
+    if errors:
+        first = errors[0]
+        raise ConsoleError(f"{path}: {len(errors)} error(s); line {first.line}: {first.message}", 2)
+    if not program.device_lines:
+        raise ConsoleError(f"{path}: no lines to run", 2)
+    return list(program.device_lines)
+
+
+def split_commands(words: list[str]) -> list[list[str]]:
+    """``["home", ",", "run", "a.ngc"]`` (or ``"home,"``) -> ``[["home"], ["run", "a.ngc"]]``."""
+    groups, current = [], []
+    for word in words:
+        for part in word.replace(",", " , ").split():
+            if part == ",":
+                groups.append(current)
+                current = []
+            else:
+                current.append(part)
+    groups.append(current)
+    return [g for g in groups if g]
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(prog="python -m app.comm.console", description=__doc__.split("\n")[0])
+    parser.add_argument("url", help="sim://[?speed=X], /dev/ttyUSB0, socket://host:port, ...")
+    parser.add_argument("command", nargs="*", help="command and arguments (see module help)")
+    parser.add_argument("-q", "--quiet", action="store_true", help="hide D/A/F/S traffic")
+    parser.add_argument("--timeout", type=float, default=3600.0, help="seconds to wait per command")
+    args = parser.parse_intermixed_args(argv)
+    try:
+        transport = open_transport(args.url)
+    except (OSError, ValueError) as exc:
+        print(f"cannot open {args.url}: {exc}", file=sys.stderr)
+        return 3
+    console = Console(transport, quiet=args.quiet, timeout=args.timeout)
+    commands = split_commands(args.command) or (shlex.split(line) for line in sys.stdin)
+    try:
+        console.connect()
+        for words in commands:
+            if words:
+                console.do(words)
+    except ConsoleError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return exc.code
+    except (TypeError, IndexError) as exc:
+        print(f"error: bad command: {exc}", file=sys.stderr)
+        return 2
+    finally:
+        transport.close()
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

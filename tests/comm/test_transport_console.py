@@ -1,0 +1,79 @@
+"""Transports (sim://, loop://) and the console client, end to end on the in-process simulator."""
+
+import pytest
+import serial
+
+from app.comm import frame as fr
+from app.comm.console import main, split_commands
+from app.comm.transport import SIM_URL, SimTransport, list_ports, open_transport, sim_options
+
+SAMPLE = "resources/samples/star_passes.ngc"
+
+
+def test_loop_url_goes_through_pyserial():
+    port = open_transport("loop://")
+    try:
+        wire = fr.encode(fr.Command(1, "PING"))
+        assert port.write(wire) == len(wire)
+        assert port.read(100) == wire
+    finally:
+        port.close()
+
+
+def test_simulator_is_listed_first():
+    ports = list_ports()
+    assert ports[0].url == SIM_URL and "Simulated" in ports[0].description
+
+
+def test_sim_url_options():
+    assert sim_options("sim://?speed=20&sd=/tmp/x") == {"speed": "20", "sd": "/tmp/x"}
+    assert sim_options(None) == {}
+    with pytest.raises(serial.SerialException, match="speed"):
+        open_transport("sim://?speed=fast")
+
+
+def test_sim_transport_answers_a_ping(tmp_path):
+    port = open_transport(f"sim://?speed=50&sd={tmp_path}")
+    try:
+        assert isinstance(port, SimTransport)
+        port.write(fr.encode(fr.Command(1, "PING")))
+        deframer, got = fr.Deframer(), []
+        while not any(isinstance(f, fr.Status) for f in got):
+            got += deframer.feed(port.read(max(1, port.in_waiting)), 0.0)
+    finally:
+        port.close()
+    assert not port.sim.running
+
+
+def test_bad_port_is_an_exception_not_a_crash():
+    with pytest.raises(serial.SerialException):
+        open_transport("/dev/does-not-exist-cnc")
+
+
+def test_split_commands():
+    assert split_commands(["home", ",", "run", "a.ngc"]) == [["home"], ["run", "a.ngc"]]
+    assert split_commands(["ping,", "status"]) == [["ping"], ["status"]]
+
+
+def test_console_runs_a_sample_to_the_end(tmp_path, capsys):
+    rc = main([f"sim://?speed=500&sd={tmp_path}", "-q", "check", "on", ",", "run", SAMPLE])
+    out = capsys.readouterr().out
+    assert rc == 0, out
+    assert "job completed: 212 lines" in out and "\nstatus IDLE" in out
+
+
+def test_console_sd_put_list_and_a_bad_file(tmp_path, capsys):
+    url = f"sim://?speed=500&sd={tmp_path}"
+    assert main([url, "-q", "sd", "put", SAMPLE, "star.nc", ",", "sd", "ls"]) == 0
+    out = capsys.readouterr().out
+    assert "stored star.nc: 212 lines" in out and "star.nc" in out.split("stored")[-1]
+    assert main([url, "run", str(tmp_path / "missing.ngc")]) == 2
+
+
+def test_console_exits_non_zero_with_the_reason(tmp_path, capsys):
+    bad = tmp_path / "bad.ngc"
+    bad.write_text("G21 G90\nG1 X10 Y10 F300\nG1 X10.5 Y10\nG1 X300 Y10\nG1 X20 Y10\n")
+    rc = main([f"sim://?speed=500&sd={tmp_path}", "-q", "check", "on", ",", "run", str(bad)])
+    captured = capsys.readouterr()
+    assert rc in (1, 2), captured
+    assert "error:" in captured.err
