@@ -8,8 +8,9 @@ most once, well formed, with nothing but spaces and well-closed comments around 
 and M or S only on a line with no motion word: the shape of nearly every line
 Inkscape's Gcodetools writes. Every other
 line is left to the general lexer and interpreter, which are the reference; the tests
-check that both paths agree. Numbers are parsed by numpy's C ``strtod``, so a value
-here is bit-identical to ``float()`` of the same text.
+check that both paths agree. A number's digits are read as one integer by numpy's C
+parser and divided by a power of ten, which is exact to the last bit for numbers of
+up to ``MAX_TOKEN`` characters (longer ones take the general path).
 """
 
 from __future__ import annotations
@@ -19,7 +20,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-CHUNK_BYTES = 1 << 20
+CHUNK_BYTES = 1 << 18
 LETTERS = "GXYZIJFMS"
 VALUE_LETTERS = "XYZIJFMS"
 _COMMENT = re.compile(rb"\([^()\n]*\)")
@@ -57,23 +58,41 @@ def _chunks(data: bytes):
         start = end
 
 
-def _kinds(b: np.ndarray, cls: np.ndarray):
-    """Positions and kinds (1 letter, 2 number start, 3 newline, 4 dot, 6 bad) in order."""
-    isnum = (cls >= DIGIT) & (cls <= SIGN)
-    prev = np.empty_like(isnum)
-    prev[0] = False
-    prev[1:] = isnum[:-1]
-    t = np.zeros(len(b), np.uint8)
-    t[cls == LETTER] = 1
-    t[cls == NEWLINE] = 3
-    t[(cls == DOT) & prev] = 4
-    t[((cls == SIGN) & prev) | (cls == BAD)] = 6
-    t[isnum & ~prev] = 2
+_KIND = np.zeros(256, np.uint8)  # letters 1, newline 3, bad 6; numbers are marked below
+_KIND[_CLASS == LETTER] = 1
+_KIND[_CLASS == NEWLINE] = 3
+_KIND[_CLASS == BAD] = 6
+_INNER = np.zeros(256, np.uint8)  # inside a number: a dot is 4, a sign is bad (6)
+_INNER[_CLASS == DOT] = 4
+_INNER[_CLASS == SIGN] = 6
+MAX_TOKEN = 15  # characters of a number the fast path reads (exact in an int64 and a double)
+_POW10 = np.array([float(10**i) for i in range(MAX_TOKEN + 1)])
+
+
+_ISNUM = (_CLASS >= DIGIT) & (_CLASS <= SIGN)
+_SPECIAL = (_CLASS == DOT) | (_CLASS == SIGN)
+
+
+def _kinds(b: np.ndarray):
+    """Positions and kinds (1 letter, 2 number start, 3 newline, 4 dot, 6 bad) in order,
+    and the position of the last character of every number. ``b`` ends with a newline."""
+    isnum = np.take(_ISNUM, b)
+    start = np.empty(len(b), bool)
+    start[0] = isnum[0]
+    np.greater(isnum[1:], isnum[:-1], out=start[1:])
+    end = np.empty(len(b), bool)
+    end[-1] = False
+    np.greater(isnum[:-1], isnum[1:], out=end[:-1])
+    t = np.take(_KIND, b)
+    t |= start.view(np.uint8) << 1
+    special = np.flatnonzero(np.take(_SPECIAL, b))
+    inner = special[(special > 0) & isnum[special - 1]]
+    t[inner] = np.take(_INNER, b[inner])
     pos = np.flatnonzero(t)
-    return pos, t[pos]
+    return pos, t[pos], np.flatnonzero(end)
 
 
-def _bad_tokens(b: np.ndarray, cls: np.ndarray, pos: np.ndarray, k: np.ndarray) -> np.ndarray:
+def _bad_tokens(b, pos, k, ends) -> np.ndarray:
     """Mask over ``pos`` of elements that make their line unusable by the fast path."""
     bad = k == 6
     nxt = np.empty_like(k)
@@ -85,20 +104,18 @@ def _bad_tokens(b: np.ndarray, cls: np.ndarray, pos: np.ndarray, k: np.ndarray) 
     bad |= (k == 1) & (nxt != 2)
     bad |= (k == 2) & (prv != 1)
     bad |= (k == 4) & (prv == 4)
-    starts = pos[k == 2]
-    c0 = b[starts]
-    pad = np.append(cls, [SPACE, SPACE])
-    c1, c2 = pad[starts + 1], pad[starts + 2]
-    first = _CLASS[c0]
+    is_start = np.flatnonzero(k == 2)
+    starts = pos[is_start]
+    first = np.take(_CLASS, b[starts])
+    c1 = np.take(_CLASS, b[starts + 1])  # the chunk ends with a newline, never inside a number
+    c2 = np.take(_CLASS, b[np.minimum(starts + 2, len(b) - 1)])
     ok = (first == DIGIT) | ((first == DOT) & (c1 == DIGIT))
     ok |= (first == SIGN) & ((c1 == DIGIT) | ((c1 == DOT) & (c2 == DIGIT)))
-    bad[np.flatnonzero(k == 2)[~ok]] = True
-    dotted_start = np.zeros(len(k), bool)
-    dotted_start[np.flatnonzero(k == 2)[first == DOT]] = True
-    prev_dot_start = np.empty_like(dotted_start)
-    prev_dot_start[0] = False
-    prev_dot_start[1:] = dotted_start[:-1]
-    bad |= (k == 4) & prev_dot_start
+    bad[is_start[~ok | (ends - starts >= MAX_TOKEN)]] = True
+    dot_start = is_start[first == DOT]
+    after = dot_start + 1
+    after = after[after < len(k)]
+    bad[after[k[after] == 4]] = True
     return bad
 
 
@@ -107,20 +124,41 @@ def _line_of(k: np.ndarray) -> np.ndarray:
     return np.cumsum(nl) - nl
 
 
+def _values(text: bytes, b, pos, k, ends, good) -> np.ndarray:
+    """The numbers of the good tokens: digits read as one integer, divided by 10**decimals.
+
+    Both operands are exact, so the quotient is the correctly rounded value: the same
+    double ``float()`` gives for the text (up to the sign of zero, restored here).
+    """
+    numbers = text.translate(_NUMBERS_ONLY, b".")
+    if not numbers.strip():
+        return np.empty(0)
+    mantissa = np.fromstring(numbers, dtype=np.int64, sep=" ")
+    is_start = k == 2
+    token = np.cumsum(is_start) - 1
+    starts = pos[is_start]
+    dot = np.where(b[starts] == ord("."), starts, -1)
+    inner = k == 4
+    dot[token[inner]] = pos[inner]
+    decimals = np.where(dot >= 0, ends - dot, 0)
+    keep = good[is_start]
+    value = mantissa / _POW10[decimals[keep]]
+    return np.copysign(value, np.where(b[starts[keep]] == ord("-"), -1.0, 1.0))
+
+
 def _scan_chunk(raw: bytes, n_lines: int):
     """Words of the good lines of one chunk: (odd mask, line, letter, value)."""
-    text = _SEMI.sub(b"", _COMMENT.sub(b" ", raw))
+    text = _COMMENT.sub(b" ", raw) if b"(" in raw else raw
+    text = _SEMI.sub(b"", text) if b";" in text else text
     b = np.frombuffer(text, np.uint8)
-    cls = _CLASS[b]
-    pos, k = _kinds(b, cls)
+    pos, k, ends = _kinds(b)
     line = _line_of(k)
     odd = np.zeros(n_lines, bool)
-    odd[line[_bad_tokens(b, cls, pos, k)]] = True
+    odd[line[_bad_tokens(b, pos, k, ends)]] = True
     if odd.any():
         text = _blank_lines(text, pos[k == 3], odd)
-    numbers = text.translate(_NUMBERS_ONLY)
-    values = np.fromstring(numbers, dtype=np.float64, sep=" ") if numbers.strip() else np.empty(0)
     good = ~odd[line]
+    values = _values(text, b, pos, k, ends, good)
     letters = b[pos[(k == 1) & good]] & 0xDF
     if len(values) != len(letters):  # cannot happen for well-formed tokens; be safe
         return np.ones(n_lines, bool), *(np.empty(0, t) for t in (np.int64, np.uint8, np.float64))

@@ -51,12 +51,22 @@ def _arc_extremes(ops: Ops, rows: np.ndarray):
     return low, high
 
 
+def _may_bulge_out(ops: Ops, rows: np.ndarray, profile: MachineProfile) -> np.ndarray:
+    """Mask of arcs whose full circle reaches past the travel (the others cannot)."""
+    radius = np.linalg.norm(ops.starts()[rows] - ops.center[rows], axis=1)  # >= the in-plane radius
+    offset = np.array(profile.travel.work_offset())
+    limits = np.array(profile.travel.limits()) - offset[:, None]
+    center = ops.center[rows]
+    return ((center - radius[:, None] < limits[:, 0]) | (center + radius[:, None] > limits[:, 1])).any(axis=1)
+
+
 def _envelope(ops: Ops, profile: MachineProfile, lines: list[str], report: Report) -> None:
     moves = np.flatnonzero(ops.kind <= ARC_CCW)
     low, high = ops.end[moves].copy(), ops.end[moves].copy()
     still = ops.end[moves] == ops.starts()[moves]  # an axis a move leaves alone is not news
     low[still], high[still] = np.inf, -np.inf
     arcs = np.flatnonzero((ops.kind[moves] == ARC_CW) | (ops.kind[moves] == ARC_CCW))
+    arcs = arcs[_may_bulge_out(ops, moves[arcs], profile)]
     if len(arcs):
         low[arcs], high[arcs] = _arc_extremes(ops, moves[arcs])
     offset = profile.travel.work_offset()

@@ -38,17 +38,22 @@ class Ops:
     turn: np.ndarray
     value: np.ndarray
     messages: list[str]  # one per PAUSE row, in order
+    _starts: np.ndarray | None = field(default=None, repr=False)
 
     def __len__(self) -> int:
         return len(self.line)
 
-    def starts(self, origin=(0.0, 0.0, 0.0)) -> np.ndarray:
-        """Start point of every row: the previous row's end (``origin`` for the first)."""
-        start = np.empty_like(self.end)
-        if len(start):
-            start[0] = origin
-            start[1:] = self.end[:-1]
-        return start
+    def starts(self) -> np.ndarray:
+        """Start point of every row: the previous row's end ((0, 0, 0) for the first).
+
+        Computed once; treat the result as read-only."""
+        if self._starts is None:
+            start = np.empty_like(self.end)
+            if len(start):
+                start[0] = 0.0
+                start[1:] = self.end[:-1]
+            self._starts = start
+        return self._starts
 
 
 @dataclass

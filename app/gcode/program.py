@@ -94,7 +94,7 @@ def load_text(text: str, name: str = "<text>", profile: MachineProfile | None = 
     if "\x00" in text:
         return _empty(name, "not a text file (it contains NUL bytes)", profile)
     lines = _split(text)
-    data = "\n".join(lines).encode("utf-8", "replace")
+    data = text.encode("utf-8", "replace")  # a \r is a space to the fast path
     scan = bulk.scan(data, len(lines))
     report = Report()
     buffer = OpBuffer()
