@@ -17,7 +17,7 @@ Numbers are absolute millimetres rounded to 0.001 with trailing zeros dropped.
 Pauses (M0, M1, M6) are not device lines: they are listed as (device index, message)
 so the job can stop before that line. ``plan`` decides, vectorised, how many device
 lines each row becomes (the device index of every move is known without formatting);
-``render`` writes the text. Normalising the output again gives the same lines.
+``render.render`` writes the text. Normalising the output again gives the same lines.
 """
 
 from __future__ import annotations
@@ -26,9 +26,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .arcs import RADIUS_TOL, chord_points, segments, spiral_refused, sweep
-from .numbers import fmt, milli, rounded
-from .ops import ARC_CCW, ARC_CW, DWELL, END, FEED, PAUSE, PLANE_AXES, RAPID, SPINDLE, XY, Ops
+from .arcs import RADIUS_TOL, segments, spiral_refused, sweep
+from .numbers import milli, rounded
+from .ops import ARC_CCW, ARC_CW, PAUSE, PLANE_AXES, XY, Ops
 
 ROUNDING = 0.001
 
@@ -91,90 +91,3 @@ def _chord_counts(ops: Ops, rows, tolerance: float) -> np.ndarray:
     s, e, c = (_plane_pts(ops, rows, p) for p in (start, ops.end[rows], ops.center[rows]))
     r = np.maximum(np.hypot(*(s - c).T), np.hypot(*(e - c).T))
     return segments(r, sweep(s, e, c, ops.turn[rows]), tolerance - ROUNDING)
-
-
-class _Writer:
-    """Keeps what the device already knows (rounded position, feed) while writing."""
-
-    def __init__(self, default_rpm: float):
-        self.pos: tuple | None = None
-        self.feed: int | None = None
-        self.default_rpm = default_rpm
-        self.lines: list[str] = []
-
-    def _axes(self, target: tuple) -> str:
-        if self.pos is None:
-            changed = "XYZ"
-        else:
-            changed = "".join(c for c, a, b in zip("XYZ", target, self.pos, strict=True) if a != b) or "X"
-        words = " ".join(f"{c}{fmt(target['XYZ'.index(c)])}" for c in changed)
-        return words
-
-    def _feed(self, feed: float) -> str:
-        f = int(milli(feed))
-        if f == self.feed:
-            return ""
-        self.feed = f
-        return f" F{fmt(f)}"
-
-    def straight(self, code: str, target: tuple, feed: float) -> None:
-        words = self._axes(target)
-        extra = self._feed(feed) if code == "G01" else ""
-        self.lines.append(f"{code} {words}{extra}")
-        self.pos = target
-
-    def arc(self, code: str, target: tuple, ij: tuple, feed: float) -> None:
-        z = "" if self.pos is not None and self.pos[2] == target[2] else f" Z{fmt(target[2])}"
-        extra = self._feed(feed)
-        self.lines.append(f"{code} X{fmt(target[0])} Y{fmt(target[1])}{z} I{fmt(ij[0])} J{fmt(ij[1])}{extra}")
-        self.pos = target
-
-    def spindle(self, rpm: float) -> None:
-        if rpm == 0:
-            self.lines.append("M05")
-            return
-        rpm = self.default_rpm if rpm < 0 else rpm
-        self.lines.append(f"M03 S{fmt(int(milli(rpm)))}")
-
-
-def render(ops: Ops, the_plan: Plan, tolerance: float, default_rpm: float):
-    """Device lines, line map (device index -> source line) and pauses."""
-    w = _Writer(default_rpm)
-    ends = milli(ops.end)
-    ij_all = milli(np.nan_to_num(ops.center[:, :2] - rounded(ops.starts()[:, :2])))
-    chord_rows = np.flatnonzero(the_plan.chords)
-    chord_pts, owner = _chords(ops, chord_rows, tolerance)
-    chord_at = dict(zip(chord_rows.tolist(), np.searchsorted(owner, np.arange(len(chord_rows))).tolist(),
-                        strict=True))
-    pauses: list[tuple[int, str]] = []
-    messages = iter(ops.messages)
-    lines, kinds, values = ops.line, ops.kind.tolist(), ops.value.tolist()
-    for i, kind in enumerate(kinds):
-        target = tuple(ends[i].tolist())
-        if kind in (RAPID, FEED):
-            w.straight("G00" if kind == RAPID else "G01", target, values[i])
-        elif i in chord_at:
-            a = chord_at[i]
-            for p in chord_pts[a : a + int(the_plan.count[i])].tolist():
-                w.straight("G01", tuple(p), values[i])
-        elif kind in (ARC_CW, ARC_CCW):
-            w.arc("G02" if kind == ARC_CW else "G03", target, tuple(ij_all[i].tolist()), values[i])
-        elif kind == DWELL:
-            w.lines.append(f"G04 P{fmt(int(milli(values[i])))}")
-        elif kind == SPINDLE:
-            w.spindle(values[i])
-        elif kind == END:
-            w.lines.append("M02")
-        elif kind == PAUSE:
-            pauses.append((len(w.lines), next(messages)))
-    line_map = np.repeat(lines, the_plan.count)
-    return w.lines, line_map, pauses
-
-
-def _chords(ops: Ops, rows, tolerance: float):
-    if not len(rows):
-        return np.empty((0, 3), np.int64), np.empty(0, np.int64)
-    start = ops.starts()[rows]
-    pts, owner = chord_points(start, ops.end[rows], ops.center[rows], _axes(ops, rows), ops.turn[rows],
-                              tolerance - ROUNDING)
-    return milli(pts), owner

@@ -4,8 +4,9 @@
 non-UTF-8 or binary files give a ``Program`` with one error; a file with errors loads
 as far as it can (refused lines change nothing), so every error is listed at once.
 Lines are physical lines split at ``\\n`` (a ``\\r`` before it is dropped).
-``device_lines``, ``line_map``, ``pauses`` and ``moves`` are computed on first use;
-the device index of each move (``toolpath.device_index``) is known at once.
+``device_lines``, ``pauses`` and ``moves`` are computed on first use; the number of
+device lines, ``line_map`` and the device index of each move
+(``toolpath.device_index``) are known at once.
 """
 
 from __future__ import annotations
@@ -22,6 +23,7 @@ from . import bulk, checks, normalize, runner
 from .diagnostics import ERROR, WARNING, Diagnostic, Report
 from .moves import moves_of
 from .ops import OpBuffer, Ops
+from .render import render
 from .toolpath import Toolpath, build
 
 
@@ -49,7 +51,8 @@ class Program:
     def _rendered(self) -> tuple:
         if self._render is None:
             tol = self.profile.motion.arc_tolerance_mm
-            self._render = normalize.render(self.ops, self.plan, tol, self.profile.spindle.no_load_rpm)
+            rpm = self.profile.spindle.no_load_rpm
+            self._render = render(self.ops, self.plan.count, self.plan.chords, tol, rpm)
         return self._render
 
     @property
@@ -57,10 +60,15 @@ class Program:
         """The program in the machine's dialect, one string per line."""
         return self._rendered()[0]
 
-    @property
+    @cached_property
     def line_map(self) -> np.ndarray:
-        """Device index -> 1-based source line."""
-        return self._rendered()[1]
+        """Device index -> 1-based source line (known without rendering the lines)."""
+        return np.repeat(self.ops.line, self.plan.count)
+
+    @property
+    def device_count(self) -> int:
+        """Number of device lines, known without rendering them."""
+        return self.plan.total
 
     @property
     def pauses(self) -> list[tuple[int, str]]:

@@ -1,0 +1,112 @@
+"""Writing the device lines of a normaliser ``Plan``, vectorised (see normalize.py).
+
+Each interpreted row becomes ``plan.count`` device rows (arcs turned into chords
+become several G01 rows, pauses none). Per device row: a code, a target in whole
+thousandths of a millimetre, I J for arcs, and a value (feed, seconds or rpm). Which
+words a line needs follows from the previous row's target (what the device already
+knows) and the last feed sent; every distinct number is formatted once.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .arcs import chord_points
+from .numbers import fmt, milli, rounded
+from .ops import ARC_CCW, ARC_CW, DWELL, END, FEED, PAUSE, PLANE_AXES, RAPID, SPINDLE, Ops
+
+G00, G01, G02, G03, G04, M03, M02 = range(7)
+_CODE_OF_KIND = np.zeros(8, np.int8)
+_KINDS = [RAPID, FEED, ARC_CW, ARC_CCW, DWELL, SPINDLE, END, PAUSE]
+_CODE_OF_KIND[_KINDS] = [G00, G01, G02, G03, G04, M03, M02, M02]  # PAUSE rows are never written
+_CODE_TEXT = np.array(["G00", "G01", "G02", "G03", "G04", "M03", "M02"], dtype=object)
+ROUNDING = 0.001
+
+
+def _rows(ops: Ops, count: np.ndarray, chords: np.ndarray, tolerance: float, default_rpm: float):
+    """Per device row: op index, code, target (milli), value."""
+    op = np.repeat(np.arange(len(ops)), count)
+    code = _CODE_OF_KIND[ops.kind[op]]
+    target = milli(ops.end)[op]
+    value = ops.value[op]
+    chord_ops = np.flatnonzero(chords)
+    if len(chord_ops):
+        start = ops.starts()[chord_ops]
+        axes = np.array(PLANE_AXES)[ops.plane[chord_ops]]
+        pts, _ = chord_points(start, ops.end[chord_ops], ops.center[chord_ops], axes, ops.turn[chord_ops],
+                              tolerance - ROUNDING)
+        dev = np.flatnonzero(chords[op])
+        target[dev] = milli(pts)
+        code[dev] = G01
+    spindle = code == M03
+    value[spindle] = np.where(value[spindle] < 0, default_rpm, value[spindle])
+    return op, code, target, value
+
+
+def _words(code, target, feed_code):
+    """Masks of the X, Y, Z and F words each row needs."""
+    n = len(code)
+    motion = code <= G03
+    prev = np.empty_like(target)
+    if n:
+        prev[0] = target[0]
+        prev[1:] = target[:-1]
+    changed = target != prev
+    first = np.flatnonzero(motion)[:1]
+    changed[first] = True
+    straight = code <= G01
+    none = straight & ~changed.any(axis=1)
+    emit = changed & straight[:, None]
+    emit[none, 0] = True
+    arc = (code == G02) | (code == G03)
+    emit[arc, 0] = emit[arc, 1] = True
+    emit[arc, 2] = changed[arc, 2]
+    feeds = np.flatnonzero((code == G01) | arc)
+    send_f = np.zeros(n, bool)
+    if len(feeds):
+        f = feed_code[feeds]
+        send_f[feeds] = np.concatenate(([True], f[1:] != f[:-1]))
+    return emit, send_f
+
+
+def _texts(values: np.ndarray) -> np.ndarray:
+    """Formatted text of each whole-thousandth value (object array)."""
+    uniq, inverse = np.unique(values, return_inverse=True)
+    table = np.array([fmt(v) for v in uniq.tolist()] or [""], dtype=object)
+    return table[inverse.reshape(-1)] if len(values) else np.empty(0, dtype=object)
+
+
+def _append(line, mask, prefix: str, numbers) -> None:
+    idx = np.flatnonzero(mask)
+    if len(idx):
+        line[idx] = line[idx] + (prefix + _texts(numbers[idx]))
+
+
+def render(ops: Ops, count, chords, tolerance: float, default_rpm: float):
+    """(device lines, line map, pauses) of interpreted rows and their plan."""
+    op, code, target, value = _rows(ops, count, chords, tolerance, default_rpm)
+    number = milli(value)
+    emit, send_f = _words(code, target, number)
+    line = _CODE_TEXT[code]
+    for axis, prefix in enumerate((" X", " Y", " Z")):
+        col = target[:, axis]
+        if prefix == " Z":
+            arc = (code == G02) | (code == G03)
+            _append(line, emit[:, axis] & ~arc, prefix, col)
+        else:
+            _append(line, emit[:, axis], prefix, col)
+    arc = (code == G02) | (code == G03)
+    ij = milli(np.nan_to_num(ops.center[:, :2] - rounded(ops.starts()[:, :2])))[op]
+    _append(line, arc & emit[:, 2], " Z", target[:, 2])
+    _append(line, arc, " I", ij[:, 0])
+    _append(line, arc, " J", ij[:, 1])
+    _append(line, send_f, " F", number)
+    _append(line, code == G04, " P", number)
+    off = (code == M03) & (value == 0)
+    _append(line, (code == M03) & ~off, " S", number)
+    line[off] = "M05"
+    first = np.cumsum(count) - count
+    pause_rows = np.flatnonzero(ops.kind == PAUSE)
+    pauses = list(zip(first[pause_rows].tolist(), ops.messages, strict=True))
+    return line.tolist(), ops.line[op], pauses
+
