@@ -115,12 +115,23 @@ def _modes(state: State, groups) -> None:
             setattr(state, name, value)
 
 
+class _Pending:
+    """Warnings of a line, passed on only if the line is not refused."""
+
+    def __init__(self) -> None:
+        self.items: list[tuple] = []
+
+    def warning(self, line: int, column: int, message: str, key: str = "") -> None:
+        self.items.append((line, column, message, key))
+
+
 def interpret_line(
     state: State, words: list[Word], line_no: int, ops: OpBuffer, report: Report
 ) -> tuple[State, bool]:
     """Apply one line; return (new state, refused?); ``state`` itself is left untouched."""
     new = state.copy()
     line_ops = OpBuffer()
+    final, report = report, _Pending()
     try:
         groups, mgroups = _check_codes(words)
         params = _check_letters(words)
@@ -134,8 +145,10 @@ def interpret_line(
         do_motion(new, groups, params, line_no, line_ops)
         _stop(new, mgroups, line_no, line_ops, report)
     except LineError as exc:
-        report.error(line_no, exc.column, exc.message)
+        final.error(line_no, exc.column, exc.message)
         return state, True
+    for item in report.items:
+        final.warning(*item)
     ops.rows.extend(line_ops.rows)
     ops.messages.extend(line_ops.messages)
     return new, False

@@ -193,3 +193,8 @@ def test_many_warnings_are_summarised():
 def test_circle_length():
     program = load_text("G0 X10\nG2 I-10 F100")
     assert program.toolpath.length[-1] == pytest.approx(2 * math.pi * 10)
+
+
+def test_refused_line_gives_no_warning():
+    program = load_text("M4 G81 X1")
+    assert len(program.errors) == 1 and not program.warnings
