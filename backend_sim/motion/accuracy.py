@@ -117,8 +117,20 @@ def contour_errors(points: np.ndarray, done: np.ndarray, paths: list[np.ndarray]
         lo, hi = max(0, d + 1 - window), min(n, d + 2 + window)
         a = np.concatenate([p[:-1] for p in paths[lo:hi]])
         b = np.concatenate([p[1:] for p in paths[lo:hi]])
-        out[mask] = _distance(points[mask], a, b)
+        q = points[mask]
+        a, b = _near(q, a, b, margin=float(_distance(q[:1], a, b)[0]) + 0.5)
+        out[mask] = _distance(q, a, b)
     return out
+
+
+def _near(q: np.ndarray, a: np.ndarray, b: np.ndarray, margin: float):
+    """The segments whose bounding box comes within ``margin`` of the points' box.
+
+    A point further than ``margin`` from every segment may lose its nearest one and so
+    report a larger distance: the pruning can only err on the safe side."""
+    lo, hi = q.min(0) - margin, q.max(0) + margin
+    keep = np.all((np.minimum(a, b) <= hi) & (np.maximum(a, b) >= lo), axis=1)
+    return (a[keep], b[keep]) if keep.any() else (a, b)
 
 
 def _distance(p: np.ndarray, a: np.ndarray, b: np.ndarray, chunk: int = 512) -> np.ndarray:

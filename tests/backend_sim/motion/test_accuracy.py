@@ -41,16 +41,19 @@ def check(result, limit_mm=0.1):
     assert result.final_error_mm <= 2 * COUNT, result  # the truth, one count of quantisation
 
 
-def test_own_program_planner():
-    result = run_lines(OWN_LINES, "planner")
-    check(result, 0.05)
+@pytest.fixture(scope="module")
+def own_planner():
+    return run_lines(OWN_LINES, "planner")
 
 
-def test_own_program_simple_mode_completes_but_is_slower():
+def test_own_program_planner(own_planner):
+    check(own_planner, 0.05)
+
+
+def test_own_program_simple_mode_completes_but_is_slower(own_planner):
     simple = run_lines(OWN_LINES, "simple")
-    planner = run_lines(OWN_LINES, "planner")
     assert not simple.alarms and simple.final_error_counts <= 1.0 + 1e-6
-    assert simple.job_s > 1.3 * planner.job_s
+    assert simple.job_s > 1.3 * own_planner.job_s
 
 
 @pytest.mark.parametrize("name", ["potrace_logo.ngc", "arcs_circles.ngc"])
