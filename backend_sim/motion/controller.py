@@ -146,20 +146,17 @@ class MotionController(ControllerOps):
             if self._restful():
                 self.now_ms += left
                 return
-            if self.watch:  # one tick at a time: supervise() reads the stored state
-                left -= servo.run(self, 1)
-                self._after_run()
-                self.supervise()
-                continue
             fast = fastpath.entry(self.planner) if self.active is self.planner else None
-            if fast is not None:
+            if fast is not None:  # mid-block: nothing for supervise() to see until it breaks
                 left -= servo.run_fused(self, left, fast)
-            elif self.active is self.planner and self.planner.blocks:
-                left -= servo.run(self, 1)  # a block boundary: step() does the bookkeeping
+            elif self.watch or (self.active is self.planner and self.planner.blocks):
+                left -= servo.run(self, 1)  # boundaries and rests: step() and supervise() per tick
             else:
                 busy = self.state in ("RUN", "HOMING", "JOG") or self.stopping
                 left -= servo.run(self, left if busy else min(left, _IDLE_CHUNK))
             self._after_run()
+            if self.watch:
+                self.supervise()
 
     def _after_run(self) -> None:
         brk, self.brk = self.brk, 0

@@ -25,9 +25,10 @@ SETPOINT = """
         p_nv = p_v - p_dv if p_hold else p_v + p_dv
         if p_nv > p_vnom:
             p_nv = p_vnom
-        p_lim = p_exit2 + p_acc2 * (p_rs1 - p_sraw)
-        if p_nv * p_nv > p_lim:
-            p_nv = sqrt(p_lim)
+        if p_sraw > p_sdec or p_hold:
+            p_lim = p_exit2 + p_acc2 * (p_rs1 - p_sraw)
+            if p_nv * p_nv > p_lim:
+                p_nv = sqrt(p_lim)
         if p_nv > 0.0:
             p_v = p_nv
             p_sraw += p_nv * 0.001
@@ -59,6 +60,8 @@ LOAD = """
         p_rs1, p_ms0, p_ms1, p_arc, p_coef, p_marg, p_still = fast
     p_c0, p_c1, p_c2, p_c3, p_c4, p_c5, p_c6 = p_coef + (0.0,) * (7 - len(p_coef))
     p_ssm = p_sum * p_invw
+    # below p_sdec even full speed can still stop in time: no need for the braking curve
+    p_sdec = p_rs1 - max(0.0, p_vnom * p_vnom - p_exit2) / p_acc2 - 2e-3 * (p_vnom + p_dv)
     cos = math.cos
     sin = math.sin
     sqrt = math.sqrt

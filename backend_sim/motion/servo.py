@@ -49,20 +49,23 @@ def _run(ctl, n, fast=None):
      ae, be, ib, mpc, ferr, db, fb, fg) = ctl.loop_constants
     now = ctl.now_ms
     brk = 0
+    e0, e1, e2 = err
     {load}
     done = 0
     while done < n:
         {guard}
         done += 1
         now += 1
-        ctl.now_ms = now
+        {clock}
         {setpoint}
         {body}
         if trace is not None:
             trace((c0, c1, c2))
-        if brk or len(events) != ne{stop}:
+        if brk{stop}:
             break
     {store}
+    ctl.now_ms = now
+    err[:] = e0, e1, e2
     ctl.brk = brk
     return done
 """
@@ -70,8 +73,8 @@ def _run(ctl, n, fast=None):
 _AXIS = """
         if s{k} != sp{k} or not rest{k}:
             rest{k} = False
-            e = s{k} - c{k} * mpc - off{k}
-            err[{k}] = e
+            e{k} = e = s{k} - c{k} * mpc - off{k}
+            {err}
             vf = s{k} - sp{k}
             sp{k} = s{k}
             if on:
@@ -142,8 +145,11 @@ def _generate(fused: bool):
         "{store}": store + (fastpath.STORE if fused else ""),
         "{guard}": fastpath.GUARD.strip() if fused else "",
         "{setpoint}": fastpath.SETPOINT.strip() if fused else "s0, s1, s2 = step()",
-        "{stop}": " or p_still" if fused else "",
-        "{body}": "".join(_AXIS.format(k=k) for k in range(3)),
+        # the fused loop calls nothing that reads the clock, the errors or queues events
+        "{stop}": " or p_still" if fused else " or len(events) != ne",
+        "{clock}": "" if fused else "ctl.now_ms = now",
+        "{body}": "".join(_AXIS.replace("{err}", "" if fused else "err[{k}] = e").format(k=k)
+                          for k in range(3)),
     }
     source = _HEAD
     for key, text in parts.items():
