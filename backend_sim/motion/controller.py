@@ -179,9 +179,6 @@ class MotionController(ControllerOps):
         rest = _S["rest"]
         return all(a[rest] for a in self.axes)
 
-    def planner_leave(self, *state) -> None:
-        fastpath.leave(self.planner, *state)
-
     def wake(self) -> None:
         """Axis state was changed from outside the servo loop: recompute every axis."""
         rest = _S["rest"]

@@ -11,7 +11,7 @@ absolute work millimetres, words separated by spaces or not):
     M03|M3 S<rpm>   M05|M5      spindle on / off
     M02|M2  M30                 end of program
 
-Omitted axes keep their last value; the feed is modal. ``machine = work + offset``.
+Omitted axes keep their last value; the feed and the spindle speed are modal. ``machine = work + offset``.
 ``parser.position`` is the machine position at the end of the last parsed move; the MCU
 sets it after homing, jog or stop. Never imports ``app.gcode``: a normaliser bug must
 not hide behind a shared parser.
@@ -103,6 +103,7 @@ class DialectParser:
         self.offset = tuple(float(v) for v in offset)
         self.position = tuple(float(v) for v in position)
         self.feed = 0.0
+        self.rpm = 0.0  # modal spindle speed
 
     def parse(self, seq: int, line: str) -> Move:
         """One line -> Move; updates position and modal feed only if the line is valid."""
@@ -111,11 +112,18 @@ class DialectParser:
         if kind == "dwell":
             return self._dwell(seq, words, line)
         if kind == "spindle":
-            rpm = _nonneg(words, "S", 0.0) if command == "M3" else 0.0
-            return Move(seq, "spindle", self.position, rpm=rpm, source=line)
+            return self._spindle(seq, command, words, line)
         if kind == "end":
             return Move(seq, "end", self.position, source=line)
         return self._motion(seq, command, kind, words, line)
+
+    def _spindle(self, seq: int, command: str, words: dict[str, float], line: str) -> Move:
+        if command == "M5":
+            return Move(seq, "spindle", self.position, rpm=0.0, source=line)
+        if "S" not in words and self.rpm <= 0:
+            raise DialectError("BAD_LINE", "M03 needs S<rpm> (no speed set yet)")
+        self.rpm = _nonneg(words, "S", self.rpm)
+        return Move(seq, "spindle", self.position, rpm=self.rpm, source=line)
 
     def _dwell(self, seq: int, words: dict[str, float], line: str) -> Move:
         if "P" not in words:

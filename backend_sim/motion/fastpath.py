@@ -2,7 +2,7 @@
 
 Contract: ``entry(planner)`` returns the locals the fused loop needs, or None when the
 next tick must go through ``Planner.step()`` (a block boundary within one tick's
-travel, a barrier, a stop at rest). ``leave(planner, ...)`` stores the state back. The
+travel, a barrier, a stop at rest). ``STORE`` writes the state back. The
 loop text ``SETPOINT`` computes exactly what ``Planner._raw_step``, ``_smooth`` and
 ``_point`` compute for a tick that crosses no boundary, and breaks out *before* any
 tick that could cross one, so block bookkeeping stays in ``Planner`` (plain Python).
@@ -58,7 +58,7 @@ SETPOINT = """
 LOAD = """
     p_sraw, p_v, p_buf, p_idx, p_sum, p_w, p_invw, p_dv, p_acc2, p_hold, p_vnom, p_exit2, \\
         p_rs1, p_ms0, p_ms1, p_arc, p_coef, p_marg, p_still = fast
-    p_c0, p_c1, p_c2, p_c3, p_c4, p_c5, p_c6 = p_coef + (0.0,) * (7 - len(p_coef))
+    p_c0, p_c1, p_c2, p_c3, p_c4, p_c5, p_c6 = p_coef
     p_ssm = p_sum * p_invw
     # below p_sdec even full speed can still stop in time: no need for the braking curve
     p_sdec = p_rs1 - max(0.0, p_vnom * p_vnom - p_exit2) / p_acc2 - 2e-3 * (p_vnom + p_dv)
@@ -69,7 +69,14 @@ LOAD = """
 """
 
 STORE = """
-    ctl.planner_leave(p_sraw, p_v, p_idx, p_sum, p_still, (s0, s1, s2) if done else None)
+    pl = ctl.planner
+    pl.s_raw = pl.s_prev = p_sraw
+    pl.v_raw = p_v
+    pl.idx = p_idx
+    pl.sum = p_sum
+    pl.still = p_still if p_still < p_w else p_w
+    if done:
+        pl.pos = (s0, s1, s2)
 """
 
 
@@ -92,10 +99,3 @@ def entry(p: Planner):
     return (p.s_raw, p.v_raw, p.buf, p.idx, p.sum, p.window, 1.0 / p.window, p.accel * 1e-3,
             2.0 * p.accel, p.holding, br.v_nom, exit_v * exit_v, br.s1, b0.s0, b0.s1, b0.arc,
             b0.coef, marg, p.still)
-
-
-def leave(p: Planner, s_raw, v_raw, idx, total, still, pos) -> None:
-    p.s_raw, p.v_raw, p.idx, p.sum, p.still = s_raw, v_raw, idx, total, min(still, p.window)
-    p.s_prev = s_raw
-    if pos is not None:
-        p.pos = pos

@@ -29,7 +29,7 @@ class Segment:
         self.start_dir = self.end_dir = (dx / n, dy / n, dz / n)
         self.radius = 0.0
         self.arc = False
-        self.coef = (start[0], start[1], start[2], dx / n, dy / n, dz / n)
+        self.coef = (start[0], start[1], start[2], dx / n, dy / n, dz / n, 0.0)
 
     @classmethod
     def from_move(cls, start: Vec3, move: Move) -> Segment:

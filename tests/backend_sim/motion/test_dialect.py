@@ -69,6 +69,15 @@ def test_modal_feed_and_omitted_axes():
     assert p.position == (11.0, 7.0, 0.0)
 
 
+def test_spindle_speed_is_modal():
+    p = DialectParser()
+    with pytest.raises(DialectError, match="needs S"):
+        p.parse(0, "M03")
+    assert p.parse(1, "M03 S1200").rpm == 1200.0
+    assert p.parse(2, "M05").rpm == 0.0
+    assert p.parse(3, "M03").rpm == 1200.0
+
+
 def test_arc_extent_includes_bulge():
     start = (0.0, 0.0, 0.0)
     move = Move(0, "arc", (10.0, 0.0, 0.0), 100.0, center=(5.0, 0.0), clockwise=True)
