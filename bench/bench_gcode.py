@@ -84,12 +84,14 @@ def _best_of(n: int, fn) -> tuple[float, object]:
 
 
 _PEAK = """
-import resource, sys
+import re, sys
+def high_water_mb():  # VmHWM: this process's peak resident set (ru_maxrss survives exec)
+    status = open("/proc/self/status").read()
+    return int(re.search(r"VmHWM:\\s+(\\d+)", status).group(1)) // 1024
 from app.gcode import load
-base = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
+base = high_water_mb()
 program = load(sys.argv[1]); program.toolpath.length.sum()
-peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
-print(base // 1024, peak // 1024)
+print(base, high_water_mb())
 """
 
 

@@ -95,6 +95,10 @@ class OpBuffer:
             return Ops(np.empty(0, np.int64), np.empty(0, np.int8), empty, empty.copy(),
                        np.empty(0, np.int8), np.empty(0, np.int32), np.empty(0), [])
         cols = list(zip(*self.blocks, strict=True))
+        self.blocks = []
         dtypes = (np.int64, np.int8, np.float64, np.float64, np.int8, np.int32, np.float64)
-        arrays = [np.concatenate(c).astype(t, copy=False) for c, t in zip(cols, dtypes, strict=True)]
+        arrays = []
+        for i, dtype in enumerate(dtypes):
+            arrays.append(np.concatenate(cols[i]).astype(dtype, copy=False))
+            cols[i] = None  # free each column's pieces once joined
         return Ops(*arrays, messages=self.messages)

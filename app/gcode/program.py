@@ -96,22 +96,28 @@ def _empty(name: str, message: str, profile: MachineProfile) -> Program:
     return program
 
 
+def _interpret(lines: list[str], data: list[bytes], name: str, profile: MachineProfile) -> Program:
+    """Interpret ``lines``; ``data`` holds their bytes, handed over (emptied) to free them early."""
+    scan = bulk.scan(data.pop(), len(lines))
+    report = Report()
+    buffer = OpBuffer()
+    runner.run(lines, scan, buffer, report)
+    del scan
+    ops = buffer.finish()
+    del buffer
+    checks.run(ops, profile, lines, report)
+    the_plan = normalize.plan(ops, profile.motion.arc_tolerance_mm)
+    toolpath = build(ops, the_plan.first, profile)
+    return Program(name, lines, report.finish(), ops, toolpath, profile, the_plan)
+
+
 def load_text(text: str, name: str = "<text>", profile: MachineProfile | None = None) -> Program:
     """Interpret G-code ``text``; errors and warnings are in the result, never raised."""
     profile = profile or MachineProfile()
     if "\x00" in text:
         return _empty(name, "not a text file (it contains NUL bytes)", profile)
-    lines = _split(text)
-    data = text.encode("utf-8", "replace")  # a \r is a space to the fast path
-    scan = bulk.scan(data, len(lines))
-    report = Report()
-    buffer = OpBuffer()
-    runner.run(lines, scan, buffer, report)
-    ops = buffer.finish()
-    checks.run(ops, profile, lines, report)
-    the_plan = normalize.plan(ops, profile.motion.arc_tolerance_mm)
-    toolpath = build(ops, the_plan.first, profile)
-    return Program(name, lines, report.finish(), ops, toolpath, profile, the_plan)
+    data = [text.encode("utf-8", "replace")]  # a \r is a space to the fast path
+    return _interpret(_split(text), data, name, profile)
 
 
 def load(path: str | Path, profile: MachineProfile | None = None) -> Program:
@@ -122,10 +128,14 @@ def load(path: str | Path, profile: MachineProfile | None = None) -> Program:
         raw = path.read_bytes()
     except OSError as exc:
         return _empty(str(path), f"cannot read {path}: {exc.strerror or exc}", profile)
+    if b"\x00" in raw:
+        return _empty(str(path), "not a text file (it contains NUL bytes)", profile)
     try:
-        text = raw.decode("utf-8")
+        lines = _split(raw.decode("utf-8"))
     except UnicodeDecodeError as exc:
         line = raw.count(b"\n", 0, exc.start) + 1
         return _empty(str(path), f"not a UTF-8 text file (bad byte at line {line}, offset {exc.start})",
                       profile)
-    return load_text(text, str(path), profile)
+    data = [raw]  # valid UTF-8: the bytes the fast path reads
+    del raw
+    return _interpret(lines, data, str(path), profile)
