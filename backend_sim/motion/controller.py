@@ -147,8 +147,9 @@ class MotionController(ControllerOps):
                 self.now_ms += left
                 return
             fast = fastpath.entry(self.planner) if self.active is self.planner else None
-            if fast is not None:  # mid-block: nothing for supervise() to see until it breaks
-                left -= servo.run_fused(self, left, fast)
+            done = servo.run_fused(self, left, fast) if fast is not None else 0
+            if done:  # mid-block: nothing for supervise() to see until it breaks
+                left -= done
             elif self.watch or (self.active is self.planner and self.planner.blocks):
                 left -= servo.run(self, 1)  # boundaries and rests: step() and supervise() per tick
             else:
@@ -197,6 +198,7 @@ class MotionController(ControllerOps):
         elif self.state == "HOLD":
             if self.job.just_held():
                 self._events.append(Held())
+                self._update_watch()
         elif self.state == "HOMING":
             if self.homing is not None and self.homing.poll() and self.state == "HOMING":
                 self._homed()
