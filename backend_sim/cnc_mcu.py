@@ -88,11 +88,13 @@ class CncMcu:
         self.state = self.mc.state
         self.next_status = 0
         self._busy = True
+        self.mc_ms = self.rx_ms = self.clock.now_ms
         self.send(Alarm("BOOT", self.boot_id))
         self.send_status()
 
     def reset(self) -> None:
         """The RESET button or command: same machine, new boot, position unknown."""
+        self.catch_up()
         self.boot()
 
     # ------------------------------------------------------------------ time
@@ -103,18 +105,27 @@ class CncMcu:
         return not self.mc.idle()
 
     def next_due_ms(self) -> int | None:
+        """When the CNC MCU next needs the clock: the next motion chunk or status."""
+        partial = self.rx_ms + 501 if self.rx.pending() else None
         if not self._busy:
-            return None
-        now = self.clock.now_ms
-        return min(now + MOTION_CHUNK_MS, max(self.next_status, now + 1))
+            return partial
+        base = self.mc_ms
+        due = min(base + MOTION_CHUNK_MS, max(self.next_status, base + 1))
+        return due if partial is None else min(due, partial)
 
     def wake(self) -> None:
         """The motion controller was changed from outside (panel, faults): tick it again."""
         self._busy = True
 
-    def run(self, ms: int) -> None:
-        if ms > 0 and self._busy:
-            self.mc.advance(ms)
+    def catch_up(self) -> None:
+        """Bring the motion controller up to the clock (it may lag while only the main
+        MCU or the wires have something to do) and handle what it reports."""
+        now = self.clock.now_ms
+        if now > self.mc_ms:
+            if self._busy:
+                self.mc.advance(now - self.mc_ms)
+            self.mc_ms = now
+        self.service()
 
     def service(self) -> None:
         self._drain_events()
@@ -127,6 +138,8 @@ class CncMcu:
     # ------------------------------------------------------------------ input
 
     def receive(self, data: bytes) -> None:
+        self.catch_up()
+        self.rx_ms = self.clock.now_ms
         self._frames(self.rx.feed(data, self.clock.now))
         self._busy = not self.mc.idle()
 
@@ -283,6 +296,7 @@ class CncMcu:
         self.tx.write(encode_fit(frame), self.clock.now)
 
     def set_cover(self, is_open: bool) -> None:
+        self.catch_up()
         self.cover_open = is_open
         self.mc.cover_open = is_open
         self._drain_events()

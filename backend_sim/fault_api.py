@@ -97,11 +97,13 @@ class Faults:
 
     def trip_limit(self, axis: str) -> None:
         with self._sim.lock:
+            self._sim.cnc.catch_up()
             self._sim.cnc.mc.trip_limit(axis)
             self._sim.wake()
 
     def lose_encoder(self, axis: str) -> None:
         with self._sim.lock:
+            self._sim.cnc.catch_up()
             self._sim.cnc.mc.lose_encoder(axis)
             self._sim.wake()
 

@@ -10,6 +10,9 @@ own thread in real time, at a speed factor, or (``speed=None``) as fast as possi
 The loop is event driven: it jumps straight to the next thing that can happen (a byte
 that matters landing on a wire, a timer of the main MCU, the next chunk of at most
 ``MOTION_CHUNK_MS`` of motion) and skips the 1 ms ticks while the machine is at rest.
+The motion controller is brought up to the clock whenever the CNC MCU receives bytes,
+is due, or is touched from outside, and at the end of every ``run_*``; between those
+(events of the main MCU and the host) it may lag by at most one motion chunk.
 """
 
 from __future__ import annotations
@@ -115,26 +118,30 @@ class Simulator:
     def _step_to(self, end_ms: int, predicate: Callable[[], bool] | None = None) -> None:
         clock, cnc, main = self.clock, self.cnc, self.main
         while clock.now_ms < end_ms:
-            due = self._next_due(end_ms)
-            cnc.run(due - clock.now_ms)
+            due, cnc_due = self._next_due(end_ms)
             clock.advance_to(due)
+            if due >= cnc_due:
+                cnc.catch_up()
             self._deliver()
             main.service()
-            cnc.service()
             if predicate is not None and predicate():
-                return
+                break
+        cnc.catch_up()
 
-    def _next_due(self, end_ms: int) -> int:
+    def _next_due(self, end_ms: int) -> tuple[int, int]:
+        """The next ms anything happens, and the next ms the CNC MCU must run."""
         now = self.clock.now_ms
-        due = min(end_ms, self.main.next_due_ms())
         cnc_due = self.cnc.next_due_ms()
-        if cnc_due is not None and cnc_due < due:
-            due = cnc_due
-        for wire in self.wires.values():
-            t = wire.next_time()
+        cnc_due = FAR_MS if cnc_due is None else cnc_due
+        t = self.wires["uart_down"].next_time()
+        if t is not None:
+            cnc_due = min(cnc_due, to_ms(t))
+        due = min(end_ms, self.main.next_due_ms(), cnc_due)
+        for name in ("usb_down", "uart_up", "usb_up"):
+            t = self.wires[name].next_time()
             if t is not None:
                 due = min(due, to_ms(t))
-        return max(due, now + 1)
+        return max(due, now + 1), max(cnc_due, now + 1)
 
     def _deliver(self) -> None:
         now, wires = self.clock.now, self.wires
@@ -199,5 +206,5 @@ class Simulator:
         if target > self.clock.now_ms:
             self._step_to(min(target, self.clock.now_ms + THREAD_SLICE_MS))
             self.condition.notify_all()
-        wait = self.clock.wall_until(self._next_due(FAR_MS))
+        wait = self.clock.wall_until(self._next_due(FAR_MS)[0])
         self.condition.wait(min(max(wait, 0.002), 0.05))
