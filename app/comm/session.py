@@ -73,7 +73,7 @@ class Session(JobControl):
         self._out = bytearray()
         self._then: dict[int, Callable[[CommandResult], None]] = {}
         self._warned = False
-        self._last_progress = (None, 0.0)
+        self._last_progress = (None, float("-inf"))
         self._handlers: dict[str, Callable] = {
             "A": self._on_ack, "N": self._on_nak, "F": self._on_finished, "O": self._on_answer,
             "E": self._on_answer, "I": self._on_answer, "S": self._on_status,
@@ -87,6 +87,8 @@ class Session(JobControl):
         """A transport was opened: start talking (ask for a status)."""
         self._write = write
         self.deframer = fr.Deframer()
+        self.realtime.clear()
+        self._last_progress = (None, float("-inf"))
         self.link.attach(self.clock())
         self._emit_link()
         if self.state is S.DISCONNECTED:
@@ -242,10 +244,10 @@ class Session(JobControl):
     # ------------------------------------------------------------------ link
 
     def _link_lost(self, reason: str) -> None:
-        for result in self.commands.fail_all("LINK_LOST", reason):
-            self._command_done(result)
         self._error("LINK_LOST", f"link to the machine lost: {reason}")
         self._job_link_lost(reason)
+        for result in self.commands.fail_all("LINK_LOST", reason):
+            self._command_done(result)
 
     def _emit_link(self, reason: str = "") -> None:
         rate = self.stream.window.resend_rate if self.stream else 0.0

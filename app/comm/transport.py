@@ -66,6 +66,10 @@ class SimTransport:
         self.sim = sim
         self.port = sim.host_port
 
+    def clock(self) -> float:
+        """The simulator's clock in seconds: the host's timers run on machine time."""
+        return self.sim.clock.now
+
     @classmethod
     def start(cls, options: dict[str, str]) -> SimTransport:
         from backend_sim import Simulator

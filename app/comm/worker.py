@@ -37,25 +37,48 @@ Slots (call them through ``SerialController`` of the same name, or a queued sign
 (a ``Program`` or a list of device lines), ``pause()``, ``resume()``, ``stop()``,
 ``jog(axis, distance_mm, feed_mm_min)``, ``home(mode)``, ``upload_to_sd(name, lines)``,
 ``run_from_sd(name)``, ``list_sd()``, ``delete_sd(name)``, ``resume_after_reconnect()``,
-``confirm_restart()``, ``set_verbose_frames(on)``, ``shutdown()``.
+``confirm_restart()``, ``set_verbose_frames(on)``, ``set_time_scale(scale)`` (the
+machine is simulated ``scale`` times faster than real time, e.g. ``cnc-sim --speed 20``
+on a pty; ``sim://`` lends its own clock), ``shutdown()``.
 """
 
 from __future__ import annotations
 
 import contextlib
-import time
+import ctypes
+import sys
 
 from PySide6.QtCore import QObject, Qt, QThread, QTimer, Signal, Slot
 
+from app.comm.clock import ScaledClock
 from app.comm.events import FrameEvent, LogEvent
 from app.comm.listener import SessionListener
 from app.comm.session import Session
 from app.comm.transport import open_transport
 
+
+def _guard_refcounts() -> bool:
+    """shiboken6 6.12 on Python < 3.12 drops a reference to None/True/False per ``emit()``
+    (and some void calls), so a busy worker aborts ("bool_dealloc") after a few thousand
+    signals. Make those constants practically immortal, as Python 3.12 does (the same
+    guard as ``app.ui._pyside_guard``; comm may not import ui)."""
+    import shiboken6
+
+    if sys.version_info >= (3, 12) or tuple(shiboken6.__version_info__[:2]) != (6, 12):
+        return False
+    for constant in (None, True, False):
+        count = ctypes.c_ssize_t.from_address(id(constant))
+        if count.value < 1 << 40:
+            count.value += 1 << 50
+    return True
+
+
+_guard_refcounts()
+
 SLOT_NAMES = frozenset({
     "connect_to", "disconnect_from", "send_command", "start_job", "pause", "resume", "stop",
     "jog", "home", "upload_to_sd", "run_from_sd", "list_sd", "delete_sd",
-    "resume_after_reconnect", "confirm_restart", "set_verbose_frames", "shutdown",
+    "resume_after_reconnect", "confirm_restart", "set_verbose_frames", "set_time_scale", "shutdown",
 })
 PUMP_MS = 5
 READ_CHUNK = 65536
@@ -122,9 +145,11 @@ class SerialWorker(QObject):
     disconnected = Signal(str)
     finished = Signal()
 
-    def __init__(self, clock=time.monotonic, opener=open_transport) -> None:
+    def __init__(self, clock=None, opener=open_transport) -> None:
         super().__init__()
-        self.session = Session(None, _Relay(self), clock)
+        self._fixed_clock = clock
+        self._scaled = ScaledClock(1.0)
+        self.session = Session(None, _Relay(self), clock or self._scaled)
         self.transport = None
         self.url = ""
         self.verbose_frames = False
@@ -185,6 +210,7 @@ class SerialWorker(QObject):
             self.connect_failed.emit(str(exc))
             return
         self.url = url
+        self.session.clock = self._clock_for(self.transport)
         self.session.attach(self._write)
         self.connected.emit(url)
 
@@ -248,7 +274,18 @@ class SerialWorker(QObject):
     def set_verbose_frames(self, on: bool) -> None:
         self.verbose_frames = bool(on)
 
+    @Slot(float)
+    def set_time_scale(self, scale: float) -> None:
+        """Machine time runs ``scale`` times faster than the wall (``cnc-sim --speed``)."""
+        self._scaled = ScaledClock(scale)
+        if self.transport is not None:
+            self.session.clock = self._clock_for(self.transport)
+
     # ------------------------------------------------------------------ internals
+
+    def _clock_for(self, transport):
+        """The in-process simulator's clock, else the wall clock scaled by the time scale."""
+        return self._fixed_clock or getattr(transport, "clock", None) or self._scaled
 
     def _write(self, data: bytes) -> None:
         self.transport.write(data)
