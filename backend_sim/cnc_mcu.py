@@ -5,7 +5,8 @@ controller for whole milliseconds (``run``), then turns what happened into frame
 its UART TX wire (``service``). It owns the ``D`` stream of a job (expected seq, ``A``
 with free slots, duplicates re-acked, gaps and bad CRCs answered ``N expected`` once per
 bad stretch), reports ``F <seq>`` cumulatively as lines finish, and sends ``S`` on every
-state change, on ``PING``/``STATUS`` and at least every 50 ms while moving. A refused
+state change, on ``PING``/``STATUS`` and at least every 50 ms while moving. With nothing
+from the main MCU for 3 s while moving it holds (``X UART_LOST``). A refused
 line (``E - <code> <seq> <text>``) flushes the queue and ends the job. Commands are in
 ``cnc_commands``. Nothing here knows about the host or the SD card.
 """
@@ -65,6 +66,7 @@ class CncMcu:
         self.exec_log = exec_log
         self.rng = rng
         self.offset = profile.travel.work_offset()
+        self.lost_ms = round(profile.link.lost_s * 1000)
         self.cover_open = False
         self.boot()
 
@@ -89,6 +91,8 @@ class CncMcu:
         self.next_status = 0
         self._busy = True
         self.mc_ms = self.rx_ms = self.clock.now_ms
+        self.last_frame_ms = self.clock.now_ms
+        self.uart_lost = False
         self.send(Alarm("BOOT", self.boot_id))
         self.send_status()
 
@@ -111,6 +115,8 @@ class CncMcu:
             return partial
         base = self.mc_ms
         due = min(base + MOTION_CHUNK_MS, max(self.next_status, base + 1))
+        if not self.uart_lost:
+            due = min(due, self.last_frame_ms + self.lost_ms)
         return due if partial is None else min(due, partial)
 
     def wake(self) -> None:
@@ -134,6 +140,15 @@ class CncMcu:
         self._busy = busy = not self.mc.idle()
         if busy and self.clock.now_ms >= self.next_status:
             self.send_status()
+        if busy and not self.uart_lost and self.clock.now_ms - self.last_frame_ms >= self.lost_ms:
+            self._uart_silent()
+
+    def _uart_silent(self) -> None:
+        """Nothing from the main MCU for ``lost_s``: hold a running job on the path."""
+        self.uart_lost = True
+        if self.mc.state in ("RUN", "JOG"):
+            self.mc.feed_hold()
+        self.send(Alarm("UART_LOST", f"nothing from the main MCU for {self.lost_ms / 1000:g} s"))
 
     # ------------------------------------------------------------------ input
 
@@ -159,6 +174,8 @@ class CncMcu:
             self.send(Nak(self.job.expected))
 
     def _on_frame(self, frame: Frame) -> None:
+        self.last_frame_ms = self.clock.now_ms
+        self.uart_lost = False
         if isinstance(frame, Command):
             cnc_commands.dispatch(self, frame)
         elif isinstance(frame, Data):

@@ -13,9 +13,9 @@ Contract:
   commands (ids from ``OWN_ID0``) and, during ``SD RUN``, the stream's ``A``/``N``/``F``.
 - heartbeat: 3 s without a valid host frame while connected -> flag ``L``,
   ``X HOST_LOST``, LED blinks fast, buzzer beeps, a host job feed-holds (an SD job
-  carries on). The UART hop likewise (it pings the CNC MCU every second): ``U``,
-  ``X UART_LOST``. Until the host has sent one valid frame nothing goes up (as USB CDC
-  with no host reading).
+  carries on). The UART hop likewise (it sends the CNC MCU a ``PING`` after every
+  second without sending anything): ``U``, ``X UART_LOST``. Until the host has sent
+  one valid frame nothing goes up (as USB CDC with no host reading).
 """
 
 from __future__ import annotations
@@ -228,7 +228,10 @@ class MainMcu:
     # ------------------------------------------------------------------ CNC side
 
     def to_cnc(self, frame: Frame) -> None:
+        """Send down the UART; a PING follows after a second of silence (the CNC MCU's
+        heartbeat, and the question whose answer shows the UART is alive)."""
         self.uart_tx.write(encode_fit(frame), self.clock.now)
+        self.next_ping = self.clock.now + PING_PERIOD_S
 
     def send_cnc_own(self, verb: str, *args: str, callback=None) -> int:
         """Send one of the main MCU's own commands down; ``callback(frame)`` gets its O/E."""
@@ -249,7 +252,6 @@ class MainMcu:
     def _uart_alive(self) -> None:
         now = self.clock.now
         self.last_uart = now
-        self.next_ping = now + PING_PERIOD_S
         if self.uart_lost:
             self.uart_lost = False
             self.notice = "UART back"

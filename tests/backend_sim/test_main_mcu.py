@@ -124,3 +124,38 @@ def test_bad_host_frame_is_naked_once_per_stretch(sim, host):
     host.port.write(b"D 2 G00 Z7*0000\n")
     sim.run_for(0.3)
     assert [n.seq for n in host.of(Nak)] == [1]
+
+
+def test_cut_uart_holds_a_running_job_on_the_cnc_side(sim, host):
+    host.home()
+    host.stream(["G01 X60 F300", "G01 X0"])
+    host.wait(lambda f: isinstance(f, Status) and f.state == "RUN")
+    sim.faults.cut_uart()
+    assert sim.run_until(lambda: sim.cnc.uart_lost, 4.0)
+    assert sim.run_until(lambda: sim.cnc.mc.state == "HOLD", 0.1)
+    host.wait(lambda f: isinstance(f, Alarm) and f.code == "UART_LOST", timeout=1)
+    sim.faults.restore_uart()
+    assert sim.run_until(lambda: not sim.main.uart_lost and not sim.cnc.uart_lost, 2.0)
+    host.ok("RESUME")
+    host.wait(lambda f: isinstance(f, Status) and f.state == "RUN")
+
+
+def test_long_move_keeps_the_uart_alive(sim, host):
+    host.home()
+    host.stream(["G01 X100 F600"])
+    host.wait(lambda f: isinstance(f, Status) and f.state == "IDLE" and f.done == 0, timeout=20)
+    assert not sim.cnc.uart_lost and not sim.main.uart_lost
+    assert [f for f in host.of(Alarm) if f.code == "UART_LOST"] == []
+
+
+def test_limit_alarm_then_home_recover(sim, host):
+    host.home()
+    host.stream(["G01 X60 F600"])
+    host.wait(lambda f: isinstance(f, Status) and f.state == "RUN")
+    sim.faults.trip_limit("X")
+    host.wait(lambda f: isinstance(f, Alarm) and f.code == "LIMIT")
+    status = host.wait(lambda f: isinstance(f, Status) and f.state == "ALARM")
+    assert not status.has("H") and not sim.cnc.job.open
+    assert host.refused("JOB 1").code in ("ALARM", "NOT_HOMED")
+    host.ok("HOME RECOVER", timeout=120)
+    assert sim.cnc.mc.homed
