@@ -178,8 +178,9 @@ def _fill(scan: Scan, base: int, odd, line, letters, values) -> None:
     simple[line[~allowed[letters]]] = False
     for c in LETTERS + "N":
         sel = letters == ord(c)
-        rows = line[sel]
-        simple[rows[np.bincount(rows, minlength=n)[rows] > 1]] = False
+        rows = line[sel]  # ascending: words come in line order
+        twice = np.flatnonzero(rows[1:] == rows[:-1])
+        simple[rows[twice]] = False
         if c == "G":
             code = values[sel]
             motion = (code == 0) | (code == 1) | (code == 2) | (code == 3)

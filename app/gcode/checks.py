@@ -53,29 +53,44 @@ def _arc_extremes(ops: Ops, rows: np.ndarray):
 
 def _may_bulge_out(ops: Ops, rows: np.ndarray, profile: MachineProfile) -> np.ndarray:
     """Mask of arcs whose full circle reaches past the travel (the others cannot)."""
-    radius = np.linalg.norm(ops.starts()[rows] - ops.center[rows], axis=1)  # >= the in-plane radius
-    offset = np.array(profile.travel.work_offset())
-    limits = np.array(profile.travel.limits()) - offset[:, None]
     center = ops.center[rows]
-    return ((center - radius[:, None] < limits[:, 0]) | (center + radius[:, None] > limits[:, 1])).any(axis=1)
+    radius = np.linalg.norm(ops.starts()[rows] - center, axis=1)  # the centre shares the normal axis
+    reach = radius[:, None] * (np.arange(3) != np.array(PLANE_AXES)[ops.plane[rows], 2][:, None])
+    limits = _limits(profile)
+    return ((center - reach < limits[:, 0]) | (center + reach > limits[:, 1])).any(axis=1)
+
+
+def _limits(profile: MachineProfile) -> np.ndarray:
+    """(3, 2) travel limits in work coordinates (the default work offset applied)."""
+    offset = np.array(profile.travel.work_offset())
+    return np.array(profile.travel.limits()) - offset[:, None]
+
+
+def _candidates(ops: Ops, profile: MachineProfile) -> np.ndarray:
+    """Moves that may leave the travel: an end outside, or an arc whose circle reaches out."""
+    limits = _limits(profile)
+    kind = ops.kind
+    out = ((ops.end < limits[:, 0]) | (ops.end > limits[:, 1])).any(axis=1) & (kind <= ARC_CCW)
+    arcs = np.flatnonzero((kind == ARC_CW) | (kind == ARC_CCW))
+    out[arcs[_may_bulge_out(ops, arcs, profile)]] = True
+    return np.flatnonzero(out)
 
 
 def _envelope(ops: Ops, profile: MachineProfile, lines: list[str], report: Report) -> None:
-    moves = np.flatnonzero(ops.kind <= ARC_CCW)
+    moves = _candidates(ops, profile)
+    if not len(moves):
+        return
     low, high = ops.end[moves].copy(), ops.end[moves].copy()
     still = ops.end[moves] == ops.starts()[moves]  # an axis a move leaves alone is not news
     low[still], high[still] = np.inf, -np.inf
     arcs = np.flatnonzero((ops.kind[moves] == ARC_CW) | (ops.kind[moves] == ARC_CCW))
-    arcs = arcs[_may_bulge_out(ops, moves[arcs], profile)]
     if len(arcs):
         low[arcs], high[arcs] = _arc_extremes(ops, moves[arcs])
-    offset = profile.travel.work_offset()
-    for axis, (lo, hi) in enumerate(profile.travel.limits()):
+    for axis, (lo, hi) in enumerate(_limits(profile).tolist()):
         name = "XYZ"[axis]
-        lo_w, hi_w = lo - offset[axis], hi - offset[axis]
-        for sign, values, limit, beyond in (("+", high, hi_w, np.greater), ("-", low, lo_w, np.less)):
-            out = moves[beyond(values[:, axis], limit + (1e-9 if sign == "+" else -1e-9))]
-            vals = values[beyond(values[:, axis], limit + (1e-9 if sign == "+" else -1e-9)), axis]
+        for sign, values, limit, beyond in (("+", high, hi, np.greater), ("-", low, lo, np.less)):
+            hit = beyond(values[:, axis], limit + (1e-9 if sign == "+" else -1e-9))
+            out, vals = moves[hit], values[hit, axis]
             rel = ">" if sign == "+" else "<"
             for row, value in zip(out[: report.limit].tolist(), vals[: report.limit].tolist(), strict=True):
                 line = int(ops.line[row])
