@@ -50,7 +50,7 @@ class JobControl:
             return False
         self.lines = lines
         free = self.status.free if self.status else 1
-        self.stream = Stream.job(lines, self.rtt, free, boot=self.boot or "")
+        self.stream = Stream.job(lines, self.rtt, free, boot=self.boot or "", max_window=self.max_window)
         self._set_state(S.STARTING)
         self.submit("JOB", len(lines), then=self._job_opened)
         return True
@@ -122,7 +122,8 @@ class JobControl:
             return self._refuse("HOME_REQUIRED", "home the machine before restarting the job")
         start = self.stream.program_index(self.stream.done) + 1
         pre = restart_preamble(self.lines, start)
-        self.stream = Stream.job(self.lines, self.rtt, self.status.free, start, pre, self.boot or "")
+        self.stream = Stream.job(self.lines, self.rtt, self.status.free, start, pre, self.boot or "",
+                                 self.max_window)
         self._set_state(S.STARTING)
         self.submit("JOB", self.stream.window.total, then=self._job_opened)
         return True

@@ -42,6 +42,7 @@ from app.comm.listener import JOB_STATES, SENDING_STATES, TRANSITIONS, SessionLi
 from app.comm.realtime import NAMES, RealtimeRepeater
 from app.comm.rtt import RttEstimator
 from app.comm.stream import Stream
+from app.comm.window import MAX_WINDOW
 from app.profile import Link
 
 S = SessionState
@@ -69,6 +70,7 @@ class Session(JobControl):
         self.boot: str | None = None
         self.homed_boot: str | None = None
         self.lines: list[str] = []
+        self.max_window = MAX_WINDOW
         self._write = write
         self._out = bytearray()
         self._then: dict[int, Callable[[CommandResult], None]] = {}

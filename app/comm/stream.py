@@ -13,7 +13,7 @@ from dataclasses import dataclass
 
 from app.comm.events import ProgressEvent
 from app.comm.rtt import RttEstimator
-from app.comm.window import SendWindow
+from app.comm.window import MAX_WINDOW, SendWindow
 
 
 def sd_crc32(lines: list[str]) -> int:
@@ -36,10 +36,10 @@ class Stream:
 
     @classmethod
     def job(cls, lines: list[str], rtt: RttEstimator, free: int, start: int = 0,
-            preamble: list[str] | None = None, boot: str = "") -> Stream:
+            preamble: list[str] | None = None, boot: str = "", max_window: int = MAX_WINDOW) -> Stream:
         """A job over ``lines[start:]`` preceded by ``preamble``."""
         pre = list(preamble or [])
-        window = SendWindow(pre + list(lines[start:]), free=max(1, free), rtt=rtt)
+        window = SendWindow(pre + list(lines[start:]), free=max(1, free), rtt=rtt, max_window=max_window)
         return cls("job", window, len(lines), start, len(pre), boot=boot)
 
     @classmethod
