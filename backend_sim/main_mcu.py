@@ -57,6 +57,8 @@ class MainMcu:
 
     def boot(self) -> None:
         """Power-up or MRESET: links unknown, no upload, no SD job, nothing cached."""
+        if getattr(self, "upload", None) is not None:
+            self.upload.abort()
         now = self.clock.now
         self.host_rx = Deframer(realtime=True)
         self.uart_rx = Deframer(realtime=False)

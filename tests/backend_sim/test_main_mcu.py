@@ -159,3 +159,12 @@ def test_limit_alarm_then_home_recover(sim, host):
     assert host.refused("JOB 1").code in ("ALARM", "NOT_HOMED")
     host.ok("HOME RECOVER", timeout=120)
     assert sim.cnc.mc.homed
+
+
+def test_mreset_during_an_upload_leaves_no_file(sim, host, tmp_path):
+    host.command(f"SD PUT half.nc 3 {crc32_of_lines(PROGRAM[:3]):08x}")
+    host.send(Data(0, PROGRAM[0]).body())
+    sim.run_for(0.05)
+    sim.panel.reset_main()
+    assert list((tmp_path / "sd").iterdir()) == []
+    assert sim.main.upload is None
