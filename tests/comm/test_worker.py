@@ -118,3 +118,74 @@ def test_read_error_is_a_link_loss_not_a_crash(qtbot, controller):
 def test_unknown_slot_is_refused():
     with pytest.raises(AttributeError):
         SerialController.__getattr__(SerialController.__new__(SerialController), "explode")
+
+
+class KeptSim:
+    """An opener for ``sim://`` that keeps one machine across disconnects (as a real one is)."""
+
+    def __init__(self, sd) -> None:
+        from backend_sim import Simulator
+        from tests.comm.simlink import FAST_HOMING
+
+        self.sim = Simulator(profile=FAST_HOMING, sd_dir=sd, seed=5)
+        self.sim.start(speed=50.0)
+
+    def __call__(self, url):
+        port = self.sim.host_port
+        port.open()
+        return _PortOnly(self.sim)
+
+
+class _PortOnly:
+    def __init__(self, sim) -> None:
+        self.sim, self.port = sim, sim.host_port
+        self.port.timeout = 0
+
+    def clock(self) -> float:
+        return self.sim.clock.now
+
+    in_waiting = property(lambda self: self.port.in_waiting)
+
+    def read(self, n: int) -> bytes:
+        return self.port.read(n)
+
+    def write(self, data: bytes) -> int:
+        return self.port.write(data)
+
+    def close(self) -> None:
+        self.port.close()
+
+
+def test_unplug_mid_job_then_replug_and_resume(qtbot, tmp_path):
+    from tests.comm.simlink import assert_oracle
+    from tests.comm.test_faults_machine import motion_program
+
+    opener = KeptSim(tmp_path)
+    controller = SerialController(worker=SerialWorker(opener=opener))
+    worker = controller.worker
+    controller.start()
+    try:
+        with qtbot.waitSignal(on_gui(worker.status_changed), timeout=5000):
+            controller.connect_to("sim://")
+        with qtbot.waitSignal(on_gui(worker.command_finished), timeout=30000) as homed:
+            controller.home("NORMAL")
+        assert homed.args[0].ok
+        lines = motion_program(30)
+        progress = on_gui(worker.progress_changed)
+        controller.start_job(lines)
+        with qtbot.waitSignal(progress, timeout=10000, check_params_cb=lambda e: e.done >= 3):
+            pass
+        with qtbot.waitSignal(on_gui(worker.disconnected, text=True), timeout=5000) as gone:
+            opener.sim.faults.unplug()
+        assert "failed" in gone.args[0]  # read or write, whichever the worker tried first
+        opener.sim.faults.replug()
+        with qtbot.waitSignal(on_gui(worker.resume_offered), timeout=10000) as offered:
+            controller.connect_to("sim://")
+        assert offered.args[0].same_boot
+        with qtbot.waitSignal(on_gui(worker.job_finished), timeout=30000) as finished:
+            controller.resume_after_reconnect()
+        assert finished.args[0].completed
+        assert_oracle(list(opener.sim.exec_log), lines)
+    finally:
+        assert controller.shutdown()
+        opener.sim.stop()
