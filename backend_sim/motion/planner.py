@@ -65,6 +65,7 @@ class Planner:
         self.s_tail = 0.0
         self.barrier_ms = 0
         self.held_flag = True
+        self.holding = False
 
     def __len__(self) -> int:
         return len(self.blocks)

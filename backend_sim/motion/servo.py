@@ -12,7 +12,9 @@ Per axis and tick (all in mm, duty -1..1):
     e   = setpoint - measured                   measured = counts * mm_per_count + offset
     vff = d(setpoint)/dt, aff = d(vff)/dt       from consecutive setpoints
     u   = kp e + I + kd D + kv vff + ka aff + kc sgn(vff)      (feed-forward if enabled)
-    I  += ki e dt  only outside +-0.5 count and while u is not saturated (anti-windup)
+    I  += ki e dt  only outside a +-0.6 count dead band (a setpoint half-way between two
+                   counts must not make the integrator hunt between them) and while u is
+                   not saturated (anti-windup)
     D   = first-order filtered de/dt (2 ms)
     volts = clamp(u, -1, 1) * (supply - bridge drop); then motor.step() inlined
 
@@ -34,6 +36,7 @@ import math
 from backend_sim.motion import fastpath
 
 # Per-axis state, in this order, in ctl.axes[k] (a list): see STATE.
+DEAD_BAND_COUNTS = 0.6
 STATE = ("i", "v", "x", "c", "c0", "cpm", "off", "ig", "ep", "df", "sp", "pv", "lo", "hi",
          "kp", "ki", "kd", "rest")
 
@@ -130,7 +133,7 @@ def constants(ctl) -> tuple:
     ae, be = m.stuck
     mpc = 1.0 / m.counts_per_mm
     return (kv * 1000.0, ka * 1e6, kc, kc / (vc * 1e-3), vc * 1e-3, *q, ae, be * bus, m.tc / m.ke,
-            mpc, ctl.ferr, 0.5 * mpc, 1.0 - ctl.d_alpha, ctl.d_alpha * 1000.0)
+            mpc, ctl.ferr, DEAD_BAND_COUNTS * mpc, 1.0 - ctl.d_alpha, ctl.d_alpha * 1000.0)
 
 
 def _generate(fused: bool):

@@ -43,6 +43,7 @@ class SimpleInterpolator:
         self.line = None  # (deltas, signs, dominant, rate, errors) of the chord being stepped
         self.done = self.progress = self.wait_ms = 0
         self.held_flag = True
+        self.holding = False
 
     def __len__(self) -> int:
         return len(self.moves) + (self.current is not None)

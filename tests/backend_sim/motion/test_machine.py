@@ -279,3 +279,15 @@ def test_idle_fast_forward_is_exact_and_cheap():
         b.advance(1)
     assert a.true_mm == b.true_mm and a.counts == b.counts
     assert a.now_ms - b.now_ms == 3_600_000 - 100
+
+
+def test_jog_works_after_an_alarm_during_homing():
+    ctl = MotionController(start_mm=(20.0, 20.0, 20.0))
+    ctl.home()
+    ctl.advance(1000)
+    ctl.trip_limit("Z")
+    assert ctl.state == "ALARM"
+    ctl.clear_alarm()
+    ctl.jog("X", 1.0, 300)
+    run_until(ctl, ctl.idle)
+    assert ctl.measured_mm[0] == pytest.approx(1.0, abs=COUNT)

@@ -96,3 +96,16 @@ def test_counts_quantise_the_true_position():
     assert ctl.measured_mm[0] == pytest.approx(counts / MODEL.counts_per_mm)
     assert ctl.measured_mm[0] != ctl.true_mm[0] - 50.0
     assert math.floor(ctl.true_mm[0] * MODEL.counts_per_mm) - math.floor(50.0 * MODEL.counts_per_mm) == counts
+
+
+@pytest.mark.parametrize("target", [(0.00202, -0.00202, 0.00606), (1.2345, -2.5, 0.5), (-0.99, 0.25, -1.75)])
+def test_comes_to_rest_without_hunting(target):
+    """Setpoints between counts (even exactly half-way) end at rest: idle() turns true."""
+    ctl = MotionController()
+    ctl.drive([target] * 300)
+    for _ in range(200):
+        if ctl.idle():
+            break
+        ctl.advance(10)
+    assert ctl.idle()
+    assert max(abs(e) for e in ctl.following_error_mm) <= COUNT
