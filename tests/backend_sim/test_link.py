@@ -182,3 +182,14 @@ def test_threaded_run_at_a_speed_factor(tmp_path):
     finally:
         sim.stop()
     assert not sim.running
+
+
+def test_a_forwarded_command_takes_its_uart_time_both_ways(sim, host):
+    sim.run_for(0.1)
+    start = sim.clock.now
+    cid = host.command("GET KP_X")
+    answer = host.answer(cid)
+    arrived = host.times[host.frames.index(answer)]
+    down = len(seal(f"C {cid} GET KP_X")) * BYTE
+    up = len(answer.encode()) * BYTE
+    assert down + up + 2 * USB_LATENCY <= arrived - start <= down + up + 2 * USB_LATENCY + 0.003
