@@ -238,7 +238,8 @@ class MainMcu:
     def send_cnc_own(self, verb: str, *args: str, callback=None) -> int:
         """Send one of the main MCU's own commands down; ``callback(frame)`` gets its O/E."""
         self.own_id += 1
-        self.own_pending[self.own_id] = callback
+        if callback is not None:
+            self.own_pending[self.own_id] = callback
         self.to_cnc(Command(self.own_id, verb, tuple(args)))
         return self.own_id
 
@@ -262,7 +263,7 @@ class MainMcu:
         if isinstance(frame, Status):
             return self._cnc_status(frame)
         cid = getattr(frame, "id", None)
-        if isinstance(frame, Ok | Error | Info) and cid in self.own_pending:
+        if isinstance(frame, Ok | Error | Info) and cid is not None and cid >= OWN_ID0:
             return self._own_answer(frame)
         if self.sd_job is not None and main_sd.job_frame(self, frame):
             return None
@@ -292,6 +293,8 @@ class MainMcu:
             self.to_host(merged)
 
     def _own_answer(self, frame: Frame) -> None:
+        if isinstance(frame, Info):
+            return
         callback = self.own_pending.pop(frame.id, None)
         if callback is not None:
             callback(frame)
