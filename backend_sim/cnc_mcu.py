@@ -39,6 +39,7 @@ from backend_sim.exec_log import ExecLog
 from backend_sim.job_stream import JobStream, Verdict
 from backend_sim.motion import events as ev
 from backend_sim.motion.dialect import DialectError, DialectParser, soft_limit_violation
+from backend_sim.motion.events import MotionError
 from backend_sim.outgoing import encode_fit
 from backend_sim.wire import Wire
 
@@ -208,14 +209,16 @@ class CncMcu:
             return self.refuse_line(seq, "SOFT_LIMIT", violation)
         if move.moves_axes and not self.mc.homed and not self.check_mode:
             return self.refuse_line(seq, "NOT_HOMED", "home first")
+        if not self.check_mode:
+            try:
+                self.mc.enqueue(move)
+            except MotionError as exc:
+                return self.refuse_line(seq, exc.code, exc.text)
+            self.lines[seq] = line
         self.job.accepted(seq)
-        if self.check_mode:
-            self.send(AckFrame(seq, self.free_slots()))
-            self._finished_up_to(seq)
-            return None
-        self.lines[seq] = line
-        self.mc.enqueue(move)
         self.send(AckFrame(seq, self.free_slots()))
+        if self.check_mode:
+            self._finished_up_to(seq)
         return None
 
     def refuse_line(self, seq: int, code: str, text: str) -> None:
