@@ -27,7 +27,7 @@ from .render import render
 from .toolpath import Toolpath, build
 
 
-@dataclass
+@dataclass(repr=False)
 class Program:
     """A loaded G-code program (see the module docstring)."""
 
@@ -39,6 +39,10 @@ class Program:
     profile: MachineProfile
     plan: normalize.Plan
     _render: tuple | None = field(default=None, repr=False)
+
+    def __repr__(self) -> str:
+        return (f"Program({self.name!r}, {len(self.source_lines)} lines, {len(self.toolpath)} moves, "
+                f"{len(self.errors)} errors, {len(self.warnings)} warnings)")
 
     @property
     def errors(self) -> list[Diagnostic]:

@@ -34,5 +34,5 @@ class State:
         return other
 
     def fast_path_ok(self) -> bool:
-        """True when the bulk XY interpreter can take over (G90, G17, G91.1, running)."""
-        return self.absolute and self.plane == 0 and not self.ijk_absolute and not self.ended
+        """True when the bulk XY interpreter can take over (G17, G91.1, running)."""
+        return self.plane == 0 and not self.ijk_absolute and not self.ended

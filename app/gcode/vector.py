@@ -1,8 +1,8 @@
-"""The fast interpreter: a run of simple lines (bulk.py) in G90 G17 G91.1, at once.
+"""The fast interpreter: a run of simple lines (bulk.py) in G17 G91.1 (G90 or G91), at once.
 
 For lines ``a..b`` of a ``Scan`` and the state before them, modal values are
 forward-filled with numpy: the motion mode from the G words, the units from G20/G21,
-each axis from its words, the feed from F (read in the units before the line's
+each axis from its words (summed in G91), the feed from F (read in the units before the line's
 G20/G21, as rs274ngc does), the spindle from M3/M5/S. Rows go to the ``OpBuffer`` as
 arrays. The run stops before the first line the general interpreter must judge (an
 error of any kind), so both paths report the same errors; ``run`` returns the new
@@ -77,9 +77,9 @@ class _Run:
 
 
 def _arc_bad(start, end, center, inch) -> np.ndarray:
-    k = np.where(inch, 25.4, 1.0)
-    r1 = np.hypot(center[:, 0] - start[:, 0], center[:, 1] - start[:, 1]) / k
-    r2 = np.hypot(center[:, 0] - end[:, 0], center[:, 1] - end[:, 1]) / k
+    """LinuxCNC's refusals of centre-format arcs; coordinates in program units."""
+    r1 = np.hypot(center[:, 0] - start[:, 0], center[:, 1] - start[:, 1])
+    r2 = np.hypot(center[:, 0] - end[:, 0], center[:, 1] - end[:, 1])
     zero = (r1 < np.where(inch, RADIUS_TOL[True], RADIUS_TOL[False])) | (r2 < np.where(inch, RADIUS_TOL[True],
                                                                                       RADIUS_TOL[False]))
     err, r = np.abs(r1 - r2), np.maximum(r1, r2)
@@ -88,8 +88,12 @@ def _arc_bad(start, end, center, inch) -> np.ndarray:
 
 def _geometry(run: _Run, stop: int, rows: np.ndarray, state: State):
     """End points, kinds and centres of the rows; the first arc LinuxCNC refuses."""
-    end = np.stack([_ffill(run.v[c][:stop] * run.scale[:stop], state.pos[i])
-                    for i, c in enumerate("XYZ")], axis=1)
+    if state.absolute:
+        end = np.stack([_ffill(run.v[c][:stop] * run.scale[:stop], state.pos[i])
+                        for i, c in enumerate("XYZ")], axis=1)
+    else:  # G91: every axis word is a step from where the tool is
+        steps = [np.nan_to_num(run.v[c][:stop] * run.scale[:stop]) for c in "XYZ"]
+        end = np.stack([np.cumsum(np.concatenate(([state.pos[i]], steps[i])))[1:] for i in range(3)], axis=1)
     ends = end[rows]
     starts = np.empty_like(ends)
     if len(rows):
@@ -100,11 +104,14 @@ def _geometry(run: _Run, stop: int, rows: np.ndarray, state: State):
     sel = np.flatnonzero(is_arc)
     arc_rows = rows[sel]
     ij = np.stack([run.v["I"][arc_rows], run.v["J"][arc_rows]], axis=1)
-    ij = np.where(np.isnan(ij), 0.0, ij) * run.scale[arc_rows, None]
-    center[sel, :2] = starts[sel, :2] + ij
+    ij = np.where(np.isnan(ij), 0.0, ij)
+    k = run.scale[arc_rows, None]  # centre and check in program units, as motion.py does
+    start_u, end_u = starts[sel, :2] / k, ends[sel, :2] / k
+    center_u = start_u + ij
+    center[sel, :2] = center_u * k
     center[sel, 2] = starts[sel, 2]
     bad = np.zeros(len(rows), bool)
-    bad[sel] = _arc_bad(starts[sel], ends[sel], center[sel], run.inch[arc_rows])
+    bad[sel] = _arc_bad(start_u, end_u, center_u, run.inch[arc_rows])
     return end, ends, center, bad
 
 

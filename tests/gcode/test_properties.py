@@ -96,7 +96,7 @@ def programs(draw):
         elif kind == "spindle":
             out.append(draw(st.sampled_from(["M3 S1000", "M5", "M3", "M4 S200"])))
         else:
-            out.append(f"G91 G1 X{draw(coord)} F50\nG90")
+            out.append(f"G91 G1 X{draw(coord)} F50\nX{draw(coord)} Y{draw(coord)}\nG3 X1 Y1 I1 J0\nG90")
             pos = None
             break
     return "\n".join(out)
