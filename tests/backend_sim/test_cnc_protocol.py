@@ -207,3 +207,15 @@ def test_exec_log_file(tmp_path):
     host.stream(LINES[:3])
     finished_all(host, 3)
     assert path.read_text().splitlines() == [f"{i}\t{line}" for i, line in enumerate(LINES[:3])]
+
+
+def test_simple_mode_runs_the_same_protocol(tmp_path):
+    from backend_sim.simulator import Simulator
+    from tests.backend_sim.conftest import FAST_HOMING
+
+    sim = Simulator(FAST_HOMING, sd_dir=tmp_path / "sd", seed=4, mode="simple")
+    host = Host(sim)
+    host.home()
+    host.stream(LINES)
+    finished_all(host, len(LINES))
+    assert [s for s, _ in sim.exec_log] == list(range(len(LINES)))
