@@ -91,8 +91,9 @@ class MainMcu:
             due = min(due, self.last_host + self.lost_s)
         if not self.uart_lost:
             due = min(due, self.last_uart + self.lost_s)
-        if self.sd_job is not None and self.sd_job.next_due() is not None:
-            due = min(due, self.sd_job.next_due())
+        job_due = self.sd_job.next_due() if self.sd_job is not None else None
+        if job_due is not None and job_due < due:
+            due = job_due
         return max(to_ms(due), self.clock.now_ms + 1)
 
     def service(self) -> None:

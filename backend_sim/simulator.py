@@ -61,6 +61,8 @@ class Simulator:
         self.condition = threading.Condition(self.lock)
         self.rng = random.Random(seed)
         self.wires = self._make_wires(0 if seed is None else seed)
+        self._usb_down, self._usb_up = self.wires["usb_down"], self.wires["usb_up"]
+        self._uart_down, self._uart_up = self.wires["uart_down"], self.wires["uart_up"]
         self.exec_log = ExecLog(exec_log)
         self.sd = SdCard(sd_dir if sd_dir is not None else default_sd_dir())
         factory = motion_factory or default_motion_factory(self.profile, mode)
@@ -132,29 +134,30 @@ class Simulator:
         """The next ms anything happens, and the next ms the CNC MCU must run."""
         now = self.clock.now_ms
         cnc_due = self.cnc.next_due_ms()
-        cnc_due = FAR_MS if cnc_due is None else cnc_due
-        t = self.wires["uart_down"].next_time()
+        if cnc_due is None:
+            cnc_due = FAR_MS
+        t = self._uart_down.next_time()
         if t is not None:
             cnc_due = min(cnc_due, to_ms(t))
         due = min(end_ms, self.main.next_due_ms(), cnc_due)
-        for name in ("usb_down", "uart_up", "usb_up"):
-            t = self.wires[name].next_time()
+        for wire in (self._usb_down, self._uart_up, self._usb_up):
+            t = wire.next_time()
             if t is not None:
                 due = min(due, to_ms(t))
         return max(due, now + 1), max(cnc_due, now + 1)
 
     def _deliver(self) -> None:
-        now, wires = self.clock.now, self.wires
-        data = wires["usb_down"].take(now)
+        now = self.clock.now
+        data = self._usb_down.take(now)
         if data:
             self.main.receive_host(data)
-        data = wires["uart_down"].take(now)
+        data = self._uart_down.take(now)
         if data:
             self.cnc.receive(data)
-        data = wires["uart_up"].take(now)
+        data = self._uart_up.take(now)
         if data:
             self.main.receive_uart(data)
-        data = wires["usb_up"].take(now)
+        data = self._usb_up.take(now)
         if data:
             self.host_port.deliver(data)
             self.condition.notify_all()
