@@ -291,3 +291,40 @@ def test_jog_works_after_an_alarm_during_homing():
     ctl.jog("X", 1.0, 300)
     run_until(ctl, ctl.idle)
     assert ctl.measured_mm[0] == pytest.approx(1.0, abs=COUNT)
+
+
+def test_simple_mode_holds_on_the_path_and_resumes():
+    ctl = MotionController(mode="simple", start_mm=(0.0, 0.0, 30.0))
+    home(ctl)
+    queue(ctl, ["G01 X30 Y20 F600"])
+    ctl.advance(1000)
+    ctl.feed_hold()
+    run_until(ctl, lambda: kinds(ctl.events(), Held), limit_ms=500, step=1)
+    assert distance_from_line(ctl.commanded_mm, (0, 0, 30), (30, 20, 30)) < 0.5 * COUNT * 2
+    ctl.resume()
+    run_until(ctl, ctl.idle)
+    assert ctl.done_seq == 0
+
+
+def test_fused_fast_path_matches_the_plain_planner_step(monkeypatch):
+    """The planner's tick inlined into the servo loop gives the same motion as step()."""
+    lines = ["G01 X5 Y3 F600", "G02 X9 Y3 I2 J0", "G01 X9 Y0.5 Z-19", "G01 X2 Y2 F300"]
+
+    def run():
+        ctl = MotionController(start_mm=(20.0, 20.0, 5.0))  # measured (0, 0, 0) at power-on
+        queue(ctl, lines)
+        trace = []
+        ctl.trace = trace.append
+        run_until(ctl, ctl.idle, step=7)
+        assert ctl.done_seq == 3 and not kinds(ctl.events(), Alarm)
+        return ctl, trace
+
+    fused, fused_trace = run()
+    import backend_sim.motion.controller as controller_module
+    monkeypatch.setattr(controller_module.fastpath, "entry", lambda planner: None)
+    plain, plain_trace = run()
+    assert abs(len(fused_trace) - len(plain_trace)) <= 2
+    worst = max(max(abs(a - b) for a, b in zip(p, q, strict=True))
+                for p, q in zip(fused_trace, plain_trace, strict=False))
+    assert worst <= 1.0  # counts
+    assert fused.measured_mm == pytest.approx(plain.measured_mm, abs=COUNT)
