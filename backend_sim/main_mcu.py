@@ -20,6 +20,8 @@ Contract:
 
 from __future__ import annotations
 
+import enum
+
 from app.comm.frame import (
     FEED_HOLD,
     STOP_FLUSH,
@@ -43,6 +45,16 @@ from backend_sim.sd_card import SdCard
 from backend_sim.wire import Wire, to_ms
 
 OWN_ID0 = 1_000_000_000
+
+
+class LinkState(enum.Enum):
+    """A link as the main MCU sees it: UNKNOWN (the host has never spoken), OK, LOST."""
+
+    UNKNOWN = "unknown"
+    OK = "ok"
+    LOST = "lost"
+
+
 PING_PERIOD_S = 1.0
 HOUSEKEEPING_S = 0.1
 
@@ -62,9 +74,8 @@ class MainMcu:
         now = self.clock.now
         self.host_rx = Deframer(realtime=True)
         self.uart_rx = Deframer(realtime=False)
-        self.host_connected = False
-        self.host_lost = False
-        self.uart_lost = False
+        self.host_link = LinkState.UNKNOWN
+        self.uart_link = LinkState.OK
         self.last_host = now
         self.last_uart = now
         self.next_ping = now + PING_PERIOD_S
@@ -87,9 +98,9 @@ class MainMcu:
         due = self.next_ping
         if self.host_rx.pending() or self.uart_rx.pending():
             due = min(due, self.next_housekeeping)
-        if self.host_connected and not self.host_lost:
+        if self.host_link is LinkState.OK:
             due = min(due, self.last_host + self.lost_s)
-        if not self.uart_lost:
+        if self.uart_link is LinkState.OK:
             due = min(due, self.last_uart + self.lost_s)
         job_due = self.sd_job.next_due() if self.sd_job is not None else None
         if job_due is not None and job_due < due:
@@ -116,14 +127,14 @@ class MainMcu:
             main_sd.check_job(self)
 
     def _watchdogs(self, now: float) -> None:
-        if self.host_connected and not self.host_lost and now - self.last_host >= self.lost_s:
-            self.host_lost = True
+        if self.host_link is LinkState.OK and now - self.last_host >= self.lost_s:
+            self.host_link = LinkState.LOST
             self.notice = "HOST LOST"
             self.to_host(Alarm("HOST_LOST", f"no valid host frame for {self.lost_s:g} s"))
             if self.sd_job is None and self.status is not None and self.status.state == "RUN":
                 self.uart_tx.write_urgent(FEED_HOLD, now)
-        if not self.uart_lost and now - self.last_uart >= self.lost_s:
-            self.uart_lost = True
+        if self.uart_link is LinkState.OK and now - self.last_uart >= self.lost_s:
+            self.uart_link = LinkState.LOST
             self.notice = "UART LOST"
             self.to_host(Alarm("UART_LOST", f"no frame from the CNC MCU for {self.lost_s:g} s"))
             self.to_host(self.merged_status())
@@ -145,10 +156,9 @@ class MainMcu:
 
     def _host_alive(self) -> None:
         self.last_host = self.clock.now
-        self.host_connected = True
-        if self.host_lost:
-            self.host_lost = False
+        if self.host_link is LinkState.LOST:
             self.notice = "host back"
+        self.host_link = LinkState.OK
 
     def _realtime(self, byte: bytes) -> None:
         self.uart_tx.write_urgent(byte, self.clock.now)
@@ -256,8 +266,8 @@ class MainMcu:
     def _uart_alive(self) -> None:
         now = self.clock.now
         self.last_uart = now
-        if self.uart_lost:
-            self.uart_lost = False
+        if self.uart_link is LinkState.LOST:
+            self.uart_link = LinkState.OK
             self.notice = "UART back"
 
     def _uart_frame(self, frame: Frame) -> None:
@@ -311,6 +321,19 @@ class MainMcu:
     def merged_status(self) -> Status:
         s = self.status or Status("0", "ALARM", 0.0, 0.0, 0.0, -1, -1, 0, 0)
         return Status(s.boot, s.state, s.x, s.y, s.z, s.acc, s.done, s.free, s.rpm, self.flags())
+
+    @property
+    def host_connected(self) -> bool:
+        """The host has sent a valid frame since power-up (it may be lost since)."""
+        return self.host_link is not LinkState.UNKNOWN
+
+    @property
+    def host_lost(self) -> bool:
+        return self.host_link is LinkState.LOST
+
+    @property
+    def uart_lost(self) -> bool:
+        return self.uart_link is LinkState.LOST
 
     @property
     def alert(self) -> bool:

@@ -149,7 +149,8 @@ def test_tcp_serves_the_same(tmp_path):
         port = serial.serial_for_url(f"socket://{first.split()[1]}", timeout=0.01)
         host = SerialHost(port, 1.0)
         host.command("PING")
-        assert host.wait(lambda f: isinstance(f, Status), timeout=10).state == "IDLE"
+        status = host.wait(lambda f: isinstance(f, Status) and f.boot != "0", timeout=10)
+        assert status.state == "IDLE"
         port.close()
     finally:
         code, _ = stop_sim(proc)
