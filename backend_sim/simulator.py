@@ -52,6 +52,10 @@ def default_motion_factory(profile: MachineProfile, mode: str) -> Callable:
 
 
 class Simulator:
+    """The machine: see the module docstring. ``seed`` fixes boot ids and random faults;
+    ``exec_log`` is a file to append executed lines to; ``motion_factory`` builds the
+    motion controller (default: ``MotionController(profile, mode=mode)``)."""
+
     def __init__(self, profile: MachineProfile | None = None, sd_dir: str | Path | None = None,
                  clock: SimClock | None = None, mode: str = "planner", *, seed: int | None = None,
                  exec_log: str | Path | None = None, motion_factory: Callable | None = None) -> None:
