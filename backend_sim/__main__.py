@@ -16,19 +16,33 @@ import threading
 from app.profile import ProfileError, load_profile
 
 
+def _positive(text: str) -> float:
+    value = float(text)
+    if not value > 0:
+        raise argparse.ArgumentTypeError(f"{text}: must be > 0")
+    return value
+
+
+def _rate(text: str) -> float:
+    value = float(text)
+    if not 0.0 <= value <= 1.0:
+        raise argparse.ArgumentTypeError(f"{text}: a probability 0..1")
+    return value
+
+
 def build_parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(prog="cnc-sim", description="The simulated CNC mill (both MCUs).")
     where = p.add_mutually_exclusive_group(required=True)
     where.add_argument("--pty", action="store_true", help="serve on a pseudo-terminal")
     where.add_argument("--tcp", type=int, metavar="PORT", help="serve on 127.0.0.1:PORT")
-    p.add_argument("--speed", type=float, default=1.0, help="speed factor of the clock (default 1)")
+    p.add_argument("--speed", type=_positive, default=1.0, help="speed factor of the clock (default 1)")
     p.add_argument("--sd", metavar="DIR", help="folder standing for the SD card")
     p.add_argument("--profile", metavar="FILE", help="machine profile (TOML or JSON)")
     p.add_argument("--exec-log", metavar="FILE", help="append seq<TAB>line of every executed line")
     p.add_argument("--mode", choices=("planner", "simple"), default="planner")
     p.add_argument("--seed", type=int, default=None, help="seed of boot ids and random faults")
     for kind in ("drop", "corrupt", "duplicate", "noise"):
-        p.add_argument(f"--{kind}-rate", type=float, default=0.0, metavar="P",
+        p.add_argument(f"--{kind}-rate", type=_rate, default=0.0, metavar="P",
                        help=f"per-byte probability of a {kind} fault")
     p.add_argument("--fault-hop", choices=("usb", "uart", "both"), default="usb")
     p.add_argument("--fault-direction", choices=("down", "up", "both"), default="both")

@@ -44,3 +44,12 @@ def test_exec_log_through_the_pty(tmp_path):
         code, _ = stop_sim(proc)
     assert code == 0
     assert log.read_text() == "0\tG00 Z5\n1\tG01 X3 F600\n"
+
+
+def test_bad_speed_and_rate_are_refused(capsys):
+    import pytest
+
+    for argv in (["--pty", "--speed", "0"], ["--pty", "--drop-rate", "2"], ["--speed", "2"]):
+        with pytest.raises(SystemExit):
+            build_parser().parse_args(argv)
+    capsys.readouterr()
