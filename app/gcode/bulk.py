@@ -21,8 +21,7 @@ from dataclasses import dataclass
 import numpy as np
 
 CHUNK_BYTES = 1 << 18
-LETTERS = "GXYZIJFMS"
-VALUE_LETTERS = "XYZIJFMS"
+COLUMNS = "GXYZIJFMS"  # the words of a simple line (and N, read and dropped)
 _COMMENT = re.compile(rb"\([^()\n]*\)")
 _SEMI = re.compile(rb";[^\n]*")
 
@@ -45,7 +44,7 @@ class Scan:
     simple: np.ndarray  # bool (n,)
     g: np.ndarray  # int8 (n,), motion code 0-3, -1 when none
     units: np.ndarray  # int8 (n,), 1 for G20, 0 for G21, -1 when none
-    values: dict[str, np.ndarray]  # letter -> float64 (n,), NaN when absent
+    values: dict[str, np.ndarray]  # letter X Y Z I J F M S -> float64 (n,), NaN when absent
 
 
 def _chunks(data: bytes):
@@ -170,56 +169,54 @@ def _blank_lines(text: bytes, newlines: np.ndarray, odd: np.ndarray) -> bytes:
     return bytes(buf)
 
 
-def _fill(scan: Scan, base: int, odd, line, letters, values) -> None:
+_COLUMN = np.full(256, -1, np.int8)  # word letter -> column of the table; N is read and dropped
+for _i, _c in enumerate(COLUMNS):
+    _COLUMN[[ord(_c), ord(_c.lower())]] = _i
+_COLUMN[[ord("N"), ord("n")]] = -2
+
+
+def _fill(table: np.ndarray, simple: np.ndarray, base: int, odd, line, letters, values) -> None:
+    """Write one chunk's words into the table (one scatter); flag other letters and repeats."""
     n = len(odd)
-    simple = ~odd
-    allowed = np.zeros(256, bool)
-    allowed[[ord(c) for c in LETTERS + "N"]] = True
-    simple[line[~allowed[letters]]] = False
-    for c in LETTERS + "N":
-        sel = letters == ord(c)
-        rows = line[sel]  # ascending: words come in line order
-        twice = np.flatnonzero(rows[1:] == rows[:-1])
-        simple[rows[twice]] = False
-        if c == "G":
-            code = values[sel]
-            motion = (code == 0) | (code == 1) | (code == 2) | (code == 3)
-            units = (code == 20) | (code == 21)
-            simple[rows[~(motion | units)]] = False
-            scan.g[base + rows[motion]] = code[motion].astype(np.int8)
-            scan.units[base + rows[units]] = (code[units] == 20).astype(np.int8)
-        elif c != "N":
-            scan.values[c][base + rows] = values[sel]
-    scan.simple[base : base + n] = simple
-    _spindle_alone(scan, base, n)
+    ok = ~odd
+    col = np.take(_COLUMN, letters)
+    ok[line[col == -1]] = False
+    keep = col >= 0
+    flat = line[keep] * len(COLUMNS) + col[keep]
+    counts = np.bincount(flat, minlength=n * len(COLUMNS))
+    ok[flat[counts[flat] > 1] // len(COLUMNS)] = False
+    table.reshape(-1)[base * len(COLUMNS) + flat] = values[keep]
+    simple[base : base + n] = ok
 
 
-def _spindle_alone(scan: Scan, base: int, n: int) -> None:
-    """M (3 or 5 only) and S words are simple only on lines without motion words."""
-    rows = slice(base, base + n)
-    m, s = scan.values["M"][rows], scan.values["S"][rows]
+def _classify(result: Scan, table: np.ndarray) -> None:
+    """G codes into motion and units; M 3 or 5 and S only on lines without motion words."""
+    g = table[:, 0]
+    motion = (g == 0) | (g == 1) | (g == 2) | (g == 3)
+    units = (g == 20) | (g == 21)
+    result.simple &= np.isnan(g) | motion | units
+    result.g = np.where(motion, g, -1).astype(np.int8)
+    result.units = np.where(units, g == 20, -1).astype(np.int8)
+    m, s = result.values["M"], result.values["S"]
     spindle = ~np.isnan(m) | ~np.isnan(s)
     bad_m = ~np.isnan(m) & (m != 3) & (m != 5)
-    motion = scan.g[rows] >= 0
-    for c in "XYZIJF":
-        motion |= ~np.isnan(scan.values[c][rows])
-    scan.simple[rows] &= ~(bad_m | (spindle & motion))
+    moving = motion | ~np.isnan(table[:, 1:7]).all(axis=1)  # X Y Z I J F
+    result.simple &= ~(bad_m | (spindle & moving))
 
 
 def scan(data: bytes, n_lines: int) -> Scan:
     """Scan ``data`` (``n_lines`` lines joined by newlines) with the fast path."""
-    result = Scan(
-        simple=np.zeros(n_lines, bool),
-        g=np.full(n_lines, -1, np.int8),
-        units=np.full(n_lines, -1, np.int8),
-        values={c: np.full(n_lines, np.nan) for c in VALUE_LETTERS},
-    )
+    table = np.full((n_lines, len(COLUMNS)), np.nan)
+    simple = np.zeros(n_lines, bool)
     if not data.endswith(b"\n"):
         data += b"\n"
     base = 0
     for start, end in _chunks(data):
         raw = data[start:end]
         count = raw.count(b"\n")
-        _fill(result, base, *_scan_chunk(raw, count))
+        _fill(table, simple, base, *_scan_chunk(raw, count))
         base += count
+    result = Scan(simple, np.empty(0, np.int8), np.empty(0, np.int8),
+                  {c: table[:, i] for i, c in enumerate(COLUMNS) if c != "G"})
+    _classify(result, table)
     return result
