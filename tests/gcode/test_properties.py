@@ -2,6 +2,7 @@
 and the numpy fast path reads exactly what the general lexer reads."""
 
 import math
+import re
 
 import numpy as np
 from hypothesis import HealthCheck, given, settings
@@ -177,3 +178,18 @@ simple_line = st.builds(
 @given(st.lists(simple_line, max_size=25))
 def test_fast_and_general_paths_agree_on_odd_programs(lines):
     test_fast_path_and_general_path_agree.hypothesis.inner_test("\n".join(lines))
+
+
+DEVICE_LINE = re.compile(
+    r"^(G0[01]( [XYZ]-?\d+(\.\d+)?)+( F\d+(\.\d+)?)?"
+    r"|G0[23] X-?[\d.]+ Y-?[\d.]+( Z-?[\d.]+)? I-?[\d.]+ J-?[\d.]+( F[\d.]+)?"
+    r"|G04 P[\d.]+|M03 S[\d.]+|M05|M02)$"
+)
+
+
+@SETTINGS
+@given(programs())
+def test_device_lines_are_dialect_and_short(text):
+    for line in load_text(text).device_lines:
+        assert len(line) <= 80 and DEVICE_LINE.match(line), line
+        assert "-0 " not in line + " " and not re.search(r"\.\d*0( |$)", line), line
