@@ -97,6 +97,10 @@ class ConsoleView(QWidget):
         bar.setValue(bar.maximum())
 
     def set_resends(self, resends: int, rate: float, warning: bool = False) -> None:
+        key = (resends, round(rate, 3), warning)
+        if key == getattr(self, "_resends_shown", None):
+            return
+        self._resends_shown = key
         colour = "#e05050" if warning else "palette(window-text)"
         self.counters.setText(f"<span style='color:{colour}'>resends {resends} ({rate * 100:.1f} %)</span>")
 

@@ -7,6 +7,7 @@ missing or unreadable file, a binary file, or text in which nothing could be run
 
 from __future__ import annotations
 
+import contextlib
 import threading
 import time
 from dataclasses import dataclass
@@ -31,6 +32,7 @@ class LoadedProgram:
 class ProgramLoader(QObject):
     loaded = Signal(object)  # LoadedProgram
     failed = Signal(str, str)  # path, message
+    prepared = Signal(object)  # LoadedProgram whose device lines are rendered (Start is instant)
 
     def __init__(self, parent=None, tolerance: float = 0.01):
         super().__init__(parent)
@@ -57,6 +59,14 @@ class ProgramLoader(QObject):
             return
         self.busy = False
         self.loaded.emit(result)
+        _warm(result.program)
+        self.prepared.emit(result)
+
+
+def _warm(program) -> None:
+    """Render the device lines now, off the GUI thread, so Start and Save to SD need not wait."""
+    with contextlib.suppress(Exception):  # the job start reports any problem itself
+        program.device_lines  # noqa: B018 (a cached property)
 
 
 class LoadError(Exception):
@@ -75,6 +85,7 @@ def load_program(path: Path, tolerance: float = 0.01) -> LoadedProgram:
     loaded = time.perf_counter()
     _check_runnable(path, program)
     preview = PreviewModel(program.toolpath, tolerance)
+    preview.warm()
     return LoadedProgram(path, program, preview, loaded - started, time.perf_counter() - loaded)
 
 

@@ -33,8 +33,11 @@ def make_app():
 
     QCoreApplication.setOrganizationName("cnc-mill-controller")
     QCoreApplication.setApplicationName("cnc-gui")
+    if QApplication.instance() is not None:
+        return QApplication.instance()
+    # Fractional scale factors (125 %, 150 %) as they are: crisp on high-DPI screens.
     QGuiApplication.setHighDpiScaleFactorRoundingPolicy(Qt.HighDpiScaleFactorRoundingPolicy.PassThrough)
-    return QApplication.instance() or QApplication(sys.argv[:1])
+    return QApplication(sys.argv[:1])
 
 
 def main(argv: list[str] | None = None) -> int:

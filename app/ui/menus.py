@@ -83,6 +83,9 @@ def _view_menu(w, menu: QMenu, actions) -> None:
     actions["zoom_in"] = _action(w, menu, "Zoom &in", lambda: w.preview.zoom(1.5), keys.ZoomIn)
     actions["zoom_out"] = _action(w, menu, "Zoom &out", lambda: w.preview.zoom(1 / 1.5),
                                   QKeySequence.StandardKey.ZoomOut)
+    grid = _action(w, menu, "&Grid", lambda: w.preview.set_grid(grid.isChecked()), "Ctrl+G")
+    grid.setCheckable(True)
+    actions["grid"] = grid
     menu.addSeparator()
     for dock in w.docks.values():
         menu.addAction(dock.toggleViewAction())

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 from PySide6.QtCore import QObject
 
+from app.ui.program.summary import device_count
 from app.ui.recent import add_recent
 from app.ui.settings.dialog import SettingsDialog
 from app.ui.settings.store import FILE_NAME, machine_settings, save_settings
@@ -129,8 +130,9 @@ class OperatorActions(QObject):
         if self.w.loaded is None:
             self.w.notifier.warning("No program", "Open a G-code file to save it to the card.")
             return
-        self.w.sd_panel.set_progress(0, len(self.w.loaded.program.device_lines))
-        self.link.call("upload_to_sd", name, list(self.w.loaded.program.device_lines))
+        program = self.w.loaded.program
+        self.w.sd_panel.set_progress(0, device_count(program))
+        self.link.call("upload_to_sd", name, program)  # the worker thread renders the lines
 
     def run_from_sd(self, name: str) -> None:
         self.link.call("run_from_sd", name)

@@ -11,9 +11,11 @@ from PySide6.QtCore import QObject, QTimer
 
 from app.comm.listener import BUSY_STATES, JOB_STATES, RECOVERY_STATES, SessionState
 from app.ui.commanded import commanded_position
+from app.ui.program.summary import device_count
 from app.ui.progress import ProgressTracker, line_times
 
 UI_TICK_MS = 33
+SLOW_EVERY = 6  # the finished part, current line and progress text: every 6th tick (~5 Hz)
 BUSY = frozenset(s.value for s in BUSY_STATES)
 JOB = frozenset(s.value for s in JOB_STATES)
 RECOVERY = frozenset(s.value for s in RECOVERY_STATES)
@@ -33,7 +35,9 @@ class SessionBinder(QObject):
         self.last_job_event = None  # JobEvent of the last job (not upload)
         self.last_upload_event = None
         self.alert_clock: float | None = None  # link clock when the alert last appeared
-        self._dirty = False
+        self._dirty = False  # a status arrived since the last refresh
+        self._progress_dirty = False  # progress arrived since the last slow refresh
+        self._ticks = 0
         self._connect(window.link.worker)
         window.loader.loaded.connect(window.operator.program_loaded)
         window.loader.failed.connect(self.on_load_failed)
@@ -159,7 +163,7 @@ class SessionBinder(QObject):
         elif self.tracker is not None:
             self.job_done = event.done
             self.tracker.update(event.done + 1)
-            self._dirty = True
+            self._progress_dirty = True
         self.w.console.set_resends(event.resends, event.resend_rate, event.resend_rate > 0.1)
 
     def begin_job(self, loaded) -> None:
@@ -171,10 +175,10 @@ class SessionBinder(QObject):
             self.tracker = None
             return
         program = loaded.program
-        cumulative = line_times(program.toolpath, len(program.device_lines))
-        self.tracker = ProgressTracker(cumulative, len(program.device_lines), time.monotonic())
+        count = device_count(program)
+        self.tracker = ProgressTracker(line_times(program.toolpath, count), count, time.monotonic())
         self.w.preview.set_done(-1)
-        self._dirty = True
+        self._progress_dirty = True
 
     def on_job_finished(self, event) -> None:
         if event.kind == "upload":
@@ -188,7 +192,7 @@ class SessionBinder(QObject):
         if self.tracker is not None and event.completed:
             self.tracker.update(event.total)
             self.job_done = event.total - 1
-        self._dirty = True
+        self._progress_dirty = True
         self.tick()
         if event.completed:
             self.w.status.showMessage("Job finished", 15000)
@@ -210,23 +214,24 @@ class SessionBinder(QObject):
     # -- the ~30 Hz refresh -----------------------------------------------------------
 
     def tick(self) -> None:
-        if not self._dirty:
-            return
-        self._dirty = False
-        if self.status is not None:
+        self._ticks += 1
+        if self._dirty and self.status is not None:
+            self._dirty = False
             s = self.status
             self.w.status.set_position(s.x, s.y, s.z)
             self.w.preview.set_tool(s.x, s.y)
             self.w.connection.set_machine_state(s.state, s.flags)
             self.w.controls.set_rpm(s.rpm)
-        if self.tracker is not None:
+        slow_turn = self._ticks % SLOW_EVERY == 0 or self.last_job_event is not None
+        if self._progress_dirty and self.tracker is not None and slow_turn:
+            self._progress_dirty = False
             self.w.status.set_progress(self.tracker.view(time.monotonic()))
             self.w.preview.set_done(self.job_done)
             self._show_current_line()
 
     def _show_current_line(self) -> None:
         line_map = getattr(self.job.program, "line_map", None)
-        seq = min(self.job_done + 1, len(self.job.program.device_lines) - 1)
+        seq = min(self.job_done + 1, device_count(self.job.program) - 1)
         if line_map is not None and 0 <= seq < len(line_map):
             self.w.program_panel.set_current_line(int(np.asarray(line_map)[seq]))
 

@@ -26,7 +26,7 @@ def _status(window):
 def _connect(qtbot, window, url):
     window.connection.ports.setEditText(url)
     _click(qtbot, window.connection.button)
-    qtbot.waitUntil(lambda: window.binder.connected and _status(window) is not None, timeout=15_000)
+    qtbot.waitUntil(lambda: window.binder.connected and _status(window) is not None, timeout=60_000)
     assert "connected" in window.connection.link.text()
 
 
@@ -47,51 +47,51 @@ def test_operator_story(qtbot, window, tmp_path):
     # Save to SD: the file on the card is the normalised program.
     assert window.sd_panel.name.text() == "arcs_circles.nc"
     _click(qtbot, window.sd_panel.save)
-    qtbot.waitUntil(lambda: "verified" in window.sd_panel.result.text(), timeout=30_000)
+    qtbot.waitUntil(lambda: "verified" in window.sd_panel.result.text(), timeout=60_000)
     assert (sd / "arcs_circles.nc").read_text() == "\n".join(program.device_lines) + "\n"
-    qtbot.waitUntil(lambda: window.sd_panel.files.topLevelItemCount() == 1, timeout=10_000)
+    qtbot.waitUntil(lambda: window.sd_panel.files.topLevelItemCount() == 1, timeout=60_000)
 
     # Home, start.
     _click(qtbot, window.controls.buttons["home"])
     qtbot.waitUntil(lambda: _status(window).homed and _status(window).state == "IDLE", timeout=60_000)
     _click(qtbot, window.controls.buttons["start"])
-    qtbot.waitUntil(lambda: window.binder.job_done >= 5, timeout=30_000)
+    qtbot.waitUntil(lambda: window.binder.job_done >= 5, timeout=60_000)
 
     # Pause: the machine holds (no motion across a second of machine time).
     _click(qtbot, window.controls.buttons["pause"])
-    qtbot.waitUntil(lambda: _status(window).state == "HOLD", timeout=10_000)
+    qtbot.waitUntil(lambda: _status(window).state == "HOLD", timeout=60_000)
     held = _wait_still(qtbot, window)
-    qtbot.waitUntil(lambda: _status(window).time > held.time + 1.0, timeout=10_000)
+    qtbot.waitUntil(lambda: _status(window).time > held.time + 1.0, timeout=60_000)
     assert np.allclose(_status(window).position, held.position, atol=1e-3)
     assert _status(window).done < len(program.device_lines) - 1
     assert window.controls.buttons["resume"].isEnabled()
 
     # Resume, then cut the USB link mid-job.
     _click(qtbot, window.controls.buttons["resume"])
-    qtbot.waitUntil(lambda: _status(window).state == "RUN", timeout=10_000)
+    qtbot.waitUntil(lambda: _status(window).state == "RUN", timeout=60_000)
     total = len(program.device_lines)
     qtbot.waitUntil(lambda: window.binder.job_done >= total // 3, timeout=JOB_TIMEOUT_MS)
     cut_at = window.link.clock()
     sim.faults.unplug()
-    qtbot.waitUntil(window.alert.isVisible, timeout=10_000)
+    qtbot.waitUntil(window.alert.isVisible, timeout=60_000)
     assert window.binder.alert_clock - cut_at <= 3.0
     assert "USB link" in window.alert.body.text() and "holds" in window.alert.body.text()
-    qtbot.waitUntil(lambda: _machine_state(sim) == "HOLD", timeout=10_000)
+    qtbot.waitUntil(lambda: _machine_state(sim) == "HOLD", timeout=60_000)
     assert window.binder.alert_clock - cut_at <= 3.0
 
     # Reconnect and resume exactly where it stopped.
     sim.faults.replug()
     _click(qtbot, window.alert.reconnect)
-    qtbot.waitUntil(lambda: window.alert.resume.isVisible(), timeout=20_000)
+    qtbot.waitUntil(lambda: window.alert.resume.isVisible(), timeout=60_000)
     assert "kept its position" in window.alert.body.text()
     _click(qtbot, window.alert.resume)
     qtbot.waitUntil(lambda: window.binder.last_job_event is not None, timeout=JOB_TIMEOUT_MS)
 
     event = window.binder.last_job_event
     assert event.completed, event
-    qtbot.waitUntil(lambda: window.status.progress.value() == 1000, timeout=5_000)
+    qtbot.waitUntil(lambda: window.status.progress.value() == 1000, timeout=30_000)
     assert window.binder.tracker.view(0).percent == 100.0
-    qtbot.waitUntil(lambda: _status(window).state == "IDLE", timeout=10_000)
+    qtbot.waitUntil(lambda: _status(window).state == "IDLE", timeout=60_000)
     assert np.allclose(_status(window).position, program.toolpath.end[-1], atol=0.01)
     seqs = [seq for seq, _ in sim.exec_log]
     assert seqs == list(range(total))
@@ -103,7 +103,7 @@ def _wait_still(qtbot, window, tries=20):
     """The status once two frames half a second (machine time) apart show the same position."""
     for _ in range(tries):
         before = _status(window)
-        qtbot.waitUntil(lambda b=before: _status(window).time >= b.time + 0.5, timeout=10_000)
+        qtbot.waitUntil(lambda b=before: _status(window).time >= b.time + 0.5, timeout=60_000)
         if np.allclose(_status(window).position, before.position, atol=1e-3):
             return _status(window)
     raise AssertionError("the machine never came to rest")

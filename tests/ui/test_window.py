@@ -50,7 +50,7 @@ def test_program_panel_shows_summary_and_follows_the_line(qtbot, window):
     assert model.rowCount() == len(loaded.program.source_lines)
     window.program_panel.set_current_line(12)
     assert model.current_line == 12
-    assert model.data(model.index(11), Qt.ItemDataRole.BackgroundRole) is not None
+    assert model.data(model.index(11, 0), Qt.ItemDataRole.BackgroundRole) is not None
 
 
 def test_dark_palette_toggles(qtbot, window):

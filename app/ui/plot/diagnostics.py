@@ -35,9 +35,9 @@ class DiagnosticsView(QWidget):
             plot.setMenuEnabled(False)
         err.setXLink(pos)
         commanded = pos.plot(pen=pg.mkPen("#c0c0c0", width=1, style=Qt.PenStyle.DashLine))
-        measured = pos.plot(pen=pg.mkPen(colour, width=1.5))
+        measured = pos.plot(pen=pg.mkPen(colour, width=1))
         self.position_curves.append((commanded, measured))
-        self.error_curves.append(err.plot(pen=pg.mkPen(colour, width=1.5)))
+        self.error_curves.append(err.plot(pen=pg.mkPen(colour, width=1)))
         self.plots += [pos, err]
 
     def redraw(self, force: bool = False) -> bool:

@@ -31,7 +31,7 @@ class PositionPlot(QWidget):
         self.plot.addLegend(offset=(10, 10), labelTextSize="8pt")
         self.plot.getPlotItem().setMenuEnabled(False)
         self.curves = [
-            self.plot.plot(pen=pg.mkPen(colour, width=1.5), name=axis)
+            self.plot.plot(pen=pg.mkPen(colour, width=1), name=axis)
             for axis, colour in zip("XYZ", AXIS_COLOURS, strict=True)
         ]
         layout = QVBoxLayout(self)

@@ -67,6 +67,14 @@ class PreviewModel:
         hits = np.flatnonzero(np.asarray(source) == line)
         return int(hits[0]) if len(hits) else None
 
+    def warm(self, widths=(700, 1400)) -> None:
+        """Build the levels a fitted view of ``widths`` pixels will ask for first."""
+        xmin, xmax, ymin, ymax = self.bounds()
+        extent = max(xmax - xmin, ymax - ymin, 1e-6)
+        for group in self.groups:
+            for width in widths:
+                group.level(group.pick_level(extent / width))
+
     def prebuild(self) -> threading.Thread:
         """Build every level of detail on a background thread (numpy releases the GIL)."""
         thread = threading.Thread(target=self._build_all, name="preview-lod", daemon=True)

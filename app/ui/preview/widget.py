@@ -13,7 +13,7 @@ import numpy as np
 import pyqtgraph as pg
 from PySide6.QtCore import Qt, QTimer, Signal
 from PySide6.QtGui import QColor, QPen
-from PySide6.QtWidgets import QVBoxLayout, QWidget
+from PySide6.QtWidgets import QGraphicsItem, QVBoxLayout, QWidget
 
 from app.ui.preview.geometry import AIR_GROUP, DEPTH_BANDS, RAPID_GROUP
 from app.ui.preview.model import PreviewModel
@@ -39,11 +39,13 @@ class PreviewWidget(QWidget):
         self._done_move = -1
         self.plot = pg.PlotWidget()
         self.plot.setAspectLocked(True)
-        self.plot.showGrid(x=True, y=True, alpha=0.2)
+        self.grid = False
         self.plot.setLabel("bottom", "X", units="mm")
         self.plot.setLabel("left", "Y", units="mm")
-        for side in ("left", "bottom"):
-            self.plot.getAxis(side).enableAutoSIPrefix(False)
+        for side in ("left", "bottom"):  # major ticks only: tick text is most of a frame's cost
+            axis = self.plot.getAxis(side)
+            axis.enableAutoSIPrefix(False)
+            axis.setStyle(maxTickLevel=0, textFillLimits=[(0, 0.8)])
         self.plot.getPlotItem().setMenuEnabled(False)
         self.view = self.plot.getViewBox()
         self.view.disableAutoRange()
@@ -64,7 +66,10 @@ class PreviewWidget(QWidget):
         pens = [rapid_pen, pg.mkPen("#5fa8d3", width=1)]
         pens += [pg.mkPen(colour, width=1) for colour in _depth_colours()]
         self.group_items = [self._curve(pen, z=i) for i, pen in enumerate(pens)]
-        self.done_item = self._curve(pg.mkPen(DONE_COLOUR, width=2), z=20)
+        self.done_item = self._curve(pg.mkPen(DONE_COLOUR, width=1), z=20)
+        for item in [*self.group_items, self.done_item, self.travel_item, self.bounds_item]:
+            # Drawn once into a pixmap: moving the tool marker then costs a blit, not a redraw.
+            item.setCacheMode(QGraphicsItem.CacheMode.DeviceCoordinateCache)
         self.highlight_item = self._curve(pg.mkPen(HIGHLIGHT_COLOUR, width=3), z=30)
         self.marker = pg.ScatterPlotItem(size=14, symbol="+", pen=pg.mkPen(MARKER_COLOUR, width=2))
         self.marker.setZValue(40)
@@ -121,6 +126,11 @@ class PreviewWidget(QWidget):
         xmin, xmax, ymin, ymax = self.model.bounds()
         pad = max(xmax - xmin, ymax - ymin, 1.0) * 0.03
         self.view.setRange(xRange=(xmin - pad, xmax + pad), yRange=(ymin - pad, ymax + pad), padding=0)
+
+    def set_grid(self, on: bool) -> None:
+        """Grid lines (off by default: they cost a third of a frame on a slow machine)."""
+        self.grid = on
+        self.plot.showGrid(x=on, y=on, alpha=0.25 if on else 0)
 
     def zoom(self, factor: float) -> None:
         self.view.scaleBy((1 / factor, 1 / factor))

@@ -7,8 +7,9 @@ from PySide6.QtCore import Qt, Signal
 from PySide6.QtGui import QFontDatabase
 from PySide6.QtWidgets import (
     QAbstractItemView,
+    QHeaderView,
     QLabel,
-    QListView,
+    QTableView,
     QTabWidget,
     QTreeWidget,
     QTreeWidgetItem,
@@ -31,11 +32,7 @@ class ProgramPanel(QWidget):
         self.summary.setWordWrap(True)
         self.summary.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
         self.source_model = SourceModel(self)
-        self.source = QListView()
-        self.source.setModel(self.source_model)
-        self.source.setUniformItemSizes(True)
-        self.source.setFont(QFontDatabase.systemFont(QFontDatabase.SystemFont.FixedFont))
-        self.source.setEditTriggers(QAbstractItemView.EditTrigger.NoEditTriggers)
+        self.source = _source_view(self.source_model)
         self.source.doubleClicked.connect(lambda index: self.line_activated.emit(index.row() + 1))
         self.problems = QTreeWidget()
         self.problems.setHeaderLabels(["Line", "Col", "", "Message"])
@@ -81,7 +78,7 @@ class ProgramPanel(QWidget):
             self.line_activated.emit(line)
 
     def go_to_line(self, line: int) -> None:
-        index = self.source_model.index(line - 1)
+        index = self.source_model.index(line - 1, 0)
         self.source.setCurrentIndex(index)
         self.source.scrollTo(index, QAbstractItemView.ScrollHint.PositionAtCenter)
         self.tabs.setCurrentWidget(self.source)
@@ -92,8 +89,25 @@ class ProgramPanel(QWidget):
             return
         self.source_model.set_current_line(line)
         if follow and line > 0:
-            index = self.source_model.index(line - 1)
+            index = self.source_model.index(line - 1, 0)
             self.source.scrollTo(index, QAbstractItemView.ScrollHint.PositionAtCenter)
+
+
+def _source_view(model: SourceModel) -> QTableView:
+    view = QTableView()
+    view.setModel(model)
+    view.setFont(QFontDatabase.systemFont(QFontDatabase.SystemFont.FixedFont))
+    view.setEditTriggers(QAbstractItemView.EditTrigger.NoEditTriggers)
+    view.setSelectionBehavior(QAbstractItemView.SelectionBehavior.SelectRows)
+    view.setShowGrid(False)
+    view.setWordWrap(False)
+    view.horizontalHeader().hide()
+    view.horizontalHeader().setSectionResizeMode(QHeaderView.ResizeMode.Stretch)
+    rows = view.verticalHeader()
+    rows.hide()
+    rows.setSectionResizeMode(QHeaderView.ResizeMode.Fixed)
+    rows.setDefaultSectionSize(view.fontMetrics().height() + 2)
+    return view
 
 
 def _diagnostics(program, kind: str):

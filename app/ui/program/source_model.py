@@ -1,17 +1,18 @@
-"""A list model over the program's source lines, built lazily: a million lines cost
-nothing until they scroll into view. Shows ``line number  text`` and marks the line
+"""A one-column table model over the program's source lines, built lazily: a million
+lines cost nothing until they scroll into view (a QTableView with fixed row heights
+never lays out every row, unlike a QListView). Shows ``line number  text`` and marks the line
 being executed."""
 
 from __future__ import annotations
 
-from PySide6.QtCore import QAbstractListModel, QModelIndex, Qt
+from PySide6.QtCore import QAbstractTableModel, QModelIndex, Qt
 from PySide6.QtGui import QBrush, QColor
 
 CURRENT_BRUSH = QBrush(QColor(255, 200, 0, 90))
 ERROR_BRUSH = QBrush(QColor(255, 60, 60, 70))
 
 
-class SourceModel(QAbstractListModel):
+class SourceModel(QAbstractTableModel):
     def __init__(self, parent=None):
         super().__init__(parent)
         self._lines: list[str] = []
@@ -29,6 +30,9 @@ class SourceModel(QAbstractListModel):
 
     def rowCount(self, parent=QModelIndex()) -> int:  # noqa: B008 (Qt signature)
         return 0 if parent.isValid() else len(self._lines)
+
+    def columnCount(self, parent=QModelIndex()) -> int:  # noqa: B008 (Qt signature)
+        return 0 if parent.isValid() else 1
 
     def data(self, index: QModelIndex, role: int = Qt.ItemDataRole.DisplayRole):
         row = index.row()
@@ -54,5 +58,5 @@ class SourceModel(QAbstractListModel):
         old, self._current = self._current, row
         for changed in (old, row):
             if 0 <= changed < len(self._lines):
-                where = self.index(changed)
+                where = self.index(changed, 0)
                 self.dataChanged.emit(where, where, [Qt.ItemDataRole.BackgroundRole])

@@ -22,12 +22,17 @@ def bounds_array(bounds) -> np.ndarray | None:
     return arr.reshape(2, 3) if arr.size == 6 else None
 
 
+def device_count(program) -> int:
+    """Number of device lines, without rendering them (``line_map`` has one entry each)."""
+    return len(program.line_map)
+
+
 def describe(program, name: str = "") -> str:
     tp = program.toolpath
     errors, warnings = program.errors, program.warnings
     parts = [f"<b>{name}</b>" if name else ""]
     parts.append(
-        f"{len(program.source_lines):,} lines → {len(program.device_lines):,} machine lines, "
+        f"{len(program.source_lines):,} lines → {device_count(program):,} machine lines, "
         f"{len(tp.start):,} moves"
     )
     box = bounds_array(getattr(tp, "bounds", None))

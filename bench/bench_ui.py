@@ -1,0 +1,223 @@
+"""GUI benchmarks (printed, never asserted):
+
+1. Event-loop responsiveness: the longest lateness of a 10 ms QTimer while the window
+   streams a 100,000-line job to the simulator (check mode, high speed) with the live
+   plot and the preview's finished part updating. Target: max <= 50 ms.
+2. A 1,000,000-line file: time from Open to the first preview frame (split into parse,
+   preview model and first draw), and the redraw time of pans and zooms. Targets:
+   <= 2 s and <= 33 ms.
+
+The files are built in bench/data/ (git-ignored) from the Inkscape samples; the 1 M
+file is bench_gcode's big.ngc when present.
+"""
+
+from __future__ import annotations
+
+import os
+import statistics
+import tempfile
+import time
+from pathlib import Path
+
+os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
+
+ROOT = Path(__file__).resolve().parents[1]
+DATA = ROOT / "bench" / "data"
+JOB_LINES = 100_000
+STREAM_LIMIT_S = 120.0
+SPEED = 50
+
+
+def big_file() -> Path:
+    try:
+        from bench.bench_gcode import build
+
+        return build()[0]
+    except ImportError:
+        return _concatenate(DATA / "big_ui.ngc", 1_000_000)
+
+
+def job_file() -> Path:
+    path = DATA / "ui_100k.ngc"
+    if path.exists():
+        return path
+    source = big_file()
+    DATA.mkdir(parents=True, exist_ok=True)
+    with source.open() as src:
+        lines = [next(src) for _ in range(JOB_LINES - 2)]
+    path.write_text("".join(lines) + "M5\nM2\n")
+    return path
+
+
+def _concatenate(path: Path, target: int) -> Path:
+    if path.exists():
+        return path
+    samples = sorted((ROOT / "resources" / "samples").glob("*.ngc"))
+    ends = ("M2", "M30", "%")
+    texts = ["".join(x for x in p.read_text().splitlines(True) if not x.strip().upper().startswith(ends))
+             for p in samples]
+    out, count = [], 0
+    while count < target:
+        for text in texts:
+            out.append(text)
+            count += text.count("\n")
+    DATA.mkdir(parents=True, exist_ok=True)
+    path.write_text("".join(out) + "M5\nM2\n")
+    return path
+
+
+def _window(config: Path):
+    from app.ui.main import make_app
+    from app.ui.main_window import MainWindow
+    from app.ui.notifier import Notifier
+
+    app = make_app()
+    window = MainWindow(config_dir=config, notifier=Notifier(show_boxes=False), restore=False)
+    window.resize(1500, 950)
+    window.show()
+    return app, window
+
+
+def _wait(app, predicate, timeout: float) -> bool:
+    end = time.monotonic() + timeout
+    while not predicate():
+        if time.monotonic() > end:
+            return False
+        app.processEvents()
+        time.sleep(0.001)
+    return True
+
+
+class LatenessProbe:
+    """A 10 ms timer that records how late each of its ticks fires."""
+
+    def __init__(self):
+        from PySide6.QtCore import Qt, QTimer
+
+        self.samples: list[float] = []
+        self.timer = QTimer(interval=10, timeout=self._tick)
+        self.timer.setTimerType(Qt.TimerType.PreciseTimer)
+        self._last = None
+
+    def start(self) -> None:
+        self._last = time.perf_counter()
+        self.timer.start()
+
+    def _tick(self) -> None:
+        now = time.perf_counter()
+        self.samples.append(max(0.0, now - self._last - 0.010))
+        self._last = now
+
+    def stop(self) -> None:
+        self.timer.stop()
+
+
+def _start_simulator(sd: Path):
+    """The simulator as its own process on a pseudo-terminal, as a real board would be."""
+    import subprocess
+    import sys
+
+    args = [sys.executable, "-m", "backend_sim", "--pty", "--speed", str(SPEED), "--sd", str(sd)]
+    proc = subprocess.Popen(args, stdout=subprocess.PIPE, text=True, cwd=ROOT)
+    return proc, proc.stdout.readline().split()[-1]
+
+
+def _lateness(app, seconds: float, until=lambda: False) -> list[float]:
+    probe = LatenessProbe()
+    probe.start()
+    _wait(app, until, seconds)
+    probe.stop()
+    return sorted(probe.samples)
+
+
+def _describe(samples: list[float]) -> str:
+    p99 = samples[int(0.99 * (len(samples) - 1))]
+    median = statistics.median(samples)
+    return (f"max {samples[-1] * 1000:.1f} ms, p99 {p99 * 1000:.1f} ms, median {median * 1000:.2f} ms"
+            f" over {len(samples):,} ticks, {sum(x > 0.05 for x in samples)} later than 50 ms")
+
+
+def bench_streaming(config: Path) -> None:
+    path = job_file()
+    app, window = _window(config)
+    binder = window.binder
+    window.open_file(path)
+    _wait(app, lambda: window.loaded is not None, 120)
+    total = len(window.loaded.program.device_lines)  # rendered before the clock starts
+    proc, pty = _start_simulator(config)
+    try:
+        window.operator.connect_to(pty)
+        _wait(app, lambda: binder.status is not None, 30)
+        window.controls.check_mode.setChecked(True)
+        window.docks["plot"].raise_()
+        idle = _lateness(app, 10.0)
+        started = time.monotonic()
+        window.operator.start()
+        busy = _lateness(app, STREAM_LIMIT_S, lambda: binder.last_job_event is not None)
+        took = time.monotonic() - started
+    finally:
+        window.close()
+        proc.terminate()
+        proc.wait(5)
+    done = binder.job_done + 1
+    load = os.getloadavg()[0] if hasattr(os, "getloadavg") else float("nan")
+    print(f"streaming {path.name}: {done:,}/{total:,} lines in {took:.1f} s ({done / took:,.0f} lines/s)"
+          f" to the simulator on a pty (cnc-sim --speed {SPEED}, check mode), live plot + preview updating")
+    print(f"  10 ms timer lateness while streaming: {_describe(busy)} (target max <= 50 ms)")
+    print(f"  same timer, window idle, 10 s before: {_describe(idle)}; load average {load:.1f} on "
+          f"{os.cpu_count()} cores")
+
+
+def bench_big_file(config: Path) -> None:
+    path = big_file()
+    app, window = _window(config)
+    lines = sum(1 for _ in path.open())
+    drawn = []
+    window.preview.frame_drawn.connect(lambda: drawn.append(time.perf_counter()))
+    started = time.perf_counter()
+    window.open_file(path)
+    _wait(app, lambda: window.loaded is not None, 300)
+    loaded_at = time.perf_counter()
+    window.preview.plot.viewport().repaint()
+    first = time.perf_counter()
+    loaded = window.loaded
+    print(f"open {path.name} ({lines:,} lines, {len(loaded.preview.geometry.points):,} path points): "
+          f"first preview frame {first - started:.2f} s after Open")
+    print(f"  parse+normalise+toolpath {loaded.load_s:.2f} s, preview model {loaded.model_s:.2f} s, "
+          f"hand-over + first draw {first - loaded_at:.2f} s; "
+          f"first picture {loaded.model_s + first - loaded_at:.2f} s after the file loaded (target <= 2 s)")
+    _pan_zoom(app, window)
+    window.close()
+
+
+def _pan_zoom(app, window) -> None:
+    preview = window.preview
+    preview.model.prebuild().join()
+    (x0, x1), (y0, y1) = preview.view.viewRange()
+    cx, cy, w, h = (x0 + x1) / 2, (y0 + y1) / 2, x1 - x0, y1 - y0
+    views = []
+    for zoom in (1, 2, 4, 8, 16, 64, 16, 4, 1):
+        for dx in (-0.2, 0.0, 0.2):
+            views.append((cx + dx * w / zoom, cy + dx * h / zoom, w / zoom, h / zoom))
+    times = []
+    for vx, vy, vw, vh in views:
+        t = time.perf_counter()
+        x_range, y_range = (vx - vw / 2, vx + vw / 2), (vy - vh / 2, vy + vh / 2)
+        preview.view.setRange(xRange=x_range, yRange=y_range, padding=0)
+        preview._refill_now()
+        preview.plot.viewport().repaint()
+        times.append(time.perf_counter() - t)
+    times.sort()
+    median = statistics.median(times)
+    print(f"  pan/zoom redraw over {len(times)} views (zoom 1x..64x, refill from the level of detail"
+          f" + paint): median {median * 1000:.1f} ms, max {times[-1] * 1000:.1f} ms (target <= 33 ms)")
+
+
+def main() -> None:
+    with tempfile.TemporaryDirectory() as tmp:
+        bench_big_file(Path(tmp) / "a")
+        bench_streaming(Path(tmp) / "b")
+
+
+if __name__ == "__main__":
+    main()
