@@ -5,7 +5,8 @@ carries: a list of ``(delay_s, bytes)`` pieces. Two kinds of faults:
 
 - one-shot frame faults, armed with ``arm(kind, frames=1, **params)`` and applied to
   the next complete line (a piece ending in ``\\n``) written: ``drop``, ``corrupt``
-  (one bit flipped in the body), ``duplicate``, ``delay`` (``seconds``), ``reorder``
+  (one bit flipped in the body), ``duplicate``, ``delay`` (``seconds``; the frames
+  behind it are not held up, so they overtake it), ``reorder``
   (held back until the next line has gone), ``noise`` (``nbytes`` of garbage and a
   newline before it), ``truncate`` (only the first ``keep`` bytes, no newline);
 - seeded random per-byte rates (``set_rates``: drop, corrupt, duplicate, noise), for

@@ -65,12 +65,20 @@ class HostPort:
             return out
 
     def read_until(self, expected: bytes = b"\n", size: int | None = None) -> bytes:
+        """Bytes up to and including ``expected``, ``size`` bytes, or what came in ``timeout``."""
         out = bytearray()
-        while not out.endswith(expected) and (size is None or len(out) < size):
-            byte = self.read(1)
-            if not byte:
-                break
-            out += byte
+        timeout, clock = self._timeout, self._sim.clock
+        deadline = None if timeout is None else clock.now + timeout
+        try:
+            while not out.endswith(expected) and (size is None or len(out) < size):
+                if deadline is not None:
+                    self._timeout = max(0.0, deadline - clock.now)
+                byte = self.read(1)
+                if not byte:
+                    break
+                out += byte
+        finally:
+            self._timeout = timeout
         return bytes(out)
 
     readline = read_until

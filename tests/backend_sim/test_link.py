@@ -193,3 +193,11 @@ def test_a_forwarded_command_takes_its_uart_time_both_ways(sim, host):
     down = len(seal(f"C {cid} GET KP_X")) * BYTE
     up = len(answer.encode()) * BYTE
     assert down + up + 2 * USB_LATENCY <= arrived - start <= down + up + 2 * USB_LATENCY + 0.003
+
+
+def test_readline_timeout_covers_the_whole_line(sim):
+    port = sim.host_port
+    port.timeout = 0.3
+    port.write(b"C 1 PI")
+    assert port.readline() == b""
+    assert 0.3 <= sim.clock.now < 0.32
