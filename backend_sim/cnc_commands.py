@@ -217,6 +217,7 @@ def _zero(mcu, cmd: Command) -> str:
     _not_running(mcu)
     position = mcu.mc.commanded_mm
     mcu.offset = tuple(position[k] if AXES[k] in axes else mcu.offset[k] for k in range(3))
+    mcu.flash.save_offset(mcu.offset)
     mcu.reset_parser()
     return " ".join(f"{a}{o:.3f}" for a, o in zip(AXES, mcu.offset, strict=True))
 

@@ -36,6 +36,7 @@ from app.comm.frame import (
 from app.profile import MachineProfile
 from backend_sim import cnc_commands
 from backend_sim.exec_log import ExecLog
+from backend_sim.flash import Flash
 from backend_sim.job_stream import JobStream, Verdict
 from backend_sim.motion import events as ev
 from backend_sim.motion.dialect import DialectError, DialectParser, soft_limit_violation
@@ -61,12 +62,13 @@ class CncMcu:
     """The CNC MCU: D stream, commands, motion controller, status reports."""
 
     def __init__(self, profile: MachineProfile, clock, tx: Wire, motion_factory: Callable,
-                 exec_log: ExecLog, rng: random.Random) -> None:
+                 exec_log: ExecLog, rng: random.Random, flash: Flash | None = None) -> None:
         self.profile, self.clock, self.tx = profile, clock, tx
         self.motion_factory = motion_factory
         self.exec_log = exec_log
         self.rng = rng
-        self.offset = profile.travel.work_offset()
+        self.flash = flash or Flash(None, profile.travel.work_offset())
+        self.offset = self.flash.load_offset()
         self.lost_ms = round(profile.link.lost_s * 1000)
         self.cover_open = False
         self.boot()

@@ -28,6 +28,7 @@ from backend_sim.clock import SimClock
 from backend_sim.cnc_mcu import CncMcu
 from backend_sim.exec_log import ExecLog
 from backend_sim.fault_api import Faults
+from backend_sim.flash import Flash
 from backend_sim.host_port import HostPort
 from backend_sim.main_mcu import MainMcu
 from backend_sim.panel import Panel
@@ -70,7 +71,9 @@ class Simulator:
         self.exec_log = ExecLog(exec_log)
         self.sd = SdCard(sd_dir if sd_dir is not None else default_sd_dir())
         factory = motion_factory or default_motion_factory(self.profile, mode)
-        self.cnc = CncMcu(self.profile, self.clock, self.wires["uart_up"], factory, self.exec_log, self.rng)
+        flash = Flash(self.sd.folder, self.profile.travel.work_offset())
+        self.cnc = CncMcu(self.profile, self.clock, self.wires["uart_up"], factory, self.exec_log,
+                          self.rng, flash)
         self.main = MainMcu(self.profile, self.clock, self.wires["usb_up"], self.wires["uart_down"], self.sd)
         self.host_port = HostPort(self)
         self.panel = Panel(self)

@@ -219,3 +219,22 @@ def test_simple_mode_runs_the_same_protocol(tmp_path):
     host.stream(LINES)
     finished_all(host, len(LINES))
     assert [s for s, _ in sim.exec_log] == list(range(len(LINES)))
+
+
+def test_work_offset_survives_reset_and_restart(tmp_path):
+    from backend_sim.simulator import Simulator
+    from tests.backend_sim.conftest import FAST_HOMING
+
+    sim = Simulator(FAST_HOMING, sd_dir=tmp_path / "sd", seed=5)
+    host = Host(sim)
+    host.home()
+    host.ok("JOG X 12 600")
+    assert host.ok("ZERO X").info.startswith("X12.000 Y0.000 Z20.000")
+    host.ok("RESET")
+    sim.run_for(0.1)
+    assert sim.cnc.offset[0] == 12.0
+    again = Simulator(FAST_HOMING, sd_dir=tmp_path / "sd", seed=6)
+    assert again.cnc.offset == sim.cnc.offset
+    assert again.sd.names() == []
+    (tmp_path / "sd" / ".flash.json").write_text("{broken")
+    assert Simulator(FAST_HOMING, sd_dir=tmp_path / "sd").cnc.offset == (0.0, 0.0, 20.0)
