@@ -319,8 +319,12 @@ class MainMcu:
         return "".join(f for f in "HCLUPS" if f in cnc + own)
 
     def merged_status(self) -> Status:
+        """The CNC MCU's last status with the main MCU's flags (boot ``0``: none yet)."""
         s = self.status or Status("0", "ALARM", 0.0, 0.0, 0.0, -1, -1, 0, 0)
-        return Status(s.boot, s.state, s.x, s.y, s.z, s.acc, s.done, s.free, s.rpm, self.flags())
+        flags = self.flags()
+        if flags == s.flags:
+            return s
+        return Status(s.boot, s.state, s.x, s.y, s.z, s.acc, s.done, s.free, s.rpm, flags)
 
     @property
     def host_connected(self) -> bool:
