@@ -62,3 +62,10 @@ def test_errors_name_line_and_column(text, column, fragment):
     assert (lexed.error.line, lexed.error.column) == (7, column)
     assert fragment in lexed.error.message
     assert str(lexed.error).startswith(f"line 7, column {column}: ")
+
+
+@pytest.mark.parametrize("text", ["G1 X1(c)0", "G1 X1 (c) 0", "G1 X1\x010"])
+def test_fast_path_agrees_that_a_comment_ends_a_number(text):
+    from app.gcode import load_text
+
+    assert load_text(text).errors
