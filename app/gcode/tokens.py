@@ -64,7 +64,7 @@ def _inner(b, special, start, starts, ends):
     """Bad positions among signs and dots inside numbers, and each number's decimals."""
     inner = np.flatnonzero(special & ~start)
     dots = inner[b[inner] == DOT]
-    token = np.searchsorted(starts, dots, "right") - 1
+    token = np.searchsorted(starts, dots, "right") - 1  # the number each dot is in
     dotted = b[starts] == DOT
     decimals = np.where(dotted, ends - starts, 0)
     decimals[token] = ends[token] - dots
@@ -79,12 +79,17 @@ def tokenize(b: np.ndarray) -> Tokens:
     isletter = ((b | 0x20) - 97) < 26
     other = (b == 32) | (b == NEWLINE) | (b == 1)  # 1 marks where a comment was
     start, end = _edges(isnum)
-    starts, ends = np.flatnonzero(start), np.flatnonzero(end)
     letters = np.flatnonzero(isletter)
+    follows = start[letters + 1]
+    if follows.all() and np.count_nonzero(start) == len(letters):
+        starts = letters + 1  # every number right after its letter: no need to search
+    else:
+        starts = np.flatnonzero(start)
+    ends = np.flatnonzero(end)
     inner_bad, decimals = _inner(b, special, start, starts, ends)
     bad = np.concatenate([
         np.flatnonzero(~(isnum | isletter | other)),
-        letters[~start[letters + 1]],  # a letter without a number right after it
+        letters[~follows],  # a letter without a number right after it
         starts[~isletter[starts - 1]],  # a number without its letter (index -1 is the newline)
         _shape_bad(b, starts, ends),
         inner_bad,
