@@ -10,7 +10,6 @@ machine panel dock keeps showing it meanwhile. ``MachineLink.shutdown()`` stops 
 from __future__ import annotations
 
 import threading
-import time
 
 from PySide6.QtCore import QObject
 
@@ -45,49 +44,28 @@ class SimPortTransport:
     def close(self) -> None:
         self.port.close()
 
-
-class LinkClock:
-    """The session's clock: wall seconds for a real port, the simulator's own clock for
-    ``sim://``, so heartbeats and timeouts keep their meaning when the simulated machine
-    runs faster than real time (or falls behind it). Continuous when the source changes."""
-
-    def __init__(self):
-        self._source = time.monotonic
-        self._base = 0.0
-        self._t0 = time.monotonic()
-
-    def __call__(self) -> float:
-        return self._base + (self._source() - self._t0)
-
-    def follow(self, source) -> None:
-        """Continue from now on with ``source`` (a callable giving seconds)."""
-        self._base, self._t0, self._source = self(), source(), source
-
-
-def _sim_seconds(sim):
-    return lambda: sim.clock.now_ms / 1000.0
+    def clock(self) -> float:
+        """The simulator's clock: the session's timers run on machine time."""
+        return self.sim.clock.now
 
 
 class SimOpener:
     """``open_transport`` for the worker, reusing one running simulator for ``sim://``."""
 
-    def __init__(self, profile=None, clock: LinkClock | None = None):
+    def __init__(self, profile=None):
         self.profile = profile
-        self.clock = clock or LinkClock()
         self.sim = None
         self._key = None
         self._lock = threading.Lock()
 
     def __call__(self, url: str):
         if not is_sim(url):
-            self.clock.follow(time.monotonic)
             return open_transport(url)
         options = sim_options(url)
         key = (options.get("speed", "1"), options.get("sd"))
         with self._lock:
             if self.sim is None or key != self._key:
                 self._replace(key, options)
-            self.clock.follow(_sim_seconds(self.sim))
             port = self.sim.host_port
             if not port.is_open:
                 port.open()
@@ -116,9 +94,8 @@ class MachineLink(QObject):
 
     def __init__(self, parent=None, profile=None):
         super().__init__(parent)
-        self.clock = LinkClock()
-        self.opener = SimOpener(profile, self.clock)
-        self.controller = SerialController(self, SerialWorker(clock=self.clock, opener=self.opener))
+        self.opener = SimOpener(profile)
+        self.controller = SerialController(self, SerialWorker(opener=self.opener))
         self.worker = self.controller.worker
         self.url = ""
         self.controller.start()
@@ -127,6 +104,10 @@ class MachineLink(QObject):
     def sim(self):
         """The built-in simulator, once ``sim://`` has been opened (else None)."""
         return self.opener.sim
+
+    def clock(self) -> float:
+        """The session's clock (machine time: the simulator's clock for ``sim://``)."""
+        return self.worker.session.clock()
 
     def call(self, name: str, *args) -> None:
         self.controller.call(name, *args)

@@ -104,4 +104,6 @@ class MachinePanelView(QWidget):
     def _set_indicators(self, led: bool, buzzer: bool) -> None:
         led_colour = "#ff3030" if led else "#402020"
         self.led.setText(f"<span style='color:{led_colour}; font-size:16pt'>●</span> LED")
-        self.buzzer.setText("🔊 buzzer" if buzzer else "🔈 buzzer off")
+        colour = "#ffb000" if buzzer else "#404040"
+        self.buzzer.setText(f"<span style='color:{colour}; font-size:16pt'>♪</span> buzzer"
+                            + ("" if buzzer else " off"))

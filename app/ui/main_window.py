@@ -110,15 +110,24 @@ class MainWindow(QMainWindow):
             "plot": self._dock("Live position", "plot_dock", self.plots, bottom),
             "console": self._dock("Console", "console_dock", self.console, bottom),
         }
+        # Side columns run the full height; the plot and console sit under the preview only.
+        self.setCorner(Qt.Corner.BottomLeftCorner, left)
+        self.setCorner(Qt.Corner.BottomRightCorner, right)
         self.tabifyDockWidget(self.docks["sd"], self.docks["panel"])
         self.tabifyDockWidget(self.docks["plot"], self.docks["console"])
         self.docks["sd"].raise_()
         self.docks["plot"].raise_()
         self.resize(1400, 900)
-        side = [self.docks["program"], self.docks["controls"]]
-        self.resizeDocks(side, [330, 360], Qt.Orientation.Horizontal)
-        self.resizeDocks([self.docks["plot"]], [230], Qt.Orientation.Vertical)
+        self._sized = False
         self._default_state = self.saveState(STATE_VERSION)
+
+    def showEvent(self, event) -> None:  # noqa: N802 (Qt override)
+        super().showEvent(event)
+        if not self._sized and self.qsettings.value("state") is None:
+            self._sized = True
+            side = [self.docks["program"], self.docks["controls"]]
+            self.resizeDocks(side, [330, 370], Qt.Orientation.Horizontal)
+            self.resizeDocks([self.docks["plot"]], [int(self.height() * 0.3)], Qt.Orientation.Vertical)
 
     # -- files ------------------------------------------------------------------------
 

@@ -46,6 +46,8 @@ def make_window(qtbot, tmp_path, notifier):
                             port_lister=port_lister or (lambda: [("sim://", "Simulated machine")]))
         qtbot.addWidget(window)
         window.resize(1500, 950)
+        window.show()  # the live plots only redraw while visible
+        qtbot.waitExposed(window)
         windows.append(window)
         return window
 

@@ -1,5 +1,6 @@
-"""Diagnostics for tuning the PID gains by eye: per axis, commanded vs measured
-position and the following error (commanded - measured), redrawn by a ~30 Hz timer."""
+"""Diagnostics for tuning the PID gains by eye: per axis (rows X, Y, Z), commanded
+(dashed) vs measured position on the left and the following error (commanded -
+measured) on the right, over the last 10 s, redrawn by a ~30 Hz timer."""
 
 from __future__ import annotations
 
@@ -18,6 +19,8 @@ class DiagnosticsView(QWidget):
         self.seconds = seconds
         self._drawn_version = -1
         self.layout_widget = pg.GraphicsLayoutWidget()
+        self.layout_widget.ci.setContentsMargins(2, 2, 2, 2)
+        self.layout_widget.ci.setSpacing(0)
         self.position_curves, self.error_curves, self.plots = [], [], []
         for row, (axis, colour) in enumerate(zip("XYZ", AXIS_COLOURS, strict=True)):
             self._add_axis(row, axis, colour)
@@ -28,12 +31,17 @@ class DiagnosticsView(QWidget):
         self.timer.start()
 
     def _add_axis(self, row: int, axis: str, colour: str) -> None:
-        pos = self.layout_widget.addPlot(row=row, col=0, title=f"{axis}: commanded / measured (mm)")
-        err = self.layout_widget.addPlot(row=row, col=1, title=f"{axis}: following error (mm)")
+        pos = self.layout_widget.addPlot(row=row, col=0)
+        err = self.layout_widget.addPlot(row=row, col=1)
+        pos.setLabel("left", f"{axis} mm")
+        err.setLabel("left", f"{axis} error mm")
         for plot in (pos, err):
             plot.showGrid(x=True, y=True, alpha=0.2)
             plot.setMenuEnabled(False)
+            plot.getAxis("left").setWidth(52)
+            plot.getAxis("left").enableAutoSIPrefix(False)
         err.setXLink(pos)
+        err.getViewBox().setLimits(minYRange=0.02)  # never zoom into sub-micron noise
         commanded = pos.plot(pen=pg.mkPen("#c0c0c0", width=1, style=Qt.PenStyle.DashLine))
         measured = pos.plot(pen=pg.mkPen(colour, width=1))
         self.position_curves.append((commanded, measured))
@@ -52,5 +60,6 @@ class DiagnosticsView(QWidget):
             cmd_curve.setData(t, commanded[axis])
             meas_curve.setData(t, measured[axis])
             self.error_curves[axis].setData(t, commanded[axis] - measured[axis])
-        self.plots[0].setXRange(-self.seconds, 0, padding=0)
+        for plot in self.plots[::2]:
+            plot.setXRange(-self.seconds, 0, padding=0)
         return True

@@ -23,9 +23,12 @@ MARKER_COLOUR = "#ff4040"
 HIGHLIGHT_COLOUR = "#00e5ff"
 
 
+# Shallow to deep: warm colours that stand out on the black background.
+DEPTH_COLOURS = ("#ffe066", "#ffa94d", "#ff6b6b", "#f06595", "#cc5de8")
+
+
 def _depth_colours() -> list[QColor]:
-    cmap = pg.colormap.get("plasma")
-    return [cmap.map(0.85 - 0.7 * i / max(DEPTH_BANDS - 1, 1), mode="qcolor") for i in range(DEPTH_BANDS)]
+    return [QColor(DEPTH_COLOURS[i % len(DEPTH_COLOURS)]) for i in range(DEPTH_BANDS)]
 
 
 class PreviewWidget(QWidget):
@@ -112,7 +115,8 @@ class PreviewWidget(QWidget):
             return
         edges = self.model.geometry.depth_edges
         self.legend.addItem(self.group_items[RAPID_GROUP], "rapid")
-        self.legend.addItem(self.group_items[AIR_GROUP], "feed Z ≥ 0")
+        if len(self.model.groups[AIR_GROUP]):
+            self.legend.addItem(self.group_items[AIR_GROUP], "feed Z ≥ 0")
         for band in range(DEPTH_BANDS):
             if len(self.model.groups[2 + band]):
                 label = f"Z {edges[band]:.2f} … {edges[band + 1]:.2f}"

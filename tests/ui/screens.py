@@ -1,0 +1,79 @@
+"""Screenshots of the window: used by the tests (into tmp_path) and to refresh the ones
+in docs/screenshots (``QT_QPA_PLATFORM=offscreen python -m tests.ui.screens``)."""
+
+from __future__ import annotations
+
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+SAMPLE = ROOT / "resources" / "samples" / "potrace_logo.ngc"
+
+
+def preview_shot(window, wait, out: Path) -> Path:
+    """The window previewing a real Inkscape sample (picture -> potrace -> Gcodetools)."""
+    window.open_file(SAMPLE)
+    wait(lambda: window.loaded is not None and window.loaded.path == SAMPLE, 30)
+    window.docks["program"].raise_()
+    return _save(window, wait, out / "preview.png")
+
+
+def job_shot(window, wait, out: Path, speed: float = 10, fraction: float = 0.45) -> list[Path]:
+    """Mid-job on the simulator: tool marker, finished part, live plot, machine panel."""
+    if window.loaded is None:
+        window.open_file(SAMPLE)
+        wait(lambda: window.loaded is not None, 30)
+    sd = Path(tempfile.mkdtemp(prefix="cnc-sd-"))
+    window.operator.connect_to(f"sim://?speed={speed:g}&sd={sd}")
+    wait(lambda: window.binder.status is not None, 30)
+    window.operator.home("NORMAL")
+    wait(lambda: window.binder.status.homed and window.binder.status.state == "IDLE", 120)
+    window.operator.start()
+    total = len(window.loaded.program.line_map)
+    wait(lambda: window.binder.job_done >= fraction * total, 300)
+    window.docks["plot"].raise_()
+    shots = [_save(window, wait, out / "job.png")]
+    window.docks["panel"].raise_()
+    window.plots.setCurrentWidget(window.diagnostics)
+    shots.append(_save(window, wait, out / "job-diagnostics.png"))
+    window.operator.stop()
+    return shots
+
+
+def _save(window, wait, path: Path) -> Path:
+    end = time.monotonic() + 0.4  # let the 30 Hz refresh and the plots catch up
+    wait(lambda: time.monotonic() > end, 5)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    window.grab().save(str(path))
+    return path
+
+
+def main(out: str = "docs/screenshots") -> int:
+    from app.ui.main import make_app
+    from app.ui.main_window import MainWindow
+    from app.ui.notifier import Notifier
+
+    app = make_app()
+
+    def wait(predicate, timeout):
+        end = time.monotonic() + timeout
+        while not predicate():
+            if time.monotonic() > end:
+                raise TimeoutError("screenshot step timed out")
+            app.processEvents()
+            time.sleep(0.005)
+
+    config = Path(tempfile.mkdtemp(prefix="cnc-config-"))
+    window = MainWindow(config_dir=config, notifier=Notifier(show_boxes=False), restore=False)
+    window.resize(1600, 1000)
+    window.show()
+    shots = [preview_shot(window, wait, Path(out))] + job_shot(window, wait, Path(out))
+    window.close()
+    print("\n".join(str(p) for p in shots))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(*sys.argv[1:]))
