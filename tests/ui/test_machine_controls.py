@@ -1,0 +1,87 @@
+"""Machine controls on the simulator: jog, spindle, work zero, settings pushed with SET,
+MDI lines and commands, the SD list; and the keep-awake and no-display fallbacks."""
+
+from dataclasses import replace
+
+import pytest
+from PySide6.QtCore import Qt
+
+from app.ui.keep_awake import KeepAwake
+
+SPEED = 20
+
+
+@pytest.fixture
+def connected(qtbot, window, tmp_path):
+    window.operator.connect_to(f"sim://?speed={SPEED}&sd={tmp_path}")
+    qtbot.waitUntil(lambda: window.binder.connected and window.binder.status is not None, timeout=60_000)
+    window.operator.home("NORMAL")
+    homed = lambda: window.binder.status.homed and window.binder.status.state == "IDLE"  # noqa: E731
+    qtbot.waitUntil(homed, timeout=60_000)
+    return window
+
+
+def _at(window, axis_index, value, tol=0.05):
+    status = window.binder.status
+    return status.state == "IDLE" and abs(status.position[axis_index] - value) < tol
+
+
+def test_jog_spindle_and_work_zero(qtbot, connected):
+    window = connected
+    x0 = window.binder.status.x
+    window.controls.jog.set_step_index(2)  # 10 mm
+    qtbot.mouseClick(window.controls.jog.buttons["X", 1], Qt.MouseButton.LeftButton)
+    qtbot.waitUntil(lambda: _at(window, 0, x0 + 10), timeout=60_000)
+    window.actions_by_name["step_1"].trigger()  # 1 mm, by its shortcut's action
+    window.actions_by_name["jog_Y+"].trigger()
+    y0 = window.binder.status.y
+    qtbot.waitUntil(lambda: _at(window, 1, y0 + 1), timeout=60_000)
+    qtbot.mouseClick(window.controls.buttons["spindle_on"], Qt.MouseButton.LeftButton)
+    qtbot.waitUntil(lambda: window.binder.status.rpm > 1000, timeout=60_000)
+    qtbot.mouseClick(window.controls.buttons["spindle_off"], Qt.MouseButton.LeftButton)
+    qtbot.waitUntil(lambda: "P" not in window.binder.status.flags, timeout=60_000)
+    qtbot.mouseClick(window.controls.buttons["zero_XY"], Qt.MouseButton.LeftButton)
+    qtbot.waitUntil(lambda: _at(window, 0, 0.0, 0.01) and _at(window, 1, 0.0, 0.01), timeout=60_000)
+
+
+def test_settings_are_pushed_and_mdi_answers(qtbot, connected):
+    window = connected
+    profile = window.profile
+    window.operator.apply_settings(replace(profile, pid=replace(profile.pid, kp=12.5)))
+    assert (window.config_dir / "settings.json").exists()
+    window.console.mdi.setText("GET KP_Y")
+    window.console.mdi.returnPressed.emit()
+    qtbot.waitUntil(lambda: "KP_Y 12.5" in window.console.log.toPlainText(), timeout=60_000)
+    window.console.mdi.setText("G0 X5 Y5")  # a G-code line runs as a one-line job
+    window.console.mdi.returnPressed.emit()
+    qtbot.waitUntil(lambda: _at(window, 0, 5.0, 0.01) and _at(window, 1, 5.0, 0.01), timeout=60_000)
+    window.console.mdi.setText("G1 X5 Q3")  # not a valid line: said in the console, nothing sent
+    window.console.mdi.returnPressed.emit()
+    qtbot.waitUntil(lambda: "MDI:" in window.console.log.toPlainText(), timeout=10_000)
+
+
+def test_keep_awake_is_best_effort(monkeypatch):
+    import app.ui.keep_awake as keep_awake
+
+    monkeypatch.setattr(keep_awake.shutil, "which", lambda name: None)
+    awake = KeepAwake()
+    assert awake.start() is False
+    awake.stop()
+    monkeypatch.setattr(keep_awake.shutil, "which", lambda name: "/nonexistent/inhibit")
+    awake = KeepAwake()
+    assert awake.start() is False  # the tool vanished: no crash
+    awake.stop()
+
+
+def test_make_run_falls_back_to_the_demo_without_a_display(monkeypatch):
+    import app.run as run
+
+    monkeypatch.setattr(run.sys, "platform", "linux")
+    for name in ("DISPLAY", "WAYLAND_DISPLAY", "QT_QPA_PLATFORM"):
+        monkeypatch.delenv(name, raising=False)
+    assert run.has_display() is False
+    monkeypatch.setenv("WAYLAND_DISPLAY", "wayland-0")
+    assert run.has_display() is True
+    monkeypatch.delenv("WAYLAND_DISPLAY")
+    monkeypatch.setenv("QT_QPA_PLATFORM", "offscreen")
+    assert run.has_display() is True
