@@ -38,6 +38,10 @@ class Tally(SessionListener):
 
     def __init__(self) -> None:
         self.jobs, self.links, self.alarms = [], [], []
+        self.progress = None
+
+    def on_progress(self, event):
+        self.progress = event
 
     def on_job_finished(self, event):
         self.jobs.append(event)
@@ -183,10 +187,11 @@ def long_soak(sd: str, count: int, rate: float = 1e-5, seed: int = 7) -> None:
     job = rig.job(lines, timeout=count)
     ok = job is not None and job.completed and [s for s, _ in log] == list(range(count)) and all(
         line == lines[s] for s, line in log)
-    progress = rig.session.stream.progress() if rig.session.stream else None
-    resent = f"{job.done + 1} lines" if job else "no end"
+    progress = rig.tally.progress
+    ended = f"{job.done + 1} lines done" if job else "no end"
+    resends = f"{progress.resends} resends ({progress.resend_rate:.2%})" if progress else ""
     print(f"long soak: {count} lines at {rate:g}/byte on both hops, seed {seed}: "
-          f"oracle {'holds' if ok else 'FAILS'} ({resent}, {progress or ''}) in {rig.now - start:.0f} "
+          f"oracle {'holds' if ok else 'FAILS'} ({ended}, {resends}) in {rig.now - start:.0f} "
           f"simulated s, {time.perf_counter() - wall:.0f} s wall, {time.process_time() - cpu:.0f} s CPU")
 
 
