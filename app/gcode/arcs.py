@@ -136,17 +136,26 @@ def chord_points(start3, end3, center3, plane_axes, turn, tolerance):
     return pts, owner
 
 
+def in_plane(plane_axes, *points3):
+    """Each (n, 3) array of ``points3`` as (n, 2) in its row's plane, then the (n,) normal.
+
+    Returns ``[p1_2d, p2_2d, ..., (first point's normal, last point's normal)]``; when
+    every row is in the XY plane the columns are taken as they are (no gather)."""
+    axes = np.asarray(plane_axes)
+    if not len(axes) or (axes[:, 0] == 0).all() and (axes[:, 1] == 1).all():
+        flat = [p[:, :2] for p in points3]
+        return [*flat, (points3[0][:, 2], points3[-1][:, 2])]
+    idx = np.arange(len(axes))
+    a1, a2, a3 = axes[:, 0], axes[:, 1], axes[:, 2]
+    flat = [np.stack([p[idx, a1], p[idx, a2]], axis=1) for p in points3]
+    return [*flat, (points3[0][idx, a3], points3[-1][idx, a3])]
+
+
 def arc_length(start3, end3, center3, plane_axes, turn):
     """Length of each (helical) arc, arrays as in ``chord_points``."""
-    n = len(start3)
-    if n == 0:
+    if len(start3) == 0:
         return np.empty(0)
-    idx = np.arange(n)
-    a1, a2, a3 = (np.asarray(plane_axes)[:, i] for i in range(3))
-    s = np.stack([start3[idx, a1], start3[idx, a2]], axis=1)
-    e = np.stack([end3[idx, a1], end3[idx, a2]], axis=1)
-    c = np.stack([center3[idx, a1], center3[idx, a2]], axis=1)
+    s, c, e, (z0, z1) = in_plane(plane_axes, start3, center3, end3)
     ang = sweep(s, e, c, turn)
     r = np.hypot(s[:, 0] - c[:, 0], s[:, 1] - c[:, 1])
-    dz = end3[idx, a3] - start3[idx, a3]
-    return np.hypot(np.abs(ang) * r, dz)
+    return np.hypot(np.abs(ang) * r, z1 - z0)

@@ -53,11 +53,17 @@ def _arc_extremes(ops: Ops, rows: np.ndarray):
 
 def _may_bulge_out(ops: Ops, rows: np.ndarray, profile: MachineProfile) -> np.ndarray:
     """Mask of arcs whose full circle reaches past the travel (the others cannot)."""
-    center = ops.center[rows]
-    radius = np.linalg.norm(ops.starts()[rows] - center, axis=1)  # the centre shares the normal axis
-    reach = radius[:, None] * (np.arange(3) != np.array(PLANE_AXES)[ops.plane[rows], 2][:, None])
+    center = ops.center.take(rows, axis=0)
+    step = ops.starts().take(rows, axis=0) - center
+    radius = np.sqrt(step[:, 0] * step[:, 0] + step[:, 1] * step[:, 1] + step[:, 2] * step[:, 2])
+    del step  # the centre shares the normal axis: only the other two reach out
+    normal = np.array(PLANE_AXES)[:, 2][ops.plane[rows]]
     limits = _limits(profile)
-    return ((center - reach < limits[:, 0]) | (center + reach > limits[:, 1])).any(axis=1)
+    out = np.zeros(len(rows), bool)
+    for axis in range(3):
+        reach = radius * (normal != axis)
+        out |= (center[:, axis] - reach < limits[axis, 0]) | (center[:, axis] + reach > limits[axis, 1])
+    return out
 
 
 def _limits(profile: MachineProfile) -> np.ndarray:
@@ -70,7 +76,10 @@ def _candidates(ops: Ops, profile: MachineProfile) -> np.ndarray:
     """Moves that may leave the travel: an end outside, or an arc whose circle reaches out."""
     limits = _limits(profile)
     kind = ops.kind
-    out = ((ops.end < limits[:, 0]) | (ops.end > limits[:, 1])).any(axis=1) & (kind <= ARC_CCW)
+    out = np.zeros(len(kind), bool)
+    for axis in range(3):
+        out |= (ops.end[:, axis] < limits[axis, 0]) | (ops.end[:, axis] > limits[axis, 1])
+    out &= kind <= ARC_CCW
     arcs = np.flatnonzero((kind == ARC_CW) | (kind == ARC_CCW))
     out[arcs[_may_bulge_out(ops, arcs, profile)]] = True
     return np.flatnonzero(out)

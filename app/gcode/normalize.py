@@ -27,7 +27,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .arcs import RADIUS_TOL, segments, spiral_refused, sweep
-from .numbers import milli, rounded
+from .numbers import rounded
 from .ops import ARC_CCW, ARC_CW, PAUSE, PLANE_AXES, XY, Ops
 
 ROUNDING = 0.001
@@ -45,6 +45,7 @@ class Plan:
 
 def _arc_ok_rounded(start, end, center) -> np.ndarray:
     """True where the arc, with its numbers rounded as sent, passes the circle check."""
+    start, end, center = start[:, :2], end[:, :2], center[:, :2]  # XY arcs only
     rs, re_ = rounded(start), rounded(end)
     c = rs + rounded(center - rs)
     r1 = np.hypot(c[:, 0] - rs[:, 0], c[:, 1] - rs[:, 1])
@@ -52,8 +53,8 @@ def _arc_ok_rounded(start, end, center) -> np.ndarray:
     ok = (r1 >= RADIUS_TOL[False]) & (r2 >= RADIUS_TOL[False])
     ok &= ~spiral_refused(np.abs(r1 - r2), np.maximum(r1, r2), False)
     # a short arc whose ends round together would become a full circle on the device
-    same = np.all(milli(start[:, :2]) == milli(end[:, :2]), axis=1)
-    full = np.all(start[:, :2] == end[:, :2], axis=1)
+    same = (rs[:, 0] == re_[:, 0]) & (rs[:, 1] == re_[:, 1])  # equal thousandths
+    full = (start[:, 0] == end[:, 0]) & (start[:, 1] == end[:, 1])
     return ok & (~same | full)
 
 
@@ -68,8 +69,8 @@ def plan(ops: Ops, tolerance: float) -> Plan:
     chords = np.zeros(len(ops), bool)
     arcs = np.flatnonzero((kind == ARC_CW) | (kind == ARC_CCW))
     if len(arcs):
-        start = ops.starts()[arcs]
-        end, center = ops.end[arcs], ops.center[arcs]
+        start = ops.starts().take(arcs, axis=0)
+        end, center = ops.end.take(arcs, axis=0), ops.center.take(arcs, axis=0)
         ok = (ops.plane[arcs] == XY) & (np.abs(ops.turn[arcs]) == 1)
         ok &= _arc_ok_rounded(start, end, center)
         chords[arcs[~ok]] = True

@@ -112,21 +112,25 @@ class Toolpath:
 def build(ops: Ops, device_first: np.ndarray, profile: MachineProfile) -> Toolpath:
     """The Toolpath of interpreted rows; ``device_first`` from the normaliser's plan."""
     rows = np.flatnonzero(ops.kind <= DWELL)
-    start = ops.starts()[rows]
-    end = ops.end[rows]
+    start = ops.starts().take(rows, axis=0)  # take: a faster gather than indexing
+    end = ops.end.take(rows, axis=0)
     kind = ops.kind[rows]
-    center = ops.center[rows]
+    center = ops.center.take(rows, axis=0)
     plane, turn = ops.plane[rows], ops.turn[rows]
     motion = profile.motion
-    feed = np.minimum(ops.value[rows], motion.max_feed_mm_min)
+    value = ops.value[rows]
+    feed = np.minimum(value, motion.max_feed_mm_min)
     feed = np.where(feed > 0, feed, motion.max_feed_mm_min)
     feed[kind == RAPID] = motion.rapid_mm_min
-    length = np.linalg.norm(end - start, axis=1)
+    step = end - start
+    length = np.sqrt(step[:, 0] * step[:, 0] + step[:, 1] * step[:, 1] + step[:, 2] * step[:, 2])
+    del step
     arc = np.flatnonzero((kind == ARC_CW) | (kind == ARC_CCW))
-    length[arc] = arc_length(start[arc], end[arc], center[arc], np.array(PLANE_AXES)[plane[arc]], turn[arc])
+    length[arc] = arc_length(start.take(arc, axis=0), end.take(arc, axis=0), center.take(arc, axis=0),
+                             np.array(PLANE_AXES)[plane[arc]], turn[arc])
     time = move_times(length, feed, motion.accel_mm_s2)
     dwell = kind == DWELL
-    time[dwell] = ops.value[rows][dwell]
+    time[dwell] = value[dwell]
     feed[dwell] = 0.0
     source, device = ops.line[rows], device_first[rows]
     return Toolpath(start, end, kind, center, plane, turn, source, device, feed, length, time)
