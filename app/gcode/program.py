@@ -24,6 +24,7 @@ from .diagnostics import ERROR, WARNING, Diagnostic, Report
 from .moves import moves_of
 from .ops import OpBuffer, Ops
 from .render import render
+from .source import Lines
 from .toolpath import Toolpath, build
 
 
@@ -32,7 +33,7 @@ class Program:
     """A loaded G-code program (see the module docstring)."""
 
     name: str
-    source_lines: list[str]
+    lines: Lines
     diagnostics: list[Diagnostic]
     ops: Ops
     toolpath: Toolpath
@@ -41,8 +42,13 @@ class Program:
     _render: tuple | None = field(default=None, repr=False)
 
     def __repr__(self) -> str:
-        return (f"Program({self.name!r}, {len(self.source_lines)} lines, {len(self.toolpath)} moves, "
+        return (f"Program({self.name!r}, {len(self.lines)} lines, {len(self.toolpath)} moves, "
                 f"{len(self.errors)} errors, {len(self.warnings)} warnings)")
+
+    @property
+    def source_lines(self) -> list[str]:
+        """The program's lines as read (split on first use)."""
+        return self.lines.as_list()
 
     @property
     def errors(self) -> list[Diagnostic]:
@@ -100,7 +106,7 @@ def _empty(name: str, message: str, profile: MachineProfile) -> Program:
     return program
 
 
-def _interpret(lines: list[str], data: list[bytes], name: str, profile: MachineProfile) -> Program:
+def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfile) -> Program:
     """Interpret ``lines``; ``data`` holds their bytes, handed over (emptied) to free them early."""
     scan = bulk.scan(data.pop(), len(lines))
     report = Report()
@@ -121,7 +127,7 @@ def load_text(text: str, name: str = "<text>", profile: MachineProfile | None = 
     if "\x00" in text:
         return _empty(name, "not a text file (it contains NUL bytes)", profile)
     data = [text.encode("utf-8", "replace")]  # a \r is a space to the fast path
-    return _interpret(_split(text), data, name, profile)
+    return _interpret(Lines(_split(text)), data, name, profile)
 
 
 def load(path: str | Path, profile: MachineProfile | None = None) -> Program:
@@ -134,12 +140,14 @@ def load(path: str | Path, profile: MachineProfile | None = None) -> Program:
         return _empty(str(path), f"cannot read {path}: {exc.strerror or exc}", profile)
     if b"\x00" in raw:
         return _empty(str(path), "not a text file (it contains NUL bytes)", profile)
-    try:
-        lines = _split(raw.decode("utf-8"))
-    except UnicodeDecodeError as exc:
-        line = raw.count(b"\n", 0, exc.start) + 1
-        return _empty(str(path), f"not a UTF-8 text file (bad byte at line {line}, offset {exc.start})",
-                      profile)
+    if not raw.isascii():  # ASCII is UTF-8; anything else must decode
+        try:
+            raw.decode("utf-8")
+        except UnicodeDecodeError as exc:
+            line = raw.count(b"\n", 0, exc.start) + 1
+            return _empty(str(path), f"not a UTF-8 text file (bad byte at line {line}, offset {exc.start})",
+                          profile)
+    lines = Lines(data=raw)  # split on first use, not here
     data = [raw]  # valid UTF-8: the bytes the fast path reads
     del raw
     return _interpret(lines, data, str(path), profile)
