@@ -45,8 +45,6 @@ on a pty; ``sim://`` lends its own clock), ``shutdown()``.
 from __future__ import annotations
 
 import contextlib
-import ctypes
-import sys
 
 from PySide6.QtCore import QObject, Qt, QThread, QTimer, Signal, Slot
 
@@ -55,25 +53,6 @@ from app.comm.events import FrameEvent, LogEvent
 from app.comm.listener import SessionListener
 from app.comm.session import Session
 from app.comm.transport import open_transport
-
-
-def _guard_refcounts() -> bool:
-    """shiboken6 6.12 on Python < 3.12 drops a reference to None/True/False per ``emit()``
-    (and some void calls), so a busy worker aborts ("bool_dealloc") after a few thousand
-    signals. Make those constants practically immortal, as Python 3.12 does (the same
-    guard as ``app.ui._pyside_guard``; comm may not import ui)."""
-    import shiboken6
-
-    if sys.version_info >= (3, 12) or tuple(shiboken6.__version_info__[:2]) != (6, 12):
-        return False
-    for constant in (None, True, False):
-        count = ctypes.c_ssize_t.from_address(id(constant))
-        if count.value < 1 << 40:
-            count.value += 1 << 50
-    return True
-
-
-_guard_refcounts()
 
 SLOT_NAMES = frozenset({
     "connect_to", "disconnect_from", "send_command", "start_job", "pause", "resume", "stop",
