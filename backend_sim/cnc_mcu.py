@@ -17,22 +17,9 @@ import random
 from collections.abc import Callable
 from dataclasses import dataclass
 
+from app.comm.deframer import Deframer, Dropped, Realtime
 from app.comm.frame import Ack as AckFrame
-from app.comm.frame import (
-    Alarm,
-    Command,
-    Data,
-    Deframer,
-    Dropped,
-    Error,
-    Finished,
-    Frame,
-    Log,
-    Nak,
-    Ok,
-    Realtime,
-    Status,
-)
+from app.comm.frame import Alarm, Command, Data, Error, Finished, Frame, Log, Nak, Ok, Status
 from app.profile import MachineProfile
 from backend_sim import cnc_commands
 from backend_sim.exec_log import ExecLog

@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import enum
 
+from app.comm.deframer import Deframer, Dropped, Realtime
 from app.comm.frame import (
     FEED_HOLD,
     STOP_FLUSH,
@@ -29,14 +30,11 @@ from app.comm.frame import (
     Alarm,
     Command,
     Data,
-    Deframer,
-    Dropped,
     Error,
     Frame,
     Info,
     Nak,
     Ok,
-    Realtime,
     Status,
 )
 from backend_sim import main_sd

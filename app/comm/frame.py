@@ -5,15 +5,15 @@ CCCC is CRC-16/CCITT-FALSE of BODY in upper-case hex. This module only encodes,
 decodes and deframes; it knows nothing of sessions, threads or Qt.
 
 ``encode(frame) -> bytes`` and ``decode(line) -> Frame`` are exact inverses for
-every frame kind. ``Deframer`` turns arbitrary byte chunks into frames, real-time
-bytes and counted drops.
+every frame kind. ``app.comm.deframer.Deframer`` turns arbitrary byte chunks into
+frames, real-time bytes and counted drops.
 """
 
 from __future__ import annotations
 
 import binascii
 import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import ClassVar
 
 MAX_FRAME = 96
@@ -365,137 +365,3 @@ def decode(line: bytes) -> Frame:
 def encode(frame: Frame) -> bytes:
     """Frame -> wire bytes ``BODY*CCCC\\n``."""
     return frame.encode()
-
-
-# --------------------------------------------------------------------------- deframing
-
-
-@dataclass
-class DeframerStats:
-    """Counts of what a Deframer dropped, by reason."""
-
-    frames: int = 0
-    bad: int = 0
-    overlength: int = 0
-    timeouts: int = 0
-    realtime: int = 0
-
-
-@dataclass(frozen=True)
-class Dropped:
-    """A line that was not a valid frame; ``reason`` says why (for the log and for ``N``)."""
-
-    reason: str
-    raw: bytes
-
-
-@dataclass(frozen=True)
-class Realtime:
-    """A real-time byte (``!`` or 0x18) seen outside any frame."""
-
-    byte: bytes
-
-
-@dataclass
-class Deframer:
-    """Incremental deframer: ``feed(chunk, now)`` -> list of Frame | Dropped | Realtime.
-
-    Chunks may split frames anywhere. ``\\r`` is ignored. A line over 96 bytes is
-    dropped (once, when its newline arrives); a partial line with no newline for
-    ``PARTIAL_TIMEOUT`` seconds is dropped. With ``realtime=True`` (the machine's
-    side) ``!`` and 0x18 are taken out of the stream wherever they occur.
-    """
-
-    realtime: bool = False
-    stats: DeframerStats = field(default_factory=DeframerStats)
-    _buf: bytearray = field(default_factory=bytearray)
-    _started: float | None = None
-    _overlong: bool = False
-
-    def feed(self, chunk: bytes, now: float) -> list[Frame | Dropped | Realtime]:
-        out: list[Frame | Dropped | Realtime] = self.poll(now)
-        parts = chunk.split(b"\n")
-        for line in parts[:-1]:
-            if self.realtime:
-                line = self._take_realtime(line, out)
-            if self._buf or self._overlong:
-                self._append(line, now)
-                out.append(self._finish())
-            else:
-                self._whole(line, out)
-        line = self._take_realtime(parts[-1], out) if self.realtime else parts[-1]
-        self._append(line, now)
-        return out
-
-    def _whole(self, line: bytes, out: list) -> None:
-        """A complete line with nothing buffered before it (the common case, no copy)."""
-        if b"\r" in line:
-            line = line.replace(b"\r", b"")
-        if not line:
-            return
-        if len(line) >= MAX_FRAME:
-            self.stats.overlength += 1
-            out.append(Dropped("over-length frame", line[:MAX_FRAME]))
-            return
-        try:
-            frame = decode(line)
-        except FrameError as exc:
-            self.stats.bad += 1
-            out.append(Dropped(str(exc), line))
-            return
-        self.stats.frames += 1
-        out.append(frame)
-
-    def poll(self, now: float) -> list[Frame | Dropped | Realtime]:
-        """Drop a partial frame that has waited too long for its newline."""
-        if self._started is not None and now - self._started > PARTIAL_TIMEOUT:
-            raw = bytes(self._buf)
-            self._reset()
-            self.stats.timeouts += 1
-            return [Dropped("partial frame timed out", raw)]
-        return []
-
-    def pending(self) -> int:
-        """Bytes of a partial frame waiting for its newline."""
-        return len(self._buf)
-
-    def _take_realtime(self, line: bytes, out: list) -> bytes:
-        if FEED_HOLD not in line and STOP_FLUSH not in line:
-            return line
-        for byte in (FEED_HOLD, STOP_FLUSH):
-            if byte in line:
-                self.stats.realtime += line.count(byte)
-                out.extend(Realtime(byte) for _ in range(line.count(byte)))
-                line = line.replace(byte, b"")
-        return line
-
-    def _append(self, data: bytes, now: float) -> None:
-        data = data.replace(b"\r", b"")
-        if not data:
-            return
-        if self._started is None:
-            self._started = now
-        if len(self._buf) + len(data) >= MAX_FRAME:
-            self._overlong = True
-            self._buf = self._buf[:MAX_FRAME]
-        else:
-            self._buf += data
-
-    def _finish(self) -> Frame | Dropped:
-        raw, overlong = bytes(self._buf), self._overlong
-        self._reset()
-        if overlong:
-            self.stats.overlength += 1
-            return Dropped("over-length frame", raw)
-        try:
-            frame = decode(raw)
-        except FrameError as exc:
-            self.stats.bad += 1
-            return Dropped(str(exc), raw)
-        self.stats.frames += 1
-        return frame
-
-    def _reset(self) -> None:
-        self._buf = bytearray()
-        self._started = None
-        self._overlong = False

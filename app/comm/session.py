@@ -22,6 +22,7 @@ from __future__ import annotations
 import time
 from collections.abc import Callable
 
+from app.comm import deframer as dfr
 from app.comm import frame as fr
 from app.comm.commands import CommandQueue
 from app.comm.events import (
@@ -63,7 +64,7 @@ class Session(JobControl):
         self.link = LinkMonitor(link.heartbeat_s, link.degraded_s, link.lost_s)
         self.commands = CommandQueue()
         self.realtime = RealtimeRepeater()
-        self.deframer = fr.Deframer()
+        self.deframer = dfr.Deframer()
         self.rtt = RttEstimator()
         self.stream: Stream | None = None
         self.status: StatusEvent | None = None
@@ -88,7 +89,7 @@ class Session(JobControl):
     def attach(self, write: Callable[[bytes], object]) -> None:
         """A transport was opened: start talking (ask for a status)."""
         self._write = write
-        self.deframer = fr.Deframer()
+        self.deframer = dfr.Deframer()
         self.realtime.clear()
         self._last_progress = (None, float("-inf"))
         self.link.attach(self.clock())
@@ -191,12 +192,12 @@ class Session(JobControl):
 
     # ------------------------------------------------------------------ incoming
 
-    def _receive(self, item: fr.Frame | fr.Dropped | fr.Realtime, now: float) -> None:
-        if isinstance(item, fr.Dropped):
+    def _receive(self, item: fr.Frame | dfr.Dropped | dfr.Realtime, now: float) -> None:
+        if isinstance(item, dfr.Dropped):
             text = item.raw.decode("ascii", "replace")
             self.listener.on_frame(FrameEvent("rx", "?", f"{item.reason}: {text!r}", ok=False))
             return
-        if isinstance(item, fr.Realtime):
+        if isinstance(item, dfr.Realtime):
             return
         self.link.heard(now)
         if self.link.update(now):

@@ -4,7 +4,8 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from app.comm.frame import Ack, Data, Deframer, Dropped, Error, Finished, Frame, Ok, seal
+from app.comm.deframer import Deframer, Dropped
+from app.comm.frame import Ack, Data, Error, Finished, Frame, Ok, seal
 
 HOMED_TIMEOUT = 120.0
 

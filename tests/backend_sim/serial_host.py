@@ -10,7 +10,8 @@ from pathlib import Path
 
 import serial
 
-from app.comm.frame import Data, Deframer, Dropped, Error, Frame, Ok, seal
+from app.comm.deframer import Deframer, Dropped
+from app.comm.frame import Data, Error, Frame, Ok, seal
 
 FAST_PROFILE = "[motion]\nhoming_mm_min = 900\n"
 

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from app.comm import deframer as dfr
 from app.comm import frame as fr
 from app.comm.listener import SessionListener
 from app.comm.session import Session
@@ -69,8 +70,8 @@ class Harness:
         """Frames and real-time bytes written since the last take, decoded."""
         data, self.wire[:] = bytes(self.wire), b""
         out = []
-        for item in fr.Deframer(realtime=True).feed(data, 0.0):
-            out.append(item.byte if isinstance(item, fr.Realtime) else item)
+        for item in dfr.Deframer(realtime=True).feed(data, 0.0):
+            out.append(item.byte if isinstance(item, dfr.Realtime) else item)
         return out
 
     def take_data(self) -> list[int]:

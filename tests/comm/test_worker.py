@@ -5,6 +5,7 @@ import threading
 import pytest
 from PySide6.QtCore import QObject, Signal
 
+from app.comm import deframer as dfr
 from app.comm import frame as fr
 from app.comm.events import JobEvent, StatusEvent
 from app.comm.worker import SerialController, SerialWorker
@@ -16,7 +17,7 @@ class EchoMachine:
     def __init__(self) -> None:
         self._lock = threading.Lock()
         self._out = bytearray()
-        self._rx = fr.Deframer(realtime=True)
+        self._rx = dfr.Deframer(realtime=True)
         self.closed = False
         self.timeout = 0
         self.fail_reads = False
