@@ -58,7 +58,7 @@ def _scan_chunk(raw: bytes, n_lines: int):
     clean = quick(text)
     if clean is not None:  # nearly every chunk: no line needs the general lexer
         tk, line = clean
-        return np.zeros(n_lines, bool), line, b[tk.letters] & 0xDF, numbers(text, b, tk)
+        return np.zeros(n_lines, bool), line, b[tk.letters], numbers(text, b, tk)
     tk = tokenize(b)
     odd = np.zeros(n_lines, bool)
     if len(tk.bad):
@@ -69,7 +69,7 @@ def _scan_chunk(raw: bytes, n_lines: int):
     if len(tk.bad) or len(tk.letters) != len(tk.starts):  # cannot happen once blanked; be safe
         return np.ones(n_lines, bool), *(np.empty(0, t) for t in (np.int64, np.uint8, np.float64))
     line = np.searchsorted(tk.newlines, tk.letters)
-    return odd, line, b[tk.letters] & 0xDF, numbers(text, b, tk)
+    return odd, line, b[tk.letters], numbers(text, b, tk)
 
 
 def _blank_lines(text: bytes, newlines: np.ndarray, odd: np.ndarray) -> bytes:
@@ -84,20 +84,23 @@ _COLUMN = np.full(256, -1, np.int8)  # word letter -> column of the table; N is 
 for _i, _c in enumerate(COLUMNS):
     _COLUMN[[ord(_c), ord(_c.lower())]] = _i
 _COLUMN[[ord("N"), ord("n")]] = -2
+_COLUMN_TABLE = _COLUMN.tobytes()
 
 
 def _fill(table: np.ndarray, simple: np.ndarray, base: int, odd, line, letters, values) -> None:
     """Write one chunk's words into the table (one scatter); flag other letters and repeats."""
     n = len(odd)
     ok = ~odd
-    col = np.take(_COLUMN, letters)
-    ok[line[col == -1]] = False
-    keep = col >= 0
-    line, col = line[keep], col[keep]
+    col = np.frombuffer(letters.tobytes().translate(_COLUMN_TABLE), np.int8)
+    if (col < 0).any():  # N words (dropped) or letters a simple line never holds
+        ok[line[col == -1]] = False
+        keep = col >= 0
+        line, col, values = line[keep], col[keep], values[keep]
     flat = line * len(COLUMNS) + col
     counts = np.bincount(flat, minlength=n * len(COLUMNS))
-    ok[flat[counts[flat] > 1] // len(COLUMNS)] = False
-    table[col, base + line] = values[keep]
+    if counts.max(initial=0) > 1:
+        ok[flat[counts[flat] > 1] // len(COLUMNS)] = False
+    table.reshape(-1)[col.astype(np.intp) * table.shape[1] + (base + line)] = values
     simple[base : base + n] = ok
 
 

@@ -24,7 +24,6 @@ _CLASS[np.frombuffer(b"0123456789", np.uint8)] = DIGIT
 _CLASS[np.frombuffer(b"+-", np.uint8)] = SIGN
 for _c in range(26):
     _CLASS[[65 + _c, 97 + _c]] = LETTER
-_ALLOWED = bytes(np.flatnonzero(_CLASS != BAD).astype(np.uint8))
 _CLASS_TABLE = bytes(_CLASS)
 _NUMBER = (DOT, DIGIT, SIGN)
 _BAD_PAIR = np.zeros(7 * 7, bool)  # (class before) * 7 + (class after) -> never in a clean chunk
@@ -34,6 +33,7 @@ for _a, _b in [(LETTER, NL), (LETTER, MARK), (LETTER, LETTER), (SIGN, NL), (SIGN
 for _n in _NUMBER:
     _BAD_PAIR[[NL * 7 + _n, MARK * 7 + _n, _n * 7 + SIGN]] = True  # a number needs its letter;
     # a sign only comes right after the letter
+_BAD_PAIR[BAD * 7 : BAD * 7 + 7] = _BAD_PAIR[BAD::7] = True  # a byte no clean line holds
 _GOOD_PAIRS = bytes(np.flatnonzero(~_BAD_PAIR).astype(np.uint8))
 
 
@@ -41,10 +41,8 @@ def quick(text: bytes) -> tuple[Tokens, np.ndarray] | None:
     """(tokens, line of every letter) of a clean chunk, or ``None`` (use ``tokenize``).
 
     The tokens' ``newlines`` and ``bad`` are ``None``: a clean chunk needs neither."""
-    if text.translate(None, _ALLOWED) or not text:
-        return None
     cls = np.frombuffer(text.translate(_CLASS_TABLE), np.uint8)
-    if cls[0] not in (NL, MARK, LETTER):
+    if len(cls) < 2 or cls[0] not in (NL, MARK, LETTER) or cls[-1] != NL:
         return None
     pair = cls[:-1] * np.uint8(7)
     pair += cls[1:]
