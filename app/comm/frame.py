@@ -248,14 +248,28 @@ def _int(text: str, what: str, minimum: int = 0) -> int:
     return int(text)
 
 
+_NUM = re.compile(r"-?\d{1,6}(?:\.\d{1,3})?")
+_WORD = re.compile(r"[A-Z][A-Z0-9_]*")
+_BOOT = re.compile(r"[0-9A-F]{1,8}")
+_SEQ, _COUNT = r"(-1|\d{1,10})", r"(\d{1,10})"
+_STATUS = re.compile(
+    " ".join(
+        [_BOOT.pattern.join("()"), "|".join(STATES).join("()")]
+        + [_NUM.pattern.join("()")] * 3 + [_SEQ] * 2 + [_COUNT] * 2
+        + [f"(-|[{FLAG_LETTERS}]+)"]
+    )
+)
+"""A well-formed status body after ``S ``: the hot path; anything else is parsed field by field."""
+
+
 def _num(text: str, what: str) -> float:
-    if not re.fullmatch(r"-?\d{1,6}(\.\d{1,3})?", text):
+    if not _NUM.fullmatch(text):
         raise FrameError(f"bad {what} {text!r}")
     return float(text)
 
 
 def _word(text: str, what: str) -> str:
-    if not re.fullmatch(r"[A-Z][A-Z0-9_]*", text):
+    if not _WORD.fullmatch(text):
         raise FrameError(f"bad {what} {text!r}")
     return text
 
@@ -308,8 +322,20 @@ def _error(rest: str) -> Error:
 
 
 def _status(rest: str) -> Status:
+    match = _STATUS.fullmatch(rest)
+    if match:
+        boot, state, x, y, z, acc, done, free, rpm, flags = match.groups()
+        return Status(
+            boot, state, float(x), float(y), float(z), int(acc), int(done), int(free), int(rpm),
+            "" if flags == NO_FLAGS else flags,
+        )
+    return _status_fields(rest)
+
+
+def _status_fields(rest: str) -> Status:
+    """The slow path of ``_status``: names the first bad field."""
     f = _exact(rest, 10, "S")
-    if not re.fullmatch(r"[0-9A-F]{1,8}", f[0]):
+    if not _BOOT.fullmatch(f[0]):
         raise FrameError(f"bad boot id {f[0]!r}")
     if f[1] not in STATES:
         raise FrameError(f"bad state {f[1]!r}")

@@ -1,6 +1,8 @@
 """Golden byte vectors and error cases for the frame codec (docs/protocol.md)."""
 
 import pytest
+from hypothesis import given
+from hypothesis import strategies as st
 
 from app.comm import frame as fr
 
@@ -72,3 +74,21 @@ def test_every_single_bit_flip_is_detected():
             bad[i] ^= 1 << bit
             with pytest.raises(fr.FrameError):
                 fr.decode(bytes(bad))
+
+
+_coord = st.decimals(min_value=-999999, max_value=999999, places=3).map(float)
+
+
+@given(
+    st.builds(
+        fr.Status,
+        boot=st.text("0123456789ABCDEF", min_size=1, max_size=8),
+        state=st.sampled_from(fr.STATES),
+        x=_coord, y=_coord, z=_coord,
+        acc=st.integers(-1, 10**9), done=st.integers(-1, 10**9),
+        free=st.integers(0, 10**9), rpm=st.integers(0, 10**9),
+        flags=st.text(fr.FLAG_LETTERS, max_size=6),
+    )
+)
+def test_any_status_round_trips(status):
+    assert fr.decode(fr.encode(status)) == status
