@@ -19,9 +19,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from .clean import quick
+from .source import chunks as chunk_table
 from .tokens import numbers, tokenize
 
-CHUNK_BYTES = 1 << 18
 COLUMNS = "GXYZIJFMS"  # the words of a simple line (and N, read and dropped)
 _COMMENT = re.compile(rb"\([^()\n]*\)")
 COMMENT_MARK = b"\x01"  # a comment separates words: "X1(c)0" is not X10
@@ -35,16 +35,6 @@ class Scan:
     g: np.ndarray  # int8 (n,), motion code 0-3, -1 when none
     units: np.ndarray  # int8 (n,), 1 for G20, 0 for G21, -1 when none
     values: dict[str, np.ndarray]  # letter X Y Z I J F M S -> float64 (n,), NaN when absent
-
-
-def _chunks(data: bytes):
-    """(start, end) byte ranges of about CHUNK_BYTES, each ending after a newline."""
-    start = 0
-    while start < len(data):
-        end = data.find(b"\n", start + CHUNK_BYTES)
-        end = len(data) if end < 0 else end + 1
-        yield start, end
-        start = end
 
 
 def _scan_chunk(raw: bytes, n_lines: int):
@@ -119,16 +109,16 @@ def _classify(result: Scan, table: np.ndarray) -> None:
     result.simple &= ~(bad_m | (spindle & moving))
 
 
-def scan(data: bytes, n_lines: int) -> Scan:
-    """Scan ``data`` (``n_lines`` lines joined by newlines) with the fast path."""
+def scan(data: bytes, n_lines: int, chunks: list | None = None) -> Scan:
+    """Scan ``data`` (``n_lines`` lines joined by newlines) with the fast path;
+    ``chunks``, when given, is ``source.chunks(data)`` (data ending with a newline)."""
     table = np.full((len(COLUMNS), n_lines), np.nan)  # one contiguous row per letter
     simple = np.zeros(n_lines, bool)
     if not data.endswith(b"\n"):
-        data += b"\n"
+        data, chunks = data + b"\n", None
     base = 0
-    for start, end in _chunks(data):
+    for start, end, count in chunks or chunk_table(data):
         raw = data[start:end]
-        count = raw.count(b"\n")
         _fill(table, simple, base, *_scan_chunk(raw, count))
         base += count
     result = Scan(simple, np.empty(0, np.int8), np.empty(0, np.int8),

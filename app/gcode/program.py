@@ -108,7 +108,10 @@ def _empty(name: str, message: str, profile: MachineProfile) -> Program:
 
 def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfile) -> Program:
     """Interpret ``lines``; ``data`` holds their bytes, handed over (emptied) to free them early."""
-    scan = bulk.scan(data.pop(), len(lines))
+    raw = data.pop()
+    n = len(lines)  # reuse the chunks Lines already counted; otherwise scan makes its own
+    scan = bulk.scan(raw, n, lines.chunks) if lines.chunks else bulk.scan(raw, n)
+    del raw
     report = Report()
     buffer = OpBuffer()
     runner.run(lines, scan, buffer, report)

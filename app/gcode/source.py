@@ -14,6 +14,20 @@ from collections.abc import Sequence
 
 import numpy as np
 
+CHUNK_BYTES = 1 << 18
+
+
+def chunks(data: bytes) -> list[tuple[int, int, int]]:
+    """(start, end, newlines) of byte ranges of about CHUNK_BYTES, each ending after a
+    newline (the last one at the end of ``data``)."""
+    out, start = [], 0
+    while start < len(data):
+        end = data.find(b"\n", start + CHUNK_BYTES)
+        end = len(data) if end < 0 else end + 1
+        out.append((start, end, data.count(b"\n", start, end)))
+        start = end
+    return out
+
 
 class Lines(Sequence):
     """Source lines over a list or over UTF-8 bytes (see the module docstring)."""
@@ -21,9 +35,10 @@ class Lines(Sequence):
     def __init__(self, lines: list[str] | None = None, data: bytes = b""):
         self._list = lines
         self._data = data
-        self._ends: np.ndarray | None = None
+        self.chunks = chunks(data) if lines is None else []  # also the fast path's chunks
+        self._firsts = np.cumsum([0] + [c[2] for c in self.chunks])  # first line of each chunk
         if lines is None:
-            self._count = data.count(b"\n") + (0 if data.endswith(b"\n") or not data else 1)
+            self._count = int(self._firsts[-1]) + (0 if data.endswith(b"\n") or not data else 1)
         else:
             self._count = len(lines)
 
@@ -37,10 +52,14 @@ class Lines(Sequence):
             i += self._count
         if not 0 <= i < self._count:
             raise IndexError(i)
-        if self._ends is None:
-            self._ends = np.flatnonzero(np.frombuffer(self._data, np.uint8) == 10)
-        start = int(self._ends[i - 1]) + 1 if i else 0
-        end = int(self._ends[i]) if i < len(self._ends) else len(self._data)
+        k = int(np.searchsorted(self._firsts, i, "right")) - 1  # the chunk holding line i
+        if k >= len(self.chunks):  # the last line, with no newline after it
+            start, end = self._data.rfind(b"\n") + 1, len(self._data)
+        else:
+            begin, stop, _ = self.chunks[k]
+            ends = np.flatnonzero(np.frombuffer(self._data, np.uint8, stop - begin, begin) == 10) + begin
+            j = i - int(self._firsts[k])
+            start, end = (int(ends[j - 1]) + 1 if j else begin), int(ends[j])
         line = self._data[start:end].decode("utf-8")
         return line[:-1] if line.endswith("\r") else line
 
@@ -54,5 +73,5 @@ class Lines(Sequence):
             if "\r" in text:
                 lines = [line[:-1] if line.endswith("\r") else line for line in lines]
             self._list = lines
-            self._data, self._ends = b"", None
+            self._data = b""
         return self._list
