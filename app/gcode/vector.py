@@ -76,42 +76,48 @@ class _Run:
         return event, value, on, speed
 
 
-def _arc_bad(start, end, center, inch) -> np.ndarray:
-    """LinuxCNC's refusals of centre-format arcs; coordinates in program units."""
-    r1 = np.hypot(center[:, 0] - start[:, 0], center[:, 1] - start[:, 1])
-    r2 = np.hypot(center[:, 0] - end[:, 0], center[:, 1] - end[:, 1])
-    zero = (r1 < np.where(inch, RADIUS_TOL[True], RADIUS_TOL[False])) | (r2 < np.where(inch, RADIUS_TOL[True],
-                                                                                      RADIUS_TOL[False]))
+def _arc_bad(sx, sy, ex, ey, cx, cy, inch) -> np.ndarray:
+    """LinuxCNC's refusals of centre-format arcs; coordinates (columns) in program units."""
+    r1 = np.hypot(cx - sx, cy - sy)
+    r2 = np.hypot(cx - ex, cy - ey)
+    tol = np.where(inch, RADIUS_TOL[True], RADIUS_TOL[False])
+    zero = (r1 < tol) | (r2 < tol)
     err, r = np.abs(r1 - r2), np.maximum(r1, r2)
-    return zero | np.where(inch, spiral_refused(err, r, True), spiral_refused(err, r, False))
+    refused = spiral_refused(err, r, False)
+    if inch.any():
+        refused = np.where(inch, spiral_refused(err, r, True), refused)
+    return zero | refused
 
 
 def _geometry(run: _Run, stop: int, rows: np.ndarray, state: State):
-    """End points, kinds and centres of the rows; the first arc LinuxCNC refuses."""
+    """End points (one column per axis), and per row end, centre and whether LinuxCNC
+    refuses the arc."""
+    scale = run.scale[:stop]
     if state.absolute:
-        end = np.stack([_ffill(run.v[c][:stop] * run.scale[:stop], state.pos[i])
-                        for i, c in enumerate("XYZ")], axis=1)
+        end = [_ffill(run.v[c][:stop] * scale, state.pos[i]) for i, c in enumerate("XYZ")]
     else:  # G91: every axis word is a step from where the tool is
-        steps = [np.nan_to_num(run.v[c][:stop] * run.scale[:stop]) for c in "XYZ"]
-        end = np.stack([np.cumsum(np.concatenate(([state.pos[i]], steps[i])))[1:] for i in range(3)], axis=1)
-    ends = end[rows]
-    starts = np.empty_like(ends)
-    if len(rows):
-        starts[0] = state.pos
-        starts[1:] = ends[:-1]
-    is_arc = run.arc[rows] & (run.to_be[rows] >= 0)
-    center = np.full_like(ends, np.nan)
-    sel = np.flatnonzero(is_arc)
+        steps = [np.nan_to_num(run.v[c][:stop] * scale) for c in "XYZ"]
+        end = [np.cumsum(np.concatenate(([state.pos[i]], steps[i])))[1:] for i in range(3)]
+    ends = np.empty((len(rows), 3))
+    starts = []
+    for i in range(3):
+        column = end[i].take(rows)
+        ends[:, i] = column
+        starts.append(np.concatenate(([state.pos[i]], column[:-1])) if len(rows) else column)
+    sel = np.flatnonzero(run.arc[rows] & (run.to_be[rows] >= 0))
     arc_rows = rows[sel]
-    ij = np.stack([run.v["I"][arc_rows], run.v["J"][arc_rows]], axis=1)
-    ij = np.where(np.isnan(ij), 0.0, ij)
-    k = run.scale[arc_rows, None]  # centre and check in program units, as motion.py does
-    start_u, end_u = starts[sel, :2] / k, ends[sel, :2] / k
-    center_u = start_u + ij
-    center[sel, :2] = center_u * k
-    center[sel, 2] = starts[sel, 2]
+    i_word, j_word = run.v["I"][arc_rows], run.v["J"][arc_rows]
+    k = run.scale[arc_rows]  # centre and check in program units, as motion.py does
+    sx, sy = starts[0][sel] / k, starts[1][sel] / k
+    ex, ey = ends[:, 0][sel] / k, ends[:, 1][sel] / k
+    cx = sx + np.where(np.isnan(i_word), 0.0, i_word)
+    cy = sy + np.where(np.isnan(j_word), 0.0, j_word)
+    center = np.full_like(ends, np.nan)
+    center[:, 0][sel] = cx * k
+    center[:, 1][sel] = cy * k
+    center[:, 2][sel] = starts[2][sel]
     bad = np.zeros(len(rows), bool)
-    bad[sel] = _arc_bad(start_u, end_u, center_u, run.inch[arc_rows])
+    bad[sel] = _arc_bad(sx, sy, ex, ey, cx, cy, run.inch[arc_rows])
     return end, ends, center, bad
 
 
@@ -136,7 +142,7 @@ def run(scan: Scan, a: int, b: int, state: State, ops: OpBuffer) -> tuple[State,
     new = state.copy()
     if stop > 0:
         last = stop - 1
-        new.pos = [float(x) for x in end[last]]
+        new.pos = [float(column[last]) for column in end]
         new.feed = float(feed[last])
         new.motion = None if r.mode[last] < 0 else int(r.mode[last])
         new.inch = bool(r.inch[last])
