@@ -19,7 +19,7 @@ import numpy as np
 
 MAX_TOKEN = 15  # characters of a number read here (exact in an int64 and a double)
 _POW10 = np.array([float(10**i) for i in range(MAX_TOKEN + 1)])
-_NUMBERS_ONLY = bytes(c if chr(c) in "0123456789.+-" else 32 for c in range(256))
+_NUMBERS_ONLY = bytes(c if chr(c) in "0123456789.+-" else 32 for c in range(256))  # the sign is parsed too
 DOT, MINUS, PLUS, NEWLINE = ord("."), ord("-"), ord("+"), ord("\n")
 
 
@@ -102,6 +102,8 @@ def numbers(text: bytes, b: np.ndarray, tokens: Tokens) -> np.ndarray:
     digits = text.translate(_NUMBERS_ONLY, b".")
     if not len(tokens.starts):
         return np.empty(0)
-    mantissa = np.fromstring(digits, dtype=np.int64, sep=" ")
-    value = mantissa / _POW10[tokens.decimals]
-    return np.copysign(value, np.where(b[tokens.starts] == MINUS, -1.0, 1.0))
+    mantissa = np.fromstring(digits, dtype=np.int64, sep=" ")  # signed
+    value = mantissa / _POW10[tokens.decimals]  # a quotient of exact numbers: correctly rounded
+    zero = np.flatnonzero(mantissa == 0)
+    value[zero[b[tokens.starts[zero]] == MINUS]] = -0.0  # "-0.0" keeps its sign, as float() does
+    return value
