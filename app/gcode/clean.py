@@ -53,13 +53,18 @@ def quick(text: bytes) -> tuple[Tokens, np.ndarray] | None:
     kind = cls[where]
     del cls
     at = np.flatnonzero(kind == LETTER)
-    dotted = kind[at + 1] == DOT
+    after = at + 1
+    dotted = kind[after] == DOT
     if np.count_nonzero(kind == DOT) != np.count_nonzero(dotted):  # a number with two dots
         return None
     letters = where[at]
-    ends = where[at + 1 + dotted]  # the letter or line end after each number
+    nxt = where[after]  # the dot, or the end of a number without one
+    after += dotted
+    ends = where[after]  # the letter or line end after each number
     if len(ends) and int((ends - letters).max()) > MAX_TOKEN + 1:
         return None
-    decimals = np.where(dotted, ends - where[at + 1] - 1, 0)
+    decimals = ends - nxt
+    decimals -= 1
+    decimals *= dotted
     line = np.cumsum(kind == NL, dtype=np.int32)[at]
     return Tokens(letters, letters + 1, ends - 1, decimals, None, None), line
