@@ -23,10 +23,12 @@ from .state import State
 
 def _ffill(values: np.ndarray, first: float) -> np.ndarray:
     """``values`` with NaNs replaced by the last number before them (``first`` at start)."""
-    arr = np.concatenate(([first], values))
-    idx = np.where(np.isnan(arr), 0, np.arange(len(arr)))
+    arr = np.empty(len(values) + 1)
+    arr[0], arr[1:] = first, values
+    idx = np.arange(len(arr), dtype=np.int32)  # a run is at most RUN_MAX lines
+    idx *= ~np.isnan(arr)
     np.maximum.accumulate(idx, out=idx)
-    return arr[idx][1:]
+    return arr.take(idx[1:])
 
 
 def _first(mask: np.ndarray) -> int:
