@@ -87,11 +87,13 @@ def sweep(start, end, center, turn):
     a0 = np.arctan2(start[:, 1] - center[:, 1], start[:, 0] - center[:, 0])
     a1 = np.arctan2(end[:, 1] - center[:, 1], end[:, 0] - center[:, 0])
     turn = np.asarray(turn)
-    ccw = np.mod(a1 - a0, 2 * np.pi)
-    ccw = np.where(ccw <= 1e-12, 2 * np.pi, ccw) + (np.abs(turn) - 1) * 2 * np.pi
-    cw = np.mod(a0 - a1, 2 * np.pi)
-    cw = np.where(cw <= 1e-12, 2 * np.pi, cw) + (np.abs(turn) - 1) * 2 * np.pi
-    return np.where(turn > 0, ccw, -cw)
+    ccw = turn > 0
+    step = a1 - a0
+    ang = np.empty_like(step)
+    np.mod(step, 2 * np.pi, out=ang, where=ccw)  # each arc's own direction only
+    np.mod(-step, 2 * np.pi, out=ang, where=~ccw)  # -(a1 - a0) is exactly a0 - a1
+    ang = np.where(ang <= 1e-12, 2 * np.pi, ang) + (np.abs(turn) - 1) * 2 * np.pi
+    return np.where(ccw, ang, -ang)
 
 
 def segments(radius, angle, tolerance: float):

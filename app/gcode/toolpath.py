@@ -127,7 +127,7 @@ def build(ops: Ops, device_first: np.ndarray, profile: MachineProfile) -> Toolpa
     del step
     arc = np.flatnonzero((kind == ARC_CW) | (kind == ARC_CCW))
     length[arc] = arc_length(start.take(arc, axis=0), end.take(arc, axis=0), center.take(arc, axis=0),
-                             np.array(PLANE_AXES)[plane[arc]], turn[arc])
+                             np.take(PLANE_AXES, plane[arc], axis=0), turn[arc])
     time = move_times(length, feed, motion.accel_mm_s2)
     dwell = kind == DWELL
     time[dwell] = value[dwell]
