@@ -3,8 +3,9 @@
 Builds (or reuses) ``bench/data/big.ngc`` from shifted copies of the Inkscape samples
 in ``resources/samples/*.ngc`` (each copy moved a little in X and Y, its ``%`` and
 ``M2``/``M30`` lines dropped, one ``M2`` at the end), then prints: the best of three
-wall-clock times of ``app.gcode.load`` (Toolpath included), the peak resident memory of
-a fresh process doing one load, the time to render the device lines (done on first
+wall-clock times of ``app.gcode.load`` (Toolpath included), the CPU time of each stage
+of one load (the steps of ``app.gcode.program._interpret``), the peak resident memory
+of a fresh process doing one load, the time to render the device lines (done on first
 use), and the time PyPI ``gcodeparser`` takes to parse the same file, with the ratio.
 Wall and CPU times are both printed: on a shared machine the CPU time of the process
 is the steadier figure. Figures are printed, never asserted.
@@ -16,6 +17,7 @@ import re
 import subprocess
 import sys
 import time
+from functools import partial
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -105,6 +107,35 @@ def _peak_mb(path: Path) -> tuple[int, int]:
     return int(out[0]), int(out[1])
 
 
+def _stages(path: Path) -> str:
+    """CPU seconds of each stage of one load, the steps of ``program._interpret``."""
+    from app.gcode import bulk, checks, normalize, runner
+    from app.gcode.diagnostics import Report
+    from app.gcode.ops import OpBuffer
+    from app.gcode.source import Lines
+    from app.gcode.toolpath import build
+    from app.profile import MachineProfile
+
+    profile, report, buffer, spent = MachineProfile(), Report(), OpBuffer(), {}
+
+    def step(name, fn):
+        started = time.process_time()
+        result = fn()
+        spent[name] = time.process_time() - started
+        return result
+
+    raw = step("read", path.read_bytes)
+    lines = step("lines", lambda: Lines(data=raw))
+    scan = step("scan", lambda: bulk.scan(raw, len(lines), lines.chunks))
+    step("interpret", partial(runner.run, lines, scan, buffer, report))
+    del scan  # as load does: the scan table is freed before the rest
+    ops = step("ops", buffer.finish)
+    step("checks", lambda: checks.run(ops, profile, lines, report))
+    plan = step("plan", lambda: normalize.plan(ops, profile.motion.arc_tolerance_mm))
+    step("toolpath", lambda: build(ops, plan.first, profile))
+    return ", ".join(f"{name} {cpu:.2f}" for name, cpu in spent.items()) + f" (sum {sum(spent.values()):.2f})"
+
+
 def _gcodeparser(text: str) -> None:
     from gcodeparser import parse_gcode_lines
 
@@ -125,6 +156,7 @@ def main() -> None:
     print(f"load -> Toolpath: {wall:.2f} s wall, {cpu:.2f} s CPU, best of 3 "
           f"({lines / wall / 1e6:.2f} M lines/s wall); "
           f"{len(tp):,} moves, {len(program.errors)} errors, {len(program.warnings)} warnings")
+    print(f"stages of one load, CPU s: {_stages(path)}")
     base, peak = _peak_mb(path)
     print(f"peak resident memory of one load: {peak} MB (python + numpy + app alone: {base} MB)")
     started = time.perf_counter()
