@@ -62,7 +62,8 @@ class MachineControls(QWidget):
         grid.addWidget(pause, 1, 1)
         grid.addWidget(self._button("resume", "Resume", self.resume_requested.emit), 2, 0)
         stop = self._button("stop", "STOP", self.stop_requested.emit, "stop and flush, at once")
-        stop.setStyleSheet("QPushButton { font-weight: bold; color: #e03030; }")
+        stop.setStyleSheet("QPushButton { font-weight: bold; color: #e03030; }"
+                           " QPushButton:disabled { color: #808080; }")
         grid.addWidget(stop, 2, 1)
         self.check_mode = QCheckBox("Check mode (dry run, no motion)")
         self.check_mode.toggled.connect(self.check_mode_toggled.emit)

@@ -12,8 +12,6 @@ import argparse
 import sys
 from pathlib import Path
 
-from app.ui import _pyside_guard  # noqa: F401 (must run before Qt objects exist)
-
 
 def parse_args(argv: list[str] | None) -> argparse.Namespace:
     parser = argparse.ArgumentParser(prog="cnc-gui", description="Desktop controller for a small CNC mill.")

@@ -6,6 +6,8 @@ program open, a program with errors, a bad SD name, not homed.
 
 from __future__ import annotations
 
+import gc
+
 from PySide6.QtCore import QObject
 
 from app.ui.program.summary import device_count
@@ -165,6 +167,9 @@ class OperatorActions(QObject):
         self.w.setWindowTitle(f"{loaded.path.name} — CNC mill controller")
         add_recent(self.w.qsettings, loaded.path)
         self.w.binder.refresh_enabled()
+        # A big program is millions of long-lived objects: keep the cyclic GC from
+        # re-scanning them every few seconds (each pass would stall the event loop).
+        gc.freeze()
         errors = list(loaded.program.errors)
         self.w.status.showMessage(
             f"Opened {loaded.path.name}: {len(loaded.program.source_lines):,} lines in "

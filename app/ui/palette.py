@@ -19,6 +19,10 @@ def dark_palette() -> QPalette:
     palette = QPalette()
     for role, colour in DARK.items():
         palette.setColor(role, QColor(colour))
+    disabled = QPalette.ColorGroup.Disabled
+    for role in (QPalette.ColorRole.ButtonText, QPalette.ColorRole.WindowText, QPalette.ColorRole.Text):
+        palette.setColor(disabled, role, QColor("#6e6e6e"))
+    palette.setColor(disabled, QPalette.ColorRole.Button, QColor("#2e2e2e"))
     return palette
 
 

@@ -7,8 +7,6 @@ from pathlib import Path
 
 import pytest
 
-import app.ui  # noqa: F401 (applies the shiboken guard before any Qt object exists)
-
 SAMPLES = Path(__file__).resolve().parents[2] / "resources" / "samples"
 SAMPLE_FILES = sorted(SAMPLES.glob("*.ngc"))
 # The offscreen platform says so when a widget asks it for native window features.

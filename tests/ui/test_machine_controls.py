@@ -85,3 +85,18 @@ def test_make_run_falls_back_to_the_demo_without_a_display(monkeypatch):
     monkeypatch.delenv("WAYLAND_DISPLAY")
     monkeypatch.setenv("QT_QPA_PLATFORM", "offscreen")
     assert run.has_display() is True
+
+
+def test_uart_loss_is_named_and_panel_mirrors_the_machine(qtbot, connected):
+    window = connected
+    sim = window.link.sim
+    view = window.machine_panel
+    assert view.panel is sim.panel
+    before = view.oled.pixmap().toImage()
+    qtbot.mouseClick(view.buttons["OK"], Qt.MouseButton.LeftButton)  # open the menu
+    qtbot.waitUntil(lambda: view.oled.pixmap().toImage() != before, timeout=10_000)
+    qtbot.mouseClick(view.buttons["EXIT"], Qt.MouseButton.LeftButton)
+    sim.faults.cut_uart()
+    qtbot.waitUntil(window.alert.isVisible, timeout=60_000)
+    assert "internal link" in window.alert.body.text()
+    sim.faults.restore_uart()

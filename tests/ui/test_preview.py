@@ -59,8 +59,7 @@ def test_done_part_and_highlight(preview):
     preview.show_program(program.toolpath)
     assert _count(preview.done_item) == 0
     preview.set_done(len(program.device_lines) - 1)
-    x, _ = preview.done_item.getData()
-    assert len(x) > 0
+    assert _count(preview.done_item) + _count(preview.recent_item) > 0
     preview.highlight_move(5)
     assert len(preview.highlight_item.getData()[0]) >= 2
 
@@ -103,3 +102,18 @@ def test_level_of_detail_keeps_extremes():
         xs = level.seg[:, [0, 2]]
         assert xs.min() == pytest.approx(0.0) and xs.max() == pytest.approx(100.006, abs=1e-4)
         assert len(level.boxes) == -(-len(level.move) // CHUNK)
+
+
+def test_finished_part_grows_in_two_layers(preview):
+    program = load(next(p for p in SAMPLE_FILES if "star_passes" in p.name))
+    preview.show_program(program.toolpath)
+    model = preview.model
+    total = 0
+    for seq in range(0, len(program.line_map), 7):
+        preview.set_done(seq)
+        drawn = _count(preview.done_item) + _count(preview.recent_item)
+        assert drawn >= total  # never shrinks while the job advances
+        total = drawn
+    preview.set_done(len(program.line_map) - 1)
+    x, _ = model.recent_segments(-1, len(program.toolpath.kind) - 1)
+    assert _count(preview.done_item) + _count(preview.recent_item) == len(x)

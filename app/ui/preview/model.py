@@ -11,7 +11,7 @@ import threading
 
 import numpy as np
 
-from app.ui.preview.geometry import PathGeometry
+from app.ui.preview.geometry import RAPID_GROUP, PathGeometry
 from app.ui.preview.lod import LodSegments, group_segments
 
 FRAME_BUDGET = 50_000  # segments drawn per frame, shared by the groups
@@ -54,6 +54,17 @@ class PreviewModel:
         parts = [g.visible(view, pixel, self._budget(g), upto=upto_move) for g in self.groups[1:]]
         return np.concatenate([p[0] for p in parts]), np.concatenate([p[1] for p in parts])
 
+    def recent_segments(self, after_move: int, upto_move: int):
+        """(x, y) point pairs of the cut segments of moves ``after_move+1 .. upto_move``."""
+        g = self.geometry
+        lo = int(np.searchsorted(g.move[1:], after_move + 1, "left"))
+        hi = int(np.searchsorted(g.move[1:], upto_move, "right"))
+        ends = np.arange(lo + 1, hi + 1)
+        ends = ends[g.group[ends] != RAPID_GROUP]
+        x = np.column_stack([g.points[ends - 1, 0], g.points[ends, 0]]).ravel()
+        y = np.column_stack([g.points[ends - 1, 1], g.points[ends, 1]]).ravel()
+        return x, y
+
     def move_of_device_line(self, seq: int) -> int:
         """The last move produced by device lines up to ``seq`` (-1 when none)."""
         if self.device_index is None:
@@ -67,7 +78,7 @@ class PreviewModel:
         hits = np.flatnonzero(np.asarray(source) == line)
         return int(hits[0]) if len(hits) else None
 
-    def warm(self, widths=(700, 1400)) -> None:
+    def warm(self, widths=(900,)) -> None:
         """Build the levels a fitted view of ``widths`` pixels will ask for first."""
         xmin, xmax, ymin, ymax = self.bounds()
         extent = max(xmax - xmin, ymax - ymin, 1e-6)

@@ -21,6 +21,7 @@ from app.ui.preview.model import PreviewModel
 DONE_COLOUR = "#39d353"
 MARKER_COLOUR = "#ff4040"
 HIGHLIGHT_COLOUR = "#00e5ff"
+FREEZE_MOVES = 2000  # finished moves drawn in the small item before they join the cached one
 
 
 # Shallow to deep: warm colours that stand out on the black background.
@@ -40,6 +41,7 @@ class PreviewWidget(QWidget):
         super().__init__(parent)
         self.model: PreviewModel | None = None
         self._done_move = -1
+        self._frozen_move = -1
         self.plot = pg.PlotWidget()
         self.plot.setAspectLocked(True)
         self.grid = False
@@ -69,7 +71,9 @@ class PreviewWidget(QWidget):
         pens = [rapid_pen, pg.mkPen("#5fa8d3", width=1)]
         pens += [pg.mkPen(colour, width=1) for colour in _depth_colours()]
         self.group_items = [self._curve(pen, z=i) for i, pen in enumerate(pens)]
-        self.done_item = self._curve(pg.mkPen(DONE_COLOUR, width=1), z=20)
+        done_pen = pg.mkPen(DONE_COLOUR, width=1)
+        self.done_item = self._curve(done_pen, z=20)  # finished part up to _frozen_move (cached)
+        self.recent_item = self._curve(done_pen, z=21)  # finished since then: small, redrawn often
         for item in [*self.group_items, self.done_item, self.travel_item, self.bounds_item]:
             # Drawn once into a pixmap: moving the tool marker then costs a blit, not a redraw.
             item.setCacheMode(QGraphicsItem.CacheMode.DeviceCoordinateCache)
@@ -98,6 +102,7 @@ class PreviewWidget(QWidget):
     def show_model(self, model: PreviewModel | None) -> None:
         self.model = model
         self._done_move = -1
+        self._frozen_move = -1
         self.highlight_item.setData([], [])
         self._update_legend()
         if model is None or model.empty:
@@ -149,9 +154,13 @@ class PreviewWidget(QWidget):
         if self.model is None:
             return
         move = self.model.move_of_device_line(seq)
-        if move != self._done_move:
-            self._done_move = move
+        if move == self._done_move:
+            return
+        self._done_move = move
+        if move < self._frozen_move or move - self._frozen_move > FREEZE_MOVES:
             self._refill_done(*self._view_and_pixel())
+        else:
+            self.recent_item.setData(*self.model.recent_segments(self._frozen_move, move))
 
     def highlight_move(self, index: int | None) -> None:
         """Draw one move thick and centre the view on it."""
@@ -175,7 +184,7 @@ class PreviewWidget(QWidget):
     def _refill_now(self) -> None:
         view, pixel = self._view_and_pixel()
         if self.model is None or self.model.empty:
-            for item in [*self.group_items, self.done_item]:
+            for item in [*self.group_items, self.done_item, self.recent_item]:
                 item.setData([], [])
         else:
             for item, (x, y) in zip(self.group_items, self.model.frame(view, pixel), strict=True):
@@ -184,8 +193,11 @@ class PreviewWidget(QWidget):
         self.frame_drawn.emit()
 
     def _refill_done(self, view, pixel) -> None:
+        """Redraw the whole finished part (cached); the recent item starts empty again."""
         x, y = self.model.done_frame(view, pixel, self._done_move)
         self.done_item.setData(x, y)
+        self.recent_item.setData([], [])
+        self._frozen_move = self._done_move
 
     def plotted_bounds(self) -> tuple[float, float, float, float]:
         """Extents of the toolpath curves as drawn now (for tests)."""
