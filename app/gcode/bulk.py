@@ -41,9 +41,9 @@ def _scan_chunk(raw: bytes, n_lines: int):
     """Words of the good lines of one chunk: (odd mask, line, letter, value)."""
     if b"\x01" in raw:  # the comment mark below must not occur in the source
         return np.ones(n_lines, bool), *(np.empty(0, t) for t in (np.int64, np.uint8, np.float64))
-    text = _COMMENT.sub(COMMENT_MARK, raw) if b"(" in raw else raw
+    text = raw.translate(None, b" \t\r")  # rs274ngc ignores spaces: "X 1 0" is X10
+    text = _COMMENT.sub(COMMENT_MARK, text) if b"(" in text else text  # (spaces inside are gone too)
     text = _SEMI.sub(b"", text) if b";" in text else text
-    text = text.translate(None, b" \t\r")  # rs274ngc ignores spaces: "X 1 0" is X10
     b = np.frombuffer(text, np.uint8)
     clean = quick(text)
     if clean is not None:  # nearly every chunk: no line needs the general lexer
