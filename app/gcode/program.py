@@ -4,9 +4,9 @@
 non-UTF-8 or binary files give a ``Program`` with one error; a file with errors loads
 as far as it can (refused lines change nothing), so every error is listed at once.
 Lines are physical lines split at ``\\n`` (a ``\\r`` before it is dropped).
-``device_lines``, ``pauses`` and ``moves`` are computed on first use; the number of
-device lines, ``line_map`` and the device index of each move
-(``toolpath.device_index``) are known at once.
+``source_lines`` (of a file), ``device_lines``, ``pauses`` and ``moves`` are computed
+on first use; the number of device lines, ``line_map`` and the device index of each
+move (``toolpath.device_index``) are known at once.
 """
 
 from __future__ import annotations
