@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import threading
 
-from PySide6.QtCore import QObject
+from PySide6.QtCore import QObject, QTimer
 
 from app.comm.transport import is_sim, open_transport, sim_options
 from app.comm.worker import SerialController, SerialWorker
@@ -89,6 +89,11 @@ class SimOpener:
             sim.stop()
 
 
+def _apply_link_timing(worker, link) -> None:
+    monitor = worker.session.link
+    monitor.heartbeat_s, monitor.degraded_s, monitor.lost_s = link.heartbeat_s, link.degraded_s, link.lost_s
+
+
 class MachineLink(QObject):
     """Owns the ``SerialController`` (worker thread) and the simulator opener."""
 
@@ -98,7 +103,13 @@ class MachineLink(QObject):
         self.controller = SerialController(self, SerialWorker(opener=self.opener))
         self.worker = self.controller.worker
         self.url = ""
+        if profile is not None:
+            _apply_link_timing(self.worker, profile.link)  # before the thread starts
         self.controller.start()
+
+    def set_link_timing(self, link) -> None:
+        """New heartbeat / degraded / lost periods, applied in the worker's thread."""
+        QTimer.singleShot(0, self.worker, lambda: _apply_link_timing(self.worker, link))
 
     @property
     def sim(self):

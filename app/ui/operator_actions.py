@@ -194,6 +194,8 @@ class OperatorActions(QObject):
 
     def apply_settings(self, profile) -> None:
         self.w.profile = profile
+        self.link.set_link_timing(profile.link)
+        self.w.loader.tolerance = profile.motion.arc_tolerance_mm
         try:
             save_settings(self.w.config_dir / FILE_NAME, profile)
         except OSError as exc:

@@ -100,3 +100,9 @@ def test_uart_loss_is_named_and_panel_mirrors_the_machine(qtbot, connected):
     qtbot.waitUntil(window.alert.isVisible, timeout=60_000)
     assert "internal link" in window.alert.body.text()
     sim.faults.restore_uart()
+
+
+def test_heartbeat_period_reaches_the_link(qtbot, window):
+    profile = window.profile
+    window.operator.apply_settings(replace(profile, link=replace(profile.link, heartbeat_s=0.5)))
+    qtbot.waitUntil(lambda: window.link.worker.session.link.heartbeat_s == 0.5, timeout=10_000)

@@ -6,6 +6,7 @@ the history changed and the widget is visible, never once per frame.
 
 from __future__ import annotations
 
+import numpy as np
 import pyqtgraph as pg
 from PySide6.QtCore import QTimer
 from PySide6.QtWidgets import QVBoxLayout, QWidget
@@ -14,6 +15,7 @@ from app.ui.plot.history import MEASURED, PositionHistory, T
 
 AXIS_COLOURS = ("#ff5555", "#50fa7b", "#5599ff")
 REDRAW_MS = 33
+Y_STEP = 10.0
 
 
 class PositionPlot(QWidget):
@@ -34,6 +36,9 @@ class PositionPlot(QWidget):
             self.plot.plot(pen=pg.mkPen(colour, width=1), name=axis)
             for axis, colour in zip("XYZ", AXIS_COLOURS, strict=True)
         ]
+        self.plot.getPlotItem().disableAutoRange()
+        self.plot.setXRange(-seconds, 0, padding=0)
+        self._y_range = None
         layout = QVBoxLayout(self)
         layout.setContentsMargins(0, 0, 0, 0)
         layout.addWidget(self.plot)
@@ -49,5 +54,14 @@ class PositionPlot(QWidget):
         t = rows[:, T] - (rows[-1, T] if len(rows) else 0.0)
         for curve, column in zip(self.curves, rows[:, MEASURED].T, strict=True):
             curve.setData(t, column)
-        self.plot.setXRange(-self.seconds, 0, padding=0)
+        if len(rows):
+            self._fit_y(rows[:, MEASURED])
         return True
+
+    def _fit_y(self, values) -> None:
+        """Y range in whole steps of 10 mm: it (and the axis text) changes only now and then."""
+        lo = float(np.floor(values.min() / Y_STEP) * Y_STEP)
+        hi = float(np.ceil(values.max() / Y_STEP) * Y_STEP)
+        if (lo, hi) != self._y_range:
+            self._y_range = (lo, hi)
+            self.plot.setYRange(lo - 2, max(hi, lo + Y_STEP) + 2, padding=0)
