@@ -3,6 +3,7 @@
 import pytest
 import serial
 
+from app.comm import deframer as dfr
 from app.comm import frame as fr
 from app.comm.console import main, split_commands
 from app.comm.transport import SIM_URL, SimTransport, list_ports, open_transport, sim_options
@@ -37,7 +38,7 @@ def test_sim_transport_answers_a_ping(tmp_path):
     try:
         assert isinstance(port, SimTransport)
         port.write(fr.encode(fr.Command(1, "PING")))
-        deframer, got = fr.Deframer(), []
+        deframer, got = dfr.Deframer(), []
         while not any(isinstance(f, fr.Status) for f in got):
             got += deframer.feed(port.read(max(1, port.in_waiting)), 0.0)
     finally:
