@@ -26,7 +26,7 @@ def _ffill(values: np.ndarray, first: float) -> np.ndarray:
     arr = np.empty(len(values) + 1)
     arr[0], arr[1:] = first, values
     idx = np.arange(len(arr), dtype=np.int32)  # a run is at most RUN_MAX lines
-    idx *= ~np.isnan(arr)
+    np.multiply(idx, arr == arr, out=idx)  # 0 at NaNs (one pass, no isnan and invert)
     np.maximum.accumulate(idx, out=idx)
     return arr.take(idx[1:])
 
@@ -50,6 +50,7 @@ class _Run:
         self.inch = _ffill(np.where(units >= 0, units, np.nan), float(state.inch)) > 0.5
         self.scale = np.where(self.inch, 25.4, 1.0)
         self.scale_before = np.concatenate(([state.scale], self.scale[:-1]))
+        self.metric = not self.inch.any() and state.scale == 1.0  # scaling by 1.0 changes no bit
         v = self.v
         self.has_axis = ~(np.isnan(v["X"]) & np.isnan(v["Y"]) & np.isnan(v["Z"]))
         self.has_ij = ~(np.isnan(v["I"]) & np.isnan(v["J"]))
@@ -95,10 +96,11 @@ def _geometry(run: _Run, stop: int, rows: np.ndarray, state: State):
     """End points (one column per axis), and per row end, centre and whether LinuxCNC
     refuses the arc."""
     scale = run.scale[:stop]
+    mm = [run.v[c][:stop] if run.metric else run.v[c][:stop] * scale for c in "XYZ"]
     if state.absolute:
-        end = [_ffill(run.v[c][:stop] * scale, state.pos[i]) for i, c in enumerate("XYZ")]
+        end = [_ffill(mm[i], state.pos[i]) for i in range(3)]
     else:  # G91: every axis word is a step from where the tool is
-        steps = [np.nan_to_num(run.v[c][:stop] * scale) for c in "XYZ"]
+        steps = [np.nan_to_num(m) for m in mm]
         end = [np.cumsum(np.concatenate(([state.pos[i]], steps[i])))[1:] for i in range(3)]
     ends = np.empty((len(rows), 3))
     starts = []
@@ -110,13 +112,13 @@ def _geometry(run: _Run, stop: int, rows: np.ndarray, state: State):
     arc_rows = rows[sel]
     i_word, j_word = run.v["I"][arc_rows], run.v["J"][arc_rows]
     k = run.scale[arc_rows]  # centre and check in program units, as motion.py does
-    sx, sy = starts[0][sel] / k, starts[1][sel] / k
-    ex, ey = ends[:, 0][sel] / k, ends[:, 1][sel] / k
+    points = (starts[0], starts[1], ends[:, 0], ends[:, 1])
+    sx, sy, ex, ey = (a[sel] if run.metric else a[sel] / k for a in points)
     cx = sx + np.where(np.isnan(i_word), 0.0, i_word)
     cy = sy + np.where(np.isnan(j_word), 0.0, j_word)
     center = np.full_like(ends, np.nan)
-    center[:, 0][sel] = cx * k
-    center[:, 1][sel] = cy * k
+    center[:, 0][sel] = cx if run.metric else cx * k
+    center[:, 1][sel] = cy if run.metric else cy * k
     center[:, 2][sel] = starts[2][sel]
     bad = np.zeros(len(rows), bool)
     bad[sel] = _arc_bad(sx, sy, ex, ey, cx, cy, run.inch[arc_rows])
@@ -134,7 +136,8 @@ def run(scan: Scan, a: int, b: int, state: State, ops: OpBuffer) -> tuple[State,
     if arc_bad.any():
         cut = _first(arc_bad)
         stop, rows, ends, center = int(rows[cut]), rows[:cut], ends[:cut], center[:cut]
-    feed = _ffill(r.v["F"][:stop] * r.scale_before[:stop], state.feed)
+    f_word = r.v["F"][:stop]
+    feed = _ffill(f_word if r.metric else f_word * r.scale_before[:stop], state.feed)
     to_be = r.to_be[rows]
     kind = np.where(event[rows], SPINDLE, np.where(to_be >= 2, to_be - 2 + ARC_CW, to_be)).astype(np.int8)
     turn = np.where(to_be == 2, -1, np.where(to_be == 3, 1, 0)).astype(np.int32)
