@@ -89,10 +89,13 @@ def sweep(start, end, center, turn):
     turn = np.asarray(turn)
     ccw = turn > 0
     step = a1 - a0
-    ang = np.empty_like(step)
-    np.mod(step, 2 * np.pi, out=ang, where=ccw)  # each arc's own direction only
-    np.mod(-step, 2 * np.pi, out=ang, where=~ccw)  # -(a1 - a0) is exactly a0 - a1
-    ang = np.where(ang <= 1e-12, 2 * np.pi, ang) + (np.abs(turn) - 1) * 2 * np.pi
+    step = np.where(ccw, step, -step)  # -(a1 - a0) is exactly a0 - a1
+    ang = np.fmod(step, 2 * np.pi, out=step)  # np.mod is fmod, + 2 pi when negative (and
+    ang[ang < 0] += 2 * np.pi  # +0 for -0, made 2 pi just below anyway), at half the cost
+    ang[ang <= 1e-12] = 2 * np.pi
+    extra = np.abs(turn) - 1
+    if extra.any():  # adding 0.0 to a positive angle changes nothing
+        ang = ang + extra * 2 * np.pi
     return np.where(ccw, ang, -ang)
 
 
