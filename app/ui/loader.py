@@ -18,10 +18,6 @@ from PySide6.QtCore import QObject, Signal
 from app.ui.preview.model import PreviewModel
 
 SNIFF_BYTES = 4096
-# Device lines are rendered ahead for programs up to this size; beyond it the render
-# (tens of seconds for a million lines) would hold the GIL and make the window sluggish,
-# so it happens when Start or Save to SD asks for it, in the worker thread.
-WARM_LINES = 200_000
 
 
 @dataclass(frozen=True)
@@ -63,8 +59,7 @@ class ProgramLoader(QObject):
             return
         self.busy = False
         self.loaded.emit(result)
-        if len(result.program.source_lines) <= WARM_LINES:
-            _warm(result.program)
+        _warm(result.program)  # about 1 s for a million lines
         self.prepared.emit(result)
 
 
