@@ -206,7 +206,8 @@ class CncMcu:
             self.lines[seq] = line
         self.job.accepted(seq)
         self.send(AckFrame(seq, self.free_slots()))
-        if self.check_mode:
+        if self.check_mode:  # validated and finished at once: the dry run's executed log
+            self.exec_log.add(seq, line)
             self._finished_up_to(seq)
         return None
 

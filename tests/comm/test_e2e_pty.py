@@ -131,7 +131,9 @@ def test_pty_stream_kill_restart_resume(qtbot, tmp_path, rig):
     qtbot.waitUntil(lambda: len(collector.events["job_finished"]) > finished, timeout=60000)
     job = collector.last("job_finished")
     assert job.completed and job.done == len(lines) - 1, job
-    executed = (tmp_path / "exec-1.log").read_text().splitlines()
+    logged = (tmp_path / "exec-1.log").read_text().splitlines()
+    checked, executed = logged[: len(lines)], logged[len(lines) :]  # the dry run, then the cut
+    assert checked == [f"{seq}\t{line}" for seq, line in enumerate(lines)]
     assert [int(row.split("\t")[0]) for row in executed] == list(range(len(executed)))
     assert [row.split("\t", 1)[1] for row in executed] == lines[: len(executed)]
     assert done < len(executed) + 1  # the host never claims more than the machine finished
