@@ -59,12 +59,30 @@ def list_ports() -> list[PortInfo]:
     return ports
 
 
-class SimTransport:
-    """The host port of an in-process simulator running on its own thread; close() stops it."""
+def start_simulator(options: dict[str, str], profile=None):
+    """A ``backend_sim`` Simulator for ``sim://`` options, started on its own thread."""
+    from backend_sim import Simulator
 
-    def __init__(self, sim) -> None:
+    try:
+        speed = float(options.get("speed", "1"))
+    except ValueError:
+        raise serial.SerialException(f"sim:// speed {options['speed']!r} is not a number") from None
+    sim = Simulator(profile=profile, sd_dir=options.get("sd"))
+    sim.start(speed=speed)
+    return sim
+
+
+class SimTransport:
+    """The host port of an in-process simulator running on its own thread.
+
+    ``close()`` closes the port, and stops the simulator too if this transport owns it
+    (a GUI keeps its simulator running across disconnects, as a real machine would).
+    """
+
+    def __init__(self, sim, owns_sim: bool = True) -> None:
         self.sim = sim
         self.port = sim.host_port
+        self.owns_sim = owns_sim
 
     def clock(self) -> float:
         """The simulator's clock in seconds: the host's timers run on machine time."""
@@ -72,15 +90,7 @@ class SimTransport:
 
     @classmethod
     def start(cls, options: dict[str, str]) -> SimTransport:
-        from backend_sim import Simulator
-
-        try:
-            speed = float(options.get("speed", "1"))
-        except ValueError:
-            raise serial.SerialException(f"sim:// speed {options['speed']!r} is not a number") from None
-        sim = Simulator(sd_dir=options.get("sd"))
-        sim.start(speed=speed)
-        return cls(sim)
+        return cls(start_simulator(options))
 
     @property
     def in_waiting(self) -> int:
@@ -101,6 +111,7 @@ class SimTransport:
 
     def close(self) -> None:
         try:
-            self.sim.stop()
+            if self.owns_sim:
+                self.sim.stop()
         finally:
             self.port.close()

@@ -13,40 +13,8 @@ import threading
 
 from PySide6.QtCore import QObject, QTimer
 
-from app.comm.transport import is_sim, open_transport, sim_options
+from app.comm.transport import SimTransport, is_sim, open_transport, sim_options, start_simulator
 from app.comm.worker import SerialController, SerialWorker
-
-
-class SimPortTransport:
-    """The simulator's host port as a transport whose ``close()`` leaves the machine running."""
-
-    def __init__(self, sim):
-        self.sim = sim
-        self.port = sim.host_port
-
-    @property
-    def in_waiting(self) -> int:
-        return self.port.in_waiting
-
-    @property
-    def timeout(self):
-        return self.port.timeout
-
-    def read(self, size: int = 1) -> bytes:
-        return self.port.read(size)
-
-    def write(self, data: bytes) -> int:
-        return self.port.write(data)
-
-    def reset_input_buffer(self) -> None:
-        self.port.reset_input_buffer()
-
-    def close(self) -> None:
-        self.port.close()
-
-    def clock(self) -> float:
-        """The simulator's clock: the session's timers run on machine time."""
-        return self.sim.clock.now
 
 
 class SimOpener:
@@ -69,19 +37,11 @@ class SimOpener:
             port = self.sim.host_port
             if not port.is_open:
                 port.open()
-            return SimPortTransport(self.sim)
+            return SimTransport(self.sim, owns_sim=False)
 
     def _replace(self, key, options) -> None:
-        from backend_sim import Simulator
-
         self.stop()
-        try:
-            speed = float(options.get("speed", "1"))
-        except ValueError:
-            raise ValueError(f"sim:// speed {options['speed']!r} is not a number") from None
-        sim = Simulator(profile=self.profile, sd_dir=options.get("sd"))
-        sim.start(speed=speed)
-        self.sim, self._key = sim, key
+        self.sim, self._key = start_simulator(options, self.profile), key
 
     def stop(self) -> None:
         sim, self.sim = self.sim, None
