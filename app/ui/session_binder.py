@@ -4,10 +4,12 @@ part, and the source listing, so a flood of frames never floods the GUI."""
 
 from __future__ import annotations
 
+import threading
 import time
+from collections import deque
 
 import numpy as np
-from PySide6.QtCore import QObject, QTimer
+from PySide6.QtCore import QObject, Qt, QTimer
 
 from app.comm.listener import BUSY_STATES, JOB_STATES, RECOVERY_STATES, SessionState
 from app.ui.commanded import commanded_position
@@ -38,6 +40,8 @@ class SessionBinder(QObject):
         self._dirty = False  # a status arrived since the last refresh
         self._progress_dirty = False  # progress arrived since the last slow refresh
         self._ticks = 0
+        self._gui_thread = threading.get_ident()
+        self._progress_in: deque = deque()  # progress events from the worker, drained by tick()
         self._connect(window.link.worker)
         window.loader.loaded.connect(window.operator.program_loaded)
         window.loader.failed.connect(self.on_load_failed)
@@ -50,7 +54,10 @@ class SessionBinder(QObject):
         worker.disconnected.connect(self.on_disconnected)
         worker.state_changed.connect(self.on_state)
         worker.status_changed.connect(self.on_status)
-        worker.progress_changed.connect(self.on_progress)
+        # One progress event per executed line (hundreds a second): queued one by one, each
+        # would be a call into Python on the GUI thread waiting for the worker's GIL, in
+        # bursts. The worker only appends to a deque here; tick() applies the latest.
+        worker.progress_changed.connect(self._progress_arrived, Qt.ConnectionType.DirectConnection)
         worker.link_changed.connect(self.on_link)
         worker.alarm_raised.connect(self.on_alarm)
         worker.log_added.connect(self.on_log)
@@ -157,6 +164,24 @@ class SessionBinder(QObject):
     def history(self):
         return self.w.history
 
+    def _progress_arrived(self, event) -> None:
+        """Runs in the emitting thread (DirectConnection): store only, no widgets."""
+        if threading.get_ident() == self._gui_thread:
+            self.on_progress(event)
+        else:
+            self._progress_in.append(event)
+
+    def _drain_progress(self) -> None:
+        """Apply the progress that arrived since the last tick: the newest event per kind
+        (progress only grows, so the ones in between change nothing that is shown)."""
+        latest = {}
+        while self._progress_in:
+            event = self._progress_in.popleft()
+            latest.pop(event.kind, None)
+            latest[event.kind] = event
+        for event in latest.values():
+            self.on_progress(event)
+
     def on_progress(self, event) -> None:
         if event.kind == "upload":
             self.w.sd_panel.set_progress(event.done + 1, event.total)
@@ -168,6 +193,7 @@ class SessionBinder(QObject):
 
     def begin_job(self, loaded) -> None:
         """Called when the operator starts ``loaded``: fresh progress (None: an MDI line)."""
+        self._drain_progress()
         self.job = loaded
         self.job_done = -1
         self.last_job_event = None
@@ -181,6 +207,7 @@ class SessionBinder(QObject):
         self._progress_dirty = True
 
     def on_job_finished(self, event) -> None:
+        self._drain_progress()  # the last lines' progress before the end
         if event.kind == "upload":
             self.last_upload_event = event
             text = (f"saved as {event.name}: {event.total} lines, verified by the card's CRC32"
@@ -215,6 +242,7 @@ class SessionBinder(QObject):
 
     def tick(self) -> None:
         self._ticks += 1
+        self._drain_progress()
         if self._dirty and self.status is not None:
             self._dirty = False
             s = self.status

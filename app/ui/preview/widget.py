@@ -189,6 +189,7 @@ class PreviewWidget(QWidget):
         else:
             for item, (x, y) in zip(self.group_items, self.model.frame(view, pixel), strict=True):
                 item.setData(x, y)
+                item.setVisible(len(x) > 0)  # an empty item still costs the paint a call into Python
             self._refill_done(view, pixel)
         self.frame_drawn.emit()
 
