@@ -21,6 +21,7 @@ import math
 
 from backend_sim.motion.dialect import Move
 from backend_sim.motion.geometry import Segment, junction_speed
+from backend_sim.motion.hold import FeedHold
 
 _EPS = 1e-9
 
@@ -37,7 +38,7 @@ class Block:
         self.arc = bool(seg and seg.arc)
 
 
-class Planner:
+class Planner(FeedHold):
     """Queue of blocks plus the online S-curve generator; see the module docstring."""
 
     def __init__(self, profile, ctx, events: list, position=(0.0, 0.0, 0.0)):
@@ -106,17 +107,6 @@ class Planner:
             b.v_entry = nxt = min(b.v_junc, math.sqrt(nxt * nxt + 2 * self.accel * (b.s1 - b.s0)))
 
     # -- control -------------------------------------------------------------
-    def hold(self) -> None:
-        self.holding = True
-
-    def resume(self) -> None:
-        self.holding = False
-        self.held_flag = False
-
-    def flush(self) -> None:
-        """Drop every queued block; call at rest (the setpoint stays where it is)."""
-        self.reset_position(self.pos)
-
     def at_rest(self) -> bool:
         return self.v_raw == 0.0 and self.still >= self.window
 

@@ -15,12 +15,13 @@ from collections import deque
 
 from backend_sim.motion.dialect import Move
 from backend_sim.motion.geometry import Segment
+from backend_sim.motion.hold import FeedHold
 from backend_sim.motion.planner import barrier_done
 
 _SETTLE_MAX_MS = 300
 
 
-class SimpleInterpolator:
+class SimpleInterpolator(FeedHold):
     """Bresenham stepping of whole counts, stop at every segment end."""
 
     def __init__(self, profile, ctx, events: list, position=(0.0, 0.0, 0.0)):
@@ -52,16 +53,6 @@ class SimpleInterpolator:
         self.moves.append(move)
         if move.moves_axes:
             self.tail = move.target
-
-    def hold(self) -> None:
-        self.holding = True
-
-    def resume(self) -> None:
-        self.holding = False
-        self.held_flag = False
-
-    def flush(self) -> None:
-        self.reset_position(self.pos)
 
     def at_rest(self) -> bool:
         return self.line is None or self.holding
