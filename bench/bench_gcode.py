@@ -3,16 +3,18 @@
 Builds (or reuses) ``bench/data/big.ngc`` from shifted copies of the Inkscape samples
 in ``resources/samples/*.ngc`` (each copy moved a little in X and Y, its ``%`` and
 ``M2``/``M30`` lines dropped, one ``M2`` at the end), then prints: the best of three
-wall-clock times of ``app.gcode.load`` (Toolpath included), the CPU time of each stage
-of one load (the steps of ``app.gcode.program._interpret``), the peak resident memory
-of a fresh process doing one load, the time to render the device lines (done on first
-use), and the time PyPI ``gcodeparser`` takes to parse the same file, with the ratio.
-Wall and CPU times are both printed: on a shared machine the CPU time of the process
-is the steadier figure. Figures are printed, never asserted.
+wall-clock times of ``app.gcode.load`` (Toolpath included) on one core (the helper
+process of ``app.gcode.workers`` off) and with the helper scanning part of the file
+on the second core (started and ready before timing, as the GUI does on start), the
+CPU time of each stage of one load, the peak resident memory of a fresh process doing
+one load (and of its helper), the time to render the device lines (done on first
+use), and the time PyPI ``gcodeparser`` takes to parse the same file, with the
+ratios. Figures are printed, never asserted.
 """
 
 from __future__ import annotations
 
+import os
 import re
 import subprocess
 import sys
@@ -97,20 +99,39 @@ def _best_of(n: int, fn) -> tuple[float, float, object]:
 
 _PEAK = """
 import re, sys
-def high_water_mb():  # VmHWM: this process's peak resident set (ru_maxrss survives exec)
-    status = open("/proc/self/status").read()
+def high_water_mb(pid="self"):  # VmHWM: a process's peak resident set (ru_maxrss survives exec)
+    status = open(f"/proc/{pid}/status").read()
     return int(re.search(r"VmHWM:\\s+(\\d+)", status).group(1)) // 1024
-from app.gcode import load
-base = high_water_mb()
-program = load(sys.argv[1]); program.toolpath.length.sum()
-print(base, high_water_mb())
+if __name__ == "__main__":
+    from app.gcode import load, workers
+    helper = workers.warm_up(wait=10)
+    base = high_water_mb()
+    program = load(sys.argv[1]); program.toolpath.length.sum()
+    print(base, high_water_mb(), sum(high_water_mb(pid) for pid in workers.helper_pids()), int(helper))
 """
 
 
-def _peak_mb(path: Path) -> tuple[int, int]:
-    out = subprocess.run([sys.executable, "-c", _PEAK, str(path)], capture_output=True, text=True,
+def _peak_mb(path: Path) -> tuple[int, int, int, bool]:
+    """(MB before loading, peak MB of the loading process, peak MB of the helper, helper used)."""
+    script = DATA / "peak.py"  # a file, so that the helper process can import the main module
+    script.write_text(_PEAK)
+    out = subprocess.run([sys.executable, str(script), str(path)], capture_output=True, text=True,
                          check=True, cwd=ROOT).stdout.split()
-    return int(out[0]), int(out[1])
+    return int(out[0]), int(out[1]), int(out[2]), out[3] == "1"
+
+
+def _helper_cpu() -> float:
+    """CPU seconds the helper processes have used so far (Linux; 0 elsewhere)."""
+    from app.gcode import workers
+
+    total = 0.0
+    for pid in workers.helper_pids():
+        try:
+            fields = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
+        except OSError:
+            continue
+        total += (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")  # utime + stime
+    return total
 
 
 def _stages(path: Path) -> str:
@@ -132,7 +153,7 @@ def _stages(path: Path) -> str:
 
     raw = step("read", path.read_bytes)
     lines = step("lines", lambda: Lines(data=raw))
-    scan = step("scan", lambda: bulk.scan(raw, len(lines), lines.chunks))
+    scan = step("scan", lambda: bulk.scan(raw, len(lines), lines.chunks))  # with the helper, if on
     step("interpret", partial(runner.run, lines, scan, buffer, report))
     del scan  # as load does: the scan table is freed before the rest
     ops = step("ops", buffer.finish)
@@ -150,28 +171,39 @@ def _gcodeparser(text: str) -> None:
 
 
 def main() -> None:
-    from app.gcode import load
+    from app.gcode import load, workers
 
     path, origin = build()
     text = path.read_text()
     lines = text.count("\n")
     print(f"file: {path.relative_to(ROOT)}: {lines:,} lines, {len(text) / 1e6:.1f} MB, from {origin}")
     print(f"machine load average: {_loadavg()}")
+    workers.set_enabled(False)
+    alone, alone_cpu, _ = _best_of(3, lambda: load(path))
+    print(f"load -> Toolpath on one core (helper process off): {alone:.2f} s wall, {alone_cpu:.2f} s CPU, "
+          "best of 3")
+    workers.set_enabled(True)
+    helper = workers.warm_up(wait=10)
+    helper_cpu = _helper_cpu()
     wall, cpu, program = _best_of(3, lambda: load(path))
+    helper_cpu = (_helper_cpu() - helper_cpu) / 3
     tp = program.toolpath
-    print(f"load -> Toolpath: {wall:.2f} s wall, {cpu:.2f} s CPU, best of 3 "
+    print(f"load -> Toolpath{' with the helper process' if helper else ' (no helper process available)'}: "
+          f"{wall:.2f} s wall, {cpu:.2f} s CPU here + {helper_cpu:.2f} s in the helper (mean), best of 3 "
           f"({lines / wall / 1e6:.2f} M lines/s wall); "
           f"{len(tp):,} moves, {len(program.errors)} errors, {len(program.warnings)} warnings")
     print(f"stages of one load, CPU s: {_stages(path)}")
-    base, peak = _peak_mb(path)
-    print(f"peak resident memory of one load: {peak} MB (python + numpy + app alone: {base} MB)")
+    base, peak, helper_peak, used = _peak_mb(path)
+    print(f"peak resident memory of one load: {peak} MB (python + numpy + app alone: {base} MB)"
+          + (f"; helper process {helper_peak} MB" if used else ""))
     started = time.perf_counter()
     device = program.device_lines
     print(f"device lines (rendered on first use): {len(device):,} in {time.perf_counter() - started:.2f} s")
     their_wall, their_cpu, _ = _timed(lambda: _gcodeparser(text))
     print(f"gcodeparser parse_gcode_lines (parse only, no arcs or toolpath): {their_wall:.2f} s wall, "
-          f"{their_cpu:.2f} s CPU; ours is {their_wall / wall:.1f}x faster by wall clock, "
-          f"{their_cpu / cpu:.1f}x by CPU time")
+          f"{their_cpu:.2f} s CPU; ours is {their_wall / wall:.1f}x faster by wall clock "
+          f"({their_wall / alone:.1f}x on one core), {their_cpu / (cpu + helper_cpu):.1f}x by CPU time "
+          "(both processes)")
 
 
 def _loadavg() -> str:

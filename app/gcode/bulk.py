@@ -18,6 +18,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from . import workers
 from .clean import quick
 from .source import chunks as chunk_table
 from .tokens import numbers, tokenize
@@ -26,6 +27,8 @@ COLUMNS = "GXYZIJFMS"  # the words of a simple line (and N, read and dropped)
 _COMMENT = re.compile(rb"\([^()\n]*\)")
 COMMENT_MARK = b"\x01"  # a comment separates words: "X1(c)0" is not X10
 _SEMI = re.compile(rb";[^\n]*")
+SHARE_BYTES = 8 << 20  # a file this big has its tail scanned by the helper process (workers.py)
+HELPER_GROUPS = 32  # a shared file is scanned in this many runs of chunks (see scan_stream)
 
 @dataclass
 class Scan:
@@ -94,34 +97,82 @@ def _fill(table: np.ndarray, simple: np.ndarray, base: int, odd, line, letters, 
     simple[base : base + n] = ok
 
 
-def _classify(result: Scan, table: np.ndarray) -> None:
-    """G codes into motion and units; M 3 or 5 and S only on lines without motion words."""
-    g = table[0]
+def _classify(result: Scan, table: np.ndarray, a: int, b: int) -> None:
+    """Lines ``a..b``: G codes into motion and units; M 3 or 5 and S only on lines
+    without motion words."""
+    g = table[0, a:b]
     motion = (g == 0) | (g == 1) | (g == 2) | (g == 3)
     units = (g == 20) | (g == 21)
-    result.simple &= np.isnan(g) | motion | units
-    result.g = np.where(motion, g, -1).astype(np.int8)
-    result.units = np.where(units, g == 20, -1).astype(np.int8)
-    m, s = result.values["M"], result.values["S"]
+    simple = result.simple[a:b]
+    simple &= np.isnan(g) | motion | units
+    result.g[a:b] = np.where(motion, g, -1)
+    result.units[a:b] = np.where(units, g == 20, -1)
+    m, s = result.values["M"][a:b], result.values["S"][a:b]
     spindle = ~np.isnan(m) | ~np.isnan(s)
     bad_m = ~np.isnan(m) & (m != 3) & (m != 5)
-    moving = motion | ~np.isnan(table[1:7]).all(axis=0)  # X Y Z I J F
-    result.simple &= ~(bad_m | (spindle & moving))
+    moving = motion | ~np.isnan(table[1:7, a:b]).all(axis=0)  # X Y Z I J F
+    simple &= ~(bad_m | (spindle & moving))
 
 
-def scan(data: bytes, n_lines: int, chunks: list | None = None) -> Scan:
+def scan(data: bytes, n_lines: int, chunks: list | None = None, share_bytes: int | None = None) -> Scan:
     """Scan ``data`` (``n_lines`` lines joined by newlines) with the fast path;
     ``chunks``, when given, is ``source.chunks(data)`` (data ending with a newline)."""
+    *_, (result, _) = scan_stream(data, n_lines, chunks, share_bytes)
+    return result
+
+
+def scan_stream(data: bytes, n_lines: int, chunks: list | None = None, share_bytes: int | None = None):
+    """``scan`` as it goes: yields ``(scan, ready)`` each time lines ``0..ready`` are
+    final (the ``Scan`` is the same object, filled in place), at least once.
+
+    Data of ``share_bytes`` (default ``SHARE_BYTES``) or more is shared with the helper
+    process when there is one: it takes groups of chunks from the end while this process works from the start
+    (and the caller interprets what is ready), and whichever group the helper has not
+    finished when this process reaches it is done here, so the two meet wherever their
+    speeds (and the helper's start-up) put them, and nobody waits."""
     table = np.full((len(COLUMNS), n_lines), np.nan)  # one contiguous row per letter
-    simple = np.zeros(n_lines, bool)
+    result = Scan(np.zeros(n_lines, bool), np.full(n_lines, -1, np.int8), np.full(n_lines, -1, np.int8),
+                  {c: table[i] for i, c in enumerate(COLUMNS) if c != "G"})
     if not data.endswith(b"\n"):
         data, chunks = data + b"\n", None
+    big = len(data) >= (SHARE_BYTES if share_bytes is None else share_bytes)
+    groups = _groups(chunks or chunk_table(data), big)
+    futures = {k: _submit(data, groups[k]) for k in range(len(groups) - 1, 0, -1)}  # the tail first
     base = 0
-    for start, end, count in chunks or chunk_table(data):
-        raw = data[start:end]
-        _fill(table, simple, base, *_scan_chunk(raw, count))
-        base += count
-    result = Scan(simple, np.empty(0, np.int8), np.empty(0, np.int8),
-                  {c: table[i] for i, c in enumerate(COLUMNS) if c != "G"})
-    _classify(result, table)
-    return result
+    for k, group in enumerate(groups):
+        words_of = _collect(futures.get(k)) or scan_chunks(data, group)
+        first = base
+        for words, (_, _, count) in zip(words_of, group, strict=True):
+            _fill(table, result.simple, base, *words)
+            base += count
+        _classify(result, table, first, base)
+        yield result, min(base, n_lines)
+    if base < n_lines:
+        yield result, n_lines
+
+
+def scan_chunks(data: bytes, parts: list) -> list:
+    """The words of each chunk ``(start, end, lines)`` of ``data`` (the helper's work)."""
+    return [_scan_chunk(data[start:end], count) for start, end, count in parts]
+
+
+def _groups(parts: list, big: bool) -> list[list]:
+    """``parts`` in HELPER_GROUPS runs of chunks when shared, else one run."""
+    if not big or len(parts) < 2 or not workers.available():
+        return [parts]
+    size = -(-len(parts) // HELPER_GROUPS)
+    return [parts[i : i + size] for i in range(0, len(parts), size)]
+
+
+def _submit(data: bytes, group: list):
+    first, last = group[0][0], group[-1][1]
+    return workers.submit(scan_chunks, data[first:last], [(s - first, e - first, c) for s, e, c in group])
+
+
+def _collect(future) -> list | None:
+    """The helper's words for a group if it has finished them, else ``None`` and this
+    process does the group (one the helper has begun is then done twice: at the
+    meeting point that is quicker than waiting)."""
+    if future is None or future.cancel() or not future.done():
+        return None
+    return workers.result(future)

@@ -11,6 +11,7 @@ move (``toolpath.device_index``) are known at once.
 
 from __future__ import annotations
 
+import threading
 from dataclasses import dataclass, field
 from functools import cached_property
 from pathlib import Path
@@ -110,18 +111,42 @@ def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfi
     """Interpret ``lines``; ``data`` holds their bytes, handed over (emptied) to free them early."""
     raw = data.pop()
     n = len(lines)  # reuse the chunks Lines already counted; otherwise scan makes its own
-    scan = bulk.scan(raw, n, lines.chunks) if lines.chunks else bulk.scan(raw, n)
-    del raw
     report = Report()
     buffer = OpBuffer()
-    runner.run(lines, scan, buffer, report)
-    del scan
+    interpreter = runner.Runner(lines, buffer, report)
+    for scan, ready in bulk.scan_stream(raw, n, lines.chunks or None):  # interpret as lines come
+        interpreter.advance(scan, ready)
+    del raw, scan
+    interpreter.finish()
     ops = buffer.finish()
     del buffer
-    checks.run(ops, profile, lines, report)
+    ops.starts()  # computed once, before two threads read it
+    checking = _in_thread(checks.run, ops, profile, lines, report)  # numpy lets both run at once
     the_plan = normalize.plan(ops, profile.motion.arc_tolerance_mm)
     toolpath = build(ops, the_plan.first, profile)
+    checking.join()
     return Program(name, lines, report.finish(), ops, toolpath, profile, the_plan)
+
+
+class _in_thread(threading.Thread):
+    """``fn(*args)`` on a thread; ``join()`` re-raises what it raised."""
+
+    def __init__(self, fn, *args):
+        super().__init__(name="gcode-checks", daemon=True)
+        self._call, self._error = (fn, args), None
+        self.start()
+
+    def run(self) -> None:
+        fn, args = self._call
+        try:
+            fn(*args)
+        except BaseException as exc:  # handed to the joining thread
+            self._error = exc
+
+    def join(self, timeout: float | None = None) -> None:
+        super().join(timeout)
+        if self._error is not None:
+            raise self._error
 
 
 def load_text(text: str, name: str = "<text>", profile: MachineProfile | None = None) -> Program:

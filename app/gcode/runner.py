@@ -45,28 +45,43 @@ def _after_end(lines: list[str], start: int, end_line: int, report: Report) -> N
             return
 
 
+class Runner:
+    """Interprets a program as its scan becomes ready: ``advance(scan, ready)`` runs
+    every line before ``ready`` not yet run; ``finish()`` ends and returns the state."""
+
+    def __init__(self, lines: list[str], ops: OpBuffer, report: Report, state: State | None = None):
+        self.lines, self.ops, self.report = lines, ops, report
+        self.state = state or State()
+        self.i = 0  # the next line to run
+        self.slow_until = 0
+        self.run_len = RUN_MAX
+
+    def advance(self, scan: Scan, ready: int) -> None:
+        state, i, simple = self.state, self.i, scan.simple
+        complex_lines = np.flatnonzero(~simple[i:ready]) + i
+        while i < ready and not state.ended:
+            if simple[i] and i >= self.slow_until and state.fast_path_ok():
+                k = int(np.searchsorted(complex_lines, i))
+                end = min(int(complex_lines[k]) if k < len(complex_lines) else ready, i + self.run_len)
+                state, stop = vector.run(scan, i, end, state, self.ops)
+                self.run_len = min(self.run_len * 2, RUN_MAX) if stop == end else RUN_AFTER_ERROR
+                if stop > i or stop == end:
+                    i = stop
+                    continue
+            state, refused = _general(state, self.lines[i], i + 1, self.ops, self.report)
+            if refused:
+                self.slow_until = i + 1 + SLOW_AFTER_ERROR
+            i += 1
+        self.state, self.i = state, i
+
+    def finish(self) -> State:
+        if self.state.ended:
+            _after_end(self.lines, self.i, self.state.ended, self.report)
+        return self.state
+
+
 def run(lines: list[str], scan: Scan, ops: OpBuffer, report: Report, state: State | None = None) -> State:
     """Interpret every line; rows go to ``ops``, diagnostics to ``report``."""
-    state = state or State()
-    n = len(lines)
-    simple = scan.simple
-    complex_lines = np.flatnonzero(~simple)
-    i = 0
-    slow_until = 0
-    run_len = RUN_MAX
-    while i < n and not state.ended:
-        if simple[i] and i >= slow_until and state.fast_path_ok():
-            k = int(np.searchsorted(complex_lines, i))
-            end = min(int(complex_lines[k]) if k < len(complex_lines) else n, i + run_len)
-            state, stop = vector.run(scan, i, end, state, ops)
-            run_len = min(run_len * 2, RUN_MAX) if stop == end else RUN_AFTER_ERROR
-            if stop > i or stop == end:
-                i = stop
-                continue
-        state, refused = _general(state, lines[i], i + 1, ops, report)
-        if refused:
-            slow_until = i + 1 + SLOW_AFTER_ERROR
-        i += 1
-    if state.ended:
-        _after_end(lines, i, state.ended, report)
-    return state
+    runner = Runner(lines, ops, report, state)
+    runner.advance(scan, len(lines))
+    return runner.finish()

@@ -1,0 +1,97 @@
+"""The helper process that scans part of a big file: same result, and never needed."""
+
+import os
+import re
+from concurrent.futures import Future
+from concurrent.futures.process import BrokenProcessPool
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from app.gcode import bulk, load, workers
+from app.gcode.source import CHUNK_BYTES, chunks
+
+SAMPLES = Path(__file__).resolve().parents[2] / "resources" / "samples"
+pytestmark = pytest.mark.skipif((os.cpu_count() or 1) < 2, reason="the helper needs a second core")
+
+
+@pytest.fixture(scope="module")
+def big() -> bytes:
+    """About 3 MB of real Inkscape output (a dozen chunks; the samples without their
+    ends), with lines the general path refuses near the end (the helper's part)."""
+    lines = [line for p in sorted(SAMPLES.glob("*.ngc")) for line in p.read_bytes().splitlines()
+             if not re.match(rb"\s*(%|M0?2\b|M30\b)", line, re.IGNORECASE)]
+    text = b"\n".join(lines) + b"\nG21\n"
+    copies = text * (3 * CHUNK_BYTES * 4 // len(text) + 1)
+    return copies + b"G1 X1 Y2 X3\n(unclosed\nG91.1 G2 X1 I1\n" + text + b"M2\n"
+
+
+@pytest.fixture
+def helper():
+    workers.set_enabled(True)
+    assert workers.warm_up(wait=60), "the helper process did not start"
+    yield
+    workers.set_enabled(True)
+
+
+def _same(a: bulk.Scan, b: bulk.Scan) -> None:
+    np.testing.assert_array_equal(a.simple, b.simple)
+    np.testing.assert_array_equal(a.g, b.g)
+    np.testing.assert_array_equal(a.units, b.units)
+    for letter in a.values:
+        np.testing.assert_array_equal(a.values[letter], b.values[letter])
+
+
+def test_the_helper_scans_exactly_what_this_process_scans(big, helper):
+    parts = chunks(big)
+    future = workers.submit(bulk.scan_chunks, big, parts)
+    theirs, mine = workers.result(future), bulk.scan_chunks(big, parts)
+    assert theirs is not None and len(theirs) == len(mine) == len(parts) > 8
+    for a, b in zip(theirs, mine, strict=True):
+        for x, y in zip(a, b, strict=True):
+            np.testing.assert_array_equal(x, y)
+
+
+def test_a_shared_scan_equals_a_scan_alone(big, helper):
+    n = big.count(b"\n")
+    shared = bulk.scan(big, n, share_bytes=0)
+    workers.set_enabled(False)
+    _same(shared, bulk.scan(big, n))
+
+
+def test_a_failed_helper_costs_time_not_the_result(big, monkeypatch):
+    broken = Future()
+    broken.set_exception(BrokenProcessPool("the helper died"))
+    monkeypatch.setattr(workers, "available", lambda: True)
+    monkeypatch.setattr(workers, "submit", lambda *args: broken)
+    n = big.count(b"\n")
+    failed = bulk.scan(big, n, share_bytes=0)
+    monkeypatch.undo()
+    workers.set_enabled(False)
+    _same(failed, bulk.scan(big, n))
+    workers.set_enabled(True)
+
+
+def test_a_helper_that_dies_is_replaced(helper):
+    assert workers.result(workers.submit(os._exit, 3)) is None
+    assert workers.warm_up(wait=60)
+    assert workers.result(workers.submit(abs, -2)) == 2
+
+
+def test_loading_with_the_helper_gives_the_same_program(big, helper, tmp_path):
+    path = tmp_path / "big.ngc"
+    path.write_bytes(big)
+    monkey = bulk.SHARE_BYTES
+    try:
+        bulk.SHARE_BYTES = 0
+        shared = load(path)
+    finally:
+        bulk.SHARE_BYTES = monkey
+    workers.set_enabled(False)
+    alone = load(path)
+    assert [str(d) for d in shared.diagnostics] == [str(d) for d in alone.diagnostics]
+    assert len(shared.errors) >= 2  # the repeated X and the unclosed comment at least
+    assert len(shared.toolpath) > 60_000
+    np.testing.assert_array_equal(shared.toolpath.end, alone.toolpath.end)
+    np.testing.assert_array_equal(shared.toolpath.source_line, alone.toolpath.source_line)
