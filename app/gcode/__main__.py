@@ -4,4 +4,5 @@ import sys
 
 from .cli import main
 
-sys.exit(main())
+if __name__ == "__main__":  # the helper process of workers.py imports this module too
+    sys.exit(main())

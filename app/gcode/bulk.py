@@ -8,7 +8,9 @@ most once, well formed, with nothing but spaces and well-closed comments around 
 and M or S only on a line with no motion word: the shape of nearly every line
 Inkscape's Gcodetools writes (``tokens.py`` gives the byte-level rules). Every other
 line is left to the general lexer and interpreter, which are the reference; the tests
-check that both paths agree.
+check that both paths agree. ``scan_stream`` yields the table as it fills, so the
+loader interprets the head of a big file while its tail is still being read (part of
+it by the helper process of ``workers.py``, on the second core).
 """
 
 from __future__ import annotations
@@ -125,11 +127,11 @@ def scan_stream(data: bytes, n_lines: int, chunks: list | None = None, share_byt
     """``scan`` as it goes: yields ``(scan, ready)`` each time lines ``0..ready`` are
     final (the ``Scan`` is the same object, filled in place), at least once.
 
-    Data of ``share_bytes`` (default ``SHARE_BYTES``) or more is shared with the helper
-    process when there is one: it takes groups of chunks from the end while this process works from the start
-    (and the caller interprets what is ready), and whichever group the helper has not
-    finished when this process reaches it is done here, so the two meet wherever their
-    speeds (and the helper's start-up) put them, and nobody waits."""
+    Data of ``share_bytes`` (default ``SHARE_BYTES``) or more is shared with the
+    helper process when there is one: it takes groups of chunks from the end while this
+    process works from the start (and the caller interprets what is ready); a group the
+    helper has not finished when this process reaches it is done here, so the two meet
+    wherever their speeds (and the helper's start-up) put them, and nobody waits."""
     table = np.full((len(COLUMNS), n_lines), np.nan)  # one contiguous row per letter
     result = Scan(np.zeros(n_lines, bool), np.full(n_lines, -1, np.int8), np.full(n_lines, -1, np.int8),
                   {c: table[i] for i, c in enumerate(COLUMNS) if c != "G"})

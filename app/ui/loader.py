@@ -15,6 +15,7 @@ from pathlib import Path
 
 from PySide6.QtCore import QObject, Signal
 
+from app.gcode import workers
 from app.ui.preview.model import PreviewModel
 
 SNIFF_BYTES = 4096
@@ -38,6 +39,7 @@ class ProgramLoader(QObject):
         super().__init__(parent)
         self.tolerance = tolerance
         self.busy = False
+        workers.warm_up()  # the second core is ready before the first big file is opened
 
     def load(self, path: str | Path, wait: bool = False) -> None:
         self.busy = True
