@@ -24,7 +24,7 @@ os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
 ROOT = Path(__file__).resolve().parents[1]
 DATA = ROOT / "bench" / "data"
 JOB_LINES = 100_000
-STREAM_LIMIT_S = 180.0
+STREAM_LIMIT_S = 600.0
 SPEED = 2  # machine clock 2x real time: at higher factors a 0.6 s stall of a loaded host reads as a lost link
 
 
@@ -38,14 +38,19 @@ def big_file() -> Path:
 
 
 def job_file() -> Path:
+    """A job of JOB_LINES device lines: the head of the big file, cut after the source
+    line that makes the JOB_LINES-th device line, then M5 M2."""
     path = DATA / "ui_100k.ngc"
     if path.exists():
         return path
-    source = big_file()
+    from app.gcode import load_text
+
+    with big_file().open() as src:
+        head = [next(src) for _ in range(JOB_LINES * 3 // 2)]
+    program = load_text("".join(head))
+    last_line = int(program.line_map[JOB_LINES - 3])  # 1-based; M5 and M2 make two more
     DATA.mkdir(parents=True, exist_ok=True)
-    with source.open() as src:
-        lines = [next(src) for _ in range(JOB_LINES - 2)]
-    path.write_text("".join(lines) + "M5\nM2\n")
+    path.write_text("".join(head[:last_line]) + "M5\nM2\n")
     return path
 
 
@@ -112,6 +117,52 @@ class LatenessProbe:
         self.timer.stop()
 
 
+class StallTracer:
+    """Where the GUI thread is when the probe is late: a thread samples its Python stack
+    every 2 ms while no tick has come for STALL_S, and counts the innermost frames of
+    this project's code (``BENCH_UI_TRACE=1``; it costs a little time of its own)."""
+
+    STALL_S = 0.03
+
+    def __init__(self, probe: LatenessProbe):
+        import collections
+        import threading
+
+        self.probe = probe
+        self.counts: collections.Counter = collections.Counter()
+        self.main_id = threading.get_ident()
+        self._stop = threading.Event()
+        self._thread = threading.Thread(target=self._run, daemon=True)
+
+    def start(self) -> None:
+        self._thread.start()
+
+    def stop(self) -> None:
+        self._stop.set()
+        self._thread.join()
+
+    def _run(self) -> None:
+        import sys
+        import traceback
+
+        while not self._stop.wait(0.002):
+            last = self.probe._last
+            if last is None or time.perf_counter() - last < self.STALL_S:
+                continue
+            frame = sys._current_frames().get(self.main_id)
+            if frame is None:
+                continue
+            stack = traceback.extract_stack(frame)
+            ours = [f for f in stack if "/app/" in f.filename or "pyqtgraph" in f.filename]
+            key = " <- ".join(f"{Path(f.filename).stem}.{f.name}:{f.lineno}" for f in reversed(ours[-4:]))
+            self.counts[key or f"{Path(stack[-1].filename).stem}.{stack[-1].name}"] += 1
+
+    def report(self, top: int = 12) -> str:
+        total = sum(self.counts.values()) or 1
+        rows = [f"    {n * 100 / total:4.1f}%  {key}" for key, n in self.counts.most_common(top)]
+        return "\n".join(["  where the GUI thread was during stalls (samples):", *rows])
+
+
 def _start_simulator(sd: Path):
     """The simulator as its own process on a pseudo-terminal, as a real board would be."""
     import subprocess
@@ -123,11 +174,17 @@ def _start_simulator(sd: Path):
     return proc, proc.stdout.readline().split()[-1]
 
 
-def _lateness(app, seconds: float, until=lambda: False) -> list[float]:
+def _lateness(app, seconds: float, until=lambda: False, trace: bool = False) -> list[float]:
     probe = LatenessProbe()
+    tracer = StallTracer(probe) if trace else None
     probe.start()
+    if tracer:
+        tracer.start()
     _wait(app, until, seconds)
     probe.stop()
+    if tracer:
+        tracer.stop()
+        print(tracer.report())
     return sorted(probe.samples)
 
 
@@ -155,7 +212,8 @@ def bench_streaming(config: Path) -> None:
         idle = _lateness(app, 10.0)
         started = time.monotonic()
         window.operator.start()
-        busy = _lateness(app, STREAM_LIMIT_S, lambda: binder.last_job_event is not None)
+        trace = os.environ.get("BENCH_UI_TRACE") == "1"
+        busy = _lateness(app, STREAM_LIMIT_S, lambda: binder.last_job_event is not None, trace)
         took = time.monotonic() - started
     finally:
         window.close()

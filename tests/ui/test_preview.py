@@ -7,7 +7,7 @@ import pytest
 from app.gcode import load, load_text
 from app.ui.preview.lod import CHUNK, LodSegments
 from app.ui.preview.model import PreviewModel
-from app.ui.preview.widget import PreviewWidget
+from app.ui.preview.widget import DONE_COLOUR, PreviewWidget
 from app.ui.program.summary import bounds_array
 from tests.ui.conftest import SAMPLE_FILES
 
@@ -54,14 +54,41 @@ def test_arcs_are_smooth(preview):
     assert len(circle) > 60 and np.allclose(radius, 10.0, atol=1e-9)
 
 
+def _green_pixels(image) -> int:
+    """Pixels of the finished colour in a QImage."""
+    from PySide6.QtGui import QColor
+
+    rgba = image.convertToFormat(image.Format.Format_RGBA8888)
+    pixels = np.frombuffer(rgba.constBits(), np.uint8).reshape(rgba.height(), rgba.bytesPerLine())
+    pixels = pixels[:, : rgba.width() * 4].reshape(rgba.height(), rgba.width(), 4)
+    done = QColor(DONE_COLOUR)
+    return int(np.count_nonzero((pixels[..., 0] == done.red()) & (pixels[..., 1] == done.green())
+                                & (pixels[..., 2] == done.blue())))
+
+
 def test_done_part_and_highlight(preview):
     program = load(SAMPLE_FILES[0])
     preview.show_program(program.toolpath)
-    assert _count(preview.done_item) == 0
+    assert preview.done_layer.segments == 0 and _green_pixels(preview.grab().toImage()) == 0
     preview.set_done(len(program.device_lines) - 1)
-    assert _count(preview.done_item) + _count(preview.recent_item) > 0
+    assert preview.done_layer.segments > 0
+    assert _green_pixels(preview.grab().toImage()) > 500  # painted on screen, not only counted
     preview.highlight_move(5)
     assert len(preview.highlight_item.getData()[0]) >= 2
+
+
+def test_the_finished_part_follows_a_pan_and_a_new_run(preview):
+    program = load(next(p for p in SAMPLE_FILES if "star_passes" in p.name))
+    preview.show_program(program.toolpath)
+    preview.set_done(len(program.line_map) // 2)
+    before = _green_pixels(preview.done_layer.image)
+    preview.zoom(2)
+    preview._refill_now()  # as the coalesced refill after a range change does
+    x, _ = preview.model.done_frame(*preview._view_and_pixel(), preview._done_move)
+    assert preview.done_layer.segments == len(x) // 2
+    assert _green_pixels(preview.done_layer.image) > before  # the same part, drawn twice as big
+    preview.set_done(-1)  # a new run
+    assert preview.done_layer.segments == 0 and _green_pixels(preview.done_layer.image) == 0
 
 
 def test_zoom_and_fit(preview):
@@ -104,16 +131,17 @@ def test_level_of_detail_keeps_extremes():
         assert len(level.boxes) == -(-len(level.move) // CHUNK)
 
 
-def test_finished_part_grows_in_two_layers(preview):
+def test_finished_part_grows_by_painting_only_what_is_new(preview):
     program = load(next(p for p in SAMPLE_FILES if "star_passes" in p.name))
     preview.show_program(program.toolpath)
-    model = preview.model
-    total = 0
+    model, layer = preview.model, preview.done_layer
+    total, pixels = 0, 0
     for seq in range(0, len(program.line_map), 7):
         preview.set_done(seq)
-        drawn = _count(preview.done_item) + _count(preview.recent_item)
-        assert drawn >= total  # never shrinks while the job advances
-        total = drawn
+        assert layer.segments >= total  # never shrinks while the job advances
+        total = layer.segments
+    grown = _green_pixels(layer.image)
     preview.set_done(len(program.line_map) - 1)
     x, _ = model.recent_segments(-1, len(program.toolpath.kind) - 1)
-    assert _count(preview.done_item) + _count(preview.recent_item) == len(x)
+    assert layer.segments == len(x) // 2  # every cut segment painted exactly once
+    assert _green_pixels(layer.image) >= grown > pixels

@@ -1,10 +1,11 @@
 """The toolpath preview: XY view of the program drawn with pyqtgraph.
 
 Few large items: one curve per drawing group (rapids dashed, cuts coloured by depth),
-one for the finished part, the travel rectangle, the program's bounding box, the tool
-marker and a highlighted move. After every pan or zoom the curves are refilled from
-the model's level of detail for the new view (coalesced to one refill per event-loop
-turn), so the cost of a redraw stays bounded for a file of a million lines.
+the finished part (an image that grows as the job runs, ``done_layer.py``), the
+travel rectangle, the program's bounding box, the tool marker and a highlighted move.
+After every pan or zoom the curves are refilled from the model's level of detail for
+the new view (coalesced to one refill per event-loop turn), so the cost of a redraw
+stays bounded for a file of a million lines.
 """
 
 from __future__ import annotations
@@ -15,13 +16,13 @@ from PySide6.QtCore import Qt, QTimer, Signal
 from PySide6.QtGui import QColor, QPen
 from PySide6.QtWidgets import QGraphicsItem, QVBoxLayout, QWidget
 
+from app.ui.preview.done_layer import DoneLayer
 from app.ui.preview.geometry import AIR_GROUP, DEPTH_BANDS, RAPID_GROUP
 from app.ui.preview.model import PreviewModel
 
 DONE_COLOUR = "#39d353"
 MARKER_COLOUR = "#ff4040"
 HIGHLIGHT_COLOUR = "#00e5ff"
-FREEZE_MOVES = 2000  # finished moves drawn in the small item before they join the cached one
 
 
 # Shallow to deep: warm colours that stand out on the black background.
@@ -41,7 +42,6 @@ class PreviewWidget(QWidget):
         super().__init__(parent)
         self.model: PreviewModel | None = None
         self._done_move = -1
-        self._frozen_move = -1
         self.plot = pg.PlotWidget()
         self.plot.setAspectLocked(True)
         self.grid = False
@@ -71,10 +71,10 @@ class PreviewWidget(QWidget):
         pens = [rapid_pen, pg.mkPen("#5fa8d3", width=1)]
         pens += [pg.mkPen(colour, width=1) for colour in _depth_colours()]
         self.group_items = [self._curve(pen, z=i) for i, pen in enumerate(pens)]
-        done_pen = pg.mkPen(DONE_COLOUR, width=1)
-        self.done_item = self._curve(done_pen, z=20)  # finished part up to _frozen_move (cached)
-        self.recent_item = self._curve(done_pen, z=21)  # finished since then: small, redrawn often
-        for item in [*self.group_items, self.done_item, self.travel_item, self.bounds_item]:
+        self.done_layer = DoneLayer(self.view, pg.mkPen(DONE_COLOUR, width=1))
+        self.done_layer.setZValue(20)
+        self.plot.addItem(self.done_layer)
+        for item in [*self.group_items, self.travel_item, self.bounds_item]:
             # Drawn once into a pixmap: moving the tool marker then costs a blit, not a redraw.
             item.setCacheMode(QGraphicsItem.CacheMode.DeviceCoordinateCache)
         self.highlight_item = self._curve(pg.mkPen(HIGHLIGHT_COLOUR, width=3), z=30)
@@ -102,7 +102,6 @@ class PreviewWidget(QWidget):
     def show_model(self, model: PreviewModel | None) -> None:
         self.model = model
         self._done_move = -1
-        self._frozen_move = -1
         self.highlight_item.setData([], [])
         self._update_legend()
         if model is None or model.empty:
@@ -156,11 +155,11 @@ class PreviewWidget(QWidget):
         move = self.model.move_of_device_line(seq)
         if move == self._done_move:
             return
-        self._done_move = move
-        if move < self._frozen_move or move - self._frozen_move > FREEZE_MOVES:
+        before, self._done_move = self._done_move, move
+        if move < before:  # a new run: start the picture again
             self._refill_done(*self._view_and_pixel())
-        else:
-            self.recent_item.setData(*self.model.recent_segments(self._frozen_move, move))
+        else:  # only what was finished since the last frame is painted
+            self.done_layer.add(*self.model.recent_segments(before, move))
 
     def highlight_move(self, index: int | None) -> None:
         """Draw one move thick and centre the view on it."""
@@ -184,8 +183,9 @@ class PreviewWidget(QWidget):
     def _refill_now(self) -> None:
         view, pixel = self._view_and_pixel()
         if self.model is None or self.model.empty:
-            for item in [*self.group_items, self.done_item, self.recent_item]:
+            for item in self.group_items:
                 item.setData([], [])
+            self.done_layer.clear()
         else:
             for item, (x, y) in zip(self.group_items, self.model.frame(view, pixel), strict=True):
                 item.setData(x, y)
@@ -194,11 +194,8 @@ class PreviewWidget(QWidget):
         self.frame_drawn.emit()
 
     def _refill_done(self, view, pixel) -> None:
-        """Redraw the whole finished part (cached); the recent item starts empty again."""
-        x, y = self.model.done_frame(view, pixel, self._done_move)
-        self.done_item.setData(x, y)
-        self.recent_item.setData([], [])
-        self._frozen_move = self._done_move
+        """Paint the whole finished part again (the view changed, or a new run began)."""
+        self.done_layer.reset(*self.model.done_frame(view, pixel, self._done_move))
 
     def plotted_bounds(self) -> tuple[float, float, float, float]:
         """Extents of the toolpath curves as drawn now (for tests)."""
