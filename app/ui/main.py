@@ -24,7 +24,16 @@ def parse_args(argv: list[str] | None) -> argparse.Namespace:
     return parser.parse_args(argv)
 
 
+GIL_SWITCH_S = 0.0005
+
+
 def make_app():
+    """The QApplication, made once. Also shortens the GIL switch interval: the serial
+    worker thread runs Python most of the time a job streams, and with the default
+    5 ms every call from Qt into Python (each item's paint and boundingRect in a
+    frame) could wait that long for the GIL; tens of such waits stalled a frame by
+    50-100 ms. At 0.5 ms the GUI thread gets the GIL back at once (bench_ui measures it)."""
+    sys.setswitchinterval(GIL_SWITCH_S)
     from PySide6.QtCore import QCoreApplication, Qt
     from PySide6.QtGui import QGuiApplication
     from PySide6.QtWidgets import QApplication

@@ -4,12 +4,14 @@ measured) on the right, over the last 10 s, redrawn by a ~30 Hz timer."""
 
 from __future__ import annotations
 
+import numpy as np
 import pyqtgraph as pg
 from PySide6.QtCore import Qt, QTimer
 from PySide6.QtWidgets import QVBoxLayout, QWidget
 
 from app.ui.plot.history import COMMANDED, MEASURED, PositionHistory, T
 from app.ui.plot.position_plot import AXIS_COLOURS, REDRAW_MS
+from app.ui.plot.ranges import SteadyYRange
 
 
 class DiagnosticsView(QWidget):
@@ -21,7 +23,7 @@ class DiagnosticsView(QWidget):
         self.layout_widget = pg.GraphicsLayoutWidget()
         self.layout_widget.ci.setContentsMargins(2, 2, 2, 2)
         self.layout_widget.ci.setSpacing(0)
-        self.position_curves, self.error_curves, self.plots = [], [], []
+        self.position_curves, self.error_curves, self.plots, self.y_ranges = [], [], [], []
         for row, (axis, colour) in enumerate(zip("XYZ", AXIS_COLOURS, strict=True)):
             self._add_axis(row, axis, colour)
         layout = QVBoxLayout(self)
@@ -41,7 +43,10 @@ class DiagnosticsView(QWidget):
             plot.getAxis("left").setWidth(52)
             plot.getAxis("left").enableAutoSIPrefix(False)
         err.setXLink(pos)
-        err.getViewBox().setLimits(minYRange=0.02)  # never zoom into sub-micron noise
+        pos.setXRange(-self.seconds, 0, padding=0)
+        # Y moves in whole steps (the axis text is most of a frame); errors never zoom
+        # into sub-micron noise
+        self.y_ranges += [SteadyYRange(pos, min_span=1.0), SteadyYRange(err, min_span=0.02)]
         commanded = pos.plot(pen=pg.mkPen("#c0c0c0", width=1, style=Qt.PenStyle.DashLine))
         measured = pos.plot(pen=pg.mkPen(colour, width=1))
         self.position_curves.append((commanded, measured))
@@ -57,9 +62,10 @@ class DiagnosticsView(QWidget):
         measured, commanded = rows[:, MEASURED].T, rows[:, COMMANDED].T
         for axis in range(3):
             cmd_curve, meas_curve = self.position_curves[axis]
+            error = commanded[axis] - measured[axis]
             cmd_curve.setData(t, commanded[axis])
             meas_curve.setData(t, measured[axis])
-            self.error_curves[axis].setData(t, commanded[axis] - measured[axis])
-        for plot in self.plots[::2]:
-            plot.setXRange(-self.seconds, 0, padding=0)
+            self.error_curves[axis].setData(t, error)
+            self.y_ranges[2 * axis].fit(np.concatenate([commanded[axis], measured[axis]]))
+            self.y_ranges[2 * axis + 1].fit(error)
         return True

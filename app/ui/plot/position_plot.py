@@ -6,12 +6,12 @@ the history changed and the widget is visible, never once per frame.
 
 from __future__ import annotations
 
-import numpy as np
 import pyqtgraph as pg
 from PySide6.QtCore import QTimer
 from PySide6.QtWidgets import QVBoxLayout, QWidget
 
 from app.ui.plot.history import MEASURED, PositionHistory, T
+from app.ui.plot.ranges import SteadyYRange
 
 AXIS_COLOURS = ("#ff5555", "#50fa7b", "#5599ff")
 REDRAW_MS = 33
@@ -36,9 +36,8 @@ class PositionPlot(QWidget):
             self.plot.plot(pen=pg.mkPen(colour, width=1), name=axis)
             for axis, colour in zip("XYZ", AXIS_COLOURS, strict=True)
         ]
-        self.plot.getPlotItem().disableAutoRange()
         self.plot.setXRange(-seconds, 0, padding=0)
-        self._y_range = None
+        self.y_range = SteadyYRange(self.plot.getPlotItem(), min_span=Y_STEP, step=Y_STEP, margin=2.0)
         layout = QVBoxLayout(self)
         layout.setContentsMargins(0, 0, 0, 0)
         layout.addWidget(self.plot)
@@ -54,14 +53,5 @@ class PositionPlot(QWidget):
         t = rows[:, T] - (rows[-1, T] if len(rows) else 0.0)
         for curve, column in zip(self.curves, rows[:, MEASURED].T, strict=True):
             curve.setData(t, column)
-        if len(rows):
-            self._fit_y(rows[:, MEASURED])
+        self.y_range.fit(rows[:, MEASURED])  # whole steps of 10 mm: the axis text rarely changes
         return True
-
-    def _fit_y(self, values) -> None:
-        """Y range in whole steps of 10 mm: it (and the axis text) changes only now and then."""
-        lo = float(np.floor(values.min() / Y_STEP) * Y_STEP)
-        hi = float(np.ceil(values.max() / Y_STEP) * Y_STEP)
-        if (lo, hi) != self._y_range:
-            self._y_range = (lo, hi)
-            self.plot.setYRange(lo - 2, max(hi, lo + Y_STEP) + 2, padding=0)
