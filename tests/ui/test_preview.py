@@ -12,11 +12,6 @@ from app.ui.program.summary import bounds_array
 from tests.ui.conftest import SAMPLE_FILES
 
 
-def _count(item) -> int:
-    x = item.getData()[0]
-    return 0 if x is None else len(x)
-
-
 @pytest.fixture
 def preview(qtbot):
     widget = PreviewWidget()
@@ -40,9 +35,8 @@ def test_plotted_extents_equal_program_bounds(preview, path):
 def test_rapids_dashed_and_cuts_coloured_by_depth(preview):
     program = load(next(p for p in SAMPLE_FILES if "star_passes" in p.name))
     preview.show_program(program.toolpath)
-    rapid = preview.group_items[0]
-    assert rapid.opts["pen"].style() != preview.group_items[2].opts["pen"].style()
-    drawn = [i for i, item in enumerate(preview.group_items[2:]) if _count(item)]
+    assert preview.group_pens[0].style() != preview.group_pens[2].style()  # rapids dashed
+    drawn = [i for i, (x, _) in enumerate(preview.group_data[2:]) if len(x)]
     assert len(drawn) >= 3  # four passes at -0.75 .. -3 fall in several depth bands
 
 

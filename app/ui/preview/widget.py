@@ -1,11 +1,12 @@
 """The toolpath preview: XY view of the program drawn with pyqtgraph.
 
-Few large items: one curve per drawing group (rapids dashed, cuts coloured by depth),
-the finished part (an image that grows as the job runs, ``done_layer.py``), the
-travel rectangle, the program's bounding box, the tool marker and a highlighted move.
-After every pan or zoom the curves are refilled from the model's level of detail for
-the new view (coalesced to one refill per event-loop turn), so the cost of a redraw
-stays bounded for a file of a million lines.
+Few items: the path (every drawing group: rapids dashed, cuts coloured by depth) and
+its finished part, each a ``PictureLayer`` (an image of the view, ``picture.py``; the
+finished part grows by painting only what is new), the travel rectangle, the
+program's bounding box, the tool marker and a highlighted move. After every pan or
+zoom the path is repainted from the model's level of detail for the new view
+(coalesced to one refill per event-loop turn), so the cost of a redraw stays bounded
+for a file of a million lines, and a moving tool marker costs a blit.
 """
 
 from __future__ import annotations
@@ -14,11 +15,11 @@ import numpy as np
 import pyqtgraph as pg
 from PySide6.QtCore import Qt, QTimer, Signal
 from PySide6.QtGui import QColor, QPen
-from PySide6.QtWidgets import QGraphicsItem, QVBoxLayout, QWidget
+from PySide6.QtWidgets import QVBoxLayout, QWidget
 
-from app.ui.preview.done_layer import DoneLayer
 from app.ui.preview.geometry import AIR_GROUP, DEPTH_BANDS, RAPID_GROUP
 from app.ui.preview.model import PreviewModel
+from app.ui.preview.picture import PictureLayer
 
 DONE_COLOUR = "#39d353"
 MARKER_COLOUR = "#ff4040"
@@ -62,6 +63,7 @@ class PreviewWidget(QWidget):
         self.set_travel(travel, offset)
         self._refill = QTimer(self, singleShot=True, interval=0, timeout=self._refill_now)
         self.view.sigRangeChanged.connect(self._refill.start)
+        self.view.sigResized.connect(self._refill.start)  # the pictures are the view's size
         self.view.setRange(xRange=(0, travel[0]), yRange=(0, travel[1]))
 
     def _make_items(self) -> None:
@@ -70,17 +72,22 @@ class PreviewWidget(QWidget):
         rapid_pen = pg.mkPen("#9a9a9a", width=1, style=Qt.PenStyle.DashLine)
         pens = [rapid_pen, pg.mkPen("#5fa8d3", width=1)]
         pens += [pg.mkPen(colour, width=1) for colour in _depth_colours()]
-        self.group_items = [self._curve(pen, z=i) for i, pen in enumerate(pens)]
-        self.done_layer = DoneLayer(self.view, pg.mkPen(DONE_COLOUR, width=1))
-        self.done_layer.setZValue(20)
-        self.plot.addItem(self.done_layer)
-        for item in [*self.group_items, self.travel_item, self.bounds_item]:
-            # Drawn once into a pixmap: moving the tool marker then costs a blit, not a redraw.
-            item.setCacheMode(QGraphicsItem.CacheMode.DeviceCoordinateCache)
+        self.group_pens = pens
+        self.group_data = [(np.zeros(0), np.zeros(0)) for _ in pens]  # what the path layer shows
+        self.group_samples = [pg.PlotDataItem(pen=pen) for pen in pens]  # legend samples only
+        self.done_pen = pg.mkPen(DONE_COLOUR, width=1)
+        self.path_layer = self._layer(z=5)
+        self.done_layer = self._layer(z=20)
         self.highlight_item = self._curve(pg.mkPen(HIGHLIGHT_COLOUR, width=3), z=30)
         self.marker = pg.ScatterPlotItem(size=14, symbol="+", pen=pg.mkPen(MARKER_COLOUR, width=2))
         self.marker.setZValue(40)
         self.plot.addItem(self.marker)
+
+    def _layer(self, z: int) -> PictureLayer:
+        layer = PictureLayer(self.view)
+        layer.setZValue(z)
+        self.plot.addItem(layer)
+        return layer
 
     def _curve(self, pen: QPen, z: int) -> pg.PlotCurveItem:
         item = pg.PlotCurveItem(pen=pen, connect="pairs", skipFiniteCheck=True)
@@ -118,13 +125,13 @@ class PreviewWidget(QWidget):
         if self.model is None or self.model.empty:
             return
         edges = self.model.geometry.depth_edges
-        self.legend.addItem(self.group_items[RAPID_GROUP], "rapid")
+        self.legend.addItem(self.group_samples[RAPID_GROUP], "rapid")
         if len(self.model.groups[AIR_GROUP]):
-            self.legend.addItem(self.group_items[AIR_GROUP], "feed Z ≥ 0")
+            self.legend.addItem(self.group_samples[AIR_GROUP], "feed Z ≥ 0")
         for band in range(DEPTH_BANDS):
             if len(self.model.groups[2 + band]):
                 label = f"Z {edges[band]:.2f} … {edges[band + 1]:.2f}"
-                self.legend.addItem(self.group_items[2 + band], label)
+                self.legend.addItem(self.group_samples[2 + band], label)
 
     def fit(self) -> None:
         """Zoom to the program (or to the travel when no program is open)."""
@@ -159,7 +166,7 @@ class PreviewWidget(QWidget):
         if move < before:  # a new run: start the picture again
             self._refill_done(*self._view_and_pixel())
         else:  # only what was finished since the last frame is painted
-            self.done_layer.add(*self.model.recent_segments(before, move))
+            self.done_layer.add(self.done_pen, *self.model.recent_segments(before, move))
 
     def highlight_move(self, index: int | None) -> None:
         """Draw one move thick and centre the view on it."""
@@ -183,26 +190,24 @@ class PreviewWidget(QWidget):
     def _refill_now(self) -> None:
         view, pixel = self._view_and_pixel()
         if self.model is None or self.model.empty:
-            for item in self.group_items:
-                item.setData([], [])
+            self.group_data = [(np.zeros(0), np.zeros(0)) for _ in self.group_pens]
             self.done_layer.clear()
         else:
-            for item, (x, y) in zip(self.group_items, self.model.frame(view, pixel), strict=True):
-                item.setData(x, y)
-                item.setVisible(len(x) > 0)  # an empty item still costs the paint a call into Python
+            self.group_data = self.model.frame(view, pixel)
             self._refill_done(view, pixel)
+        pairs = zip(self.group_pens, self.group_data, strict=True)
+        self.path_layer.reset([(pen, x, y) for pen, (x, y) in pairs])
         self.frame_drawn.emit()
 
     def _refill_done(self, view, pixel) -> None:
         """Paint the whole finished part again (the view changed, or a new run began)."""
-        self.done_layer.reset(*self.model.done_frame(view, pixel, self._done_move))
+        self.done_layer.reset([(self.done_pen, *self.model.done_frame(view, pixel, self._done_move))])
 
     def plotted_bounds(self) -> tuple[float, float, float, float]:
-        """Extents of the toolpath curves as drawn now (for tests)."""
+        """Extents of the toolpath as drawn now (for tests)."""
         xs, ys = [], []
-        for item in self.group_items:
-            x, y = item.getData()
-            if x is not None and len(x) and np.isfinite(x).any():
+        for x, y in self.group_data:
+            if len(x) and np.isfinite(x).any():
                 xs += [np.nanmin(x), np.nanmax(x)]
                 ys += [np.nanmin(y), np.nanmax(y)]
         return (min(xs), max(xs), min(ys), max(ys)) if xs else (0.0, 0.0, 0.0, 0.0)
