@@ -252,7 +252,8 @@ def bench_big_file(config: Path) -> None:
 
 def _pan_zoom(app, window) -> None:
     preview = window.preview
-    preview.model.prebuild().join()
+    preview.model.build_all()
+    preview._refill_now()
     (x0, x1), (y0, y1) = preview.view.viewRange()
     cx, cy, w, h = (x0 + x1) / 2, (y0 + y1) / 2, x1 - x0, y1 - y0
     views = []

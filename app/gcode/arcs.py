@@ -114,31 +114,59 @@ def chord_points(start3, end3, center3, plane_axes, turn, tolerance):
     ``start3``/``end3``/``center3`` are (n, 3) in XYZ; ``plane_axes`` gives per arc
     the (first, second, normal) axis indices; the normal axis moves linearly (helix).
     """
-    n = len(start3)
-    idx = np.arange(n)
-    a1, a2, a3 = (np.asarray(plane_axes)[:, i] for i in range(3))
-    s = np.stack([start3[idx, a1], start3[idx, a2]], axis=1)
-    e = np.stack([end3[idx, a1], end3[idx, a2]], axis=1)
-    c = np.stack([center3[idx, a1], center3[idx, a2]], axis=1)
+    *flat, (n_start, n_end) = in_plane(plane_axes, start3, end3, center3)
+    s, e, c = flat
     ang = sweep(s, e, c, turn)
     r = np.hypot(s[:, 0] - c[:, 0], s[:, 1] - c[:, 1])
     r_end = np.hypot(e[:, 0] - c[:, 0], e[:, 1] - c[:, 1])
     count = segments(np.maximum(r, r_end), ang, tolerance)
-    owner = np.repeat(idx, count)
-    first = np.cumsum(count) - count
-    frac = (np.arange(len(owner)) - first[owner] + 1) / count[owner]
-    theta0 = np.arctan2(s[:, 1] - c[:, 1], s[:, 0] - c[:, 0])
-    theta = theta0[owner] + ang[owner] * frac
-    rad = r[owner] + (r_end - r)[owner] * frac  # spiral slightly if r1 != r2
-    pts = np.empty((len(owner), 3))
-    rows = np.arange(len(owner))
-    pts[rows, a1[owner]] = c[owner, 0] + rad * np.cos(theta)
-    pts[rows, a2[owner]] = c[owner, 1] + rad * np.sin(theta)
-    n3 = a3[owner]
-    pts[rows, n3] = start3[owner, n3] + (end3[owner, n3] - start3[owner, n3]) * frac
+    owner = np.repeat(np.arange(len(s)), count)
     last = np.cumsum(count) - 1
+    frac = np.arange(1, len(owner) + 1, dtype=float)
+    frac -= np.repeat(last + 1 - count, count)
+    frac /= np.repeat(count, count)  # (k+1)/count for the k-th chord end of its arc
+    theta0 = np.arctan2(s[:, 1] - c[:, 1], s[:, 0] - c[:, 0])
+    theta = np.repeat(theta0, count) + np.repeat(ang, count) * frac
+    rad = np.repeat(r, count) + np.repeat(r_end - r, count) * frac  # spiral slightly if r1 != r2
+    first_axis = np.repeat(c[:, 0], count) + rad * np.cos(theta)
+    second_axis = np.repeat(c[:, 1], count) + rad * np.sin(theta)
+    normal = np.repeat(n_start, count) + np.repeat(n_end - n_start, count) * frac
+    axes = np.asarray(plane_axes)
+    if not len(axes) or (axes == (0, 1, 2)).all():  # all in XY: the columns as they are
+        pts = np.column_stack([first_axis, second_axis, normal])
+    else:
+        pts = np.empty((len(owner), 3))
+        rows = np.arange(len(owner))
+        for column, values in zip(axes.T, (first_axis, second_axis, normal), strict=True):
+            pts[rows, column[owner]] = values
     pts[last] = end3  # land exactly on the programmed end
     return pts, owner
+
+
+def arc_box(start, end, center, plane_axes, turn):
+    """Per arc, (low xyz, high xyz) of the whole arc: its ends and every quadrant point
+    it sweeps through (arrays as in ``chord_points``)."""
+    low, high = np.minimum(start, end), np.maximum(start, end)
+    axes = np.asarray(plane_axes)
+    idx = np.arange(len(start))
+    s = np.stack([start[idx, axes[:, 0]], start[idx, axes[:, 1]]], axis=1)
+    e = np.stack([end[idx, axes[:, 0]], end[idx, axes[:, 1]]], axis=1)
+    c = np.stack([center[idx, axes[:, 0]], center[idx, axes[:, 1]]], axis=1)
+    ang = sweep(s, e, c, turn)
+    a0 = np.arctan2(s[:, 1] - c[:, 1], s[:, 0] - c[:, 0])
+    # an arc whose ends lie at slightly different radii is drawn as a spiral between them
+    r = np.maximum(np.hypot(*(s - c).T), np.hypot(*(e - c).T))
+    for k, (axis, sign) in enumerate(((0, 1), (1, 1), (0, -1), (1, -1))):
+        cardinal = k * np.pi / 2
+        rel = np.where(ang > 0, np.mod(cardinal - a0, 2 * np.pi), np.mod(a0 - cardinal, 2 * np.pi))
+        hit = rel <= np.abs(ang)
+        which = axes[idx, axis]
+        value = c[:, axis] + sign * r
+        sel = np.flatnonzero(hit)
+        tgt = high if sign > 0 else low
+        op = np.maximum if sign > 0 else np.minimum
+        tgt[sel, which[sel]] = op(tgt[sel, which[sel]], value[sel])
+    return low, high
 
 
 def in_plane(plane_axes, *points3):

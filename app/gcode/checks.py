@@ -14,7 +14,7 @@ import numpy as np
 
 from app.profile import MachineProfile
 
-from .arcs import sweep
+from .arcs import arc_box
 from .diagnostics import Report
 from .lexer import lex_line
 from .ops import ARC_CCW, ARC_CW, FEED, PLANE_AXES, Ops
@@ -27,28 +27,8 @@ def _column(lines: list[str], line_no: int, letter: str) -> int:
 
 def _arc_extremes(ops: Ops, rows: np.ndarray):
     """Per arc row, (low xyz, high xyz) of the whole arc."""
-    start = ops.starts()[rows]
-    end, center = ops.end[rows], ops.center[rows]
-    low, high = np.minimum(start, end), np.maximum(start, end)
     axes = np.array(PLANE_AXES)[ops.plane[rows]]
-    idx = np.arange(len(rows))
-    s = np.stack([start[idx, axes[:, 0]], start[idx, axes[:, 1]]], axis=1)
-    e = np.stack([end[idx, axes[:, 0]], end[idx, axes[:, 1]]], axis=1)
-    c = np.stack([center[idx, axes[:, 0]], center[idx, axes[:, 1]]], axis=1)
-    ang = sweep(s, e, c, ops.turn[rows])
-    a0 = np.arctan2(s[:, 1] - c[:, 1], s[:, 0] - c[:, 0])
-    r = np.hypot(s[:, 0] - c[:, 0], s[:, 1] - c[:, 1])
-    for k, (axis, sign) in enumerate(((0, 1), (1, 1), (0, -1), (1, -1))):
-        cardinal = k * np.pi / 2
-        rel = np.where(ang > 0, np.mod(cardinal - a0, 2 * np.pi), np.mod(a0 - cardinal, 2 * np.pi))
-        hit = rel <= np.abs(ang)
-        which = axes[idx, axis]
-        value = c[:, axis] + sign * r
-        sel = np.flatnonzero(hit)
-        tgt = high if sign > 0 else low
-        op = np.maximum if sign > 0 else np.minimum
-        tgt[sel, which[sel]] = op(tgt[sel, which[sel]], value[sel])
-    return low, high
+    return arc_box(ops.starts()[rows], ops.end[rows], ops.center[rows], axes, ops.turn[rows])
 
 
 def _may_bulge_out(ops: Ops, rows: np.ndarray, profile: MachineProfile) -> np.ndarray:

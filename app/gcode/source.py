@@ -5,7 +5,8 @@ a ``\\r`` before it dropped, no empty last line), as ``program._split`` gives th
 Built from a list it is that list; built from the file's bytes (valid UTF-8) it
 decodes one line at a time for the interpreter, which reads only the lines the fast
 path leaves to it, and makes the whole list on the first call of ``as_list()``
-(``Program.source_lines``). Loading a big file thus builds no string per line.
+(``Program.source_lines``). Loading a big file thus builds no string per line, and a
+listing that shows a few lines at a time reads only those.
 """
 
 from __future__ import annotations
@@ -38,6 +39,7 @@ class Lines(Sequence):
         self._data = data
         self.chunks = chunks(data) if lines is None else []  # also the fast path's chunks
         self._firsts = np.cumsum([0] + [c[2] for c in self.chunks])  # first line of each chunk
+        self._ends: dict[int, np.ndarray] = {}  # chunk -> offsets of its newlines (as read)
         if lines is None:
             self._count = int(self._firsts[-1]) + (0 if data.endswith(b"\n") or not data else 1)
         else:
@@ -57,12 +59,21 @@ class Lines(Sequence):
         if k >= len(self.chunks):  # the last line, with no newline after it
             start, end = self._data.rfind(b"\n") + 1, len(self._data)
         else:
-            begin, stop, _ = self.chunks[k]
-            ends = np.flatnonzero(np.frombuffer(self._data, np.uint8, stop - begin, begin) == 10) + begin
+            begin, _, _ = self.chunks[k]
+            ends = self._chunk_ends(k)
             j = i - int(self._firsts[k])
             start, end = (int(ends[j - 1]) + 1 if j else begin), int(ends[j])
         line = self._data[start:end].decode("utf-8")
         return line[:-1] if line.endswith("\r") else line
+
+    def _chunk_ends(self, k: int) -> np.ndarray:
+        """Offsets of chunk ``k``'s newlines, found once (a listing reads nearby lines)."""
+        ends = self._ends.get(k)
+        if ends is None:
+            begin, stop, _ = self.chunks[k]
+            ends = np.flatnonzero(np.frombuffer(self._data, np.uint8, stop - begin, begin) == 10) + begin
+            self._ends[k] = ends
+        return ends
 
     def as_list(self) -> list[str]:
         """Every line as a list of strings (built once)."""
@@ -75,4 +86,5 @@ class Lines(Sequence):
                 lines = [line[:-1] if line.endswith("\r") else line for line in lines]
             self._list = lines
             self._data = b""
+            self._ends.clear()
         return self._list

@@ -19,7 +19,7 @@ import numpy as np
 
 from app.profile import MachineProfile
 
-from .arcs import arc_length, chord_points
+from .arcs import arc_box, arc_length, chord_points
 from .ops import ARC_CCW, ARC_CW, DWELL, FEED, PLANE_AXES, RAPID, Ops
 
 KIND_NAMES = {RAPID: "rapid", FEED: "feed", ARC_CW: "arc", ARC_CCW: "arc", DWELL: "dwell"}
@@ -72,12 +72,21 @@ class Toolpath:
 
     @cached_property
     def bounds(self) -> tuple[np.ndarray, np.ndarray]:
-        """(min xyz, max xyz) of everything the tool visits (arcs included)."""
-        pts, _ = self.polyline(0.01)
-        if not len(pts):
+        """(min xyz, max xyz) of everything the tool visits, exactly: the ends of every
+        move and the quadrant points of arcs (chords drawn within a tolerance lie inside)."""
+        moves = np.flatnonzero(self.kind != DWELL)
+        if not len(moves):
             zero = np.zeros(3)
             return zero, zero.copy()
-        return pts.min(axis=0), pts.max(axis=0)
+        low = np.minimum(self.start[moves[0]], self.end[moves].min(axis=0))
+        high = np.maximum(self.start[moves[0]], self.end[moves].max(axis=0))
+        arcs = moves[(self.kind[moves] == ARC_CW) | (self.kind[moves] == ARC_CCW)]
+        if len(arcs):
+            axes = np.array(PLANE_AXES)[self.plane[arcs]]
+            ends = (self.start[arcs], self.end[arcs], self.center[arcs])
+            arc_low, arc_high = arc_box(*ends, axes, self.turn[arcs])
+            low, high = np.minimum(low, arc_low.min(axis=0)), np.maximum(high, arc_high.max(axis=0))
+        return low, high
 
     def polyline(self, tolerance: float = 0.01) -> tuple[np.ndarray, np.ndarray]:
         """Points (m, 3) to draw, arcs as chords within ``tolerance``, and per point the
@@ -98,13 +107,9 @@ class Toolpath:
                                       np.array(PLANE_AXES)[self.plane[arcs]], self.turn[arcs], tolerance)
         count[arc] = np.bincount(owner, minlength=len(arcs))
         index = np.repeat(moves, count)
-        pts = np.empty((len(index), 3))
-        first = np.cumsum(count) - count
-        line_rows = first[~arc]
-        pts[line_rows] = self.end[moves[~arc]]
+        pts = np.repeat(self.end.take(moves, axis=0), count, axis=0)  # a line's end is its point
         if len(arcs):
-            owner_first = np.cumsum(count[arc]) - count[arc]
-            pts[first[arc][owner] + np.arange(len(owner)) - owner_first[owner]] = pts_arc
+            pts[np.repeat(arc, count)] = pts_arc  # an arc's rows are its chord points, in order
         start = self.start[moves[0]][None, :]
         return np.concatenate([start, pts]), np.concatenate([[moves[0]], index])
 

@@ -1,6 +1,12 @@
 """Loads a G-code file off the GUI thread: parse, normalise, toolpath, and the
 preview's drawing model, then hands the result back with a queued signal.
 
+What the first picture needs comes first (the toolpath, the bounds, the level of
+detail for the view the preview will fit); ``loaded`` is emitted then. The rest (every
+other level of detail, for zooming; the device lines, for Start and Save to SD) waits
+until the window says it has shown the program (``shown()``, or SHOW_WAIT_S), so it
+does not compete with the first picture for the interpreter, then ``prepared`` follows.
+
 Anything that is not G-code ends in ``failed`` with a sentence for the operator: a
 missing or unreadable file, a binary file, or text in which nothing could be run.
 """
@@ -19,6 +25,7 @@ from app.gcode import workers
 from app.ui.preview.model import PreviewModel
 
 SNIFF_BYTES = 4096
+SHOW_WAIT_S = 3.0
 
 
 @dataclass(frozen=True)
@@ -39,18 +46,27 @@ class ProgramLoader(QObject):
         super().__init__(parent)
         self.tolerance = tolerance
         self.busy = False
+        self.view_size: tuple[float, float] | None = None  # the preview's, in pixels
+        self._shown = threading.Event()
         workers.warm_up()  # the second core is ready before the first big file is opened
 
     def load(self, path: str | Path, wait: bool = False) -> None:
+        """Load on a thread (``wait``: and join it; the rest then does not wait for ``shown``)."""
         self.busy = True
-        thread = threading.Thread(target=self._run, args=(Path(path),), name="gcode-load", daemon=True)
+        self._shown.clear()
+        args = (Path(path), self.view_size, not wait)
+        thread = threading.Thread(target=self._run, args=args, name="gcode-load", daemon=True)
         thread.start()
         if wait:
             thread.join()
 
-    def _run(self, path: Path) -> None:
+    def shown(self) -> None:
+        """The window has drawn the loaded program: the rest of the work may start."""
+        self._shown.set()
+
+    def _run(self, path: Path, view_size, defer: bool) -> None:
         try:
-            result = load_program(path, self.tolerance)
+            result = load_program(path, self.tolerance, view_size)
         except LoadError as exc:
             self.busy = False
             self.failed.emit(str(path), str(exc))
@@ -61,6 +77,9 @@ class ProgramLoader(QObject):
             return
         self.busy = False
         self.loaded.emit(result)
+        if defer:
+            self._shown.wait(SHOW_WAIT_S)
+        result.preview.build_all()  # every level of detail, for zooming
         _warm(result.program)  # about 1 s for a million lines
         self.prepared.emit(result)
 
@@ -75,7 +94,9 @@ class LoadError(Exception):
     """A file that cannot be shown as a program; the message says why."""
 
 
-def load_program(path: Path, tolerance: float = 0.01) -> LoadedProgram:
+def load_program(path: Path, tolerance: float = 0.01, view_size=None) -> LoadedProgram:
+    """The program and its preview model, with what the first picture of a preview of
+    ``view_size`` pixels needs already computed."""
     _sniff(path)
     from app.gcode import load
 
@@ -86,8 +107,9 @@ def load_program(path: Path, tolerance: float = 0.01) -> LoadedProgram:
         raise LoadError(f"{path.name} could not be read as G-code: {exc}") from None
     loaded = time.perf_counter()
     _check_runnable(path, program)
+    program.toolpath.bounds  # noqa: B018 (cached: the summary shows it)
     preview = PreviewModel(program.toolpath, tolerance)
-    preview.warm()
+    preview.warm(view_size or (900, 700))
     return LoadedProgram(path, program, preview, loaded - started, time.perf_counter() - loaded)
 
 

@@ -133,6 +133,8 @@ class MainWindow(QMainWindow):
 
     def open_file(self, path: str | Path, wait: bool = False) -> None:
         self.status.showMessage(f"Loading {Path(path).name}…")
+        size = self.preview.view.size()  # the loader prepares the first picture for it
+        self.loader.view_size = (size.width(), size.height())
         self.loader.load(path, wait=wait)
 
     def dragEnterEvent(self, event) -> None:  # noqa: N802 (Qt override)

@@ -162,7 +162,6 @@ class OperatorActions(QObject):
         self.w.loaded = loaded
         self.w.program_panel.show_program(loaded.program, loaded.path.name)
         self.w.preview.show_model(loaded.preview)
-        loaded.preview.prebuild()
         self.w.sd_panel.suggest_for(loaded.path)
         self.w.setWindowTitle(f"{loaded.path.name} — CNC mill controller")
         add_recent(self.w.qsettings, loaded.path)
@@ -170,9 +169,10 @@ class OperatorActions(QObject):
         # A big program is millions of long-lived objects: keep the cyclic GC from
         # re-scanning them every few seconds (each pass would stall the event loop).
         gc.freeze()
+        self.w.loader.shown()  # the loader may now build the rest (zoom levels, device lines)
         errors = list(loaded.program.errors)
         self.w.status.showMessage(
-            f"Opened {loaded.path.name}: {len(loaded.program.source_lines):,} lines in "
+            f"Opened {loaded.path.name}: {len(loaded.program.lines):,} lines in "
             f"{loaded.load_s + loaded.model_s:.2f} s", 10000
         )
         if errors:

@@ -64,10 +64,14 @@ def test_polyline_arcs_as_chords_within_tolerance():
     assert len(tp.polyline(0.01)[0]) > len(tp.polyline(0.1)[0])
 
 
-def test_bounds_include_arc_bulge():
+def test_bounds_include_arc_bulge_exactly():
     low, high = toolpath("G0 X10\nG3 I-10 F100").bounds
-    assert low[:2] == pytest.approx([-10, -10], abs=0.01)
-    assert high[:2] == pytest.approx([10, 10], abs=0.01)
+    assert low[:2] == pytest.approx([-10, -10], abs=1e-12)
+    assert high[:2] == pytest.approx([10, 10], abs=1e-12)
+    low, high = toolpath("G0 X10 Y0\nG3 X0 Y10 I-10 F100").bounds  # a quarter: no other bulge
+    assert low.tolist() == [0, 0, 0] and high[:2] == pytest.approx([10, 10])
+    low, high = toolpath("G0 X0 Y0 Z0\nG18 G2 X10 Z0 I5 K0 F100").bounds  # XZ plane: Z bulges
+    assert sorted([low[2], high[2]]) == pytest.approx([0, 5]) or sorted([low[2], high[2]]) == pytest.approx([-5, 0])
 
 
 def test_helix_length():

@@ -59,17 +59,27 @@ class LodSegments:
         fits = [i for i, cell in enumerate(self.cells) if cell <= pixel]
         return fits[-1] if fits else 0
 
-    def visible(self, view, pixel: float, budget: int, upto: int | None = None):
-        """(x, y) point pairs to draw for ``view`` = (xmin, xmax, ymin, ymax)."""
+    def visible(self, view, pixel: float, budget: int, upto: int | None = None, wait: bool = True):
+        """(x, y) point pairs to draw for ``view`` = (xmin, xmax, ymin, ymax). With
+        ``wait=False`` a level not built yet is replaced by the nearest built one."""
         if not len(self):
             return _EMPTY, _EMPTY
-        index = self.pick_level(pixel)
+        index = self._usable(self.pick_level(pixel), wait)
         while True:
             level = self.level(index)
             chunks, end = _chunks_in_view(level, view, upto)
-            if len(chunks) * CHUNK <= budget or index == len(self.cells) - 1:
+            coarser = self._usable(index + 1, wait) if index + 1 < len(self.cells) else None
+            if len(chunks) * CHUNK <= budget or coarser is None or coarser <= index:
                 return _gather(level, chunks, end)
-            index += 1
+            index = coarser
+
+    def _usable(self, index: int, wait: bool) -> int:
+        """``index``, or when not waiting and it is not built, the nearest built level
+        (the coarser on a tie; ``index`` itself when none is built)."""
+        built = list(self._levels)
+        if wait or index in self._levels or not built:
+            return index
+        return min(built, key=lambda i: (abs(i - index), i < index))
 
 
 def _build_level(seg, move, cell) -> Level:

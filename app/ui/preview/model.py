@@ -14,6 +14,7 @@ import numpy as np
 from app.ui.preview.geometry import RAPID_GROUP, PathGeometry
 from app.ui.preview.lod import LodSegments, group_segments
 
+FIT_MARGIN = 0.03
 FRAME_BUDGET = 50_000  # segments drawn per frame, shared by the groups
 MIN_BUDGET = 4_096
 
@@ -27,6 +28,8 @@ class PreviewModel:
             LodSegments(*group_segments(g.points, g.move, g.group, i)) for i in range(g.group_count)
         ]
         self.device_index = _device_index(toolpath)
+        self._bounds = _bounds(self.geometry.points)
+        self.levels_built = False  # every level of every group (build_all)
 
     @property
     def empty(self) -> bool:
@@ -34,24 +37,28 @@ class PreviewModel:
 
     def bounds(self) -> tuple[float, float, float, float]:
         """xmin, xmax, ymin, ymax of every vertex (the extents of what is plotted)."""
-        if self.empty:
-            return (0.0, 0.0, 0.0, 0.0)
-        p = self.geometry.points
-        return (float(p[:, 0].min()), float(p[:, 0].max()), float(p[:, 1].min()), float(p[:, 1].max()))
+        return self._bounds
 
-    def frame(self, view, pixel: float):
-        """A list of (x, y) point pairs per group for this view."""
-        return [group.visible(view, pixel, self._budget(group)) for group in self.groups]
+    def fitted_range(self) -> tuple[tuple[float, float], tuple[float, float]]:
+        """The X and Y range a view fitted to the program shows (3 % margin)."""
+        xmin, xmax, ymin, ymax = self.bounds()
+        pad = max(xmax - xmin, ymax - ymin, 1.0) * FIT_MARGIN
+        return (xmin - pad, xmax + pad), (ymin - pad, ymax + pad)
+
+    def frame(self, view, pixel: float, wait: bool = True):
+        """A list of (x, y) point pairs per group for this view. ``wait=False``: use the
+        nearest level already built rather than build one now (see ``levels_built``)."""
+        return [group.visible(view, pixel, self._budget(group), wait=wait) for group in self.groups]
 
     def _budget(self, group) -> int:
         total = max(sum(len(g) for g in self.groups), 1)
         return max(MIN_BUDGET, FRAME_BUDGET * len(group) // total)
 
-    def done_frame(self, view, pixel: float, upto_move: int):
+    def done_frame(self, view, pixel: float, upto_move: int, wait: bool = True):
         """(x, y) point pairs of every segment of moves up to ``upto_move``, all groups."""
         if upto_move < 0:
             return np.zeros(0), np.zeros(0)
-        parts = [g.visible(view, pixel, self._budget(g), upto=upto_move) for g in self.groups[1:]]
+        parts = [g.visible(view, pixel, self._budget(g), upto=upto_move, wait=wait) for g in self.groups[1:]]
         return np.concatenate([p[0] for p in parts]), np.concatenate([p[1] for p in parts])
 
     def recent_segments(self, after_move: int, upto_move: int):
@@ -78,23 +85,33 @@ class PreviewModel:
         hits = np.flatnonzero(np.asarray(source) == line)
         return int(hits[0]) if len(hits) else None
 
-    def warm(self, widths=(900,)) -> None:
-        """Build the levels a fitted view of ``widths`` pixels will ask for first."""
-        xmin, xmax, ymin, ymax = self.bounds()
-        extent = max(xmax - xmin, ymax - ymin, 1e-6)
+    def warm(self, size: tuple[float, float]) -> None:
+        """Build the levels a view of ``size`` pixels fitted to the program asks for first."""
+        if self.empty:
+            return
+        (x0, x1), (y0, y1) = self.fitted_range()
+        pixel = max((x1 - x0) / max(size[0], 1.0), (y1 - y0) / max(size[1], 1.0))  # aspect locked
         for group in self.groups:
-            for width in widths:
-                group.level(group.pick_level(extent / width))
+            group.visible((x0, x1, y0, y1), pixel, self._budget(group))
 
     def prebuild(self) -> threading.Thread:
-        """Build every level of detail on a background thread (numpy releases the GIL)."""
-        thread = threading.Thread(target=self._build_all, name="preview-lod", daemon=True)
+        """``build_all`` on a background thread (numpy releases the GIL)."""
+        thread = threading.Thread(target=self.build_all, name="preview-lod", daemon=True)
         thread.start()
         return thread
 
-    def _build_all(self) -> None:
+    def build_all(self) -> None:
+        """Build every level of detail of every group (zooming then never waits)."""
         for polyline in self.groups:
             polyline.build_all()
+        self.levels_built = True
+
+
+def _bounds(points: np.ndarray) -> tuple[float, float, float, float]:
+    if not len(points):
+        return (0.0, 0.0, 0.0, 0.0)
+    lo, hi = points[:, :2].min(axis=0), points[:, :2].max(axis=0)
+    return (float(lo[0]), float(hi[0]), float(lo[1]), float(hi[1]))
 
 
 def _device_index(toolpath):

@@ -22,6 +22,7 @@ from app.ui.preview.model import PreviewModel
 from app.ui.preview.picture import PictureLayer
 
 DONE_COLOUR = "#39d353"
+LEVELS_POLL_MS = 250
 MARKER_COLOUR = "#ff4040"
 HIGHLIGHT_COLOUR = "#00e5ff"
 
@@ -64,6 +65,8 @@ class PreviewWidget(QWidget):
         self._refill = QTimer(self, singleShot=True, interval=0, timeout=self._refill_now)
         self.view.sigRangeChanged.connect(self._refill.start)
         self.view.sigResized.connect(self._refill.start)  # the pictures are the view's size
+        # Until the loader has built every level of detail, look again now and then.
+        self._levels_poll = QTimer(self, singleShot=True, interval=LEVELS_POLL_MS, timeout=self._refill_now)
         self.view.setRange(xRange=(0, travel[0]), yRange=(0, travel[1]))
 
     def _make_items(self) -> None:
@@ -138,9 +141,8 @@ class PreviewWidget(QWidget):
         if self.model is None or self.model.empty:
             self.view.autoRange(items=[self.travel_item])
             return
-        xmin, xmax, ymin, ymax = self.model.bounds()
-        pad = max(xmax - xmin, ymax - ymin, 1.0) * 0.03
-        self.view.setRange(xRange=(xmin - pad, xmax + pad), yRange=(ymin - pad, ymax + pad), padding=0)
+        x_range, y_range = self.model.fitted_range()
+        self.view.setRange(xRange=x_range, yRange=y_range, padding=0)
 
     def set_grid(self, on: bool) -> None:
         """Grid lines (off by default: they cost a third of a frame on a slow machine)."""
@@ -193,15 +195,18 @@ class PreviewWidget(QWidget):
             self.group_data = [(np.zeros(0), np.zeros(0)) for _ in self.group_pens]
             self.done_layer.clear()
         else:
-            self.group_data = self.model.frame(view, pixel)
+            self.group_data = self.model.frame(view, pixel, wait=False)  # never build here
             self._refill_done(view, pixel)
+            if not self.model.levels_built:  # drawn from the nearest level built so far
+                self._levels_poll.start()
         pairs = zip(self.group_pens, self.group_data, strict=True)
         self.path_layer.reset([(pen, x, y) for pen, (x, y) in pairs])
         self.frame_drawn.emit()
 
     def _refill_done(self, view, pixel) -> None:
         """Paint the whole finished part again (the view changed, or a new run began)."""
-        self.done_layer.reset([(self.done_pen, *self.model.done_frame(view, pixel, self._done_move))])
+        done = self.model.done_frame(view, pixel, self._done_move, wait=False)
+        self.done_layer.reset([(self.done_pen, *done)])
 
     def plotted_bounds(self) -> tuple[float, float, float, float]:
         """Extents of the toolpath as drawn now (for tests)."""

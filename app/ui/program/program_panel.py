@@ -49,7 +49,7 @@ class ProgramPanel(QWidget):
     def show_program(self, program, name: str = "") -> None:
         errors = list(_diagnostics(program, "errors"))
         warnings = list(_diagnostics(program, "warnings"))
-        self.source_model.set_lines(program.source_lines, [d.line for d in errors])
+        self.source_model.set_lines(program.lines, [d.line for d in errors])  # read as they scroll in
         self.summary.setText(describe(program, name))
         self._fill_problems(errors, warnings)
 

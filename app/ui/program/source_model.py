@@ -5,6 +5,8 @@ being executed."""
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
 from PySide6.QtCore import QAbstractTableModel, QModelIndex, Qt
 from PySide6.QtGui import QBrush, QColor
 
@@ -15,12 +17,12 @@ ERROR_BRUSH = QBrush(QColor(255, 60, 60, 70))
 class SourceModel(QAbstractTableModel):
     def __init__(self, parent=None):
         super().__init__(parent)
-        self._lines: list[str] = []
+        self._lines: Sequence[str] = []
         self._width = 1
         self._current = -1  # 0-based row of the executing line
         self._errors: frozenset[int] = frozenset()
 
-    def set_lines(self, lines: list[str], error_lines=()) -> None:
+    def set_lines(self, lines: Sequence[str], error_lines=()) -> None:
         self.beginResetModel()
         self._lines = lines
         self._width = len(str(len(lines)))

@@ -32,7 +32,7 @@ def describe(program, name: str = "") -> str:
     errors, warnings = program.errors, program.warnings
     parts = [f"<b>{name}</b>" if name else ""]
     parts.append(
-        f"{len(program.source_lines):,} lines → {device_count(program):,} machine lines, "
+        f"{len(program.lines):,} lines → {device_count(program):,} machine lines, "
         f"{len(tp.start):,} moves"
     )
     box = bounds_array(getattr(tp, "bounds", None))
