@@ -12,6 +12,7 @@ seconds. ``polyline(tolerance)`` gives drawable points with arcs as chords.
 
 from __future__ import annotations
 
+from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 from functools import cached_property
 
@@ -19,10 +20,11 @@ import numpy as np
 
 from app.profile import MachineProfile
 
-from .arcs import arc_box, arc_length, chord_points
+from .arcs import arc_box, arc_length, chord_points, in_plane
 from .ops import ARC_CCW, ARC_CW, DWELL, FEED, PLANE_AXES, RAPID, Ops
 
 KIND_NAMES = {RAPID: "rapid", FEED: "feed", ARC_CW: "arc", ARC_CCW: "arc", DWELL: "dwell"}
+PARALLEL_ARCS = 50_000  # arcs from which chords are computed on two threads
 
 
 def move_times(length, feed_mm_min, accel: float) -> np.ndarray:
@@ -78,15 +80,29 @@ class Toolpath:
         if not len(moves):
             zero = np.zeros(3)
             return zero, zero.copy()
-        low = np.minimum(self.start[moves[0]], self.end[moves].min(axis=0))
-        high = np.maximum(self.start[moves[0]], self.end[moves].max(axis=0))
+        ends = self.end.T  # a dwell ends where it starts: every row's end is a visited point
+        low = np.minimum(self.start[moves[0]], [column.min() for column in ends])
+        high = np.maximum(self.start[moves[0]], [column.max() for column in ends])
         arcs = moves[(self.kind[moves] == ARC_CW) | (self.kind[moves] == ARC_CCW)]
+        arcs = arcs[self._may_bulge_out(arcs, low, high)]  # only these can widen the box
         if len(arcs):
             axes = np.array(PLANE_AXES)[self.plane[arcs]]
             ends = (self.start[arcs], self.end[arcs], self.center[arcs])
             arc_low, arc_high = arc_box(*ends, axes, self.turn[arcs])
             low, high = np.minimum(low, arc_low.min(axis=0)), np.maximum(high, arc_high.max(axis=0))
         return low, high
+
+    def _may_bulge_out(self, arcs: np.ndarray, low: np.ndarray, high: np.ndarray) -> np.ndarray:
+        """Mask of the arcs whose whole circle reaches past the box (low, high)."""
+        axes = np.array(PLANE_AXES)[self.plane[arcs]]
+        s, e, c, _ = in_plane(axes, self.start[arcs], self.end[arcs], self.center[arcs])
+        r = np.maximum(np.hypot(s[:, 0] - c[:, 0], s[:, 1] - c[:, 1]),
+                       np.hypot(e[:, 0] - c[:, 0], e[:, 1] - c[:, 1]))
+        xy = (self.plane[arcs] == 0).all()
+        first, second = (0, 1) if xy else (axes[:, 0], axes[:, 1])  # scalars: no gather
+        out = (c[:, 0] + r > high[first]) | (c[:, 0] - r < low[first])
+        out |= (c[:, 1] + r > high[second]) | (c[:, 1] - r < low[second])
+        return out
 
     def polyline(self, tolerance: float = 0.01) -> tuple[np.ndarray, np.ndarray]:
         """Points (m, 3) to draw, arcs as chords within ``tolerance``, and per point the
@@ -96,6 +112,20 @@ class Toolpath:
             self._cache[key] = self._polyline(tolerance)
         return self._cache[key]
 
+    def _chords(self, arcs: np.ndarray, tolerance: float):
+        """``arcs.chord_points`` of these rows; many arcs in two halves on two threads
+        (numpy's arithmetic lets them run at once)."""
+        def of(rows):
+            return chord_points(self.start[rows], self.end[rows], self.center[rows],
+                                np.array(PLANE_AXES)[self.plane[rows]], self.turn[rows], tolerance)
+
+        if len(arcs) < PARALLEL_ARCS:
+            return of(arcs)
+        half = len(arcs) // 2
+        with ThreadPoolExecutor(max_workers=2, thread_name_prefix="chords") as pool:
+            (pts_a, owner_a), (pts_b, owner_b) = pool.map(of, (arcs[:half], arcs[half:]))
+        return np.concatenate([pts_a, pts_b]), np.concatenate([owner_a, owner_b + half])
+
     def _polyline(self, tolerance: float):
         moves = np.flatnonzero(self.kind != DWELL)
         if not len(moves):
@@ -103,8 +133,7 @@ class Toolpath:
         arc = (self.kind[moves] == ARC_CW) | (self.kind[moves] == ARC_CCW)
         count = np.ones(len(moves), np.int64)
         arcs = moves[arc]
-        pts_arc, owner = chord_points(self.start[arcs], self.end[arcs], self.center[arcs],
-                                      np.array(PLANE_AXES)[self.plane[arcs]], self.turn[arcs], tolerance)
+        pts_arc, owner = self._chords(arcs, tolerance)
         count[arc] = np.bincount(owner, minlength=len(arcs))
         index = np.repeat(moves, count)
         pts = np.repeat(self.end.take(moves, axis=0), count, axis=0)  # a line's end is its point

@@ -1,11 +1,14 @@
 """Loads a G-code file off the GUI thread: parse, normalise, toolpath, and the
 preview's drawing model, then hands the result back with a queued signal.
 
-What the first picture needs comes first (the toolpath, the bounds, the level of
-detail for the view the preview will fit); ``loaded`` is emitted then. The rest (every
-other level of detail, for zooming; the device lines, for Start and Save to SD) waits
-until the window says it has shown the program (``shown()``, or SHOW_WAIT_S), so it
-does not compete with the first picture for the interpreter, then ``prepared`` follows.
+What the first picture needs comes first: the toolpath and a preview model drawn with
+the tolerance of the screen (half a pixel of the view the preview will fit; arcs need
+far fewer chords than at 0.01 mm) with its level of detail for that view; ``loaded``
+is emitted then. The rest waits until the window says it has shown the program
+(``shown()``, or SHOW_WAIT_S), so it does not compete with the first picture for the
+interpreter: the model at the real tolerance with every level of detail, for zooming
+in (``refined``, when the first one was coarser), then the device lines, for Start
+and Save to SD (``prepared``).
 
 Anything that is not G-code ends in ``failed`` with a sentence for the operator: a
 missing or unreadable file, a binary file, or text in which nothing could be run.
@@ -14,6 +17,7 @@ missing or unreadable file, a binary file, or text in which nothing could be run
 from __future__ import annotations
 
 import contextlib
+import dataclasses
 import threading
 import time
 from dataclasses import dataclass
@@ -22,10 +26,11 @@ from pathlib import Path
 from PySide6.QtCore import QObject, Signal
 
 from app.gcode import workers
-from app.ui.preview.model import PreviewModel
+from app.ui.preview.model import PreviewModel, screen_tolerance
 
 SNIFF_BYTES = 4096
 SHOW_WAIT_S = 3.0
+DEFAULT_VIEW = (900, 700)  # pixels, when the window did not say
 
 
 @dataclass(frozen=True)
@@ -40,6 +45,7 @@ class LoadedProgram:
 class ProgramLoader(QObject):
     loaded = Signal(object)  # LoadedProgram
     failed = Signal(str, str)  # path, message
+    refined = Signal(object)  # LoadedProgram with the preview at the real tolerance, all levels built
     prepared = Signal(object)  # LoadedProgram whose device lines are rendered (Start is instant)
 
     def __init__(self, parent=None, tolerance: float = 0.01):
@@ -79,9 +85,21 @@ class ProgramLoader(QObject):
         self.loaded.emit(result)
         if defer:
             self._shown.wait(SHOW_WAIT_S)
-        result.preview.build_all()  # every level of detail, for zooming
+        result = self._refine(result, view_size)
         _warm(result.program)  # about 1 s for a million lines
         self.prepared.emit(result)
+
+
+    def _refine(self, result: LoadedProgram, view_size) -> LoadedProgram:
+        if result.preview.tolerance <= self.tolerance:
+            result.preview.build_all()  # every level of detail, for zooming
+            return result
+        fine = PreviewModel(result.program.toolpath, self.tolerance)
+        fine.warm(view_size or DEFAULT_VIEW)
+        fine.build_all()
+        result = dataclasses.replace(result, preview=fine)
+        self.refined.emit(result)
+        return result
 
 
 def _warm(program) -> None:
@@ -107,9 +125,9 @@ def load_program(path: Path, tolerance: float = 0.01, view_size=None) -> LoadedP
         raise LoadError(f"{path.name} could not be read as G-code: {exc}") from None
     loaded = time.perf_counter()
     _check_runnable(path, program)
-    program.toolpath.bounds  # noqa: B018 (cached: the summary shows it)
-    preview = PreviewModel(program.toolpath, tolerance)
-    preview.warm(view_size or (900, 700))
+    size = view_size or DEFAULT_VIEW
+    preview = PreviewModel(program.toolpath, screen_tolerance(program.toolpath, size, tolerance))
+    preview.warm(size)
     return LoadedProgram(path, program, preview, loaded - started, time.perf_counter() - loaded)
 
 

@@ -182,6 +182,12 @@ class OperatorActions(QObject):
                 "It can be previewed but not run.",
             )
 
+    def program_refined(self, loaded) -> None:
+        """The preview of the open program at the real tolerance (the first was coarser)."""
+        if self.w.loaded is not None and self.w.loaded.program is loaded.program:
+            self.w.loaded = loaded
+            self.w.preview.replace_model(loaded.preview)
+
     def show_source_line(self, line: int) -> None:
         if self.w.loaded is not None:
             self.w.preview.highlight_move(self.w.loaded.preview.move_of_source_line(line))

@@ -71,7 +71,7 @@ def test_bounds_include_arc_bulge_exactly():
     low, high = toolpath("G0 X10 Y0\nG3 X0 Y10 I-10 F100").bounds  # a quarter: no other bulge
     assert low.tolist() == [0, 0, 0] and high[:2] == pytest.approx([10, 10])
     low, high = toolpath("G0 X0 Y0 Z0\nG18 G2 X10 Z0 I5 K0 F100").bounds  # XZ plane: Z bulges
-    assert sorted([low[2], high[2]]) == pytest.approx([0, 5]) or sorted([low[2], high[2]]) == pytest.approx([-5, 0])
+    assert max(abs(low[2]), abs(high[2])) == pytest.approx(5) and min(abs(low[2]), abs(high[2])) == 0
 
 
 def test_helix_length():
@@ -84,3 +84,14 @@ def test_empty_program():
     assert len(tp) == 0 and tp.estimated_time == 0 and tp.cut_length == 0
     assert tp.bounds[0].tolist() == [0, 0, 0]
     assert tp.polyline()[0].shape == (0, 3)
+
+
+def test_chords_on_two_threads_equal_chords_on_one(monkeypatch):
+    from app.gcode import toolpath as toolpath_module
+
+    text = "".join(f"G0 X{20 + k} Y{k % 5}\nG2 X{20 + k} Y{k % 5} I-{1 + k % 4} F100\n" for k in range(40))
+    one = toolpath(text).polyline(0.01)
+    monkeypatch.setattr(toolpath_module, "PARALLEL_ARCS", 4)
+    two = toolpath(text).polyline(0.01)
+    np.testing.assert_array_equal(one[0], two[0])
+    np.testing.assert_array_equal(one[1], two[1])

@@ -145,3 +145,42 @@ def test_finished_part_grows_by_painting_only_what_is_new(preview):
     x, _ = model.recent_segments(-1, len(program.toolpath.kind) - 1)
     assert layer.segments == len(x) // 2  # every cut segment painted exactly once
     assert _green_pixels(layer.image) >= grown > pixels
+
+
+def test_a_level_built_from_a_finer_level_equals_one_built_from_the_segments():
+    program = load(next(p for p in SAMPLE_FILES if "potrace" in p.name))
+    model = PreviewModel(program.toolpath)
+    for group in model.groups:
+        if not len(group):
+            continue
+        fresh = LodSegments(*group._raw)
+        for index in range(3, len(group.cells)):
+            direct = fresh.level(index)  # nothing finer built: from the segments
+            fresh._levels.pop(index)
+            group.level(index - 1)
+            chained = group.level(index)  # from the level before
+            np.testing.assert_array_equal(chained.move, direct.move)
+            np.testing.assert_array_equal(chained.seg, direct.seg)
+
+
+def test_without_waiting_the_nearest_built_level_is_drawn():
+    program = load(next(p for p in SAMPLE_FILES if "potrace" in p.name))
+    model = PreviewModel(program.toolpath)
+    group = max(model.groups, key=len)
+    view = (-1e3, 1e3, -1e3, 1e3)
+    group.level(5)
+    x, _ = group.visible(view, pixel=group.cells[2], budget=10**9, wait=False)
+    assert set(group._levels) == {5}  # nothing built
+    assert len(x) // 2 == len(group.level(5).move)
+    assert len(group.visible(view, pixel=group.cells[2], budget=10**9)[0]) // 2 == len(group.level(2).move)
+
+
+def test_a_finer_model_keeps_the_view_and_the_finished_part(preview):
+    program = load(next(p for p in SAMPLE_FILES if "arcs" in p.name))
+    preview.show_model(PreviewModel(program.toolpath, tolerance=0.2))
+    preview.zoom(3)
+    preview.set_done(len(program.line_map) // 2)
+    view, coarse = preview.view.viewRange(), preview.done_layer.segments
+    preview.replace_model(PreviewModel(program.toolpath, tolerance=0.01))
+    assert preview.view.viewRange() == view
+    assert preview.done_layer.segments > coarse  # the same finished part, in finer chords

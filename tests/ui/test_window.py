@@ -60,3 +60,13 @@ def test_dark_palette_toggles(qtbot, window):
     assert QApplication.instance().property("cnc_dark") is True
     window.actions_by_name["dark"].trigger()
     assert QApplication.instance().property("cnc_dark") is False
+
+
+def test_the_first_picture_is_drawn_at_screen_tolerance_then_refined(qtbot, window):
+    with qtbot.waitSignal(window.loader.refined, timeout=30_000) as refined:
+        first = open_and_wait(qtbot, window, SAMPLE_FILES[0])
+    fine = refined.args[0]
+    assert first.preview.tolerance > window.loader.tolerance  # half a pixel of the view
+    assert fine.program is first.program and fine.preview.tolerance == window.loader.tolerance
+    qtbot.waitUntil(lambda: window.preview.model is fine.preview)
+    assert window.loaded is fine and fine.preview.levels_built

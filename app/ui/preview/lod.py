@@ -7,7 +7,8 @@ thousand times is drawn once, and the number of segments of a level is bounded b
 the cells the path covers, not by the length of the file. Every level is cut into
 chunks with a bounding box; ``visible(view, pixel, budget)`` returns the segments of
 the chunks that meet the view, at the finest level whose cell is no larger than a
-pixel and whose visible part fits the budget.
+pixel and whose visible part fits the budget. A level is built from the next finer
+one already built when there is one, so the coarser levels cost little.
 """
 
 from __future__ import annotations
@@ -46,12 +47,22 @@ class LodSegments:
     def level(self, index: int) -> Level:
         with self._locks[index]:
             if index not in self._levels:
-                self._levels[index] = _build_level(*self._raw, self.cells[index])
+                self._levels[index] = _build_level(*self._source(index), self.cells[index])
             return self._levels[index]
 
+    def _source(self, index: int):
+        """The segments a level is built from: the nearest finer level already built
+        (cells nest, each twice the last: its representatives are those of the raw
+        segments, from far fewer), else the raw segments."""
+        finer = [i for i in self._levels if 0 < i < index]
+        if not finer:
+            return self._raw
+        level = self._levels[max(finer)]
+        return level.seg, level.move
+
     def build_all(self) -> None:
-        """Build every level, coarsest first (those are needed first when zooming in)."""
-        for index in reversed(range(len(self.cells))):
+        """Build every level, finest first (each coarser one from the one before)."""
+        for index in range(len(self.cells)):
             self.level(index)
 
     def pick_level(self, pixel: float) -> int:

@@ -8,6 +8,7 @@ segments cut at a move. ``frame(view, pixel)`` gives the arrays to draw for a vi
 from __future__ import annotations
 
 import threading
+from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 
@@ -22,11 +23,11 @@ MIN_BUDGET = 4_096
 class PreviewModel:
     def __init__(self, toolpath, tolerance: float = 0.01):
         self.toolpath = toolpath
+        self.tolerance = tolerance
         self.geometry = PathGeometry.from_toolpath(toolpath, tolerance)
         g = self.geometry
-        self.groups = [
-            LodSegments(*group_segments(g.points, g.move, g.group, i)) for i in range(g.group_count)
-        ]
+        self.groups = _each(lambda i: LodSegments(*group_segments(g.points, g.move, g.group, i)),
+                            range(g.group_count))
         self.device_index = _device_index(toolpath)
         self._bounds = _bounds(self.geometry.points)
         self.levels_built = False  # every level of every group (build_all)
@@ -91,8 +92,8 @@ class PreviewModel:
             return
         (x0, x1), (y0, y1) = self.fitted_range()
         pixel = max((x1 - x0) / max(size[0], 1.0), (y1 - y0) / max(size[1], 1.0))  # aspect locked
-        for group in self.groups:
-            group.visible((x0, x1, y0, y1), pixel, self._budget(group))
+        _each(lambda group: group.visible((x0, x1, y0, y1), pixel, self._budget(group)),
+              sorted(self.groups, key=len, reverse=True))
 
     def prebuild(self) -> threading.Thread:
         """``build_all`` on a background thread (numpy releases the GIL)."""
@@ -105,6 +106,21 @@ class PreviewModel:
         for polyline in self.groups:
             polyline.build_all()
         self.levels_built = True
+
+
+def screen_tolerance(toolpath, size: tuple[float, float], tolerance: float) -> float:
+    """The chord tolerance a view of ``size`` pixels fitted to the program can show:
+    half a pixel, never finer than ``tolerance``."""
+    low, high = toolpath.bounds
+    extent = max(float(high[0] - low[0]), float(high[1] - low[1]), 1.0) * (1 + 2 * FIT_MARGIN)
+    pixel = extent / max(min(size), 1.0)
+    return max(tolerance, pixel / 2)
+
+
+def _each(fn, items) -> list:
+    """``[fn(item) for item in items]`` on two threads: numpy lets them run at once."""
+    with ThreadPoolExecutor(max_workers=2, thread_name_prefix="preview") as pool:
+        return list(pool.map(fn, items))
 
 
 def _bounds(points: np.ndarray) -> tuple[float, float, float, float]:

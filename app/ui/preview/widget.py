@@ -123,6 +123,12 @@ class PreviewWidget(QWidget):
         self.fit()
         self._refill_now()
 
+    def replace_model(self, model: PreviewModel) -> None:
+        """The same program drawn from ``model`` (finer): the view and the finished part stay."""
+        self.model = model
+        self._update_legend()
+        self._refill_now()
+
     def _update_legend(self) -> None:
         self.legend.clear()
         if self.model is None or self.model.empty:
