@@ -129,9 +129,10 @@ class LatenessProbe:
 
 
 class StallTracer:
-    """Where the GUI thread is when the probe is late: a thread samples its Python stack
-    every 2 ms while no tick has come for STALL_S, and counts the innermost frames of
-    this project's code (``BENCH_UI_TRACE=1``; it costs a little time of its own)."""
+    """Where the threads are when the probe is late: a thread samples every thread's
+    Python stack every 2 ms while no tick has come for STALL_S, and counts the innermost
+    frames of this project's code (``BENCH_UI_TRACE=1``; it costs a little time of its
+    own). A thread holding the GIL in one long C call shows at the line that made it."""
 
     STALL_S = 0.03
 
@@ -154,24 +155,29 @@ class StallTracer:
 
     def _run(self) -> None:
         import sys
+        import threading
         import traceback
 
         while not self._stop.wait(0.002):
             last = self.probe._last
             if last is None or time.perf_counter() - last < self.STALL_S:
                 continue
-            frame = sys._current_frames().get(self.main_id)
-            if frame is None:
-                continue
-            stack = traceback.extract_stack(frame)
-            ours = [f for f in stack if "/app/" in f.filename or "pyqtgraph" in f.filename]
-            key = " <- ".join(f"{Path(f.filename).stem}.{f.name}:{f.lineno}" for f in reversed(ours[-4:]))
-            self.counts[key or f"{Path(stack[-1].filename).stem}.{stack[-1].name}"] += 1
+            for ident, frame in sys._current_frames().items():
+                if ident == threading.get_ident():
+                    continue
+                stack = traceback.extract_stack(frame)
+                ours = [f for f in stack if "/app/" in f.filename or "pyqtgraph" in f.filename]
+                where = " <- ".join(_frame(f) for f in reversed(ours[-3:])) or _frame(stack[-1])
+                self.counts[("GUI  " if ident == self.main_id else "other ") + where] += 1
 
-    def report(self, top: int = 12) -> str:
+    def report(self, top: int = 20) -> str:
         total = sum(self.counts.values()) or 1
         rows = [f"    {n * 100 / total:4.1f}%  {key}" for key, n in self.counts.most_common(top)]
         return "\n".join(["  where the GUI thread was during stalls (samples):", *rows])
+
+
+def _frame(f) -> str:
+    return f"{Path(f.filename).stem}.{f.name}:{f.lineno}"
 
 
 def _start_simulator(sd: Path):

@@ -69,6 +69,9 @@ def _words(code, target, feed_code):
     return emit, send_f
 
 
+GIL_SLICE = 16_384  # strings joined per numpy call (a few milliseconds)
+
+
 def _texts(values: np.ndarray) -> np.ndarray:
     """Formatted text of each whole-thousandth value (object array)."""
     uniq, inverse = np.unique(values, return_inverse=True)
@@ -77,9 +80,15 @@ def _texts(values: np.ndarray) -> np.ndarray:
 
 
 def _append(line, mask, prefix: str, numbers) -> None:
+    """``line[i] += prefix + text of numbers[i]`` where ``mask``; in slices, because numpy
+    adds strings one by one holding the GIL: a GUI thread then waits one slice at most."""
     idx = np.flatnonzero(mask)
-    if len(idx):
-        line[idx] = line[idx] + (prefix + _texts(numbers[idx]))
+    if not len(idx):
+        return
+    texts = _texts(numbers[idx])
+    for start in range(0, len(idx), GIL_SLICE):
+        part = idx[start : start + GIL_SLICE]
+        line[part] = line[part] + (prefix + texts[start : start + GIL_SLICE])
 
 
 def render(ops: Ops, count, chords, tolerance: float, default_rpm: float):
