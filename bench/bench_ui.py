@@ -266,19 +266,21 @@ def bench_big_file(config: Path) -> None:
     print(f"  parse+normalise+toolpath {loaded.load_s:.2f} s, preview model at screen tolerance "
           f"{loaded.preview.tolerance:.3f} mm ({len(loaded.preview.geometry.points):,} points) "
           f"{loaded.model_s:.2f} s, hand-over + first draw {first - loaded_at:.2f} s")
-    _wait(app, lambda: bool(refined), 120)
+    _pan_zoom(app, window, "while the loader still prepares the rest (finer model, device lines)")
+    prepared = []
+    window.loader.prepared.connect(lambda loaded: prepared.append(time.perf_counter()))
+    _wait(app, lambda: bool(refined) and bool(prepared), 120)
     if refined:
         fine = window.loaded.preview
         print(f"  refined to {fine.tolerance} mm ({len(fine.geometry.points):,} points, every level of "
-              f"detail) {refined[0] - started:.2f} s after Open")
-    _pan_zoom(app, window)
+              f"detail) {refined[0] - started:.2f} s after Open; device lines ready "
+              f"{prepared[0] - started:.2f} s after Open" if prepared else "")
+    _pan_zoom(app, window, "once the file is ready")
     window.close()
 
 
-def _pan_zoom(app, window) -> None:
+def _pan_zoom(app, window, when: str) -> None:
     preview = window.preview
-    preview.model.build_all()
-    preview._refill_now()
     (x0, x1), (y0, y1) = preview.view.viewRange()
     cx, cy, w, h = (x0 + x1) / 2, (y0 + y1) / 2, x1 - x0, y1 - y0
     views = []
@@ -295,8 +297,8 @@ def _pan_zoom(app, window) -> None:
         times.append(time.perf_counter() - t)
     times.sort()
     median = statistics.median(times)
-    print(f"  pan/zoom redraw over {len(times)} views (zoom 1x..64x, refill from the level of detail"
-          f" + paint): median {median * 1000:.1f} ms, max {times[-1] * 1000:.1f} ms (target <= 33 ms)")
+    print(f"  pan/zoom redraw {when}, {len(times)} views (zoom 1x..64x, refill from the level of "
+          f"detail + paint): median {median * 1000:.1f} ms, max {times[-1] * 1000:.1f} ms (target <= 33 ms)")
 
 
 def main() -> None:

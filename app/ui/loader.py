@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import contextlib
 import dataclasses
+import os
 import threading
 import time
 from dataclasses import dataclass
@@ -30,6 +31,7 @@ from app.ui.preview.model import PreviewModel, screen_tolerance
 
 SNIFF_BYTES = 4096
 SHOW_WAIT_S = 3.0
+BACKGROUND_NICE = 10
 DEFAULT_VIEW = (900, 700)  # pixels, when the window did not say
 
 
@@ -85,6 +87,7 @@ class ProgramLoader(QObject):
         self.loaded.emit(result)
         if defer:
             self._shown.wait(SHOW_WAIT_S)
+        _yield_cpu()  # the rest is background work: the window comes first
         result = self._refine(result, view_size)
         _warm(result.program)  # about 1 s for a million lines
         self.prepared.emit(result)
@@ -100,6 +103,13 @@ class ProgramLoader(QObject):
         result = dataclasses.replace(result, preview=fine)
         self.refined.emit(result)
         return result
+
+
+def _yield_cpu() -> None:
+    """Lower this thread's scheduling priority where the platform allows (Linux nices
+    threads one by one); elsewhere nothing changes."""
+    with contextlib.suppress(AttributeError, OSError):
+        os.setpriority(os.PRIO_PROCESS, threading.get_native_id(), BACKGROUND_NICE)
 
 
 def _warm(program) -> None:
