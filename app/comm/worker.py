@@ -4,7 +4,8 @@ The only Qt module of ``app.comm``. The GUI never calls the worker directly: it 
 ``SerialController`` (GUI thread), whose methods queue a call into the worker thread
 and return at once, so nothing in the GUI thread ever waits on I/O. The worker opens
 the transport inside its own thread, pumps the session with a 5 ms QTimer (read what
-arrived, ``feed``, ``tick``) and turns the session's listener calls into signals.
+arrived, ``feed``, ``tick``; every 50 ms while no port is open) and turns the session's
+listener calls into signals.
 
 Signals (all carry one frozen dataclass of ``app.comm.events`` unless said otherwise):
 
@@ -60,6 +61,7 @@ SLOT_NAMES = frozenset({
     "resume_after_reconnect", "confirm_restart", "set_verbose_frames", "set_time_scale", "shutdown",
 })
 PUMP_MS = 5
+IDLE_PUMP_MS = 50  # with no port open: nothing arrives, the session's timers are coarse
 READ_CHUNK = 65536
 QUIET_KINDS = frozenset("DAFS")
 
@@ -141,7 +143,7 @@ class SerialWorker(QObject):
     def start(self) -> None:
         """Connected to ``QThread.started``: create the pump timer in this thread."""
         self._timer = QTimer(self)
-        self._timer.setInterval(PUMP_MS)
+        self._timer.setInterval(IDLE_PUMP_MS)
         self._timer.timeout.connect(self.pump)
         self._timer.start()
 
@@ -191,6 +193,7 @@ class SerialWorker(QObject):
         self.url = url
         self.session.clock = self._clock_for(self.transport)
         self.session.attach(self._write)
+        self._pump_every(PUMP_MS)
         self.connected.emit(url)
 
     @Slot()
@@ -269,6 +272,10 @@ class SerialWorker(QObject):
     def _write(self, data: bytes) -> None:
         self.transport.write(data)
 
+    def _pump_every(self, ms: int) -> None:
+        if self._timer is not None:
+            self._timer.setInterval(ms)
+
     def _lost(self, reason: str) -> None:
         self.session.detach(reason)
         self._close(reason)
@@ -277,6 +284,7 @@ class SerialWorker(QObject):
         transport, self.transport = self.transport, None
         if transport is None:
             return
+        self._pump_every(IDLE_PUMP_MS)
         self.session.detach(reason)
         with contextlib.suppress(OSError, ValueError):
             transport.close()

@@ -126,7 +126,7 @@ def _each(fn, items) -> list:
 def _bounds(points: np.ndarray) -> tuple[float, float, float, float]:
     if not len(points):
         return (0.0, 0.0, 0.0, 0.0)
-    lo, hi = points[:, :2].min(axis=0), points[:, :2].max(axis=0)
+    lo, hi = points.min(axis=0), points.max(axis=0)  # whole rows: a contiguous reduction
     return (float(lo[0]), float(hi[0]), float(lo[1]), float(hi[1]))
 
 
