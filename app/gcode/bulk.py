@@ -160,7 +160,7 @@ def scan_chunks(data: bytes, parts: list) -> list:
 
 def _groups(parts: list, big: bool) -> list[list]:
     """``parts`` in HELPER_GROUPS runs of chunks when shared, else one run."""
-    if not big or len(parts) < 2 or not workers.available():
+    if not big or len(parts) < 2 or not workers.ready():
         return [parts]
     size = -(-len(parts) // HELPER_GROUPS)
     return [parts[i : i + size] for i in range(0, len(parts), size)]

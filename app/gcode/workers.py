@@ -88,6 +88,11 @@ def _drop(pool: ProcessPoolExecutor) -> None:
     pool.shutdown(wait=False, cancel_futures=True)
 
 
+def ready() -> bool:
+    """True when the helper is running (when it is not, this starts it)."""
+    return _executor() is not None
+
+
 def submit(fn, *args) -> Future | None:
     """Run ``fn(*args)`` in the helper (``fn`` importable at module level), or ``None``."""
     pool = _executor()

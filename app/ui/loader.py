@@ -92,7 +92,6 @@ class ProgramLoader(QObject):
         _warm(result.program)  # about 1 s for a million lines
         self.prepared.emit(result)
 
-
     def _refine(self, result: LoadedProgram, view_size) -> LoadedProgram:
         if result.preview.tolerance <= self.tolerance:
             result.preview.build_all()  # every level of detail, for zooming

@@ -63,7 +63,7 @@ def test_a_shared_scan_equals_a_scan_alone(big, helper):
 def test_a_failed_helper_costs_time_not_the_result(big, monkeypatch):
     broken = Future()
     broken.set_exception(BrokenProcessPool("the helper died"))
-    monkeypatch.setattr(workers, "available", lambda: True)
+    monkeypatch.setattr(workers, "ready", lambda: True)
     monkeypatch.setattr(workers, "submit", lambda *args: broken)
     n = big.count(b"\n")
     failed = bulk.scan(big, n, share_bytes=0)

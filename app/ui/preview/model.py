@@ -7,7 +7,6 @@ segments cut at a move. ``frame(view, pixel)`` gives the arrays to draw for a vi
 
 from __future__ import annotations
 
-import threading
 from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
@@ -94,12 +93,6 @@ class PreviewModel:
         pixel = max((x1 - x0) / max(size[0], 1.0), (y1 - y0) / max(size[1], 1.0))  # aspect locked
         _each(lambda group: group.visible((x0, x1, y0, y1), pixel, self._budget(group)),
               sorted(self.groups, key=len, reverse=True))
-
-    def prebuild(self) -> threading.Thread:
-        """``build_all`` on a background thread (numpy releases the GIL)."""
-        thread = threading.Thread(target=self.build_all, name="preview-lod", daemon=True)
-        thread.start()
-        return thread
 
     def build_all(self) -> None:
         """Build every level of detail of every group (zooming then never waits)."""
