@@ -12,21 +12,19 @@ leave here in millimetres. Raises ``LineError``; changes ``state`` in place.
 from __future__ import annotations
 
 from .arcs import ijk_error, r_center
+from .cycles import run_cycle
+from .errors import LineError
 from .ops import ARC_CCW, ARC_CW, DWELL, FEED, PLANE_AXES, PLANE_NAMES, RAPID, OpBuffer
 from .state import State
-from .words import AXES
+from .words import AXES, CYCLES
+
+
+def is_cycle(code) -> bool:
+    return code in CYCLES
 
 LIMIT_MM = 1e6
 _OFFSETS = "IJK"
-
-
-class LineError(Exception):
-    """A refused line: a 1-based column (0 = the whole line) and the reason."""
-
-    def __init__(self, column: int, message: str):
-        super().__init__(message)
-        self.column = column
-        self.message = message
+__all__ = ["LineError", "do_motion"]
 
 
 def _col(params, letters: str) -> int:
@@ -50,23 +48,20 @@ def _motion_to_be(state: State, groups, params) -> int | None:
     return state.motion if has_axis else None
 
 
-def _check_usage(motion, groups, params) -> None:
+def _check_usage(motion, params) -> None:
     has_axis = any(c in params for c in AXES)
     if has_axis and motion is None or has_axis and motion == 80:
         raise LineError(_col(params, AXES), "axis word with no motion mode (G0, G1, G2 or G3)")
-    for letter in "IJKR":
-        if letter in params and motion not in (2, 3):
-            raise LineError(params[letter].column, f"{letter} word with no G2 or G3 to use it")
-    if "P" in params and motion not in (2, 3) and "nonmodal" not in groups:
-        raise LineError(params["P"].column, "P word with no G4, G2 or G3 to use it")
 
 
-def _target(state: State, params) -> list[float]:
+def _target(state: State, params, machine: bool = False) -> list[float]:
+    """The end point in the frame: program values plus the offsets (none for G53)."""
     target = list(state.pos)
+    total = (0.0, 0.0, 0.0) if machine else state.offsets.total()
     for i, c in enumerate(AXES):
         if c in params:
             v = params[c].value * state.scale
-            target[i] = v if state.absolute else state.pos[i] + v
+            target[i] = v + total[i] if state.absolute else state.pos[i] + v
             if abs(target[i]) > LIMIT_MM:
                 raise LineError(params[c].column, f"{c} coordinate out of range")
     return target
@@ -95,12 +90,18 @@ def _turns(params, clockwise: bool) -> int:
     return -turns if clockwise else turns
 
 
-def _arc(state: State, params, target, line_no: int, ops: OpBuffer, clockwise: bool) -> None:
+def arc_geometry(state: State, params, start3, target, clockwise: bool):
+    """(centre in the frame (3), signed turns) of the arc from ``start3`` to ``target``,
+    checked with LinuxCNC's tolerances in program units; raises ``LineError``."""
+    if state.arc_not_allowed:
+        raise LineError(0, "The move just after exiting cutter compensation mode must be straight, "
+                        "not an arc")
     _arc_words(state, params)
     a1, a2, a3 = PLANE_AXES[state.plane]
     k = state.scale
-    start = (state.pos[a1] / k, state.pos[a2] / k)
-    end = (target[a1] / k, target[a2] / k)
+    total = state.offsets.total()
+    start = ((start3[a1] - total[a1]) / k, (start3[a2] - total[a2]) / k)
+    end = ((target[a1] - total[a1]) / k, (target[a2] - total[a2]) / k)
     if "R" in params:
         if abs(params["R"].value) * k > LIMIT_MM:
             raise LineError(params["R"].column, "arc radius out of range")
@@ -115,28 +116,47 @@ def _arc(state: State, params, target, line_no: int, ops: OpBuffer, clockwise: b
     if why:
         raise LineError(0, why)
     center3 = [0.0, 0.0, 0.0]
-    center3[a1], center3[a2], center3[a3] = center[0] * k, center[1] * k, state.pos[a3]
+    center3[a1], center3[a2] = center[0] * k + total[a1], center[1] * k + total[a2]
+    center3[a3] = start3[a3]
+    return center3, _turns(params, clockwise)
+
+
+def _arc(state: State, params, target, line_no: int, ops: OpBuffer, clockwise: bool) -> None:
+    center3, turn = arc_geometry(state, params, state.pos, target, clockwise)
     kind = ARC_CW if clockwise else ARC_CCW
-    ops.add(line_no, kind, target, center3, state.plane, _turns(params, clockwise), state.feed)
+    ops.add(line_no, kind, target, center3, state.plane, turn, state.feed)
 
 
-def do_motion(state: State, groups, params, line_no: int, ops: OpBuffer) -> None:
-    """Dwell and motion of one line (see the module docstring)."""
-    motion = _motion_to_be(state, groups, params)
-    _check_usage(motion, groups, params)
-    if "nonmodal" in groups:
-        _dwell(state, params, line_no, ops)
-    if "motion" in groups:
-        code = groups["motion"][0]
-        state.motion = None if code == 80 else int(code)
-    if motion is None or motion == 80:
-        return
-    motion = int(motion)
-    if motion in (0, 1) and not any(c in params for c in AXES):
-        return
-    target = _target(state, params)
-    if motion in (2, 3):
+def _straight_or_arc(state: State, motion: int, groups, params, line_no: int, ops: OpBuffer) -> None:
+    machine = groups.get("nonmodal", (None,))[0] == 53
+    target = _target(state, params, machine)
+    if motion in (0, 1):
+        state.arc_not_allowed = False
+    if state.comp is not None and state.comp.radius > 0:
+        state.comp.move(state, motion, params, target, line_no, ops)
+    elif motion in (2, 3):
         _arc(state, params, target, line_no, ops, clockwise=motion == 2)
     else:
         ops.add(line_no, RAPID if motion == 0 else FEED, target, value=state.feed)
     state.pos = target
+
+
+def do_motion(state: State, groups, params, line_no: int, ops: OpBuffer, axes_taken: bool = False) -> None:
+    """Dwell and motion of one line (see the module docstring). ``axes_taken``: the axis
+    words belong to G10, G92, G52 or G43.1, so the line makes no move."""
+    motion = None if axes_taken else _motion_to_be(state, groups, params)
+    if not axes_taken:
+        _check_usage(motion, params)
+    if groups.get("nonmodal", (None,))[0] == 4:
+        _dwell(state, params, line_no, ops)
+    if motion is None or motion == 80 or not is_cycle(motion):
+        state.cycle.initial = None
+    if motion is not None and is_cycle(motion):
+        run_cycle(state, int(motion), params, line_no, ops)
+    elif motion is not None and motion != 80:
+        motion = int(motion)
+        if motion not in (0, 1) or any(c in params for c in AXES):
+            _straight_or_arc(state, motion, groups, params, line_no, ops)
+    if "motion" in groups:
+        code = groups["motion"][0]
+        state.motion = None if code == 80 else int(code)

@@ -118,10 +118,15 @@ def canon_to_moves(calls: Iterable[CanonCall]) -> list[dict]:
     plane = "XY"
     feed = 0.0
     moves: list[dict] = []
+    offsets = {"g5x": [0.0] * 3, "g92": [0.0] * 3, "tool": [0.0] * 3}  # mm
+    shift = [0.0, 0.0, 0.0]
     for call in calls:
         name = call.name
         unit_name = "in" if scale == MM_PER_INCH else "mm"
-        if name == "USE_LENGTH_UNITS":
+        if name in _OFFSET_CALLS:
+            offsets[_OFFSET_CALLS[name]] = _offset_values(call, scale)
+            shift = [sum(v) for v in zip(*offsets.values(), strict=True)]
+        elif name == "USE_LENGTH_UNITS":
             try:
                 scale = UNITS[call.args[0]]
             except KeyError:
@@ -134,7 +139,7 @@ def canon_to_moves(calls: Iterable[CanonCall]) -> list[dict]:
         elif name == "SET_FEED_RATE":
             feed = float(call.args[0]) * scale
         elif name in ("STRAIGHT_TRAVERSE", "STRAIGHT_FEED"):
-            end = _mm(call.floats()[:3], scale)
+            end = [v + o for v, o in zip(_mm(call.floats()[:3], scale), shift, strict=True)]
             if name == "STRAIGHT_TRAVERSE":
                 moves.append({"line": call.line, "kind": "rapid", "end": end, "units": unit_name})
             else:
@@ -148,10 +153,16 @@ def canon_to_moves(calls: Iterable[CanonCall]) -> list[dict]:
             axis_end = v[5] * scale
             if plane == "XY":
                 end = [first_end, second_end, axis_end]
+                axes = (0, 1)
             elif plane == "XZ":  # first = Z, second = X, third = Y
                 end = [second_end, axis_end, first_end]
+                axes = (2, 0)
             else:  # YZ: first = Y, second = Z, third = X
                 end = [axis_end, first_end, second_end]
+                axes = (1, 2)
+            end = [v + o for v, o in zip(end, shift, strict=True)]
+            first_axis += shift[axes[0]]
+            second_axis += shift[axes[1]]
             moves.append(
                 {
                     "line": call.line,
@@ -169,6 +180,21 @@ def canon_to_moves(calls: Iterable[CanonCall]) -> list[dict]:
         elif name in ("STRAIGHT_PROBE", "RIGID_TAP", "NURBS_FEED", "SPLINE_FEED"):
             raise CanonError(f"motion call {name} is not supported by this reader")
     return moves
+
+
+_OFFSET_CALLS = {"SET_G5X_OFFSET": "g5x", "SET_G92_OFFSET": "g92", "USE_TOOL_LENGTH_OFFSET": "tool"}
+
+
+def _offset_values(call: CanonCall, scale: float) -> list[float]:
+    """X Y Z of an offset call, in mm (``SET_G5X_OFFSET`` starts with the system number;
+    ``USE_TOOL_LENGTH_OFFSET`` prints ``x y z, a b c, u v w``)."""
+    if call.name == "SET_G5X_OFFSET":
+        values = call.floats()[1:4]
+    elif call.name == "USE_TOOL_LENGTH_OFFSET":
+        values = [float(v) for v in call.args[0].split()]
+    else:
+        values = call.floats()[:3]
+    return _mm(values, scale)
 
 
 _COMMENTS = re.compile(r"\([^)]*\)|;.*$")

@@ -26,8 +26,10 @@ from pathlib import Path
 
 import pytest
 
-from app.gcode import load
+from app.gcode import load as _load
+from app.gcode.tools import Tool
 from tests.oracle.canon import MM_PER_INCH, CanonRecord, compare_moves, drop_axisless_moves, read_record
+from tests.oracle.record import SEM_PREFIX, SEM_TOOLS
 
 ROOT = Path(__file__).resolve().parents[2]
 DATA = Path(__file__).resolve().parent / "data"
@@ -39,6 +41,14 @@ VARIANT_STEMS = {p.stem.split("+")[0] for p in DATA.glob("*+*.canon")}  # tested
 ACCEPTED = [p for p in RECORDS if read_record(p).error_line is None and p.stem not in VARIANT_STEMS]
 REFUSED = [p for p in RECORDS if read_record(p).error_line is not None]
 SAMPLE_FILES = sorted(SAMPLES.glob("*.ngc"))
+
+
+SEM_TABLE = {n: Tool(n, d, z) for n, (d, z) in SEM_TOOLS.items()}
+
+
+def load(path: Path):
+    """The loader, with the tool table rs274 had for this source (``record.tool_table_for``)."""
+    return _load(path, tools=SEM_TABLE if Path(path).stem.startswith(SEM_PREFIX) else None)
 
 
 def _ids(paths: list[Path]) -> list[str]:
