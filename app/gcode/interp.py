@@ -137,13 +137,13 @@ def finish_program(state: State, ops: OpBuffer) -> None:
 
 
 def _modes(state: State, groups) -> None:
+    """Plane (not while compensating, as rs274) and units (allowed: rs274 accepts it)."""
     for group in ("plane", "units"):
         if group in groups:
             _, name, value = G_CODES[groups[group][0]]
-            if state.comp is not None and getattr(state, name) != value:
-                what = "planes" if group == "plane" else "units"
+            if group == "plane" and state.comp is not None and state.plane != value:
                 raise LineError(groups[group][1].column,
-                                f"cannot change {what} with cutter radius compensation on")
+                                "Cannot change planes with cutter radius compensation on")
             setattr(state, name, value)
 
 

@@ -89,7 +89,9 @@ def number_lines(text: str) -> str:
     return "\n".join(out) + newline
 
 
-def run_rs274(program: str, extra: tuple[str, ...] = (), tool_table: str = TOOL_TABLE) -> tuple[int, str, str]:
+def run_rs274(
+    program: str, extra: tuple[str, ...] = (), tool_table: str = TOOL_TABLE
+) -> tuple[int, str, str]:
     """Run rs274 on ``program`` text in a fresh temporary HOME; (exit code, stdout, stderr)."""
     with tempfile.TemporaryDirectory(prefix="rs274-") as tmp:
         tmpdir = Path(tmp)
