@@ -28,6 +28,8 @@ from app.ui.plot.position_plot import PositionPlot
 from app.ui.preview.widget import PreviewWidget
 from app.ui.program.program_panel import ProgramPanel
 from app.ui.sd_panel import SdPanel
+from app.gcode.tools import FILE_NAME as TOOLS_FILE
+from app.gcode.tools import load_tools
 from app.ui.settings.store import FILE_NAME, load_settings
 from app.ui.status_bar import JobStatusBar
 
@@ -54,6 +56,8 @@ class MainWindow(QMainWindow):
         self.keep_awake = KeepAwake()
         self.link = MachineLink(self, self.profile)
         self.loader = ProgramLoader(self, self.profile.motion.arc_tolerance_mm)
+        tools = load_tools(self.config_dir / TOOLS_FILE)
+        self.tools = self.loader.tools = tools.tools
         self._build_widgets(port_lister)
         self._build_docks()
         from app.ui.menus import build_menus
@@ -67,6 +71,8 @@ class MainWindow(QMainWindow):
             self.restore_state()
         if loaded.problem:
             self.notifier.warning("Settings", loaded.problem)
+        if tools.problem:
+            self.notifier.warning(self.tr("Tool table"), tools.problem)
 
     def _build_widgets(self, port_lister) -> None:
         travel = (self.profile.travel.x_max, self.profile.travel.y_max)
