@@ -13,6 +13,8 @@ from pathlib import Path
 from PySide6.QtCore import QSettings, QStandardPaths, Qt
 from PySide6.QtWidgets import QDockWidget, QMainWindow, QTabWidget, QWidget
 
+from app.gcode.tools import FILE_NAME as TOOLS_FILE
+from app.gcode.tools import load_tools
 from app.ui.connection_bar import ConnectionBar
 from app.ui.console import ConsoleView
 from app.ui.controls import MachineControls
@@ -28,8 +30,6 @@ from app.ui.plot.position_plot import PositionPlot
 from app.ui.preview.widget import PreviewWidget
 from app.ui.program.program_panel import ProgramPanel
 from app.ui.sd_panel import SdPanel
-from app.gcode.tools import FILE_NAME as TOOLS_FILE
-from app.gcode.tools import load_tools
 from app.ui.settings.store import FILE_NAME, load_settings
 from app.ui.status_bar import JobStatusBar
 

@@ -46,7 +46,8 @@ class ToolTableDialog(QDialog):
         self.error = QLabel("")
         self.error.setStyleSheet("color: #e05050;")
         self.error.setWordWrap(True)
-        buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Ok | QDialogButtonBox.StandardButton.Cancel)
+        ok, cancel = QDialogButtonBox.StandardButton.Ok, QDialogButtonBox.StandardButton.Cancel
+        buttons = QDialogButtonBox(ok | cancel)
         buttons.accepted.connect(self.accept)
         buttons.rejected.connect(self.reject)
         self.button_box = buttons
@@ -94,7 +95,8 @@ class ToolTableDialog(QDialog):
             check_tool(*values)
         except ToolError as exc:
             self._mark(row, 1 if "diameter" in str(exc) else 2 if "length" in str(exc) else 0)
-            raise ToolError(self.tr("row %1: %2").replace("%1", str(row + 1)).replace("%2", str(exc))) from None
+            message = self.tr("row %1: %2").replace("%1", str(row + 1)).replace("%2", str(exc))
+            raise ToolError(message) from None
         return Tool(values[0], values[1], values[2], self._text(row, 3))
 
     def _mark(self, row: int, column: int) -> None:
