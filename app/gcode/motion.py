@@ -11,12 +11,14 @@ leave here in millimetres. Raises ``LineError``; changes ``state`` in place.
 
 from __future__ import annotations
 
+import math
+
 from .arcs import ijk_error, r_center
 from .cycles import run_cycle
 from .errors import LineError
 from .ops import ARC_CCW, ARC_CW, DWELL, FEED, PLANE_AXES, PLANE_NAMES, RAPID, OpBuffer
 from .state import State
-from .words import AXES, CYCLES
+from .words import AXES, CYCLES, MOVE_WORDS
 
 
 def is_cycle(code) -> bool:
@@ -42,16 +44,16 @@ def _dwell(state: State, params, line_no: int, ops: OpBuffer) -> None:
 
 
 def _motion_to_be(state: State, groups, params) -> int | None:
-    has_axis = any(c in params for c in AXES)
+    has_axis = any(c in params for c in MOVE_WORDS)
     if "motion" in groups:
         return groups["motion"][0]
     return state.motion if has_axis else None
 
 
 def _check_usage(motion, params) -> None:
-    has_axis = any(c in params for c in AXES)
+    has_axis = any(c in params for c in MOVE_WORDS)
     if has_axis and motion is None or has_axis and motion == 80:
-        raise LineError(_col(params, AXES), "axis word with no motion mode (G0, G1, G2 or G3)")
+        raise LineError(_col(params, MOVE_WORDS), "axis word with no motion mode (G0, G1, G2 or G3)")
 
 
 def _target(state: State, params, machine: bool = False) -> list[float]:
@@ -64,7 +66,31 @@ def _target(state: State, params, machine: bool = False) -> list[float]:
             target[i] = v + total[i] if state.absolute else state.pos[i] + v
             if abs(target[i]) > LIMIT_MM:
                 raise LineError(params[c].column, f"{c} coordinate out of range")
+    if "@" in params or "^" in params:
+        _polar(state, params, target, total)
     return target
+
+
+def _polar(state: State, params, target, total) -> None:
+    """@ (radius) and ^ (angle, degrees) about the program's origin, as rs274ngc:
+    in G90 a missing one keeps the current point's; in G91 both are increments."""
+    x, y = state.pos[0] - total[0], state.pos[1] - total[1]
+    word = params["@"] if "@" in params else params["^"]
+    radius, theta = math.hypot(x, y), math.atan2(y, x)
+    if x == 0 and y == 0 and not (state.absolute and "^" in params):
+        why = ("Must specify angle in polar coordinate if at the origin" if state.absolute
+               else "Incremental motion with polar coordinates is indeterminate when at the origin")
+        raise LineError(word.column, why)
+    if "@" in params:
+        value = params["@"].value * state.scale
+        radius = value if state.absolute else radius + value
+    if "^" in params:
+        value = math.radians(params["^"].value)
+        theta = value if state.absolute else theta + value
+    if abs(radius) > LIMIT_MM:
+        raise LineError(word.column, "polar radius out of range")
+    target[0] = radius * math.cos(theta) + total[0]
+    target[1] = radius * math.sin(theta) + total[1]
 
 
 def _arc_words(state: State, params) -> None:
@@ -155,7 +181,7 @@ def do_motion(state: State, groups, params, line_no: int, ops: OpBuffer, axes_ta
         run_cycle(state, int(motion), params, line_no, ops)
     elif motion is not None and motion != 80:
         motion = int(motion)
-        if motion not in (0, 1) or any(c in params for c in AXES):
+        if motion not in (0, 1) or any(c in params for c in MOVE_WORDS):
             _straight_or_arc(state, motion, groups, params, line_no, ops)
     if "motion" in groups:
         code = groups["motion"][0]

@@ -9,7 +9,7 @@ rs274's reason. Returns whether the axis words belong to G10, G92, G52 or G43.1
 from __future__ import annotations
 
 from .errors import LineError
-from .words import AXES, CYCLES
+from .words import CYCLES, MOVE_WORDS
 
 _AXIS_USERS = {10: "G10", 52: "G52", 92: "G92"}
 
@@ -17,7 +17,7 @@ _AXIS_USERS = {10: "G10", 52: "G52", 92: "G92"}
 def _motion_to_be(state, groups, params, axes_taken: bool):
     if "motion" in groups:
         return groups["motion"][0]
-    if not axes_taken and any(c in params for c in AXES):
+    if not axes_taken and any(c in params for c in MOVE_WORDS):
         return state.motion
     return None
 
@@ -25,7 +25,7 @@ def _motion_to_be(state, groups, params, axes_taken: bool):
 def _axes_taken(groups, params) -> bool:
     nonmodal = groups.get("nonmodal", (None,))[0]
     taken = nonmodal in _AXIS_USERS or groups.get("toollength", (None,))[0] == 43.1
-    if taken and "motion" in groups and any(c in params for c in AXES):
+    if taken and "motion" in groups and any(c in params for c in MOVE_WORDS):
         raise LineError(groups["motion"][1].column, "Cannot use two G codes that both use axis values")
     return taken
 
@@ -51,6 +51,14 @@ def check_usage(state, groups, mgroups, params) -> bool:
             raise LineError(groups["nonmodal"][1].column, "Cannot use G53 incremental")
         if state.comp is not None:
             raise LineError(groups["nonmodal"][1].column, "Cannot use G53 with cutter radius compensation on")
+        if "@" in params or "^" in params:
+            raise LineError(groups["nonmodal"][1].column, "Cannot use polar coordinates with G53")
+    if ("@" in params or "^" in params) and ("X" in params or "Y" in params):
+        word = params["X"] if "X" in params else params["Y"]
+        raise LineError(word.column, "Cannot specify X or Y words with polar coordinate")
+    if ("@" in params or "^" in params) and motion in CYCLES:
+        word = params["@"] if "@" in params else params["^"]
+        raise LineError(word.column, "polar coordinates in canned cycles are not supported")
     for letter in "IJK":
         if letter in params and not arc:
             _refuse(params, letter, "G2 or G3")

@@ -108,9 +108,10 @@ M_CODES: dict[int, tuple[str, str]] = {
     73: ("modal_state", "autorestore"),
 }
 
-ALLOWED_LETTERS = set("GMXYZIJKFSPRTNDHLQ")
+ALLOWED_LETTERS = set("GMXYZIJKFSPRTNDHLQ@^")
 REFUSED_LETTERS = {
     **{c: f"axis {c} is not on this machine (it has X, Y and Z)" for c in "ABCUVW"},
     "E": "E words are not supported",
 }
 AXES = "XYZ"
+MOVE_WORDS = "XYZ@^"  # the words that make a line move (polar @ radius, ^ angle)

@@ -198,7 +198,7 @@ def _offset_values(call: CanonCall, scale: float) -> list[float]:
 
 
 _COMMENTS = re.compile(r"\([^)]*\)|;.*$")
-_AXIS_WORD = re.compile(r"[XYZ][+-]?[0-9.]")
+_AXIS_WORD = re.compile(r"[XYZ@^][+-]?[0-9.]")  # @ ^: polar words
 
 
 def has_axis_word(source_line: str) -> bool:
