@@ -17,6 +17,7 @@ from .arcs import ijk_error, r_center
 from .cycles import run_cycle
 from .errors import LineError
 from .ops import ARC_CCW, ARC_CW, DWELL, FEED, PLANE_AXES, PLANE_NAMES, RAPID, OpBuffer
+from .splines import run_spline
 from .state import State
 from .words import AXES, CYCLES, MOVE_WORDS
 
@@ -158,7 +159,10 @@ def _straight_or_arc(state: State, motion: int, groups, params, line_no: int, op
     target = _target(state, params, machine)
     if motion in (0, 1):
         state.arc_not_allowed = False
-    if state.comp is not None and state.comp.radius > 0:
+    if motion in (5, 5.1):
+        column = groups["motion"][1].column if "motion" in groups else 0
+        run_spline(state, motion, params, target, line_no, ops, column)
+    elif state.comp is not None and state.comp.radius > 0:
         state.comp.move(state, motion, params, target, line_no, ops)
     elif motion in (2, 3):
         _arc(state, params, target, line_no, ops, clockwise=motion == 2)
@@ -180,9 +184,9 @@ def do_motion(state: State, groups, params, line_no: int, ops: OpBuffer, axes_ta
     if motion is not None and is_cycle(motion):
         run_cycle(state, int(motion), params, line_no, ops)
     elif motion is not None and motion != 80:
-        motion = int(motion)
+        motion = motion if motion == 5.1 else int(motion)
         if motion not in (0, 1) or any(c in params for c in MOVE_WORDS):
             _straight_or_arc(state, motion, groups, params, line_no, ops)
     if "motion" in groups:
         code = groups["motion"][0]
-        state.motion = None if code == 80 else int(code)
+        state.motion = None if code == 80 else code if code == 5.1 else int(code)

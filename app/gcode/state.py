@@ -26,6 +26,8 @@ class Cycle:
     p: float = 0.0
     q: float = 0.0
     initial: float | None = None  # the Z level a run of cycle blocks started from (mm)
+    spline_i: float = 0.0  # G5's mirrored first control point when I J are left out
+    spline_j: float = 0.0
 
 
 @dataclass(slots=True)
@@ -66,7 +68,7 @@ class State:
         other.spindle_on, other.ended = self.spindle_on, self.ended
         other.offsets, other.retract_r = self.offsets.copy(), self.retract_r
         c = self.cycle
-        other.cycle = Cycle(c.r, c.z, c.p, c.q, c.initial)
+        other.cycle = Cycle(c.r, c.z, c.p, c.q, c.initial, c.spline_i, c.spline_j)
         other.tool, other.selected, other.saved = self.tool, self.selected, self.saved
         other.arc_not_allowed = self.arc_not_allowed
         other.comp = self.comp.copy() if self.comp is not None else None

@@ -40,6 +40,7 @@ def check_usage(state, groups, mgroups, params) -> bool:
     motion = _motion_to_be(state, groups, params, taken)
     nonmodal = groups.get("nonmodal", (None,))[0]
     arc, cycle = motion in (2, 3), motion in CYCLES
+    spline = motion in (5, 5.1)
     g10 = nonmodal == 10
     pathmode = groups.get("pathmode", (None,))[0] == 64
     m61 = mgroups.get("toolchange", (None,))[0] == 61
@@ -60,14 +61,14 @@ def check_usage(state, groups, mgroups, params) -> bool:
         word = params["@"] if "@" in params else params["^"]
         raise LineError(word.column, "polar coordinates in canned cycles are not supported")
     for letter in "IJK":
-        if letter in params and not arc:
-            _refuse(params, letter, "G2 or G3")
+        if letter in params and not (arc or spline and letter != "K"):
+            _refuse(params, letter, "G2, G3, G5 or G5.1")
     if "R" in params and not (arc or cycle or g10):
         _refuse(params, "R", "G2, G3, G10 or canned cycle")
-    if "P" in params and not (arc or cycle or g10 or pathmode or nonmodal == 4):
-        _refuse(params, "P", "G4, G2, G3, G10, G64 or canned cycle")
-    if "Q" in params and not (motion in (73, 83) or m61 or pathmode):
-        _refuse(params, "Q", "G64, G73, G83 or M61")
+    if "P" in params and not (arc or cycle or g10 or pathmode or nonmodal == 4 or motion == 5):
+        _refuse(params, "P", "G4, G2, G3, G5, G10, G64 or canned cycle")
+    if "Q" in params and not (motion in (73, 83, 5) or m61 or pathmode):
+        _refuse(params, "Q", "G5, G64, G73, G83 or M61")
     if "L" in params and not (cycle or g10):
         _refuse(params, "L", "G10 or canned cycle")
     if "D" in params and groups.get("cutter", (None,))[0] not in (41, 42, 41.1, 42.1):

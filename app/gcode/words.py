@@ -16,6 +16,8 @@ G_CODES: dict[float, tuple[str, str | None, object]] = {
     2: ("motion", "motion", 2),
     3: ("motion", "motion", 3),
     80: ("motion", "motion", None),
+    5: ("motion", "motion", 5),
+    5.1: ("motion", "motion", 5.1),
     **{float(c): ("motion", "motion", c) for c in CYCLES},
     4: ("nonmodal", "dwell", True),
     10: ("nonmodal", "setup", True),
@@ -83,9 +85,8 @@ REFUSED_G: dict[float, str] = {
     28: "G28 (go to a stored position) is not supported",
     30: "G30 (go to a stored position) is not supported",
     43.2: "additive tool length offset G43.2 is not supported (use G43 or G43.1)",
-    5: "cubic splines G5 are not supported",
-    5.1: "quadratic splines G5.1 are not supported",
-    5.2: "NURBS G5.2 are not supported",
+    5.2: "NURBS G5.2 are not supported (G5 cubic and G5.1 quadratic splines are)",
+    5.3: "NURBS G5.3 are not supported (G5 cubic and G5.1 quadratic splines are)",
 }
 
 M_CODES: dict[int, tuple[str, str]] = {

@@ -122,7 +122,7 @@ ERROR_CASES = [
     ("G1 X1 X2 F1", 1, "two X words"),
     ("X5", 1, "no motion mode"),
     ("G80 X5", 1, "no motion mode"),
-    ("G1 X1 I1 F1", 1, "I word with no G2 or G3"),
+    ("G1 X1 I1 F1", 1, "I word with no G2, G3"),
     ("G0 X1 R1", 1, "R word with no G2, G3"),
     ("G1 X1 P1 F1", 1, "P word"),
     ("G2 X1 Y1 F1", 1, "R, I, J and K words all missing"),

@@ -36,7 +36,7 @@ def test_m72_without_a_saved_state(run):
     ("G70", "lathe"),
     ("G7", "lathe"),
     ("G93", "inverse-time"),
-    ("G5 X1 Y1 I1 J1 P1 Q1", "splines"),
+    ("G5.2 X1 Y1 P1 L3", "NURBS"),
     ("D1", "D word with no"),
     ("H1", "H word with no G43"),
     ("L2", "L word with no"),
