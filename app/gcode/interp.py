@@ -171,10 +171,10 @@ def _nonmodal(state: State, groups, params) -> None:
         level = params["L"].value if "L" in params else None
         if level in (2, 20):
             offsets.set_system(state, params, int(level), word.column)
-        elif level in (1, 10, 11):
+        elif level in (1, 10, 11, 12, 13):
             tooling.set_entry(state, int(level), params, word.column)
         else:
-            raise LineError(word.column, "Line with G10 does not have L1, L10, L11, L2, or L20")
+            raise LineError(word.column, "Line with G10 does not have L1, L10, L11, L12, L13, L2, or L20")
     elif code in (92, 92.1, 92.2, 92.3, 52):
         offsets.axis_offsets(state, code, params, word.column)
 

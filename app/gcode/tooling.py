@@ -77,9 +77,26 @@ def length_offset(state, code: float, params, column: int) -> None:
         offsets.set_tool_offset(state, [0.0, 0.0, 0.0])
 
 
+def _fanuc(level: int, params) -> bool:
+    """Fanuc's G10 L10-L13 (P tool, R value, no Z): L10 length, L12 radius geometry;
+    L11/L13 are wear, which this table does not keep."""
+    return level in (12, 13) or level in (10, 11) and "R" in params and "Z" not in params
+
+
+def _fanuc_entry(state, level: int, params, column: int, old) -> tuple[float, float]:
+    if level in (11, 13):
+        raise LineError(column, f"G10 L{level} (Fanuc wear offset) is not supported: the tool table keeps "
+                        "no wear; set the worn value with L10 (length) or L12 (radius)")
+    if "R" not in params:
+        raise LineError(column, f"G10 L{level} needs an R word (the value)")
+    value = params["R"].value * state.scale
+    return (old.diameter, value) if level == 10 else (2 * value, old.length)
+
+
 def set_entry(state, level: int, params, column: int) -> None:
     """G10 L1 P R Z (given), L10 (length so the current point reads Z with G43),
-    L11 (the same in G59.3 without G92): the program's copy of the table changes."""
+    L11 (the same in G59.3 without G92): the program's copy of the table changes.
+    Fanuc's forms (R and no Z; L12, L13) are read as Fanuc means them (``_fanuc``)."""
     if "P" not in params:
         raise LineError(column, f"G10 L{level} needs a P word (the tool number)")
     number = _number(params["P"], "P")
@@ -87,9 +104,11 @@ def set_entry(state, level: int, params, column: int) -> None:
     if number == 0:
         raise LineError(params["P"].column, f"G10 L{level}: P0 is no tool")
     diameter, length = old.diameter, old.length
-    if "R" in params:
+    if _fanuc(level, params):
+        diameter, length = _fanuc_entry(state, level, params, column, old)
+    elif "R" in params:
         diameter = 2 * params["R"].value * state.scale
-    if "Z" in params:
+    if "Z" in params and not _fanuc(level, params):
         z = params["Z"].value * state.scale
         if level == 1:
             length = z

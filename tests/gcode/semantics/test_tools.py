@@ -89,3 +89,15 @@ def test_unknown_tool(run):
     for text in ("G43 H9", "G41 D9", "M61 Q9"):
         program = run(text + "\n")
         assert "Requested tool 9 not found" in program.errors[0].message, text
+
+
+def test_fanuc_g10_l10_l12_set_length_and_radius(run):
+    program = run("G10 L10 P2 R7.5\nG10 L12 P2 R1.5\nG43 H2\nG0 X-10 Z0\nG41 D2 G1 X0 F10\n"
+                  "G40 G1 X0 Y-10\n")
+    assert not program.errors
+    assert ends(program)[0] == [-10, 0, 7.5] and ends(program)[1] == [0, 1.5, 7.5]
+
+
+def test_fanuc_wear_offsets_are_refused(run):
+    program = run("G10 L13 P2 R0.1\n")
+    assert "wear" in program.errors[0].message
