@@ -18,37 +18,15 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
+from .comp_corners import GOUGE_ARC, HALF_PI, LEFT, PI, RIGHT, arc_to_arc, arc_to_line, find_turn, line_to_arc
+from .comp_corners import inside as _inside
 from .errors import LineError
 from .motion import arc_geometry
 from .ops import ARC_CCW, ARC_CW, FEED, RAPID, XY
 
-LEFT, RIGHT = 1, -1
 SMALL = 0.05  # TOLERANCE_CONCAVE_CORNER, radians
 EQUAL = 1e-6
-HALF_PI, PI = math.pi / 2, math.pi
-_GOUGE_LINE_ARC = "Arc to straight motion makes a corner the compensated tool can't fit in without gouging"
-_GOUGE_ARC = "Arc move in concave corner cannot be reached by the tool without gouging"
-_GOUGE_ARCS = "Arc to arc motion makes a corner the compensated tool can't fit in without gouging"
 _TOO_SMALL = "Tool radius not less than arc radius with comp"
-
-
-def _inside(side: int, turn: int) -> bool:
-    return side == LEFT and turn > 0 or side == RIGHT and turn < 0
-
-
-def find_turn(x1, y1, cx, cy, turn, x2, y2) -> float:
-    """rs274ngc's signed sweep (radians) from (x1, y1) to (x2, y2) around (cx, cy)."""
-    if turn == 0:
-        return 0.0
-    alpha = math.atan2(y1 - cy, x1 - cx)
-    beta = math.atan2(y2 - cy, x2 - cx)
-    if turn > 0:
-        if beta <= alpha:
-            beta += 2 * PI
-        return beta - alpha + (turn - 1) * 2 * PI
-    if alpha <= beta:
-        alpha += 2 * PI
-    return beta - alpha + (turn + 1) * 2 * PI
 
 
 @dataclass
@@ -106,7 +84,7 @@ class Comp:
                 if self.endpoint is not None and sweep != 0.0:
                     new = find_turn(*self.endpoint, *e["center"][:2], e["turn"], x, y)
                     if abs(new) > abs(sweep) + (0.001 if inch else 0.0254):
-                        raise LineError(0, _GOUGE_ARC)
+                        raise LineError(0, GOUGE_ARC)
             elif e["kind"] in ("rapid", "feed"):
                 if self.endpoint is not None:
                     dot = e["dir"][0] * (x - self.endpoint[0]) + e["dir"][1] * (y - self.endpoint[1])
@@ -193,30 +171,13 @@ class Comp:
                 mx = cx + retreat * math.cos(theta + gamma)
                 my = cy + retreat * math.sin(theta + gamma)
             else:
-                mx, my = self._arc_to_line(front, px, py, opx, opy)
+                mx, my = arc_to_line(side, r, front, px, py, opx, opy)
             self.move_endpoint_and_flush(ops, mx, my, state.inch)
         else:
             self.dequeue(ops)
             self.endpoint = (cx, cy)
         self._enqueue_line(kind, line_no, (px - opx, py - opy), end, state.feed)
         self.current = list(end)
-
-    def _arc_to_line(self, prev, px, py, opx, opy):
-        side, r = self.side, self.radius
-        pcx, pcy = prev["center"][:2]
-        oldrad = math.hypot(pcy - prev["end"][1], pcx - prev["end"][0])
-        base = math.atan2(py - opy, px - opx)
-        theta = base + HALF_PI if prev["turn"] > 0 else base - HALF_PI
-        phi = math.atan2(pcy - opy, pcx - opx)
-        inside = _inside(side, prev["turn"])
-        uncomp = oldrad + r if inside else oldrad - r
-        d = uncomp * math.cos(theta - phi)
-        ratio = (d - r if inside else d + r) / oldrad
-        if not -1.0 <= ratio <= 1.0:
-            raise LineError(0, _GOUGE_LINE_ARC)
-        sign = 1 if (prev["turn"] > 0) != inside else -1
-        angle = sign * math.acos(ratio) + theta + PI
-        return pcx + oldrad * math.cos(angle), pcy + oldrad * math.sin(angle)
 
     def _arc_entry(self, state, params, motion, center, turn, target, line_no) -> None:
         cx, cy = self.current[:2]
@@ -275,9 +236,9 @@ class Comp:
         if beta < -SMALL or beta > PI + SMALL or (abs(beta - PI) < SMALL and not _inside(side, turn)):
             front = self.queue[0] if self.queue else None
             if front is None or front["kind"] != "arc":
-                mid = self._line_to_arc(turn, arc_radius, beta, theta, ccx, ccy)
+                mid = line_to_arc(side, r, turn, arc_radius, beta, theta, ccx, ccy)
             else:
-                mid = self._arc_to_arc(front, turn, arc_radius, ccx, ccy)
+                mid = arc_to_arc(side, r, front, turn, arc_radius, ccx, ccy)
             self.move_endpoint_and_flush(ops, *mid, state.inch)
         elif beta > SMALL:  # convex: an arc around the corner first
             mid = (opx + r * math.cos(delta), opy + r * math.sin(delta))
@@ -290,40 +251,6 @@ class Comp:
             self.endpoint = (cx, cy)
         self._enqueue_arc(line_no, sweep, new_end, arc_center, turn, state.feed)
         self.current = list(new_end)
-
-    def _line_to_arc(self, turn, arc_radius, beta, theta, ccx, ccy):
-        r = self.radius
-        cy = arc_radius * math.sin(beta - HALF_PI)
-        if _inside(self.side, turn):
-            dist = arc_radius - r
-            ratio = (cy + r) / dist
-            if not -1.0 <= ratio <= 1.0:
-                raise LineError(0, _GOUGE_ARC)
-            angle = theta + math.asin(ratio) if turn > 0 else theta - math.asin(ratio)
-        else:
-            dist = arc_radius + r
-            ratio = (cy - r) / dist
-            if not -1.0 <= ratio <= 1.0:
-                raise LineError(0, _GOUGE_ARC)
-            angle = theta + PI - math.asin(ratio) if turn > 0 else theta + PI + math.asin(ratio)
-        return ccx + dist * math.cos(angle), ccy + dist * math.sin(angle)
-
-    def _arc_to_arc(self, prev, turn, arc_radius, ccx, ccy):
-        r = self.radius
-        pcx, pcy = prev["center"][:2]
-        oldrad = math.hypot(pcy - prev["end"][1], pcx - prev["end"][0])
-        newrad = arc_radius - r if _inside(self.side, turn) else arc_radius + r
-        arc_cc = math.hypot(pcy - ccy, pcx - ccx)
-        if oldrad == 0 or arc_cc == 0:
-            raise LineError(0, "Arc to arc motion is invalid because the arcs have the same center")
-        a = (oldrad ** 2 + arc_cc ** 2 - newrad ** 2) / (2 * oldrad * arc_cc)
-        if not -1.0 <= a <= 1.0:
-            raise LineError(0, _GOUGE_ARCS)
-        pullback = math.acos(a)
-        cc_dir = math.atan2(ccy - pcy, ccx - pcx)
-        plus = (turn > 0) == _inside(self.side, prev["turn"])
-        direction = cc_dir + pullback if plus else cc_dir - pullback
-        return pcx + oldrad * math.cos(direction), pcy + oldrad * math.sin(direction)
 
 
 def _radius(state, code: float, params, column: int) -> float:

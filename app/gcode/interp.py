@@ -224,7 +224,12 @@ def _apply(new: State, words, line_no, line_ops: OpBuffer, report) -> None:
     _modes(new, groups)
     _offset_modes(new, groups, params, line_ops)
     _nonmodal(new, groups, params)
-    do_motion(new, groups, params, line_no, line_ops, axes_taken)
+    try:
+        do_motion(new, groups, params, line_no, line_ops, axes_taken)
+    except LineError as exc:
+        if exc.column == 0 and "motion" in groups:  # a cycle, spline or arc refused: its G word
+            exc.column = groups["motion"][1].column
+        raise
     _stop(new, mgroups, line_no, line_ops, report)
 
 
