@@ -290,7 +290,7 @@ def select(state, code: float, params, column: int, ops) -> None:
     if state.plane != 0:
         raise LineError(column, "Cutter radius compensation allowed only in XY plane on this machine")
     if state.comp is not None:
-        raise LineError(column, "Cannot turn cutter radius comp on when already on")
+        raise LineError(column, "Cannot turn cutter radius comp on when on")
     radius = _radius(state, code, params, column)
     side = LEFT if code in (41, 41.1) else RIGHT
     if radius < 0:

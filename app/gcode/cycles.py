@@ -81,11 +81,11 @@ def run_cycle(state, code: int, params, line_no: int, ops: OpBuffer) -> None:
     if state.comp is not None:
         raise LineError(0, "Cannot use canned cycles with cutter compensation on")
     c = state.cycle
-    r = _sticky(state, params, code, "R", "r", "R clearance plane unspecified in canned cycle")
+    r = _sticky(state, params, code, "R", "r", "R clearance plane unspecified in cycle")
     z = _sticky(state, params, code, "Z", "z", "Z value unspecified in XY plane canned cycle")
     p = q = 0.0
     if code in (82, 89):
-        p = _sticky(state, params, code, "P", "p", f"dwell time P word missing with G{code}")
+        p = _sticky(state, params, code, "P", "p", f"Dwell time P word missing with G{code}")
     if code in (73, 83):
         q = _sticky(state, params, code, "Q", "q", f"Q word missing with G{code}")
     repeats = 1
@@ -114,7 +114,7 @@ def run_cycle(state, code: int, params, line_no: int, ops: OpBuffer) -> None:
         x, y = prog[0], prog[1]
     if rr < bottom:
         column = params["R"].column if "R" in params else 0
-        raise LineError(column, "R value less than Z value in canned cycle")
+        raise LineError(column, "R less than Z in cycle in XY plane")
     e = _Emitter(state, line_no, ops)
     if initial < rr:
         e.rapid(prog[0], prog[1], rr)

@@ -77,7 +77,7 @@ def set_system(state, params, level: int, column: int) -> None:
         raise LineError(column, f"G10 L{level} needs a P word (work offset 0-9)")
     p = params["P"].value
     if p != int(p) or not 0 <= p <= 9:
-        raise LineError(params["P"].column, f"G10 L{level}: P{p:g} is not a work offset (P0-P9)")
+        raise LineError(params["P"].column, f"P value out of range (0-9) with G10 L{level}")
     system = int(p) or state.offsets.system
     if "R" in params:
         if level == 20:
@@ -113,7 +113,7 @@ def axis_offsets(state, code: float, params, column: int) -> None:
     if code in (92, 52):
         values = _axis_values(state, params)
         if not values:
-            raise LineError(column, f"all axes missing with G{code:g}")
+            raise LineError(column, "All axes missing with G52 or G92")
         for axis, value in values.items():
             if code == 92:
                 off.g92[axis] = state.pos[axis] - off.g5x[axis] - off.tool[axis] - value

@@ -55,8 +55,8 @@ def check_usage(state, groups, mgroups, params) -> bool:
         if "@" in params or "^" in params:
             raise LineError(groups["nonmodal"][1].column, "Cannot use polar coordinates with G53")
     if ("@" in params or "^" in params) and ("X" in params or "Y" in params):
-        word = params["X"] if "X" in params else params["Y"]
-        raise LineError(word.column, "Cannot specify X or Y words with polar coordinate")
+        letter = "X" if "X" in params else "Y"
+        raise LineError(params[letter].column, f"Cannot specify both polar coordinate and {letter} word")
     if ("@" in params or "^" in params) and motion in CYCLES:
         word = params["@"] if "@" in params else params["^"]
         raise LineError(word.column, "polar coordinates in canned cycles are not supported")

@@ -105,7 +105,7 @@ ERROR_CASES = [
     ("G81 X1 Y1 Z-1 R1", 1, "Cannot feed with zero feed rate"),
     ("G83 X1 F10", 1, "R clearance plane unspecified"),
     ("G41 D1", 1, "Requested tool 1 not found in the tool table"),
-    ("G92", 1, "all axes missing with G92"),
+    ("G92", 1, "All axes missing with G52 or G92"),
     ("G84 X1 Z-1 R1 F10", 1, "spindle that reverses"),
     ("G7", 1, "lathe code"),
     ("G33 X1 K1", 1, "spindle-synchronised"),

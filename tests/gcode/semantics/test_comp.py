@@ -73,7 +73,7 @@ def test_comp_leaves_the_fast_path_and_g40_returns_to_it(run):
     ("G41 D1 G1 X-8 F100", 2, "entry move is not greater than the tool radius"),
     ("G41 D1 G1 X0 F100\nG3 X4 I2", 3, "Tool radius not less than arc radius"),
     ("G41 D1 G1 X0 F100\nX20\nY1\nX40", 5, "concave corner cannot be reached"),
-    ("G41 D1 G1 X0 F100\nG41 X5", 3, "when already on"),
+    ("G41 D1 G1 X0 F100\nG41 X5", 3, "comp on when on"),
     ("G41 D1 G1 X0 F100\nG18", 3, "Cannot change planes"),
     ("G41 D1 G1 X0 F100\nG92 X0", 3, "cannot change axis offsets"),
     ("G41 D1 G1 X0 F100\nG55", 3, "cannot change coordinate systems"),

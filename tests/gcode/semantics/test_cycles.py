@@ -44,7 +44,7 @@ def test_cycle_mode_leaves_the_fast_path(run):
     ("G81 X1 Z-1 R1", "zero feed rate"),
     ("F10 G81 X1 Z-1", "R clearance plane unspecified"),
     ("F10 G81 X1 R1", "Z value unspecified"),
-    ("F10 G81 X1 Z2 R1", "R value less than Z"),
+    ("F10 G81 X1 Z2 R1", "R less than Z"),
     ("F10 G81 X1 Z-1 R1 L0", "zero repeats"),
     ("F10 G83 X1 Z-1 R1", "Q word missing with G83"),
     ("F10 G83 X1 Z-1 R1 Q-1", "negative or zero Q"),

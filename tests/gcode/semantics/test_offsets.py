@@ -76,7 +76,7 @@ def test_fast_path_only_without_offsets():
 def test_offsets_are_refused_clearly(run):
     cases = {
         "G10 L2 P1 R30 X1": "rotated coordinate system",
-        "G10 L2 P10 X1": "not a work offset",
+        "G10 L2 P10 X1": "P value out of range (0-9)",
         "G10 L20 P1 R1": "R not allowed in G10 L20",
         "G10 L3 P1": "does not have L1, L10, L11, L12, L13, L2, or L20",
         "G91 G53 G0 X1": "Cannot use G53 incremental",
