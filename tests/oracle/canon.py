@@ -19,6 +19,9 @@ Values are printed with ``%.4f`` in the *program's* units at the time of the cal
 (``USE_LENGTH_UNITS``); ``canon_to_moves`` converts them to millimetres. The feed rate
 is converted with the units in force when ``SET_FEED_RATE`` was called, as LinuxCNC's
 motion layer does (a G20/G21 switch does not re-scale an earlier F).
+Positions are printed in program coordinates; the offsets in force
+(``SET_G5X_OFFSET``, ``SET_G92_OFFSET``, ``USE_TOOL_LENGTH_OFFSET``) are added, so the
+moves are in the machine's work frame (where G54 with zero offsets is the work zero).
 
 ``ARC_FEED(first_end, second_end, first_axis, second_axis, rotation, axis_end_point,
 a, b, c)``: the first/second axes are X/Y in G17, Z/X in G18, Y/Z in G19; ``first_axis``
