@@ -100,7 +100,8 @@ class State:
 
     def fast_path_ok(self) -> bool:
         """True when the bulk XY interpreter can take over: G17, G91.1, running, no
-        offset, no compensation, no canned cycle mode."""
+        compensation, no canned cycle or spline mode (work and tool offsets are a
+        translation, which ``vector`` adds)."""
         return (self.plane == 0 and not self.ijk_absolute and not self.ended
-                and self.offsets.is_zero() and self.comp is None and not self.arc_not_allowed
+                and self.comp is None and not self.arc_not_allowed
                 and (self.motion is None or self.motion <= 3))

@@ -2,6 +2,11 @@
 
 from __future__ import annotations
 
+import random
+
+import numpy as np
+import pytest
+
 from app.gcode.diagnostics import Report
 from app.gcode.interp import interpret_line
 from app.gcode.lexer import lex_line
@@ -64,13 +69,16 @@ def test_a_refused_line_writes_no_parameter():
     assert refused and params.get(5221) is None
 
 
-def test_fast_path_only_without_offsets():
+def test_fast_path_takes_offsets_but_not_compensation_or_cycles():
     state = State()
     assert state.fast_path_ok()
     state, _, _ = _line(state, "G92 X3")
-    assert not state.fast_path_ok()
-    state, _, _ = _line(state, "G92.1")
     assert state.fast_path_ok()
+    state, _, _ = _line(state, "G81 X1 Y1 Z-1 R1 F10")
+    assert not state.fast_path_ok()
+    state, _, _ = _line(state, "G80")
+    state, _, _ = _line(state, "G41.1 D2")
+    assert not state.fast_path_ok()
 
 
 def test_offsets_are_refused_clearly(run):
@@ -89,9 +97,31 @@ def test_offsets_are_refused_clearly(run):
         assert fragment in program.errors[0].message, (text, program.errors)
 
 
-def test_a_big_plain_file_with_offsets_takes_the_general_path(run):
-    body = "".join(f"G1 X{i % 50} Y{i % 7} F100\n" for i in range(2000))
-    plain = run(body)
-    shifted = run("G10 L2 P1 X5\n" + body)
-    assert len(plain.moves) == len(shifted.moves) == 2000
-    assert all(b["end"][0] == a["end"][0] + 5 for a, b in zip(plain.moves, shifted.moves, strict=True))
+def _general_only(text: str, tools=None):
+    """Rows of ``text`` interpreted line by line (no fast path), as ``Ops``."""
+    from app.gcode.runner import _general
+
+    state, ops, report = State(tools=dict(tools or {})), OpBuffer(), Report()
+    for i, line in enumerate(text.splitlines()):
+        state, _ = _general(state, line, i + 1, ops, report)
+    return ops.finish()
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_fast_path_with_offsets_equals_the_general_path(run, seed):
+    rng = random.Random(seed)
+    lines = [rng.choice(["G10 L2 P1 X5 Y-3 Z2", "G92 X1 Y2", "G52 X-4", "G92.1", "G43.1 Z3", "G49"])]
+    for i in range(3000):
+        if i % 500 == 250:
+            lines.append(rng.choice(["G92 X0 Y0", "G10 L2 P2 X7 Y1\nG55", "G54", "G92.2", "G91", "G90"]))
+        x, y = rng.uniform(-50, 50), rng.uniform(-50, 50)
+        lines.append(rng.choice([f"G1 X{x:.3f} Y{y:.3f} F300", f"G0 X{x:.3f}", f"G1 Z{rng.uniform(-3, 3):.3f}",
+                                 f"G2 X{x:.3f} Y{y:.3f} I{x / 2:.3f} J{y / 2:.3f}", f"X{x:.3f} Y{y:.3f}"]))
+    text = "\n".join(lines) + "\n"
+    fast = run(text).ops
+    slow = _general_only(text)
+    assert len(fast) == len(slow) > 1000
+    for name in ("line", "kind", "turn"):
+        assert (getattr(fast, name) == getattr(slow, name)).all(), name
+    assert np.allclose(fast.end, slow.end, atol=1e-9)
+    assert np.allclose(fast.center, slow.center, atol=1e-9, equal_nan=True)
