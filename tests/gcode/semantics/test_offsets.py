@@ -115,7 +115,8 @@ def test_fast_path_with_offsets_equals_the_general_path(run, seed):
         if i % 500 == 250:
             lines.append(rng.choice(["G92 X0 Y0", "G10 L2 P2 X7 Y1\nG55", "G54", "G92.2", "G91", "G90"]))
         x, y = rng.uniform(-50, 50), rng.uniform(-50, 50)
-        lines.append(rng.choice([f"G1 X{x:.3f} Y{y:.3f} F300", f"G0 X{x:.3f}", f"G1 Z{rng.uniform(-3, 3):.3f}",
+        z = rng.uniform(-3, 3)
+        lines.append(rng.choice([f"G1 X{x:.3f} Y{y:.3f} F300", f"G0 X{x:.3f}", f"G1 Z{z:.3f}",
                                  f"G2 X{x:.3f} Y{y:.3f} I{x / 2:.3f} J{y / 2:.3f}", f"X{x:.3f} Y{y:.3f}"]))
     text = "\n".join(lines) + "\n"
     fast = run(text).ops
