@@ -3,8 +3,9 @@
 M70 saves units, plane, distance modes, retract mode, feed, speed, spindle on/off and
 the coordinate system; M72 restores them (a spindle change emits its row; a different
 coordinate system is selected again); M71 forgets the saved state. M73 saves for an
-automatic restore when the subprogram returns: with no subprogram (the expander's
-calls) it is the same as M70. Restoring with nothing saved is refused.
+automatic restore when the subprogram returns: the expander calls
+``restore_on_return`` when a call level ends (M99, endsub, return); outside a
+subprogram M73 is M70. Restoring with nothing saved is refused.
 """
 
 from __future__ import annotations
@@ -22,6 +23,7 @@ def apply(state, kind: str, column: int, line_no: int, ops: OpBuffer) -> None:
         state.saved = {name: getattr(state, name) for name in _FIELDS}
         state.saved["spindle_on"] = state.spindle_on
         state.saved["system"] = state.offsets.system
+        state.saved["auto"] = kind == "autorestore"
     elif kind == "invalidate":
         state.saved = None
     else:
@@ -40,3 +42,13 @@ def _restore(state, column: int, line_no: int, ops: OpBuffer) -> None:
         state.spindle_on = saved["spindle_on"]
         ops.add(line_no, SPINDLE, state.pos, value=(state.speed or -1.0) if state.spindle_on else 0.0)
     offsets.select_system(state, saved["system"], column)
+
+
+def restore_on_return(state, line_no: int, ops: OpBuffer) -> bool:
+    """A subprogram ends: restore what its M73 saved (True), else change nothing (False).
+    ``state`` is changed in place: the expander calls this on the state it will keep."""
+    if state.saved is None or not state.saved.get("auto"):
+        return False
+    _restore(state, 0, line_no, ops)
+    state.saved = None
+    return True

@@ -51,3 +51,20 @@ def test_refused_with_the_reason(run, text, fragment):
 def test_coolant_is_a_warning(run):
     program = run("M8\nM7\nM9\n")
     assert not program.errors and len(program.warnings) == 3
+
+
+def test_m73_restores_when_the_expander_ends_a_call():
+    from app.gcode.diagnostics import Report
+    from app.gcode.interp import interpret_line
+    from app.gcode.lexer import lex_line
+    from app.gcode.modal_state import restore_on_return
+    from app.gcode.ops import OpBuffer
+    from app.gcode.state import State
+
+    state, ops = State(), OpBuffer()
+    for text in ("M73", "G20 G91"):
+        state, refused = interpret_line(state, lex_line(text, 1).words, 1, ops, Report())
+        assert not refused
+    assert state.inch and not state.absolute
+    assert restore_on_return(state, 3, ops) and not state.inch and state.absolute
+    assert not restore_on_return(state, 4, ops)  # nothing saved any more
