@@ -183,9 +183,6 @@ class Comp:
         cx, cy = self.current[:2]
         ex, ey, ez = target
         r = self.radius
-        if "R" in params:
-            raise LineError(params["R"].column, "an R-format arc as the entry move of G41/G42 is not "
-                            "supported: give its centre with I J")
         if math.hypot(ex - cx, ey - cy) <= r:
             raise LineError(0, "Radius of cutter compensation entry arc is not greater than the tool radius")
         arc_radius = math.hypot(center[0] - cx, center[1] - cy)

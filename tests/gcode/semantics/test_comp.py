@@ -84,7 +84,7 @@ def test_comp_leaves_the_fast_path_and_g40_returns_to_it(run):
     ("G41 D1.5 G1 X0 F100", 2, "whole number"),
     ("G41.1 G1 X0 F100", 2, "with no D word"),
     ("G18 G41 D1 G1 X0 F100", 2, "only in XY plane"),
-    ("G41 D1 G2 X0 Y10 R10 F100", 2, "R-format arc as the entry move"),
+    ("G41 D1 G3 X-10 Y4 R2 F100", 2, "Tool radius not less than arc radius"),
 ])
 def test_refusals_name_the_line(run, text, line, fragment):
     program = run(f"G0 X-10 Y0\n{text}\n")
