@@ -31,11 +31,11 @@ class _Emitter:
     def __init__(self, state, line_no: int, ops: OpBuffer):
         self.state, self.line_no, self.ops = state, line_no, ops
         self.k = state.scale
-        self.total = state.offsets.total()
+        self.offsets = state.offsets
 
     def point(self, x, y, z):
-        k, t = self.k, self.total
-        return [x * k + t[0], y * k + t[1], z * k + t[2]]
+        k = self.k
+        return self.offsets.to_frame((x * k, y * k, z * k))
 
     def rapid(self, x, y, z):
         self.ops.add(self.line_no, RAPID, self.point(x, y, z), value=self.state.feed)

@@ -58,24 +58,35 @@ def _check_usage(motion, params) -> None:
 
 
 def _target(state: State, params, machine: bool = False) -> list[float]:
-    """The end point in the frame: program values plus the offsets (none for G53)."""
-    target = list(state.pos)
-    total = (0.0, 0.0, 0.0) if machine else state.offsets.total()
-    for i, c in enumerate(AXES):
-        if c in params:
-            v = params[c].value * state.scale
-            target[i] = v + total[i] if state.absolute else state.pos[i] + v
-            if abs(target[i]) > LIMIT_MM:
-                raise LineError(params[c].column, f"{c} coordinate out of range")
+    """The end point in the frame: program values through the offsets (none for G53)."""
+    off = state.offsets
+    if machine or not off.rotation:
+        target = list(state.pos)
+        total = (0.0, 0.0, 0.0) if machine else off.total()
+        for i, c in enumerate(AXES):
+            if c in params:
+                v = params[c].value * state.scale
+                target[i] = v + total[i] if state.absolute else state.pos[i] + v
+    else:  # a rotated system: in program coordinates, then through the rotation
+        prog = off.to_program(state.pos)
+        for i, c in enumerate(AXES):
+            if c in params:
+                v = params[c].value * state.scale
+                prog[i] = v if state.absolute else prog[i] + v
+        target = off.to_frame(prog)
     if "@" in params or "^" in params:
-        _polar(state, params, target, total)
+        _polar(state, params, target)
+    for i, c in enumerate(AXES):
+        if c in params and abs(target[i]) > LIMIT_MM:
+            raise LineError(params[c].column, f"{c} coordinate out of range")
     return target
 
 
-def _polar(state: State, params, target, total) -> None:
+def _polar(state: State, params, target) -> None:
     """@ (radius) and ^ (angle, degrees) about the program's origin, as rs274ngc:
     in G90 a missing one keeps the current point's; in G91 both are increments."""
-    x, y = state.pos[0] - total[0], state.pos[1] - total[1]
+    off = state.offsets
+    x, y, _ = off.to_program(state.pos)
     word = params["@"] if "@" in params else params["^"]
     radius, theta = math.hypot(x, y), math.atan2(y, x)
     if x == 0 and y == 0 and not (state.absolute and "^" in params):
@@ -90,8 +101,9 @@ def _polar(state: State, params, target, total) -> None:
         theta = value if state.absolute else theta + value
     if abs(radius) > LIMIT_MM:
         raise LineError(word.column, "polar radius out of range")
-    target[0] = radius * math.cos(theta) + total[0]
-    target[1] = radius * math.sin(theta) + total[1]
+    prog = off.to_program(target)
+    prog[0], prog[1] = radius * math.cos(theta), radius * math.sin(theta)
+    target[:] = off.to_frame(prog)
 
 
 def _arc_words(state: State, params) -> None:
@@ -126,9 +138,12 @@ def arc_geometry(state: State, params, start3, target, clockwise: bool):
     _arc_words(state, params)
     a1, a2, a3 = PLANE_AXES[state.plane]
     k = state.scale
-    total = state.offsets.total()
-    start = ((start3[a1] - total[a1]) / k, (start3[a2] - total[a2]) / k)
-    end = ((target[a1] - total[a1]) / k, (target[a2] - total[a2]) / k)
+    off = state.offsets
+    if off.rotation and state.plane != 0:
+        raise LineError(0, "arcs in G18/G19 are not supported in a rotated coordinate system (G10 L2 R)")
+    p_start, p_end = off.to_program(start3), off.to_program(target)
+    start = (p_start[a1] / k, p_start[a2] / k)
+    end = (p_end[a1] / k, p_end[a2] / k)
     if "R" in params:
         if abs(params["R"].value) * k > LIMIT_MM:
             raise LineError(params["R"].column, "arc radius out of range")
@@ -142,8 +157,9 @@ def arc_geometry(state: State, params, start3, target, clockwise: bool):
         why = ijk_error(start, end, center, state.inch)
     if why:
         raise LineError(0, why)
-    center3 = [0.0, 0.0, 0.0]
-    center3[a1], center3[a2] = center[0] * k + total[a1], center[1] * k + total[a2]
+    program_center = list(p_start)
+    program_center[a1], program_center[a2] = center[0] * k, center[1] * k
+    center3 = off.to_frame(program_center)
     center3[a3] = start3[a3]
     return center3, _turns(params, clockwise)
 

@@ -16,6 +16,7 @@ import math
 import numpy as np
 
 from .errors import LineError
+from .offsets import rotate
 from .ops import FEED, OpBuffer
 
 MAX_CHORDS = 100_000
@@ -26,12 +27,17 @@ def _need(params, letters: str, message: str, column: int) -> None:
         raise LineError(column, message)
 
 
+def _step(state, i: float, j: float) -> tuple[float, float]:
+    """A program-unit offset as a frame vector (mm, turned with a rotated system)."""
+    return rotate(i * state.scale, j * state.scale, state.offsets.rotation)
+
+
 def _points(state, code: float, params, column: int, start, end):
     """The Bezier control points (frame mm, XY) of this block."""
-    k = state.scale
     if code == 5.1:
         _need(params, "IJ", "Must specify both I and J with G5.1", column)
-        return [start, (start[0] + params["I"].value * k, start[1] + params["J"].value * k), end]
+        di, dj = _step(state, params["I"].value, params["J"].value)
+        return [start, (start[0] + di, start[1] + dj), end]
     if ("I" in params) != ("J" in params):
         raise LineError(column, "Must specify both I and J, or neither")
     _need(params, "PQ", "Must specify both P and Q with G5", column)
@@ -41,7 +47,8 @@ def _points(state, code: float, params, column: int, start, end):
         i, j = state.cycle.spline_i, state.cycle.spline_j
     p, q = params["P"].value, params["Q"].value
     state.cycle.spline_i, state.cycle.spline_j = -p, -q
-    return [start, (start[0] + i * k, start[1] + j * k), (end[0] + p * k, end[1] + q * k), end]
+    (di, dj), (dp, dq) = _step(state, i, j), _step(state, p, q)
+    return [start, (start[0] + di, start[1] + dj), (end[0] + dp, end[1] + dq), end]
 
 
 def chord_count(points, tolerance: float) -> int:

@@ -1,7 +1,7 @@
 """The modal state of the interpreter, LinuxCNC's defaults: at (0, 0, 0), G80 (no
 motion mode), G17, G21, G90, G91.1, G99, G54 with zero offsets, no tool, feed 0,
 spindle off. Positions are millimetres in the machine's work frame (the frame of the
-rows, see ``offsets.py``); program coordinates are that minus ``offsets.total()``.
+rows, see ``offsets.py``); ``program_pos()`` is the point in program coordinates.
 
 ``params`` (the numbered parameters, shared with the expander) and ``tools`` (the
 tool table) are shared by every copy: a line writes parameters into ``pending`` and
@@ -95,13 +95,12 @@ class State:
 
     def program_pos(self) -> list[float]:
         """The current point in program coordinates, millimetres."""
-        total = self.offsets.total()
-        return [p - o for p, o in zip(self.pos, total, strict=True)]
+        return self.offsets.to_program(self.pos)
 
     def fast_path_ok(self) -> bool:
         """True when the bulk XY interpreter can take over: G17, G91.1, running, no
-        compensation, no canned cycle or spline mode (work and tool offsets are a
-        translation, which ``vector`` adds)."""
+        compensation, no canned cycle or spline mode, no rotated work offset (the other
+        offsets are a translation, which ``vector`` adds)."""
         return (self.plane == 0 and not self.ijk_absolute and not self.ended
-                and self.comp is None and not self.arc_not_allowed
+                and self.comp is None and not self.arc_not_allowed and not self.offsets.rotation
                 and (self.motion is None or self.motion <= 3))

@@ -83,7 +83,6 @@ def test_fast_path_takes_offsets_but_not_compensation_or_cycles():
 
 def test_offsets_are_refused_clearly(run):
     cases = {
-        "G10 L2 P1 R30 X1": "rotated coordinate system",
         "G10 L2 P10 X1": "P value out of range (0-9)",
         "G10 L20 P1 R1": "R not allowed in G10 L20",
         "G10 L3 P1": "does not have L1, L10, L11, L12, L13, L2, or L20",
@@ -126,3 +125,17 @@ def test_fast_path_with_offsets_equals_the_general_path(run, seed):
         assert (getattr(fast, name) == getattr(slow, name)).all(), name
     assert np.allclose(fast.end, slow.end, atol=1e-9)
     assert np.allclose(fast.center, slow.center, atol=1e-9, equal_nan=True)
+
+
+def test_rotated_work_offset(run):
+    program = run("G10 L2 P1 X10 R90\nG0 X5 Y0\nG91 G1 X0 Y2 F100\nG18 G2 X1 Z1 I1\n")
+    assert ends(program)[:2] == [[10, 5, 0], [8, 5, 0]]
+    assert [d.line for d in program.errors] == [4] and "rotated" in program.errors[0].message
+
+
+def test_rotation_is_a_parameter():
+    params = Params()
+    state, _, _ = _line(State(params=params), "G10 L2 P2 R15")
+    assert params.get(5250) == 15 and state.offsets.rotation == 0
+    state, _, _ = _line(state, "G55")
+    assert state.offsets.rotation == 15 and not state.fast_path_ok()
