@@ -62,6 +62,10 @@ def _check_codes(words: list[Word]) -> tuple[dict[str, tuple], dict[str, tuple]]
             table, name = mgroups, M_CODES[int(code)][0]
         else:
             continue
+        if name == "motion" and name in table and 80 in (code, table[name][0]):
+            if code != 80:  # rs274ngc: G80 beside another motion code gives way to it
+                table[name] = (code, w)
+            continue
         if name in table:
             other = table[name][1]
             raise LineError(w.column, f"two codes of one modal group on one line: "
