@@ -26,6 +26,7 @@ from .moves import moves_of
 from .ops import OpBuffer, Ops
 from .render import render
 from .source import Lines
+from .offsets import ACTIVE_SYSTEM
 from .state import State
 from .toolpath import Toolpath, build
 
@@ -116,6 +117,7 @@ def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfi
     report = Report()
     buffer = OpBuffer()
     start = State(tools=dict(tools or {}), arc_tolerance=profile.motion.arc_tolerance_mm)
+    start.params.set(ACTIVE_SYSTEM, 1)  # G54, as LinuxCNC starts
     interpreter = runner.Runner(lines, buffer, report, start)
     for scan, ready in bulk.scan_stream(raw, n, lines.chunks or None):  # interpret as lines come
         interpreter.advance(scan, ready)
