@@ -11,6 +11,8 @@ program coordinates (program units) and leave here in the frame's millimetres.
 
 from __future__ import annotations
 
+import math
+
 from .errors import LineError
 from .ops import DWELL, FEED, RAPID, OpBuffer
 
@@ -23,6 +25,23 @@ def _sticky(state, params, code: int, letter: str, name: str, message: str):
     if state.motion != code:
         raise LineError(0, message)
     return getattr(state.cycle, name)
+
+
+def _polar_words(params) -> tuple[float, float]:
+    """(radius, angle in radians) increments of @ and ^ (used in G91)."""
+    return (params["@"].value if "@" in params else 0.0,
+            math.radians(params["^"].value) if "^" in params else 0.0)
+
+
+def _polar_step(x: float, y: float, d_radius: float, d_theta: float) -> tuple[float, float]:
+    """One G91 repeat's polar increments about the program origin (rs274ngc's CYCLE_MACRO)."""
+    for grow, turn in ((d_radius, 0.0), (0.0, d_theta)):
+        if grow or turn:
+            if x == 0 and y == 0:
+                raise LineError(0, "Incremental motion with polar coordinates is indeterminate when at the origin")
+            theta, radius = math.atan2(y, x) + turn, math.hypot(y, x) + grow
+            x, y = radius * math.cos(theta), radius * math.sin(theta)
+    return x, y
 
 
 class _Emitter:
@@ -102,10 +121,16 @@ def run_cycle(state, code: int, params, line_no: int, ops: OpBuffer) -> None:
     initial = current if c.initial is None else (c.initial - state.offsets.total()[2]) / k
     kept = initial
     dx = dy = 0.0
+    polar = _polar_words(params)
     if state.absolute:
         rr, bottom = r, z
         x = params["X"].value if "X" in params else prog[0]
         y = params["Y"].value if "Y" in params else prog[1]
+        if "@" in params or "^" in params:
+            radius = params["@"].value if "@" in params else math.hypot(prog[1], prog[0])
+            theta = math.radians(params["^"].value) if "^" in params else math.atan2(prog[1], prog[0])
+            x, y = radius * math.cos(theta), radius * math.sin(theta)
+        polar = (0.0, 0.0)
     else:
         dx = params["X"].value if "X" in params else 0.0
         dy = params["Y"].value if "Y" in params else 0.0
@@ -121,7 +146,7 @@ def run_cycle(state, code: int, params, line_no: int, ops: OpBuffer) -> None:
         initial = current = rr
     clear = rr if state.retract_r else initial
     for n in range(repeats):
-        x, y = x + dx, y + dy
+        x, y = _polar_step(x + dx, y + dy, *polar)
         if n == 0 and current > rr:
             e.rapid(x, y, current)
             e.rapid(x, y, rr)

@@ -57,9 +57,7 @@ def check_usage(state, groups, mgroups, params) -> bool:
     if ("@" in params or "^" in params) and ("X" in params or "Y" in params):
         letter = "X" if "X" in params else "Y"
         raise LineError(params[letter].column, f"Cannot specify both polar coordinate and {letter} word")
-    if ("@" in params or "^" in params) and motion in CYCLES:
-        word = params["@"] if "@" in params else params["^"]
-        raise LineError(word.column, "polar coordinates in canned cycles are not supported")
+
     for letter in "IJK":
         if letter in params and not (arc or spline and letter != "K"):
             _refuse(params, letter, "G2, G3, G5 or G5.1")
