@@ -23,10 +23,10 @@ from app.profile import MachineProfile
 from . import bulk, checks, normalize, runner
 from .diagnostics import ERROR, WARNING, Diagnostic, Report
 from .moves import moves_of
+from .offsets import ACTIVE_SYSTEM
 from .ops import OpBuffer, Ops
 from .render import render
 from .source import Lines
-from .offsets import ACTIVE_SYSTEM
 from .state import State
 from .toolpath import Toolpath, build
 
