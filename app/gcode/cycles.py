@@ -38,7 +38,8 @@ def _polar_step(x: float, y: float, d_radius: float, d_theta: float) -> tuple[fl
     for grow, turn in ((d_radius, 0.0), (0.0, d_theta)):
         if grow or turn:
             if x == 0 and y == 0:
-                raise LineError(0, "Incremental motion with polar coordinates is indeterminate when at the origin")
+                raise LineError(0, "Incremental motion with polar coordinates is indeterminate "
+                                "when at the origin")
             theta, radius = math.atan2(y, x) + turn, math.hypot(y, x) + grow
             x, y = radius * math.cos(theta), radius * math.sin(theta)
     return x, y
