@@ -90,3 +90,13 @@ def test_refusals_name_the_line(run, text, line, fragment):
     program = run(f"G0 X-10 Y0\n{text}\n")
     assert [d.line for d in program.errors] == [line], program.errors
     assert fragment.lower() in program.errors[0].message.lower()
+
+
+def test_find_turn_is_rs274s_signed_sweep():
+    from app.gcode.comp_corners import find_turn
+
+    assert math.isclose(find_turn(1, 0, 0, 0, 1, 0, 1), math.pi / 2)
+    assert math.isclose(find_turn(1, 0, 0, 0, -1, 0, 1), -3 * math.pi / 2)
+    assert math.isclose(find_turn(1, 0, 0, 0, 2, 0, 1), math.pi / 2 + 2 * math.pi)
+    assert math.isclose(find_turn(1, 0, 0, 0, 1, 1, 0), 2 * math.pi)  # a full circle
+    assert find_turn(1, 0, 0, 0, 0, 0, 1) == 0.0
