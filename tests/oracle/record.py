@@ -16,8 +16,8 @@ How rs274 is run, for each source:
 * ``rs274 -g -t tool.tbl FILE`` (batch mode, a tool table with only T1, or ``SEM_TOOLS``
   for the issue 9 cases ``sem_*``, no ini file so the interpreter's built-in defaults
   apply, block delete switch off, stop at the first error), with stdin from /dev/null,
-  in its own temporary directory that is also its ``HOME``: rs274 truncates and maps ``$HOME/.tool.mmap`` and runs would trample on each
-  other (or on a real user's file).
+  in its own temporary directory that is also its ``HOME``: rs274 truncates and maps
+  ``$HOME/.tool.mmap`` and runs would trample on each other (or on a real user's file).
 * rs274's ``-g`` output names each call's ``N`` word, not its physical line, so FILE is
   a copy of the source in which line ``k`` starts with the word ``N<k>`` (an existing
   leading ``N`` word is replaced; ``%`` lines are left alone). The ``N`` word has no
