@@ -1,12 +1,16 @@
-"""Motion words of one line: dwell G4, straight moves G0/G1, arcs G2/G3.
+"""Motion words of one line: dwell G4, straight moves G0/G1 (and G53), arcs G2/G3,
+and the hand-off to canned cycles (``cycles.py``), splines (``splines.py``) and
+cutter compensation (``comp.py``).
 
-``do_motion`` follows rs274ngc: the motion of a line is its G0-G3 word, or the modal
-motion when the line has axis words; I J K R need an arc, P a dwell or an arc (turns),
+``do_motion`` follows rs274ngc: the motion of a line is its motion word, or the modal
+motion when the line has axis words (X Y Z, or the polar @ ^); I J K R need an arc,
 and axis words with no motion mode (G80, or none yet) are refused. A line with G0/G1
-and no axis word sets the mode and moves nowhere. Arc centres are checked with
-LinuxCNC's tolerances (``arcs.py``) in the program's units; an arc with no axis word
-is a full circle (LinuxCNC 2.9 accepts ``G2 I10``); positions and centres
-leave here in millimetres. Raises ``LineError``; changes ``state`` in place.
+and no axis word sets the mode and moves nowhere. End points are program values
+taken through the offsets (``offsets.Offsets``; none for G53). Arc centres are
+checked with LinuxCNC's tolerances (``arcs.py``) in the program's units; an arc with
+no axis word is a full circle (LinuxCNC 2.9 accepts ``G2 I10``); positions and
+centres leave here in millimetres of the work frame. Raises ``LineError``; changes
+``state`` in place.
 """
 
 from __future__ import annotations
