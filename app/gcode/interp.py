@@ -2,20 +2,28 @@
 
 ``interpret_line(state, words, line_no, ops, report)`` checks the whole line first
 (unknown and refused words, two codes of one modal group, words with nothing to use
-them), then applies it in rs274ngc's order: F, S, tool change (a pause), spindle,
-dwell, plane, units, distance modes, motion, stop codes. A refused line changes
-nothing: the state is copied and only committed when the line succeeds, so a file
-with errors still loads as far as it can. Arcs are computed in ``motion.py``.
+them), then applies it in rs274ngc's order: F, S, T, tool change (a pause), spindle,
+modal state save/restore (M70-M73), dwell, plane, units, cutter compensation, tool
+length offset, coordinate system, distance modes, retract mode, G10/G92/G52, motion,
+stop codes. A refused line changes nothing: the state is copied and only committed
+(parameters included) when the line succeeds, so a file with errors still loads as
+far as it can. Arcs are in ``motion.py``, cycles in ``cycles.py``, offsets in
+``offsets.py``, tools in ``tooling.py``, compensation in ``comp.py``.
 """
 
 from __future__ import annotations
 
+from . import comp, modal_state, offsets, tooling
 from .diagnostics import Report
+from .errors import LineError
 from .lexer import Word
-from .motion import LineError, do_motion
+from .motion import do_motion
 from .ops import END, PAUSE, SPINDLE, OpBuffer
 from .state import State
+from .usage import check_usage
 from .words import ALLOWED_LETTERS, G_CODES, M_CODES, REFUSED_G, REFUSED_LETTERS
+
+__all__ = ["LineError", "interpret_line", "finish_program"]
 
 
 def _gname(code: float) -> str:
@@ -54,6 +62,10 @@ def _check_codes(words: list[Word]) -> tuple[dict[str, tuple], dict[str, tuple]]
             table, name = mgroups, M_CODES[int(code)][0]
         else:
             continue
+        if name == "motion" and name in table and 80 in (code, table[name][0]):
+            if code != 80:  # rs274ngc: G80 beside another motion code gives way to it
+                table[name] = (code, w)
+            continue
         if name in table:
             other = table[name][1]
             raise LineError(w.column, f"two codes of one modal group on one line: "
@@ -90,9 +102,20 @@ def _pause(line_no, column, message, ops: OpBuffer, state: State, report: Report
 
 
 def _tool_change(state, mgroups, params, line_no, ops, report) -> None:
-    if "toolchange" in mgroups:
-        tool = f" T{params['T'].value:g}" if "T" in params else ""
-        _pause(line_no, mgroups["toolchange"][1].column,
+    if not tooling.select(state, params):
+        report.warning(line_no, params["T"].column,
+                       f"tool T{state.selected} is not in the tool table: its length and diameter read 0",
+                       "tool not in the table")
+    if "toolchange" not in mgroups:
+        return
+    code, word = mgroups["toolchange"]
+    if state.comp is not None:
+        raise LineError(word.column, "cannot change tools with cutter radius compensation on")
+    kind = M_CODES[int(code)][1]
+    tooling.change(state, kind, params, word.column)
+    if kind == "change":
+        tool = f" T{state.selected}" if "T" in params or state.selected else ""
+        _pause(line_no, word.column,
                f"tool change{tool} M6: this machine has one tool; the job pauses here", ops, state, report)
 
 
@@ -102,17 +125,81 @@ def _stop(state, mgroups, line_no, ops, report) -> None:
         return
     code = int(stop[0])
     if M_CODES[code][1] == "end":
+        finish_program(state, ops)
         state.ended = line_no
         ops.add(line_no, END, state.pos)
     else:
+        comp.flush(state, ops)
         _pause(line_no, stop[1].column, f"M{code} program stop: the job pauses here", ops, state, report)
 
 
+def finish_program(state: State, ops: OpBuffer) -> None:
+    """End of program (M2/M30, or the last line): the held compensated move is written
+    and compensation ends, as rs274ngc does at program end."""
+    comp.flush(state, ops)
+    state.comp = None
+
+
 def _modes(state: State, groups) -> None:
-    for group in ("plane", "units", "distance", "ijk"):
+    """Plane (not while compensating, as rs274) and units (allowed: rs274 accepts it)."""
+    for group in ("plane", "units"):
+        if group in groups:
+            _, name, value = G_CODES[groups[group][0]]
+            if group == "plane" and state.comp is not None and state.plane != value:
+                raise LineError(groups[group][1].column,
+                                "Cannot change planes with cutter radius compensation on")
+            setattr(state, name, value)
+
+
+def _offset_modes(state: State, groups, params, ops: OpBuffer) -> None:
+    """Cutter compensation, tool length, coordinate system, distance, retract."""
+    if "cutter" in groups:
+        code, word = groups["cutter"]
+        comp.select(state, code, params, word.column, ops)
+    if "toollength" in groups:
+        code, word = groups["toollength"]
+        tooling.length_offset(state, code, params, word.column)
+    if "coords" in groups:
+        code, word = groups["coords"]
+        offsets.select_system(state, G_CODES[code][2], word.column)
+    for group in ("distance", "ijk", "retract"):
         if group in groups:
             _, name, value = G_CODES[groups[group][0]]
             setattr(state, name, value)
+
+
+def _nonmodal(state: State, groups, params) -> None:
+    """G10 (offsets and tool table), G92 family, G52."""
+    code, word = groups.get("nonmodal", (None, None))
+    if code == 10:
+        level = params["L"].value if "L" in params else None
+        if level in (2, 20):
+            offsets.set_system(state, params, int(level), word.column)
+        elif level in (1, 10, 11, 12, 13):
+            tooling.set_entry(state, int(level), params, word.column)
+        else:
+            raise LineError(word.column, "Line with G10 does not have L1, L10, L11, L12, L13, L2, or L20")
+    elif code in (92, 92.1, 92.2, 92.3, 52):
+        offsets.axis_offsets(state, code, params, word.column)
+
+
+class _LineOps(OpBuffer):
+    """The rows of one line; while compensation holds a move back, the line's events
+    (spindle, dwell, pause) wait behind it in its queue (``comp.py``)."""
+
+    def __init__(self, state: State) -> None:
+        super().__init__()
+        self.state = state
+
+    def add(self, line, kind, end, *args, **kw) -> None:
+        held = self.state.comp
+        if held is not None and held.queue:
+            held.queue.append({"kind": "event", "args": (line, kind, end, *args), "kw": kw})
+        else:
+            super().add(line, kind, end, *args, **kw)
+
+    def add_direct(self, *args, **kw) -> None:
+        super().add(*args, **kw)
 
 
 class _Pending:
@@ -125,29 +212,45 @@ class _Pending:
         self.items.append((line, column, message, key))
 
 
+def _apply(new: State, words, line_no, line_ops: OpBuffer, report) -> None:
+    groups, mgroups = _check_codes(words)
+    params = _check_letters(words)
+    axes_taken = check_usage(new, groups, mgroups, params)
+    if "coolant" in mgroups:
+        report.warning(line_no, mgroups["coolant"][1].column,
+                       "coolant M7/M8/M9 ignored: this machine has no coolant", "coolant ignored")
+    _set_feed_speed(new, params)
+    _tool_change(new, mgroups, params, line_no, line_ops, report)
+    _spindle(new, mgroups, params, line_no, line_ops, report)
+    if "modal_state" in mgroups:
+        code, word = mgroups["modal_state"]
+        modal_state.apply(new, M_CODES[int(code)][1], word.column, line_no, line_ops)
+    _modes(new, groups)
+    _offset_modes(new, groups, params, line_ops)
+    _nonmodal(new, groups, params)
+    try:
+        do_motion(new, groups, params, line_no, line_ops, axes_taken)
+    except LineError as exc:
+        if exc.column == 0 and "motion" in groups:  # a cycle, spline or arc refused: its G word
+            exc.column = groups["motion"][1].column
+        raise
+    _stop(new, mgroups, line_no, line_ops, report)
+
+
 def interpret_line(
     state: State, words: list[Word], line_no: int, ops: OpBuffer, report: Report
 ) -> tuple[State, bool]:
     """Apply one line; return (new state, refused?); ``state`` itself is left untouched."""
     new = state.copy()
-    line_ops = OpBuffer()
-    final, report = report, _Pending()
+    line_ops = _LineOps(new)
+    final, pending = report, _Pending()
     try:
-        groups, mgroups = _check_codes(words)
-        params = _check_letters(words)
-        if "coolant" in mgroups:
-            report.warning(line_no, mgroups["coolant"][1].column,
-                           "coolant M7/M8/M9 ignored: this machine has no coolant", "coolant ignored")
-        _set_feed_speed(new, params)
-        _tool_change(new, mgroups, params, line_no, line_ops, report)
-        _spindle(new, mgroups, params, line_no, line_ops, report)
-        _modes(new, groups)
-        do_motion(new, groups, params, line_no, line_ops)
-        _stop(new, mgroups, line_no, line_ops, report)
+        _apply(new, words, line_no, line_ops, pending)
     except LineError as exc:
         final.error(line_no, exc.column, exc.message)
         return state, True
-    for item in report.items:
+    new.commit()
+    for item in pending.items:
         final.warning(*item)
     ops.rows.extend(line_ops.rows)
     ops.messages.extend(line_ops.messages)

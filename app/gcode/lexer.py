@@ -1,7 +1,8 @@
 """The general lexer: one physical source line -> words, or a diagnostic.
 
 Accepted (as LinuxCNC's rs274ngc reads it): words of one letter and a number, in
-either case (``g1x10Y-2.5``); spaces and tabs anywhere outside comments, even inside
+either case (``g1x10Y-2.5``), and LinuxCNC's polar words ``@`` (radius) and ``^``
+(angle); spaces and tabs anywhere outside comments, even inside
 a number (``X1 0.5`` is ``X10.5``); numbers ``1``, ``.5``, ``-0.``, ``+3``; comments
 ``( ... )`` anywhere and ``; ...`` to the end of the line; a ``%`` line; a leading
 ``/`` (block delete: the line is skipped); a ``*checksum`` suffix (ignored).
@@ -25,6 +26,9 @@ _SPECIAL = {
     "[": "'[' expressions are not supported",
     "o": "o-words (subroutines, loops) are not supported",
 }
+
+
+_POLAR = "@^"  # LinuxCNC's polar words: @ radius, ^ angle (degrees)
 
 
 @dataclass(frozen=True)
@@ -115,7 +119,7 @@ def lex_line(text: str, line_no: int) -> LexedLine:
             break
         elif c.lower() in _SPECIAL:
             return _fail(line_no, i, _SPECIAL[c.lower()])
-        elif c.isascii() and c.isalpha():
+        elif c.isascii() and c.isalpha() or c in _POLAR:
             token, end = _read_number(text, i + 1)
             if end < len(text) and text[end] in "#[":
                 return _fail(line_no, end, _SPECIAL[text[end]])

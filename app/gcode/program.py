@@ -23,9 +23,11 @@ from app.profile import MachineProfile
 from . import bulk, checks, normalize, runner
 from .diagnostics import ERROR, WARNING, Diagnostic, Report
 from .moves import moves_of
+from .offsets import ACTIVE_SYSTEM
 from .ops import OpBuffer, Ops
 from .render import render
 from .source import Lines
+from .state import State
 from .toolpath import Toolpath, build
 
 
@@ -107,13 +109,16 @@ def _empty(name: str, message: str, profile: MachineProfile) -> Program:
     return program
 
 
-def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfile) -> Program:
+def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfile,
+               tools: dict | None = None) -> Program:
     """Interpret ``lines``; ``data`` holds their bytes, handed over (emptied) to free them early."""
     raw = data.pop()
     n = len(lines)  # reuse the chunks Lines already counted; otherwise scan makes its own
     report = Report()
     buffer = OpBuffer()
-    interpreter = runner.Runner(lines, buffer, report)
+    start = State(tools=dict(tools or {}), arc_tolerance=profile.motion.arc_tolerance_mm)
+    start.params.set(ACTIVE_SYSTEM, 1)  # G54, as LinuxCNC starts
+    interpreter = runner.Runner(lines, buffer, report, start)
     for scan, ready in bulk.scan_stream(raw, n, lines.chunks or None):  # interpret as lines come
         interpreter.advance(scan, ready)
     del raw, scan
@@ -149,17 +154,20 @@ class _in_thread(threading.Thread):
             raise self._error
 
 
-def load_text(text: str, name: str = "<text>", profile: MachineProfile | None = None) -> Program:
-    """Interpret G-code ``text``; errors and warnings are in the result, never raised."""
+def load_text(text: str, name: str = "<text>", profile: MachineProfile | None = None,
+              tools: dict | None = None) -> Program:
+    """Interpret G-code ``text``; errors and warnings are in the result, never raised.
+    ``tools`` is the tool table (``tools.Tool`` by number) for T, G43 H and G41 D."""
     profile = profile or MachineProfile()
     if "\x00" in text:
         return _empty(name, "not a text file (it contains NUL bytes)", profile)
     data = [text.encode("utf-8", "replace")]  # a \r is a space to the fast path
-    return _interpret(Lines(_split(text)), data, name, profile)
+    return _interpret(Lines(_split(text)), data, name, profile, tools)
 
 
-def load(path: str | Path, profile: MachineProfile | None = None) -> Program:
-    """Read and interpret a G-code file; unreadable or non-UTF-8 files give an error."""
+def load(path: str | Path, profile: MachineProfile | None = None, tools: dict | None = None) -> Program:
+    """Read and interpret a G-code file; unreadable or non-UTF-8 files give an error.
+    ``tools`` is the tool table, as for ``load_text``."""
     path = Path(path)
     profile = profile or MachineProfile()
     try:
@@ -178,4 +186,4 @@ def load(path: str | Path, profile: MachineProfile | None = None) -> Program:
     lines = Lines(data=raw)  # split on first use, not here
     data = [raw]  # valid UTF-8: the bytes the fast path reads
     del raw
-    return _interpret(lines, data, str(path), profile)
+    return _interpret(lines, data, str(path), profile, tools)

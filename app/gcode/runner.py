@@ -14,7 +14,7 @@ import numpy as np
 from . import vector
 from .bulk import Scan
 from .diagnostics import Report
-from .interp import interpret_line
+from .interp import finish_program, interpret_line
 from .lexer import lex_line
 from .ops import OpBuffer
 from .state import State
@@ -75,6 +75,7 @@ class Runner:
         self.state, self.i = state, i
 
     def finish(self) -> State:
+        finish_program(self.state, self.ops)
         if self.state.ended:
             _after_end(self.lines, self.i, self.state.ended, self.report)
         return self.state

@@ -53,6 +53,7 @@ class ProgramLoader(QObject):
     def __init__(self, parent=None, tolerance: float = 0.01):
         super().__init__(parent)
         self.tolerance = tolerance
+        self.tools: dict = {}  # the tool table (app.gcode.tools), as the window last saved it
         self.busy = False
         self.view_size: tuple[float, float] | None = None  # the preview's, in pixels
         self._shown = threading.Event()
@@ -74,7 +75,7 @@ class ProgramLoader(QObject):
 
     def _run(self, path: Path, view_size, defer: bool) -> None:
         try:
-            result = load_program(path, self.tolerance, view_size)
+            result = load_program(path, self.tolerance, view_size, self.tools)
         except LoadError as exc:
             self.busy = False
             self.failed.emit(str(path), str(exc))
@@ -121,7 +122,7 @@ class LoadError(Exception):
     """A file that cannot be shown as a program; the message says why."""
 
 
-def load_program(path: Path, tolerance: float = 0.01, view_size=None) -> LoadedProgram:
+def load_program(path: Path, tolerance: float = 0.01, view_size=None, tools=None) -> LoadedProgram:
     """The program and its preview model, with what the first picture of a preview of
     ``view_size`` pixels needs already computed."""
     _sniff(path)
@@ -129,7 +130,7 @@ def load_program(path: Path, tolerance: float = 0.01, view_size=None) -> LoadedP
 
     started = time.perf_counter()
     try:
-        program = load(path)
+        program = load(path, tools=tools)
     except (OSError, UnicodeError, ValueError) as exc:
         raise LoadError(f"{path.name} could not be read as G-code: {exc}") from None
     loaded = time.perf_counter()

@@ -13,6 +13,8 @@ from pathlib import Path
 from PySide6.QtCore import QSettings, QStandardPaths, Qt
 from PySide6.QtWidgets import QDockWidget, QMainWindow, QTabWidget, QWidget
 
+from app.gcode.tools import FILE_NAME as TOOLS_FILE
+from app.gcode.tools import load_tools
 from app.ui.connection_bar import ConnectionBar
 from app.ui.console import ConsoleView
 from app.ui.controls import MachineControls
@@ -54,6 +56,8 @@ class MainWindow(QMainWindow):
         self.keep_awake = KeepAwake()
         self.link = MachineLink(self, self.profile)
         self.loader = ProgramLoader(self, self.profile.motion.arc_tolerance_mm)
+        tools = load_tools(self.config_dir / TOOLS_FILE)
+        self.tools = self.loader.tools = tools.tools
         self._build_widgets(port_lister)
         self._build_docks()
         from app.ui.menus import build_menus
@@ -67,6 +71,8 @@ class MainWindow(QMainWindow):
             self.restore_state()
         if loaded.problem:
             self.notifier.warning("Settings", loaded.problem)
+        if tools.problem:
+            self.notifier.warning(self.tr("Tool table"), tools.problem)
 
     def _build_widgets(self, port_lister) -> None:
         travel = (self.profile.travel.x_max, self.profile.travel.y_max)

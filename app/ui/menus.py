@@ -10,6 +10,7 @@ from PySide6.QtWidgets import QFileDialog, QMenu, QMessageBox
 from app.ui.jog_panel import JOG_KEYS
 from app.ui.palette import toggle_dark
 from app.ui.recent import recent_files
+from app.ui.settings.tools_dialog import open_tool_table
 
 FILTER = "G-code (*.ngc *.nc *.gcode *.gc *.tap *.cnc *.txt);;All files (*)"
 
@@ -43,6 +44,7 @@ def _file_menu(w, menu: QMenu, actions) -> None:
     actions["save_sd"] = _action(w, menu, "&Save to SD card…", lambda: _show_dock(w, "sd"), "Ctrl+Shift+S")
     actions["screenshot"] = _action(w, menu, "Save screens&hot…", lambda: _screenshot_dialog(w))
     actions["settings"] = _action(w, menu, "Se&ttings…", w.operator.edit_settings, "Ctrl+,")
+    actions["tools"] = _action(w, menu, w.tr("Tool ta&ble…"), lambda: open_tool_table(w))
     menu.addSeparator()
     actions["quit"] = _action(w, menu, "&Quit", w.close, QKeySequence.StandardKey.Quit)
 

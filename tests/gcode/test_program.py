@@ -63,9 +63,9 @@ def test_cli_check_exit_status(sample, tmp_path, capsys):
     out = capsys.readouterr().out
     assert "moves: 4" in out and "errors: 0" in out and "estimated time" in out
     bad = tmp_path / "bad.ngc"
-    bad.write_text("G0 X1\nG81 X1\n")
+    bad.write_text("G0 X1\nG84 X1\n")
     assert main(["check", str(bad)]) == 1
-    assert "error: line 2, column 1: G81" in capsys.readouterr().out
+    assert "error: line 2, column 1: G84" in capsys.readouterr().out
 
 
 def test_cli_usage_error(capsys):

@@ -19,6 +19,10 @@ Values are printed with ``%.4f`` in the *program's* units at the time of the cal
 (``USE_LENGTH_UNITS``); ``canon_to_moves`` converts them to millimetres. The feed rate
 is converted with the units in force when ``SET_FEED_RATE`` was called, as LinuxCNC's
 motion layer does (a G20/G21 switch does not re-scale an earlier F).
+Positions are printed in program coordinates; the offsets in force
+(``SET_G5X_OFFSET``, ``SET_G92_OFFSET``, ``USE_TOOL_LENGTH_OFFSET``) and the XY rotation
+(``SET_XY_ROTATION``) are applied as LinuxCNC's canon layer does (rotate(p + G92) + G5x +
+tool), so the moves are in the machine's work frame (G54 with zero offsets is the work zero).
 
 ``ARC_FEED(first_end, second_end, first_axis, second_axis, rotation, axis_end_point,
 a, b, c)``: the first/second axes are X/Y in G17, Z/X in G18, Y/Z in G19; ``first_axis``
@@ -28,6 +32,7 @@ and ``second_axis`` are the centre; ``rotation`` < 0 is clockwise, its magnitude
 
 from __future__ import annotations
 
+import math
 import re
 from collections.abc import Iterable
 from dataclasses import dataclass, field
@@ -118,10 +123,15 @@ def canon_to_moves(calls: Iterable[CanonCall]) -> list[dict]:
     plane = "XY"
     feed = 0.0
     moves: list[dict] = []
+    frame = _Frame()
     for call in calls:
         name = call.name
         unit_name = "in" if scale == MM_PER_INCH else "mm"
-        if name == "USE_LENGTH_UNITS":
+        if name in _OFFSET_CALLS:
+            setattr(frame, _OFFSET_CALLS[name], _offset_values(call, scale))
+        elif name == "SET_XY_ROTATION":
+            frame.rotation = float(call.args[0])
+        elif name == "USE_LENGTH_UNITS":
             try:
                 scale = UNITS[call.args[0]]
             except KeyError:
@@ -134,7 +144,7 @@ def canon_to_moves(calls: Iterable[CanonCall]) -> list[dict]:
         elif name == "SET_FEED_RATE":
             feed = float(call.args[0]) * scale
         elif name in ("STRAIGHT_TRAVERSE", "STRAIGHT_FEED"):
-            end = _mm(call.floats()[:3], scale)
+            end = frame.point(_mm(call.floats()[:3], scale))
             if name == "STRAIGHT_TRAVERSE":
                 moves.append({"line": call.line, "kind": "rapid", "end": end, "units": unit_name})
             else:
@@ -148,10 +158,17 @@ def canon_to_moves(calls: Iterable[CanonCall]) -> list[dict]:
             axis_end = v[5] * scale
             if plane == "XY":
                 end = [first_end, second_end, axis_end]
+                axes = (0, 1)
             elif plane == "XZ":  # first = Z, second = X, third = Y
                 end = [second_end, axis_end, first_end]
+                axes = (2, 0)
             else:  # YZ: first = Y, second = Z, third = X
                 end = [axis_end, first_end, second_end]
+                axes = (1, 2)
+            centre = list(end)
+            centre[axes[0]], centre[axes[1]] = first_axis, second_axis
+            end, centre = frame.point(end), frame.point(centre)
+            first_axis, second_axis = centre[axes[0]], centre[axes[1]]
             moves.append(
                 {
                     "line": call.line,
@@ -171,8 +188,42 @@ def canon_to_moves(calls: Iterable[CanonCall]) -> list[dict]:
     return moves
 
 
+_OFFSET_CALLS = {"SET_G5X_OFFSET": "g5x", "SET_G92_OFFSET": "g92", "USE_TOOL_LENGTH_OFFSET": "tool"}
+
+
+@dataclass
+class _Frame:
+    """The offsets in force (mm) and the XY rotation (degrees), as rs274 printed them."""
+
+    g5x: list[float] = field(default_factory=lambda: [0.0, 0.0, 0.0])
+    g92: list[float] = field(default_factory=lambda: [0.0, 0.0, 0.0])
+    tool: list[float] = field(default_factory=lambda: [0.0, 0.0, 0.0])
+    rotation: float = 0.0
+
+    def point(self, p: list[float]) -> list[float]:
+        """A program point in the machine's work frame: rotate(p + G92) + G5x + tool."""
+        x, y, z = (a + b for a, b in zip(p, self.g92, strict=True))
+        if self.rotation:
+            c, s = math.cos(math.radians(self.rotation)), math.sin(math.radians(self.rotation))
+            x, y = x * c - y * s, x * s + y * c
+        g5x, tool = self.g5x, self.tool
+        return [x + g5x[0] + tool[0], y + g5x[1] + tool[1], z + g5x[2] + tool[2]]
+
+
+def _offset_values(call: CanonCall, scale: float) -> list[float]:
+    """X Y Z of an offset call, in mm (``SET_G5X_OFFSET`` starts with the system number;
+    ``USE_TOOL_LENGTH_OFFSET`` prints ``x y z, a b c, u v w``)."""
+    if call.name == "SET_G5X_OFFSET":
+        values = call.floats()[1:4]
+    elif call.name == "USE_TOOL_LENGTH_OFFSET":
+        values = [float(v) for v in call.args[0].split()]
+    else:
+        values = call.floats()[:3]
+    return _mm(values, scale)
+
+
 _COMMENTS = re.compile(r"\([^)]*\)|;.*$")
-_AXIS_WORD = re.compile(r"[XYZ][+-]?[0-9.]")
+_AXIS_WORD = re.compile(r"[XYZ@^][+-]?[0-9.]")  # @ ^: polar words
 
 
 def has_axis_word(source_line: str) -> bool:

@@ -13,11 +13,11 @@ cases are also run with other rs274 switches (``VARIANTS``): ``<stem>+<tag>.cano
 
 How rs274 is run, for each source:
 
-* ``rs274 -g -t tool.tbl FILE`` (batch mode, a tool table with only T1, no ini file so the
-  interpreter's built-in defaults apply, block delete switch off, stop at the first
-  error), with stdin from /dev/null, in its own temporary directory that is also its
-  ``HOME``: rs274 truncates and maps ``$HOME/.tool.mmap`` and runs would trample on each
-  other (or on a real user's file).
+* ``rs274 -g -t tool.tbl FILE`` (batch mode, a tool table with only T1, or ``SEM_TOOLS``
+  for the issue 9 cases ``sem_*``, no ini file so the interpreter's built-in defaults
+  apply, block delete switch off, stop at the first error), with stdin from /dev/null,
+  in its own temporary directory that is also its ``HOME``: rs274 truncates and maps
+  ``$HOME/.tool.mmap`` and runs would trample on each other (or on a real user's file).
 * rs274's ``-g`` output names each call's ``N`` word, not its physical line, so FILE is
   a copy of the source in which line ``k`` starts with the word ``N<k>`` (an existing
   leading ``N`` word is replaced; ``%`` lines are left alone). The ``N`` word has no
@@ -47,6 +47,18 @@ SOURCE_DIRS = (ROOT / "resources" / "samples", HERE / "cases")
 
 COMMAND = "rs274 -g -t tool.tbl FILE"
 TOOL_TABLE = "T1 P1 D3.175 ;3.175 mm end mill\n"  # so that "T1 M6" is a valid tool change
+# The cases of issue 9 (stems starting "sem_") run with this table: number -> (diameter,
+# length) in mm. rs274 without an ini reads its tool table in inches, so the file holds
+# these values / 25.4; the tests load the same table in mm (``SEM_TOOLS``).
+SEM_PREFIX = "sem_"
+SEM_TOOLS = {1: (6.0, 0.0), 2: (4.0, 12.5), 3: (10.0, -3.0), 4: (2.0, 5.0), 5: (20.0, 0.0)}
+
+
+def tool_table_for(stem: str) -> str:
+    """The rs274 tool table file for a source (inches, see ``SEM_TOOLS``)."""
+    if not stem.startswith(SEM_PREFIX):
+        return TOOL_TABLE
+    return "".join(f"T{n} P{n} D{d / 25.4!r} Z{z / 25.4!r}\n" for n, (d, z) in SEM_TOOLS.items())
 _LEADING_N = re.compile(r"^(\s*/?\s*)(?:[nN]\s*\d+\s*)?")
 _ERROR_LINE = re.compile(r"^\s*/?\s*N(\d+)\b")
 # Extra runs with other rs274 switches, stored as data/<stem>+<tag>.canon.
@@ -77,11 +89,13 @@ def number_lines(text: str) -> str:
     return "\n".join(out) + newline
 
 
-def run_rs274(program: str, extra: tuple[str, ...] = ()) -> tuple[int, str, str]:
+def run_rs274(
+    program: str, extra: tuple[str, ...] = (), tool_table: str = TOOL_TABLE
+) -> tuple[int, str, str]:
     """Run rs274 on ``program`` text in a fresh temporary HOME; (exit code, stdout, stderr)."""
     with tempfile.TemporaryDirectory(prefix="rs274-") as tmp:
         tmpdir = Path(tmp)
-        (tmpdir / "tool.tbl").write_text(TOOL_TABLE)
+        (tmpdir / "tool.tbl").write_text(tool_table)
         (tmpdir / "program.ngc").write_text(program)
         env = {"HOME": tmp, "PATH": "/usr/bin:/bin", "LANG": "C", "LC_ALL": "C"}
         proc = subprocess.run(
@@ -107,8 +121,9 @@ def stderr_lines(stderr: str) -> list[str]:
 
 def record(source: Path, extra: tuple[str, ...] = ()) -> str:
     text = source.read_text()
-    rc, out, err = run_rs274(number_lines(text), extra)
-    rc0, out0, err0 = run_rs274(text, extra)
+    table = tool_table_for(source.stem)
+    rc, out, err = run_rs274(number_lines(text), extra, table)
+    rc0, out0, err0 = run_rs274(text, extra, table)
     if rc != rc0 or strip_n_column(out) != strip_n_column(out0):
         raise SystemExit(f"{source}: numbering the lines changed rs274's output")
     err_lines, err0_lines = stderr_lines(err), stderr_lines(err0)
@@ -116,9 +131,10 @@ def record(source: Path, extra: tuple[str, ...] = ()) -> str:
         raise SystemExit(f"{source}: numbering the lines changed rs274's error")
     rel = source.relative_to(ROOT).as_posix()
     command = COMMAND.replace("-g", "-g " + " ".join(extra)) if extra else COMMAND
+    tools = "tool table SEM_TOOLS" if source.stem.startswith(SEM_PREFIX) else "tool table with only T1"
     head = [
         f"# rs274: {rs274_version()}; command: {command} "
-        "(own temporary HOME, tool table with only T1, no ini; FILE = source with line k numbered N<k>)",
+        f"(own temporary HOME, {tools}, no ini; FILE = source with line k numbered N<k>)",
         f"# source: {rel}",
         f"# sha256: {hashlib.sha256(source.read_bytes()).hexdigest()}",
         f"# exit: {rc}",

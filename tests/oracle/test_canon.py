@@ -197,3 +197,26 @@ def test_drop_axisless_moves_keeps_zero_length_moves_with_axis_words():
         {"line": 4, "kind": "dwell", "seconds": 1.0},
     ]
     assert [m["line"] for m in drop_axisless_moves(moves, lines)] == [1, 3, 4]
+
+
+def test_offsets_and_rotation_put_moves_in_the_work_frame():
+    moves = _moves(
+        "1 N..... USE_LENGTH_UNITS(CANON_UNITS_MM)",
+        "2 N2     SET_G5X_OFFSET(1, 10.0000, 5.0000, -2.0000, 0.0000, 0.0000, 0.0000)",
+        "3 N2     SET_XY_ROTATION(90.0000)",
+        "4 N3     SET_G92_OFFSET(1.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)",
+        "5 N4     USE_TOOL_LENGTH_OFFSET(0.0000 0.0000 3.0000, 0.0000 0.0000 0.0000, 0.0000 0.0000 0.0000)",
+        "6 N5     STRAIGHT_TRAVERSE(1.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)",
+        "7 N6     ARC_FEED(0.0000, 2.0000, 0.0000, 1.0000, 1, 0.0000, 0.0000, 0.0000, 0.0000)",
+    )
+    # (1 + G92 1, 0) turned 90 degrees is (0, 2); plus G54 (10, 5, -2) and the tool's 3 in Z
+    assert [round(v, 9) for v in moves[0]["end"]] == [10.0, 7.0, 1.0]
+    assert [round(v, 9) for v in moves[1]["end"]] == [8.0, 6.0, 1.0]
+    assert [round(v, 9) for v in moves[1]["center"]] == [9.0, 6.0]
+
+
+def test_tool_table_for_the_issue_9_cases_is_in_inches():
+    table = record.tool_table_for(record.SEM_PREFIX + "x")
+    first = table.splitlines()[0].split()
+    assert first[0] == "T1" and abs(float(first[2][1:]) * 25.4 - record.SEM_TOOLS[1][0]) < 1e-12
+    assert record.tool_table_for("arc_ijk") == record.TOOL_TABLE

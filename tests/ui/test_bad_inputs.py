@@ -34,8 +34,8 @@ def test_missing_file(qtbot, window, tmp_path):
 
 
 def test_file_with_errors_is_shown_not_run(qtbot, window, notifier, tmp_path):
-    path = tmp_path / "cycle.ngc"
-    path.write_text("G21 G90\nG0 X10 Y10\nG81 X20 Y20 Z-1 R1 F100\nG1 X30 Y10 F200\nG1 X30 Y30\n")
+    path = tmp_path / "tapping.ngc"  # G84 tapping: refused, the spindle cannot reverse
+    path.write_text("G21 G90\nG0 X10 Y10\nG84 X20 Y20 Z-1 R1 F100\nG1 X30 Y10 F200\nG1 X30 Y30\n")
     loaded = open_and_wait(qtbot, window, path)
     assert loaded.program.errors and loaded.program.errors[0].line == 3
     assert notifier.last()[1] == "Program has errors"

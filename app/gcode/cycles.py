@@ -1,0 +1,161 @@
+"""Canned cycles G73 G81 G82 G83 G85 G89 in the XY plane, expanded to rapid, feed and
+dwell rows exactly as rs274ngc's ``convert_cycle_xy`` moves (LinuxCNC 2.9).
+
+R (retract plane), Z (bottom), P (dwell), Q (peck) are sticky while the same cycle
+stays in force; L repeats (in G91 each repeat moves by X Y again). The initial level
+is the Z where a run of cycle blocks started (kept until another motion mode); G98
+retracts to it when it is above R, G99 to R. In G91, R is an increment from the
+initial level and Z from R. A cycle below R first rises to R. Values are computed in
+program coordinates (program units) and leave here in the frame's millimetres.
+"""
+
+from __future__ import annotations
+
+import math
+
+from .errors import LineError
+from .ops import DWELL, FEED, RAPID, OpBuffer
+
+PECK_CLEARANCE_INCH = 0.010  # G73 retract / G83 re-entry clearance of rs274 2.9 (no ini)
+
+
+def _sticky(state, params, code: int, letter: str, name: str, message: str):
+    if letter in params:
+        return params[letter].value
+    if state.motion != code:
+        raise LineError(0, message)
+    return getattr(state.cycle, name)
+
+
+def _polar_words(params) -> tuple[float, float]:
+    """(radius, angle in radians) increments of @ and ^ (used in G91)."""
+    return (params["@"].value if "@" in params else 0.0,
+            math.radians(params["^"].value) if "^" in params else 0.0)
+
+
+def _polar_step(x: float, y: float, d_radius: float, d_theta: float) -> tuple[float, float]:
+    """One G91 repeat's polar increments about the program origin (rs274ngc's CYCLE_MACRO)."""
+    for grow, turn in ((d_radius, 0.0), (0.0, d_theta)):
+        if grow or turn:
+            if x == 0 and y == 0:
+                raise LineError(0, "Incremental motion with polar coordinates is indeterminate "
+                                "when at the origin")
+            theta, radius = math.atan2(y, x) + turn, math.hypot(y, x) + grow
+            x, y = radius * math.cos(theta), radius * math.sin(theta)
+    return x, y
+
+
+class _Emitter:
+    """Rows of one cycle block, from program coordinates (program units)."""
+
+    def __init__(self, state, line_no: int, ops: OpBuffer):
+        self.state, self.line_no, self.ops = state, line_no, ops
+        self.k = state.scale
+        self.offsets = state.offsets
+
+    def point(self, x, y, z):
+        k = self.k
+        return self.offsets.to_frame((x * k, y * k, z * k))
+
+    def rapid(self, x, y, z):
+        self.ops.add(self.line_no, RAPID, self.point(x, y, z), value=self.state.feed)
+
+    def feed(self, x, y, z):
+        self.ops.add(self.line_no, FEED, self.point(x, y, z), value=self.state.feed)
+
+    def dwell(self, seconds, x, y, z):
+        self.ops.add(self.line_no, DWELL, self.point(x, y, z), value=seconds)
+
+
+def _drill(e: _Emitter, code, x, y, r, clear, bottom, p, q) -> None:
+    """One hole at (x, y): the cycle-specific moves after reaching R."""
+    if code in (73, 83):
+        if q <= 0:
+            raise LineError(0, "negative or zero Q value used")
+        clearance = PECK_CLEARANCE_INCH * 25.4 / e.k
+        depth = r - q
+        while depth > bottom:
+            e.feed(x, y, depth)
+            if code == 83:
+                e.rapid(x, y, r)
+            e.rapid(x, y, depth + clearance)
+            depth -= q
+    e.feed(x, y, bottom)
+    if code in (82, 89):
+        e.dwell(p, x, y, bottom)
+    if code in (85, 89):
+        e.feed(x, y, r if code == 85 else clear)
+        if code == 85:
+            e.rapid(x, y, clear)
+    else:
+        e.rapid(x, y, clear)
+
+
+def run_cycle(state, code: int, params, line_no: int, ops: OpBuffer) -> None:
+    """Expand one cycle block (``state.motion`` is still the mode before this line)."""
+    if state.plane != 0:
+        plane = ("XZ", "YZ")[state.plane - 1]
+        raise LineError(0, f"canned cycle G{code} in the {plane} plane is not supported (G17 only)")
+    if state.feed == 0:
+        raise LineError(0, "Cannot feed with zero feed rate")
+    if state.comp is not None:
+        raise LineError(0, "Cannot use canned cycles with cutter compensation on")
+    c = state.cycle
+    r = _sticky(state, params, code, "R", "r", "R clearance plane unspecified in cycle")
+    z = _sticky(state, params, code, "Z", "z", "Z value unspecified in XY plane canned cycle")
+    p = q = 0.0
+    if code in (82, 89):
+        p = _sticky(state, params, code, "P", "p", f"Dwell time P word missing with G{code}")
+    if code in (73, 83):
+        q = _sticky(state, params, code, "Q", "q", f"Q word missing with G{code}")
+    repeats = 1
+    if "L" in params:
+        value = params["L"].value
+        if value != int(value) or value < 0:
+            raise LineError(params["L"].column, f"L{value:g} is not a number of repeats")
+        if value == 0:
+            raise LineError(params["L"].column, "Cannot do zero repeats of cycle")
+        repeats = int(value)
+    k = state.scale
+    prog = [v / k for v in state.program_pos()]
+    current = prog[2]
+    initial = current if c.initial is None else (c.initial - state.offsets.total()[2]) / k
+    kept = initial
+    dx = dy = 0.0
+    polar = _polar_words(params)
+    if state.absolute:
+        rr, bottom = r, z
+        x = params["X"].value if "X" in params else prog[0]
+        y = params["Y"].value if "Y" in params else prog[1]
+        if "@" in params or "^" in params:
+            radius = params["@"].value if "@" in params else math.hypot(prog[1], prog[0])
+            theta = math.radians(params["^"].value) if "^" in params else math.atan2(prog[1], prog[0])
+            x, y = radius * math.cos(theta), radius * math.sin(theta)
+        polar = (0.0, 0.0)
+    else:
+        dx = params["X"].value if "X" in params else 0.0
+        dy = params["Y"].value if "Y" in params else 0.0
+        rr = r + initial
+        bottom = rr + z
+        x, y = prog[0], prog[1]
+    if rr < bottom:
+        column = params["R"].column if "R" in params else 0
+        raise LineError(column, "R less than Z in cycle in XY plane")
+    e = _Emitter(state, line_no, ops)
+    if initial < rr:
+        e.rapid(prog[0], prog[1], rr)
+        initial = current = rr
+    clear = rr if state.retract_r else initial
+    for n in range(repeats):
+        x, y = _polar_step(x + dx, y + dy, *polar)
+        if n == 0 and current > rr:
+            e.rapid(x, y, current)
+            e.rapid(x, y, rr)
+        else:
+            e.rapid(x, y, clear)
+            if clear > rr:
+                e.rapid(x, y, rr)
+        _drill(e, code, x, y, rr, clear, bottom, p, q)
+    c.r, c.z, c.p, c.q = r, z, p, q
+    c.initial = kept * k + state.offsets.total()[2]
+    state.pos = e.point(x, y, clear)

@@ -1,0 +1,117 @@
+"""The tool table: number, diameter, length and comment per tool, persisted as JSON.
+
+Qt-free. The file sits next to ``settings.json`` in the per-user config folder
+(``default_path()``, from platformdirs; the GUI may pass its own). ``load_tools(path)``
+never raises: a missing file is an empty table, a damaged or out-of-range one is an
+empty table plus a message naming what was wrong. ``save_tools`` writes a temporary
+file and renames it over the old one, so a crash never leaves half a table.
+
+The interpreter reads the table as ``dict[int, Tool]`` (``State.tools``): ``T``/``M6``
+and ``M61`` pick a tool, ``G43 H`` applies its length, ``G41 D``/``G42 D`` its radius.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import os
+from dataclasses import asdict, dataclass
+from pathlib import Path
+
+VERSION = 1
+FILE_NAME = "tools.json"
+MAX_TOOL = 99999
+MAX_DIAMETER = 100.0  # mm
+MAX_LENGTH = 500.0  # mm, either sign
+
+
+class ToolError(ValueError):
+    """A tool entry out of range; the message names the tool and the field."""
+
+
+@dataclass(frozen=True)
+class Tool:
+    """One tool: diameter and length offset in millimetres."""
+
+    number: int
+    diameter: float = 0.0
+    length: float = 0.0
+    comment: str = ""
+
+    def __post_init__(self) -> None:
+        check_tool(self.number, self.diameter, self.length)
+
+    @property
+    def radius(self) -> float:
+        return self.diameter / 2.0
+
+
+def check_tool(number, diameter, length) -> None:
+    """Raise ``ToolError`` naming the field unless every value is in range."""
+    if isinstance(number, bool) or not isinstance(number, int) or not 1 <= number <= MAX_TOOL:
+        raise ToolError(f"tool number {number!r} is not a whole number 1..{MAX_TOOL}")
+    for name, value, lo, hi in (("diameter", diameter, 0.0, MAX_DIAMETER),
+                                ("length", length, -MAX_LENGTH, MAX_LENGTH)):
+        if isinstance(value, bool) or not isinstance(value, int | float) or not math.isfinite(value):
+            raise ToolError(f"tool {number}: {name} {value!r} is not a number")
+        if not lo <= value <= hi:
+            raise ToolError(f"tool {number}: {name} {value:g} mm is outside {lo:g}..{hi:g} mm")
+
+
+@dataclass(frozen=True)
+class LoadedTools:
+    tools: dict[int, Tool]
+    problem: str = ""  # why the table is empty instead of the file's ("" when fine)
+
+
+def default_path() -> Path:
+    """Where the GUI keeps the table: the per-user config folder of the application."""
+    from platformdirs import user_config_dir
+
+    return Path(user_config_dir("cnc-mill-controller", appauthor=False)) / FILE_NAME
+
+
+def from_data(data) -> dict[int, Tool]:
+    """The table from its JSON form; ``ToolError``/``ValueError`` say what is wrong."""
+    if not isinstance(data, dict) or data.get("version") != VERSION:
+        raise ValueError(f"not a version {VERSION} tool table")
+    rows = data.get("tools")
+    if not isinstance(rows, list):
+        raise ValueError("no 'tools' list")
+    table: dict[int, Tool] = {}
+    for row in rows:
+        if not isinstance(row, dict):
+            raise ValueError(f"tool entry {row!r} is not an object")
+        tool = Tool(row.get("number"), row.get("diameter", 0.0), row.get("length", 0.0),
+                    str(row.get("comment", "")))
+        if tool.number in table:
+            raise ToolError(f"tool {tool.number} is listed twice")
+        table[tool.number] = tool
+    return table
+
+
+def to_data(tools: dict[int, Tool]) -> dict:
+    return {"version": VERSION, "tools": [asdict(tools[n]) for n in sorted(tools)]}
+
+
+def load_tools(path: Path) -> LoadedTools:
+    """Read the table at ``path`` (see the module docstring); never raises."""
+    try:
+        text = Path(path).read_text(encoding="utf-8")
+    except FileNotFoundError:
+        return LoadedTools({})
+    except (OSError, UnicodeDecodeError) as exc:
+        return LoadedTools({}, f"{path}: cannot read the tool table ({exc}); the table is empty")
+    try:
+        return LoadedTools(from_data(json.loads(text)))
+    except (ValueError, TypeError) as exc:
+        return LoadedTools({}, f"{path}: the tool table is damaged ({exc}); the table is empty")
+
+
+def save_tools(path: Path, tools: dict[int, Tool]) -> None:
+    """Write the table atomically (temporary file, then ``os.replace``)."""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    tmp = path.with_name(path.name + ".tmp")
+    tmp.write_text(json.dumps(to_data(tools), indent=2), encoding="utf-8")
+    os.replace(tmp, path)

@@ -1,0 +1,153 @@
+"""The tool table editor: one row per tool (number, diameter, length, comment),
+range-checked with ``app.gcode.tools.check_tool``; a bad cell is marked and named
+(row and field) and the dialog stays open until it is fixed. On OK the table is
+saved next to the settings and handed to the loader, so the next program opened
+uses it (T, G43 H, G41 D)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from PySide6.QtGui import QBrush, QColor
+from PySide6.QtWidgets import (
+    QDialog,
+    QDialogButtonBox,
+    QHBoxLayout,
+    QLabel,
+    QPushButton,
+    QTableWidget,
+    QTableWidgetItem,
+    QVBoxLayout,
+)
+
+from app.gcode.tools import FILE_NAME, Tool, ToolError, check_tool, save_tools
+
+COLUMNS = 4  # number, diameter, length, comment
+_BAD = QBrush(QColor(255, 60, 60, 80))
+
+
+class ToolTableDialog(QDialog):
+    """Edits a copy of ``tools``; ``self.tools`` is the checked table after OK."""
+
+    def __init__(self, tools: dict[int, Tool], parent=None):
+        super().__init__(parent)
+        self.setWindowTitle(self.tr("Tool table"))
+        self.tools = dict(tools)
+        self.table = QTableWidget(0, COLUMNS)
+        self.table.setHorizontalHeaderLabels(
+            [self.tr("Tool"), self.tr("Diameter (mm)"), self.tr("Length (mm)"), self.tr("Comment")])
+        self.table.horizontalHeader().setStretchLastSection(True)
+        for number in sorted(tools):
+            tool = tools[number]
+            self.add_row(tool.number, tool.diameter, tool.length, tool.comment)
+        add, remove = QPushButton(self.tr("Add tool")), QPushButton(self.tr("Remove tool"))
+        add.clicked.connect(lambda: self.add_row(self._next_number()))
+        remove.clicked.connect(self.remove_selected)
+        self.error = QLabel("")
+        self.error.setStyleSheet("color: #e05050;")
+        self.error.setWordWrap(True)
+        ok, cancel = QDialogButtonBox.StandardButton.Ok, QDialogButtonBox.StandardButton.Cancel
+        buttons = QDialogButtonBox(ok | cancel)
+        buttons.accepted.connect(self.accept)
+        buttons.rejected.connect(self.reject)
+        self.button_box = buttons
+        row = QHBoxLayout()
+        row.addWidget(add)
+        row.addWidget(remove)
+        row.addStretch(1)
+        layout = QVBoxLayout(self)
+        layout.addWidget(self.table)
+        layout.addLayout(row)
+        layout.addWidget(self.error)
+        layout.addWidget(buttons)
+        self.resize(560, 360)
+
+    def _next_number(self) -> int:
+        numbers = [int(t) for t in (self._text(r, 0) for r in range(self.table.rowCount())) if t.isdigit()]
+        return max(numbers, default=0) + 1
+
+    def add_row(self, number: int, diameter: float = 0.0, length: float = 0.0, comment: str = "") -> None:
+        row = self.table.rowCount()
+        self.table.insertRow(row)
+        for column, text in enumerate((f"{number}", f"{diameter:g}", f"{length:g}", comment)):
+            self.table.setItem(row, column, QTableWidgetItem(text))
+
+    def remove_selected(self) -> None:
+        for row in sorted({i.row() for i in self.table.selectedIndexes()}, reverse=True):
+            self.table.removeRow(row)
+
+    def _text(self, row: int, column: int) -> str:
+        item = self.table.item(row, column)
+        return item.text().strip() if item is not None else ""
+
+    def _row_tool(self, row: int) -> Tool:
+        texts = [self._text(row, c) for c in range(3)]
+        names = (self.tr("tool number"), self.tr("diameter"), self.tr("length"))
+        values = []
+        for column, (text, name) in enumerate(zip(texts, names, strict=True)):
+            try:
+                values.append(int(text) if column == 0 else float(text))
+            except ValueError:
+                self._mark(row, column)
+                raise ToolError(self.tr("row %1: %2 '%3' is not a number").replace("%1", str(row + 1))
+                                .replace("%2", name).replace("%3", text)) from None
+        try:
+            check_tool(*values)
+        except ToolError as exc:
+            self._mark(row, 1 if "diameter" in str(exc) else 2 if "length" in str(exc) else 0)
+            message = self.tr("row %1: %2").replace("%1", str(row + 1)).replace("%2", str(exc))
+            raise ToolError(message) from None
+        return Tool(values[0], values[1], values[2], self._text(row, 3))
+
+    def _mark(self, row: int, column: int) -> None:
+        item = self.table.item(row, column)
+        if item is not None:
+            item.setBackground(_BAD)
+
+    def checked_tools(self) -> tuple[dict[int, Tool] | None, list[str]]:
+        """The table the rows describe, or None and the problems found."""
+        problems, tools = [], {}
+        for row in range(self.table.rowCount()):
+            for column in range(COLUMNS):
+                item = self.table.item(row, column)
+                if item is not None:
+                    item.setBackground(QBrush())
+            try:
+                tool = self._row_tool(row)
+            except ToolError as exc:
+                problems.append(str(exc))
+                continue
+            if tool.number in tools:
+                self._mark(row, 0)
+                problems.append(self.tr("row %1: tool %2 is listed twice").replace("%1", str(row + 1))
+                                .replace("%2", str(tool.number)))
+            tools[tool.number] = tool
+        return (None, problems) if problems else (tools, [])
+
+    def accept(self) -> None:
+        tools, problems = self.checked_tools()
+        if problems:
+            self.error.setText(self.tr("Not saved: %1").replace("%1", "; ".join(problems)))
+            return
+        self.tools = tools
+        super().accept()
+
+
+def open_tool_table(window) -> ToolTableDialog:
+    """Show the editor for ``window.tools``; on OK save it and give it to the loader."""
+    dialog = ToolTableDialog(window.tools, window)
+
+    def apply() -> None:
+        window.tools = dialog.tools
+        window.loader.tools = dialog.tools
+        try:
+            save_tools(Path(window.config_dir) / FILE_NAME, dialog.tools)
+        except OSError as exc:
+            window.notifier.error(dialog.tr("Tool table not saved"),
+                                  dialog.tr("Cannot write the tool table: %1").replace("%1", str(exc)))
+            return
+        window.status.showMessage(dialog.tr("Tool table saved: it applies to the next program opened"), 5000)
+
+    dialog.accepted.connect(apply)
+    dialog.open()
+    return dialog
