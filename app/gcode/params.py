@@ -1,6 +1,7 @@
 """The parameter table shared by the expander and the modal interpreter.
 
-Numbered parameters ``#1``..``#5399`` and named globals ``#<_name>`` live here; the
+Numbered parameters ``#1``..``#5602`` (LinuxCNC's range; the issue's ``#1``..``#5399``
+plus the machine's tool and position block) and named globals ``#<_name>`` live here; the
 expander keeps each call level's locals (Fanuc ``#1``-``#33``, LinuxCNC ``#<name>``)
 in its own frames. The interpreter owns the machine's numbered parameters and keeps
 them here as LinuxCNC does (see ``docs/architecture.md``): 5161-5169 G28, 5181-5189
@@ -16,7 +17,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-FIRST, LAST = 1, 5399
+FIRST, LAST = 1, 5602  # RS274NGC_MAX_PARAMETERS
 
 
 class ParamError(ValueError):
