@@ -221,7 +221,6 @@ def bench_streaming(config: Path) -> None:
     total = len(window.loaded.program.device_lines)  # rendered before the clock starts
     proc, pty = _start_simulator(config / "sd")
     try:
-        window.link.call("set_time_scale", float(SPEED))  # the machine's clock runs SPEED x
         window.operator.connect_to(pty)
         _wait(app, lambda: binder.status is not None, 30)
         window.controls.check_mode.setChecked(True)

@@ -9,8 +9,8 @@ Frames are printed as ``> `` (sent) and ``< `` (received); ``-q`` hides the stre
 traffic (D, A, F, S). ``run`` homes if the machine is not homed, streams the file,
 waits for the last ``F``, prints the final status line and exits 0 only if the job
 completed; otherwise it exits 1 with the reason. Exit 2: bad usage or file; 3: the
-port cannot be opened or the link was lost. Against ``cnc-sim --pty --speed N`` pass
-``--time-scale N`` so the heartbeat runs on machine time (``sim://`` does it itself).
+port cannot be opened or the link was lost. The heartbeat runs on the wall clock, also
+against ``cnc-sim --pty --speed N`` (the machine keeps its link timers in wall time).
 """
 
 from __future__ import annotations
@@ -21,7 +21,6 @@ import sys
 import time
 from pathlib import Path
 
-from app.comm.clock import ScaledClock
 from app.comm.events import FrameEvent
 from app.comm.listener import SessionListener, SessionState
 from app.comm.session import Session
@@ -80,11 +79,10 @@ class Printer(SessionListener):
 class Console:
     """Drives one Session over one transport, synchronously, for the commands above."""
 
-    def __init__(self, transport, out=None, quiet: bool = False, timeout: float = 3600.0,
-                 time_scale: float = 1.0) -> None:
+    def __init__(self, transport, out=None, quiet: bool = False, timeout: float = 3600.0) -> None:
         self.transport, self.out, self.timeout = transport, out or sys.stdout, timeout
         self.printer = Printer(self.out, quiet)
-        clock = getattr(transport, "clock", None) or ScaledClock(time_scale)
+        clock = getattr(transport, "clock", None) or time.monotonic
         self.session = Session(None, self.printer, clock)
         self.session.attach(transport.write)
 
@@ -244,15 +242,13 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("command", nargs="*", help="command and arguments (see module help)")
     parser.add_argument("-q", "--quiet", action="store_true", help="hide D/A/F/S traffic")
     parser.add_argument("--timeout", type=float, default=3600.0, help="seconds to wait per command")
-    parser.add_argument("--time-scale", type=float, default=1.0,
-                        help="machine time per wall second (cnc-sim --speed N on a pty: N)")
     args = parser.parse_intermixed_args(argv)
     try:
         transport = open_transport(args.url)
     except (OSError, ValueError) as exc:
         print(f"cannot open {args.url}: {exc}", file=sys.stderr)
         return 3
-    console = Console(transport, quiet=args.quiet, timeout=args.timeout, time_scale=args.time_scale)
+    console = Console(transport, quiet=args.quiet, timeout=args.timeout)
     commands = split_commands(args.command) or (shlex.split(line) for line in sys.stdin)
     try:
         console.connect()

@@ -38,18 +38,19 @@ Slots (call them through ``SerialController`` of the same name, or a queued sign
 (a ``Program`` or a list of device lines), ``pause()``, ``resume()``, ``stop()``,
 ``jog(axis, distance_mm, feed_mm_min)``, ``home(mode)``, ``upload_to_sd(name, lines)``,
 ``run_from_sd(name)``, ``list_sd()``, ``delete_sd(name)``, ``resume_after_reconnect()``,
-``confirm_restart()``, ``set_verbose_frames(on)``, ``set_time_scale(scale)`` (the
-machine is simulated ``scale`` times faster than real time, e.g. ``cnc-sim --speed 20``
-on a pty; ``sim://`` lends its own clock), ``shutdown()``.
+``confirm_restart()``, ``set_verbose_frames(on)``, ``shutdown()``. The session's timers
+run on the wall clock (a machine simulated N times faster keeps its link timers in
+wall-clock time), on the transport's ``clock()`` if it has one (``sim://``), or on
+the ``clock`` given to the worker (tests).
 """
 
 from __future__ import annotations
 
 import contextlib
+import time
 
 from PySide6.QtCore import QObject, Qt, QThread, QTimer, Signal, Slot
 
-from app.comm.clock import ScaledClock
 from app.comm.events import FrameEvent, LogEvent
 from app.comm.listener import SessionListener
 from app.comm.session import Session
@@ -58,7 +59,7 @@ from app.comm.transport import open_transport
 SLOT_NAMES = frozenset({
     "connect_to", "disconnect_from", "send_command", "start_job", "pause", "resume", "stop",
     "jog", "home", "upload_to_sd", "run_from_sd", "list_sd", "delete_sd",
-    "resume_after_reconnect", "confirm_restart", "set_verbose_frames", "set_time_scale", "shutdown",
+    "resume_after_reconnect", "confirm_restart", "set_verbose_frames", "shutdown",
 })
 PUMP_MS = 5
 IDLE_PUMP_MS = 50  # with no port open: nothing arrives, the session's timers are coarse
@@ -129,8 +130,7 @@ class SerialWorker(QObject):
     def __init__(self, clock=None, opener=open_transport) -> None:
         super().__init__()
         self._fixed_clock = clock
-        self._scaled = ScaledClock(1.0)
-        self.session = Session(None, _Relay(self), clock or self._scaled)
+        self.session = Session(None, _Relay(self), clock or time.monotonic)
         self.transport = None
         self.url = ""
         self.verbose_frames = False
@@ -256,18 +256,11 @@ class SerialWorker(QObject):
     def set_verbose_frames(self, on: bool) -> None:
         self.verbose_frames = bool(on)
 
-    @Slot(float)
-    def set_time_scale(self, scale: float) -> None:
-        """Machine time runs ``scale`` times faster than the wall (``cnc-sim --speed``)."""
-        self._scaled = ScaledClock(scale)
-        if self.transport is not None:
-            self.session.clock = self._clock_for(self.transport)
-
     # ------------------------------------------------------------------ internals
 
     def _clock_for(self, transport):
-        """The in-process simulator's clock, else the wall clock scaled by the time scale."""
-        return self._fixed_clock or getattr(transport, "clock", None) or self._scaled
+        """The injected clock, else the transport's own (``sim://``), else the wall clock."""
+        return self._fixed_clock or getattr(transport, "clock", None) or time.monotonic
 
     def _write(self, data: bytes) -> None:
         self.transport.write(data)

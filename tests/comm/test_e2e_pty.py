@@ -92,7 +92,6 @@ def test_pty_stream_kill_restart_resume(qtbot, tmp_path, rig):
     lines = load(SAMPLE).device_lines
     proc, path = start_sim(tmp_path, "1")
     procs.append(proc)
-    controller.set_time_scale(float(SPEED))  # the host's timers run on machine time
     controller.connect_to(path)
     qtbot.waitUntil(lambda: collector.last("status_changed") is not None, timeout=10000)
 

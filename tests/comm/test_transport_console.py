@@ -6,7 +6,8 @@ import serial
 from app.comm import deframer as dfr
 from app.comm import frame as fr
 from app.comm.console import main, split_commands
-from app.comm.transport import SIM_URL, SimTransport, list_ports, open_transport, sim_options
+from app.comm.transport import list_ports, open_transport
+from backend_sim.protocol_sim import url_options
 
 SAMPLE = "resources/samples/star_passes.ngc"
 
@@ -21,22 +22,48 @@ def test_loop_url_goes_through_pyserial():
         port.close()
 
 
-def test_simulator_is_listed_first():
-    ports = list_ports()
-    assert ports[0].url == SIM_URL and "Simulated" in ports[0].description
+def test_port_list_is_what_the_os_reports():
+    assert all(not port.url.startswith("sim://") for port in list_ports())
 
 
 def test_sim_url_options():
-    assert sim_options("sim://?speed=20&sd=/tmp/x") == {"speed": "20", "sd": "/tmp/x"}
-    assert sim_options(None) == {}
+    assert url_options("sim://?speed=20&sd=/tmp/x") == {"speed": "20", "sd": "/tmp/x"}
+    assert url_options(None) == {}
     with pytest.raises(serial.SerialException, match="speed"):
         open_transport("sim://?speed=fast")
+    with pytest.raises(serial.SerialException, match="nosuch"):
+        open_transport("nosuch://x")
+
+
+def test_app_comm_does_not_import_the_simulator():
+    import ast
+    from pathlib import Path
+
+    for path in Path("app/comm").glob("*.py"):
+        for node in ast.walk(ast.parse(path.read_text())):
+            names = [a.name for a in getattr(node, "names", [])] + [getattr(node, "module", None) or ""]
+            if isinstance(node, ast.Import | ast.ImportFrom):
+                assert not any(n.startswith("backend_sim") for n in names), path
+
+
+def test_any_pyserial_program_opens_sim_urls(tmp_path):
+    import backend_sim.protocol_sim
+
+    serial.protocol_handler_packages.append("backend_sim")
+    try:
+        port = serial.serial_for_url(f"sim://?speed=5&sd={tmp_path}", timeout=0.5)
+        assert isinstance(port, backend_sim.protocol_sim.Serial) and port.sim.clock.speed == 5
+        port.write(fr.encode(fr.Command(1, "PING")))
+        assert port.readline().startswith(b"S ")
+        port.close()
+    finally:
+        serial.protocol_handler_packages.remove("backend_sim")
+    assert not port.sim.running
 
 
 def test_sim_transport_answers_a_ping(tmp_path):
     port = open_transport(f"sim://?speed=50&sd={tmp_path}")
     try:
-        assert isinstance(port, SimTransport)
         port.write(fr.encode(fr.Command(1, "PING")))
         deframer, got = dfr.Deframer(), []
         while not any(isinstance(f, fr.Status) for f in got):
