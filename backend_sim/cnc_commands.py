@@ -141,7 +141,7 @@ def _resume_from(mcu, cmd: Command) -> str:
     _cover_closed(mcu)
     mcu.job.expected = seq
     mcu.job.bad_stretch = False
-    mcu.mc.resume()
+    mcu.mc.resume(release_stop=False)
     return f"FROM {seq}"
 
 
@@ -191,14 +191,16 @@ def _set(mcu, cmd: Command) -> str:
         if mcu.job.open:
             raise Refused("BUSY", "a job is open")
         mcu.check_mode = bool(number)
-    else:
+    elif not _param(mcu.stops.set, name, number):
         _param(mcu.mc.set_param, name, number)
     return f"{name} {value}"
 
 
 def _get(mcu, cmd: Command) -> str:
     (name,) = _args(cmd, 1, 1)
-    value = int(mcu.check_mode) if name == "CHECK" else _param(mcu.mc.get_param, name)
+    value = mcu.stops.get(name)
+    if value is None:
+        value = int(mcu.check_mode) if name == "CHECK" else _param(mcu.mc.get_param, name)
     return f"{name} {value:g}"
 
 

@@ -317,7 +317,7 @@ class MainMcu:
         own = ("L" if self.host_lost else "") + ("U" if self.uart_lost else "")
         own += "S" if self.sd_job is not None else ""
         cnc = self.status.flags if self.status is not None else ""
-        return "".join(f for f in "HCLUPS" if f in cnc + own)
+        return "".join(f for f in "HCLUPSW" if f in cnc + own)
 
     def merged_status(self) -> Status:
         """The CNC MCU's last status with the main MCU's flags (boot ``0``: none yet)."""

@@ -20,6 +20,7 @@ from app.comm import frame as fr
 from app.comm.events import CommandResult, ResumeOffer, StatusEvent
 from app.comm.listener import JOB_STATES, RECOVERY_STATES, SENDING_STATES, SessionState
 from app.comm.modal import restart_preamble
+from app.comm.stops import stop_event
 from app.comm.stream import Stream, sd_crc32
 
 S = SessionState
@@ -174,8 +175,8 @@ class JobControl:
         free = self.status.free if self.status else 1
         self.stream.window.restart_at(seq, free)
         self._set_state(S.STREAMING)
-        if self.status is not None and self.status.state == "HOLD":
-            self.submit("RESUME")
+        if self.status is not None and self.status.state == "HOLD" and "W" not in self.status.flags:
+            self.submit("RESUME")  # a feed hold of the link loss (a program stop waits for the operator)
 
     def _stop_answered(self, result: CommandResult) -> None:
         if result.ok and self.state is S.STOPPING:
@@ -266,8 +267,21 @@ class JobControl:
         elif event.state == "RUN" and self.state is S.PAUSED:
             self._set_state(S.STREAMING)
         self._lines_finished(event.done, now)
+        self._program_stop(event)
         if self.stream is not None and event.state == "ALARM":
             self._finish_stream(False, "the machine is in ALARM")
+
+    def _program_stop(self, event: StatusEvent) -> None:
+        """Report a program stop the machine now holds at (flag ``W``), once."""
+        if self.stream is None or self.stream.kind != "job":
+            return
+        seq = self.program_stops.update(event.flags, event.done)
+        if seq is None or seq >= self.stream.window.total:
+            return
+        index = self.stream.program_index(seq)
+        line = self.lines[index] if 0 <= index < len(self.lines) else ""
+        self._log("info", f"program stop at line {index}: {line}")
+        self.listener.on_program_stop(stop_event(index, line))
 
     def _report_progress(self, now: float, force: bool = False) -> None:
         last, when = self._last_progress

@@ -248,6 +248,7 @@ class MotionController(ControllerOps):
         self.homed = False
         self.stopping = False
         self.homing = None
+        self.waiting = None
         self._spindle_off()
         self._set_state("ALARM")
         self._hold_here(self.measured_mm)

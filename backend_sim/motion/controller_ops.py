@@ -11,7 +11,7 @@ import math
 
 from backend_sim.motion import servo
 from backend_sim.motion.dialect import Move, soft_limit_violation
-from backend_sim.motion.events import Alarm, Finished, Homed, MotionError, StateChanged, Stopped
+from backend_sim.motion.events import Alarm, Finished, Homed, MotionError, ProgramStop, StateChanged, Stopped
 from backend_sim.motion.homing import Homing
 
 _S = {name: n for n, name in enumerate(servo.STATE)}
@@ -49,13 +49,18 @@ class ControllerOps:
         elif self.state == "JOG":
             self.stop()
 
-    def resume(self) -> None:
-        if self.state != "HOLD":
+    def resume(self, release_stop: bool = True) -> None:
+        """Leave a feed hold, and (``release_stop``) go on past a program stop the job waits at."""
+        release_stop = release_stop and self.waiting is not None
+        if self.state != "HOLD" and not release_stop:
             return
         if self._cover:
             raise MotionError("COVER_OPEN", "close the cover to resume")
-        self.job.resume()
-        self._set_state("RUN")
+        if release_stop:
+            self.waiting = None
+        if self.state == "HOLD":
+            self.job.resume()
+            self._set_state("RUN")
 
     def stop(self) -> None:
         """Decelerate on the path, then flush the queue and switch the spindle off (``Stopped``)."""
@@ -72,6 +77,7 @@ class ControllerOps:
 
     def _finish_stop(self) -> None:
         self.stopping = False
+        self.waiting = None
         self.job.flush()
         self.planner.flush()
         self.job.resume()
@@ -196,6 +202,7 @@ class ControllerOps:
         old, self.state = self.state, "IDLE"
         self.homed, self.stopping, self.homing, self.servo_on = False, False, None, True
         self.done_seq = -1
+        self.waiting = None
         self.brk = 0
         self.spindle.reset(self.now_ms)
         self.spindle_target = 0.0
@@ -246,6 +253,13 @@ class ControllerOps:
         if rpm <= 0:
             return True
         return self.spindle.ready(self.now_ms, rpm) or ms > _SPINDLE_MAX_WAIT_MS
+
+    def program_wait(self, move: Move, ms: int) -> bool:
+        """A program stop's wait (``stop_of``): reported once, done when ``resume`` releases it."""
+        if ms == 1:
+            self.waiting = move
+            self._events.append(ProgramStop(move.stop_of, move.source))
+        return self.waiting is None
 
     def end_of_program(self, ms: int) -> bool:
         if ms == 1:

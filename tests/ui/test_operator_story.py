@@ -10,7 +10,7 @@ from PySide6.QtCore import Qt
 from app.ui.program.summary import bounds_array
 from tests.ui.conftest import SAMPLES, open_and_wait
 
-SPEED = 40
+SPEED = 20  # the machine holds 3 wall seconds after the cut: the job must outlast them
 JOB_TIMEOUT_MS = 150_000
 
 
@@ -70,7 +70,7 @@ def test_operator_story(qtbot, window, tmp_path):
     _click(qtbot, window.controls.buttons["resume"])
     qtbot.waitUntil(lambda: _status(window).state == "RUN", timeout=60_000)
     total = len(program.device_lines)
-    qtbot.waitUntil(lambda: window.binder.job_done >= total // 3, timeout=JOB_TIMEOUT_MS)
+    qtbot.waitUntil(lambda: window.binder.job_done >= total // 5, timeout=JOB_TIMEOUT_MS)
     cut_at = window.link.clock()
     sim.faults.unplug()
     qtbot.waitUntil(window.alert.isVisible, timeout=60_000)

@@ -1,0 +1,92 @@
+"""Program stops and tool changes end to end: Session <-> simulator (issue 11).
+
+The machine holds at ``M00``, ``M01`` (optional stop on) and ``M06 T2``; the session
+reports each once; ``RESUME`` goes on. The oracle: the executed log is every line once,
+in order; the spindle is off and Z at the clearance height during the tool change.
+"""
+
+from __future__ import annotations
+
+from app.comm.listener import SessionState
+from app.comm.stops import StopWatch, is_stop_line, stop_event
+from tests.comm.simlink import FAST_HOMING, SimLink, assert_oracle
+
+PROGRAM = [
+    "M03 S3000", "G00 Z5", "G00 X20 Y20", "G01 Z-1 F300", "G01 X30",
+    "M00", "G01 Y30", "M01", "G01 X20", "M06 T2", "G01 Y20", "G00 Z5", "M05", "M02",
+]
+STOPS = [5, 7, 9]
+
+
+def test_stop_lines_are_read():
+    assert is_stop_line("M00") and is_stop_line("M1") and is_stop_line("M06 T2")
+    assert not is_stop_line("M03 S100") and not is_stop_line("M02")
+    assert stop_event(9, "M06 T2").tool == 2 and stop_event(9, "M06 T2").code == 6
+    assert stop_event(5, "M00").tool is None and stop_event(7, "M01").code == 1
+    watch = StopWatch()
+    assert watch.update("HW", 4) == 5 and watch.update("HW", 4) is None
+    assert watch.update("H", 5) is None and watch.update("HW", 6) == 7
+
+
+def _link(**settings) -> SimLink:
+    link = SimLink(check=False, profile=FAST_HOMING)
+    link.home()
+    for name, value in settings.items():
+        link.command_ok("SET", name.upper(), value)
+    return link
+
+
+def _run_answering(link: SimLink, lines: list[str]) -> list:
+    """Run ``lines``; at each stop, record (event, rpm, machine z, spindle flag), then RESUME."""
+    seen = []
+    assert link.session.start_job(lines)
+    ended = lambda: link.rec.of("on_job_finished")  # noqa: E731
+    while not ended():
+        waiting = lambda: len(link.rec.of("on_program_stop")) > len(seen) or ended()  # noqa: E731
+        assert link.run_until(waiting, 120.0), "neither a stop nor the end"
+        if ended():
+            break
+        link.run_for(0.5)  # the machine keeps holding while the operator thinks
+        mc = link.sim.cnc.mc
+        status = link.session.status
+        seen.append((link.rec.of("on_program_stop")[-1], mc.spindle_rpm, mc.measured_mm[2], status))
+        assert link.session.resume()
+    return seen
+
+
+def test_the_machine_holds_at_each_stop_and_continues():
+    link = _link()
+    seen = _run_answering(link, PROGRAM)
+    job = link.rec.last("on_job_finished")
+    assert job.completed, job
+    assert [event.index for event, *_ in seen] == STOPS
+    assert [event.line for event, *_ in seen] == ["M00", "M01", "M06 T2"]
+    for event, rpm, z, status in seen:
+        assert status.state == "HOLD" and "W" in status.flags and status.done == event.index - 1
+    (_, rpm0, z0, _), _, (tool, rpm6, z6, _) = seen
+    assert rpm0 > 2000 and z0 < 20  # M00 keeps the spindle and the tool where it was
+    assert tool.tool == 2 and rpm6 < 100 and abs(z6 - 30.0) < 0.05  # M06: spindle off, Z up
+    assert_oracle(link.executed(), PROGRAM)
+    assert abs(link.sim.cnc.mc.measured_mm[2] - 25.0) < 0.05
+
+
+def test_optional_stop_off_runs_through_m01():
+    link = _link(optstop=0)
+    seen = _run_answering(link, PROGRAM)
+    assert [event.index for event, *_ in seen] == [5, 9]
+    assert_oracle(link.executed(), PROGRAM)
+
+
+def test_stop_job_at_a_tool_change_ends_it_cleanly():
+    link = _link()
+    assert link.session.start_job(PROGRAM)
+    assert link.run_until(lambda: link.rec.of("on_program_stop"), 120.0)
+    link.session.resume()
+    assert link.run_until(lambda: len(link.rec.of("on_program_stop")) == 2, 120.0)
+    link.session.resume()
+    assert link.run_until(lambda: len(link.rec.of("on_program_stop")) == 3, 120.0)
+    link.session.stop()
+    assert link.run_until(lambda: link.rec.of("on_job_finished"), 30.0)
+    assert not link.rec.last("on_job_finished").completed
+    assert [seq for seq, _ in link.executed()] == list(range(9))
+    assert link.session.state is SessionState.READY
