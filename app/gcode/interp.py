@@ -15,6 +15,7 @@ from .lexer import Word
 from .motion import LineError, do_motion
 from .ops import END, PAUSE, SPINDLE, OpBuffer
 from .state import State
+from .stops import stop_value
 from .words import ALLOWED_LETTERS, G_CODES, M_CODES, REFUSED_G, REFUSED_LETTERS
 
 
@@ -84,16 +85,17 @@ def _spindle(state: State, mgroups, params, line_no, ops: OpBuffer, report: Repo
     ops.add(line_no, SPINDLE, state.pos, value=(state.speed or -1.0) if state.spindle_on else 0.0)
 
 
-def _pause(line_no, column, message, ops: OpBuffer, state: State, report: Report) -> None:
+def _pause(line_no, column, message, ops: OpBuffer, state: State, report: Report, stop: float = 0.0) -> None:
     report.warning(line_no, column, message, message)
-    ops.add(line_no, PAUSE, state.pos, message=f"line {line_no}: {message}")
+    ops.add(line_no, PAUSE, state.pos, value=stop, message=f"line {line_no}: {message}")
 
 
 def _tool_change(state, mgroups, params, line_no, ops, report) -> None:
     if "toolchange" in mgroups:
         tool = f" T{params['T'].value:g}" if "T" in params else ""
         _pause(line_no, mgroups["toolchange"][1].column,
-               f"tool change{tool} M6: this machine has one tool; the job pauses here", ops, state, report)
+               f"tool change{tool} M6: this machine has one tool; the job pauses here", ops, state, report,
+               stop_value(6, params["T"].value if "T" in params else None))
 
 
 def _stop(state, mgroups, line_no, ops, report) -> None:
@@ -105,7 +107,8 @@ def _stop(state, mgroups, line_no, ops, report) -> None:
         state.ended = line_no
         ops.add(line_no, END, state.pos)
     else:
-        _pause(line_no, stop[1].column, f"M{code} program stop: the job pauses here", ops, state, report)
+        _pause(line_no, stop[1].column, f"M{code} program stop: the job pauses here", ops, state, report,
+               stop_value(code))
 
 
 def _modes(state: State, groups) -> None:

@@ -61,7 +61,7 @@ def test_the_machine_holds_at_each_stop_and_continues():
     assert job.completed, job
     assert [event.index for event, *_ in seen] == STOPS
     assert [event.line for event, *_ in seen] == ["M00", "M01", "M06 T2"]
-    for event, rpm, z, status in seen:
+    for event, *_, status in seen:
         assert status.state == "HOLD" and "W" in status.flags and status.done == event.index - 1
     (_, rpm0, z0, _), _, (tool, rpm6, z6, _) = seen
     assert rpm0 > 2000 and z0 < 20  # M00 keeps the spindle and the tool where it was
