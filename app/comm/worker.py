@@ -22,6 +22,7 @@ Signals (all carry one frozen dataclass of ``app.comm.events`` unless said other
 ``job_finished``              ``JobEvent``: a job or SD upload ended (completed or why not)
 ``error_occurred``            ``ErrorEvent``: LINK_LOST, RETRIES_EXHAUSTED, MACHINE_RESET, ...
 ``resume_offered``            ``ResumeOffer``: after a reconnect mid-job (same or new boot)
+``program_stopped``           ``ProgramStopEvent``: the machine holds at M00/M01/M06 (RESUME goes on)
 ``connected``                 ``str``: the URL just opened
 ``connect_failed``            ``str``: why a URL could not be opened
 ``disconnected``              ``str``: why the transport closed (operator, unplug, ...)
@@ -107,6 +108,9 @@ class _Relay(SessionListener):
     def on_resume_offer(self, event):
         self.w.resume_offered.emit(event)
 
+    def on_program_stop(self, event):
+        self.w.program_stopped.emit(event)
+
 
 class SerialWorker(QObject):
     """Owns transport and Session in the worker thread (see the module docstring)."""
@@ -122,6 +126,7 @@ class SerialWorker(QObject):
     job_finished = Signal(object)
     error_occurred = Signal(object)
     resume_offered = Signal(object)
+    program_stopped = Signal(object)
     connected = Signal(str)
     connect_failed = Signal(str)
     disconnected = Signal(str)

@@ -68,6 +68,9 @@ class MachineControls(QWidget):
         self.check_mode = QCheckBox("Check mode (dry run, no motion)")
         self.check_mode.toggled.connect(self.check_mode_toggled.emit)
         grid.addWidget(self.check_mode, 3, 0, 1, 2)
+        self.optional_stop = QCheckBox(self.tr("Optional stop (M01 holds the job)"))
+        self.optional_stop.setChecked(True)
+        grid.addWidget(self.optional_stop, 4, 0, 1, 2)
         return box
 
     def _spindle_box(self) -> QGroupBox:

@@ -58,10 +58,12 @@ class MainWindow(QMainWindow):
         self._build_docks()
         from app.ui.menus import build_menus
         from app.ui.operator_actions import OperatorActions
+        from app.ui.program_stops import ProgramStops
         from app.ui.session_binder import SessionBinder
 
         self.operator = OperatorActions(self)
         self.binder = SessionBinder(self)
+        self.program_stops = ProgramStops(self)
         self.actions_by_name = build_menus(self)
         if restore:
             self.restore_state()
