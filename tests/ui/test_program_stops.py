@@ -33,7 +33,8 @@ def ready(qtbot, window, tmp_path):
     window.operator.connect_to(f"sim://?speed={SPEED}&sd={tmp_path}")
     qtbot.waitUntil(lambda: window.binder.connected and window.binder.status is not None, timeout=60_000)
     window.operator.home("NORMAL")
-    qtbot.waitUntil(lambda: window.binder.status.homed and window.binder.status.state == "IDLE", timeout=60_000)
+    homed = lambda: window.binder.status.homed and window.binder.status.state == "IDLE"  # noqa: E731
+    qtbot.waitUntil(homed, timeout=60_000)
     path = tmp_path / "stops.ngc"
     path.write_text(SOURCE)
     open_and_wait(qtbot, window, path)
@@ -45,9 +46,10 @@ def _answer_stops(qtbot, window) -> list[tuple]:
     prompt, seen = window.program_stops.prompt, []
     before = len(window.program_stops.events)
     window.operator.start()
+    ended = lambda: window.binder.last_job_event is not None  # noqa: E731
     while True:
-        qtbot.waitUntil(lambda: prompt.isVisible() or window.binder.last_job_event is not None, timeout=120_000)
-        if window.binder.last_job_event is not None:
+        qtbot.waitUntil(lambda: prompt.isVisible() or ended(), timeout=120_000)
+        if ended():
             return seen
         event = window.program_stops.events[before + len(seen)]
         status = window.binder.status
