@@ -259,6 +259,8 @@ class CncMcu:
         if last and self.job.open:
             self.job.close()
             self.send(Log(f"job done, {self.job.total} lines"))
+            if not self.check_mode:
+                program_stops.after_job(self.mc, self.stops, self.offset, self.profile)
             self.send_status()
 
     def _on_alarm(self, event: ev.Alarm) -> None:

@@ -83,3 +83,23 @@ def expand(move: Move, parser: DialectParser, settings: StopSettings, clearance_
     moves = [*before, wait, *after]
     moves[-1] = replace(moves[-1], seq=move.seq)
     return moves
+
+
+def after_job(mc, settings: StopSettings, offset, profile) -> None:
+    """What the machine does once a job's last line has finished (``AFTERJOB``): stay,
+    lift Z to the top of its travel, lift then go to work X0 Y0, or home."""
+    action = AFTER_JOB[settings.after_job]
+    if action == "STAY" or not mc.homed or mc.state != "IDLE" or mc.cover_open:
+        return
+    if action == "HOME":
+        mc.home("NORMAL")
+        return
+    rapid = profile.motion.rapid_mm_min
+    here = mc.commanded_mm
+    top = profile.travel.limits()[2][1]
+    if here[2] < top - 1e-3:
+        mc.jog("Z", top - here[2], rapid)
+    if action == "ZERO":
+        for k, axis in ((0, "X"), (1, "Y")):
+            if abs(offset[k] - here[k]) > 1e-3:
+                mc.jog(axis, offset[k] - here[k], rapid)

@@ -9,7 +9,9 @@ Frames are printed as ``> `` (sent) and ``< `` (received); ``-q`` hides the stre
 traffic (D, A, F, S). ``run`` homes if the machine is not homed, streams the file,
 waits for the last ``F``, prints the final status line and exits 0 only if the job
 completed; otherwise it exits 1 with the reason. Exit 2: bad usage or file; 3: the
-port cannot be opened or the link was lost. The heartbeat runs on the wall clock, also
+port cannot be opened or the link was lost. At a program stop (``M00``/``M01``/``M06``)
+``run`` asks on stdin (Enter continues, ``stop`` ends the job), or answers as
+``--at-stops continue|stop`` says. The heartbeat runs on the wall clock, also
 against ``cnc-sim --pty --speed N`` (the machine keeps its link timers in wall time).
 """
 
@@ -44,6 +46,7 @@ class Printer(SessionListener):
     def __init__(self, out, quiet: bool) -> None:
         self.out, self.quiet = out, quiet
         self.results, self.jobs, self.errors = [], [], []
+        self.stops: list = []  # program stops not answered yet
         self._last_progress = 0.0
 
     def on_frame(self, event: FrameEvent):
@@ -75,12 +78,17 @@ class Printer(SessionListener):
     def on_error(self, event):
         self.errors.append(event)
 
+    def on_program_stop(self, event):
+        self.stops.append(event)
+
 
 class Console:
     """Drives one Session over one transport, synchronously, for the commands above."""
 
-    def __init__(self, transport, out=None, quiet: bool = False, timeout: float = 3600.0) -> None:
+    def __init__(self, transport, out=None, quiet: bool = False, timeout: float = 3600.0,
+                 at_stops: str = "ask") -> None:
         self.transport, self.out, self.timeout = transport, out or sys.stdout, timeout
+        self.at_stops = at_stops  # "ask" (stdin), "continue" or "stop"
         self.printer = Printer(self.out, quiet)
         clock = getattr(transport, "clock", None) or time.monotonic
         self.session = Session(None, self.printer, clock)
@@ -162,8 +170,11 @@ class Console:
         jobs = len(self.printer.jobs)
         if not self.session.start_job(lines):
             raise ConsoleError(f"job refused: {self.printer.errors[-1].text}")
-        self.wait(lambda: len(self.printer.jobs) > jobs or self.session.state is SessionState.INTERRUPTED,
-                  what="the job to end")
+        ended = lambda: len(self.printer.jobs) > jobs or self.session.state is SessionState.INTERRUPTED  # noqa: E731
+        while not ended():
+            self.wait(lambda: ended() or bool(self.printer.stops), what="the job to end")
+            if self.printer.stops:
+                self.answer_stop(self.printer.stops.pop(0))
         self.command("STATUS", timeout=5.0)
         self.print_status()
         job = self.printer.jobs[-1] if len(self.printer.jobs) > jobs else None
@@ -172,6 +183,20 @@ class Console:
         if not job.completed:
             raise ConsoleError(f"job failed at line {job.done + 1} of {job.total}: {job.reason}")
         print(f"job completed: {job.total} lines", file=self.out)
+
+    def answer_stop(self, event) -> None:
+        """The machine holds at a program stop: continue or stop, as ``at_stops`` says."""
+        print(f"program stop at device line {event.index}: {event.line}", file=self.out)
+        answer = self.at_stops
+        if answer == "ask":
+            try:
+                answer = input("Enter continues, 'stop' ends the job: ").strip().lower() or "continue"
+            except EOFError:
+                answer = "stop"
+        if answer.startswith("s"):
+            self.session.stop()
+        else:
+            self.session.resume()
 
     def cmd_sd(self, action: str, *args) -> None:
         action = action.lower()
@@ -242,13 +267,15 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("command", nargs="*", help="command and arguments (see module help)")
     parser.add_argument("-q", "--quiet", action="store_true", help="hide D/A/F/S traffic")
     parser.add_argument("--timeout", type=float, default=3600.0, help="seconds to wait per command")
+    parser.add_argument("--at-stops", choices=("ask", "continue", "stop"), default="ask",
+                        help="at M00/M01/M06 program stops: ask on stdin, continue or stop the job")
     args = parser.parse_intermixed_args(argv)
     try:
         transport = open_transport(args.url)
     except (OSError, ValueError) as exc:
         print(f"cannot open {args.url}: {exc}", file=sys.stderr)
         return 3
-    console = Console(transport, quiet=args.quiet, timeout=args.timeout)
+    console = Console(transport, quiet=args.quiet, timeout=args.timeout, at_stops=args.at_stops)
     commands = split_commands(args.command) or (shlex.split(line) for line in sys.stdin)
     try:
         console.connect()

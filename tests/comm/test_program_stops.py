@@ -67,7 +67,23 @@ def test_the_machine_holds_at_each_stop_and_continues():
     assert rpm0 > 2000 and z0 < 20  # M00 keeps the spindle and the tool where it was
     assert tool.tool == 2 and rpm6 < 100 and abs(z6 - 30.0) < 0.05  # M06: spindle off, Z up
     assert_oracle(link.executed(), PROGRAM)
-    assert abs(link.sim.cnc.mc.measured_mm[2] - 25.0) < 0.05
+    mc = link.sim.cnc.mc  # after the job (AFTERJOB 1, the default): Z lifted to the top
+    assert link.run_until(lambda: mc.state == "IDLE" and abs(mc.measured_mm[2] - 30.0) < 0.01, 30.0)
+
+
+def test_after_the_job_go_to_work_zero_or_stay():
+    link = _link(optstop=0, afterjob=2)
+    link.command_ok("ZERO", "XY")  # work X0 Y0 = machine (0, 0) after homing
+    link.command_ok("JOG", "X", 40, 600)
+    link.command_ok("ZERO", "XY")  # now work zero is machine X40 Y0
+    _run_answering(link, PROGRAM)
+    mc = link.sim.cnc.mc
+    near = lambda p, q: max(abs(a - b) for a, b in zip(p, q, strict=True)) < 0.01  # noqa: E731
+    at_zero = lambda: mc.state == "IDLE" and near(mc.measured_mm, (40.0, 0.0, 30.0))  # noqa: E731
+    assert link.run_until(at_zero, 60.0), mc.measured_mm
+    link.command_ok("SET", "AFTERJOB", 0)
+    link.command_ok("SET", "OPTSTOP", 1)
+    assert link.command("SET", "AFTERJOB", 4).code == "BAD_PARAM"
 
 
 def test_optional_stop_off_runs_through_m01():

@@ -105,3 +105,21 @@ def test_console_exits_non_zero_with_the_reason(tmp_path, capsys):
     captured = capsys.readouterr()
     assert rc in (1, 2), captured
     assert "error:" in captured.err
+
+
+STOPS = "G21 G90\nM3 S3000\nG0 Z5\nG0 X10 Y10\nM0\nG1 X20 F600\nT2 M6\nG1 X30\nM5\nM2\n"
+
+
+def test_console_answers_program_stops(tmp_path, capsys, monkeypatch):
+    job = tmp_path / "stops.ngc"
+    job.write_text(STOPS)
+    url = f"sim://?speed=500&sd={tmp_path}"
+    assert main([url, "-q", "--at-stops", "continue", "run", str(job)]) == 0
+    out = capsys.readouterr().out
+    assert "program stop at device line 3: M00" in out and "program stop at device line 5: M06 T2" in out
+    assert "job completed: 9 lines" in out
+    answers = iter(["", "stop"])
+    monkeypatch.setattr("builtins.input", lambda prompt="": next(answers))
+    assert main([url, "-q", "run", str(job)]) == 1
+    captured = capsys.readouterr()
+    assert "program stop at device line 5: M06 T2" in captured.out and "error: job failed" in captured.err

@@ -93,8 +93,10 @@ def test_operator_story(qtbot, window, tmp_path):
     assert event.completed, event
     qtbot.waitUntil(lambda: window.status.progress.value() == 1000, timeout=30_000)
     assert window.binder.tracker.view(0).percent == 100.0
-    qtbot.waitUntil(lambda: _status(window).state == "IDLE", timeout=60_000)
-    assert np.allclose(_status(window).position, program.toolpath.end[-1], atol=0.01)
+    top_z = window.profile.travel.z_max - window.profile.travel.work_z  # after the job: Z lifted
+    qtbot.waitUntil(lambda: _status(window).state == "IDLE" and abs(_status(window).z - top_z) < 0.01,
+                    timeout=60_000)
+    assert np.allclose(_status(window).position[:2], program.toolpath.end[-1][:2], atol=0.01)
     seqs = [seq for seq, _ in sim.exec_log]
     assert seqs == list(range(total))
     assert [line for _, line in sim.exec_log] == list(program.device_lines)
