@@ -9,6 +9,7 @@ on change; the checkbox is saved with the settings.
 
 from __future__ import annotations
 
+import time
 from dataclasses import replace
 
 from PySide6.QtCore import QObject
@@ -48,8 +49,15 @@ class ProgramStops(QObject):
         return int(line_map[index])
 
     def on_state(self, event) -> None:
-        if event.new != "PAUSED":
-            self.prompt.dismiss()
+        """Close the prompt once the job goes on or ends; held time is not motion."""
+        tracker = self.w.binder.tracker
+        if event.new == "PAUSED":
+            if tracker is not None:
+                tracker.hold(time.monotonic())
+            return
+        self.prompt.dismiss()
+        if tracker is not None:
+            tracker.release(time.monotonic())
 
     def on_connected(self, url: str) -> None:
         job = self.w.profile.job
