@@ -97,11 +97,12 @@ def _job(mcu, cmd: Command) -> str:
     (count,) = _args(cmd, 1, 1)
     if not count.isdigit() or int(count) < 1:
         raise Refused("BAD_ARGS", f"JOB {count}: a line count >= 1")
+    if not mcu.check_mode:
+        _cover_closed(mcu)
     _not_running(mcu)
     _alarm_free(mcu)
     if not mcu.check_mode:
         _homed(mcu)
-        _cover_closed(mcu)
     mcu.reset_parser()
     mcu.job.start(int(count))
     mcu.lines.clear()
@@ -173,6 +174,8 @@ def _jog(mcu, cmd: Command) -> None:
 def _spindle(mcu, cmd: Command) -> None:
     (value,) = _args(cmd, 1, 1)
     line = "M05" if value == "OFF" else f"M03 S{_number(value, 'rpm'):g}"
+    if value != "OFF":
+        _cover_closed(mcu)
     if mcu.job.open:
         raise Refused("BUSY", "a job is open: use M03/M05 in the program")
     _alarm_free(mcu)

@@ -266,7 +266,7 @@ class CncMcu:
     def _on_alarm(self, event: ev.Alarm) -> None:
         self.send(Alarm(event.code, event.text))
         if event.code == "COVER_OPEN":
-            return
+            return self._cover_opened(event)
         for pending in self.pending:
             self.send(Error(pending.id, event.code, event.text))
         self.pending.clear()
@@ -276,6 +276,12 @@ class CncMcu:
     def _on_program_stop(self, event: ev.ProgramStop) -> None:
         self.send(Log(f"STOP {event.seq} {event.line}"))
         self.send_status()
+
+    def _cover_opened(self, event: ev.Alarm) -> None:
+        """Homing, a jog or a spindle command cut short by the cover: refused, at once."""
+        for pending in [p for p in self.pending if p.verb in ("HOME", "JOG", "SPINDLE")]:
+            self.pending.remove(pending)
+            self.send(Error(pending.id, "COVER_OPEN", f"{pending.verb} stopped: {event.text}"))
 
     def _on_state(self, event: ev.StateChanged) -> None:
         self.state = event.state

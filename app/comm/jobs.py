@@ -26,7 +26,7 @@ from app.comm.stream import Stream, sd_crc32
 S = SessionState
 PROGRESS_EVERY_S = 0.1
 UNKNOWN_BOOT = "0"
-STOP_ALARMS = frozenset({"LIMIT", "SOFT_LIMIT", "COVER_OPEN", "FOLLOWING_ERROR"})
+STOP_ALARMS = frozenset({"LIMIT", "SOFT_LIMIT", "FOLLOWING_ERROR"})  # COVER_OPEN holds: RESUME goes on
 
 
 def _refused_seq(text: str, default: int) -> int:

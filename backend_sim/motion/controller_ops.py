@@ -58,9 +58,28 @@ class ControllerOps:
             raise MotionError("COVER_OPEN", "close the cover to resume")
         if release_stop:
             self.waiting = None
-        if self.state == "HOLD":
-            self.job.resume()
-            self._set_state("RUN")
+        if self.state != "HOLD":
+            return
+        if self.cover_rpm > 0:  # the cover stopped the spindle: back to speed first
+            rpm, self.cover_rpm = self.cover_rpm, 0.0
+            self.spindle_target = rpm
+            self.spindle.command(self.now_ms, rpm)
+            self.spin_up = (rpm, self.now_ms)
+            self.wake()
+            self._update_watch()
+            return
+        self.job.resume()
+        self._set_state("RUN")
+
+    def spun_up(self) -> bool:
+        """While ``resume`` waits for the spindle: True once at speed (the job goes on)."""
+        rpm, since = self.spin_up
+        if not (self.spindle.ready(self.now_ms, rpm) or self.now_ms - since > _SPINDLE_MAX_WAIT_MS):
+            return False
+        self.spin_up = None
+        self.job.resume()
+        self._set_state("RUN")
+        return True
 
     def stop(self) -> None:
         """Decelerate on the path, then flush the queue and switch the spindle off (``Stopped``)."""
@@ -78,6 +97,7 @@ class ControllerOps:
     def _finish_stop(self) -> None:
         self.stopping = False
         self.waiting = None
+        self.spin_up, self.cover_rpm = None, 0.0
         self.job.flush()
         self.planner.flush()
         self.job.resume()
@@ -203,6 +223,7 @@ class ControllerOps:
         self.homed, self.stopping, self.homing, self.servo_on = False, False, None, True
         self.done_seq = -1
         self.waiting = None
+        self.spin_up, self.cover_rpm = None, 0.0
         self.brk = 0
         self.spindle.reset(self.now_ms)
         self.spindle_target = 0.0
@@ -236,10 +257,15 @@ class ControllerOps:
         was, self._cover = self._cover, bool(value)
         if self._cover and not was:
             self._events.append(Alarm("COVER_OPEN", "cover opened"))
+            if self.state in ("RUN", "HOLD"):  # a job: its spindle comes back on RESUME
+                self.cover_rpm = self.spin_up[0] if self.spin_up else self.spindle_target
+                self.spin_up = None
+            self._spindle_off()
             if self.state == "RUN":
                 self.feed_hold()
             elif self.state in ("JOG", "HOMING"):
                 self.stop()
+            self._update_watch()
 
     # -- services for the planner and the simple interpolator ---------------------------
     def finished(self, move: Move) -> None:

@@ -28,8 +28,8 @@ def test_stop_lines_are_read():
     assert watch.update("H", 5) is None and watch.update("HW", 6) == 7
 
 
-def _link(**settings) -> SimLink:
-    link = SimLink(check=False, profile=FAST_HOMING)
+def _link(tmp_path, **settings) -> SimLink:
+    link = SimLink(check=False, profile=FAST_HOMING, sd_dir=tmp_path)  # its own flash (work offset)
     link.home()
     for name, value in settings.items():
         link.command_ok("SET", name.upper(), value)
@@ -54,8 +54,8 @@ def _run_answering(link: SimLink, lines: list[str]) -> list:
     return seen
 
 
-def test_the_machine_holds_at_each_stop_and_continues():
-    link = _link()
+def test_the_machine_holds_at_each_stop_and_continues(tmp_path):
+    link = _link(tmp_path)
     seen = _run_answering(link, PROGRAM)
     job = link.rec.last("on_job_finished")
     assert job.completed, job
@@ -71,8 +71,8 @@ def test_the_machine_holds_at_each_stop_and_continues():
     assert link.run_until(lambda: mc.state == "IDLE" and abs(mc.measured_mm[2] - 30.0) < 0.01, 30.0)
 
 
-def test_after_the_job_go_to_work_zero_or_stay():
-    link = _link(optstop=0, afterjob=2)
+def test_after_the_job_go_to_work_zero_or_stay(tmp_path):
+    link = _link(tmp_path, optstop=0, afterjob=2)
     link.command_ok("ZERO", "XY")  # work X0 Y0 = machine (0, 0) after homing
     link.command_ok("JOG", "X", 40, 600)
     link.command_ok("ZERO", "XY")  # now work zero is machine X40 Y0
@@ -86,15 +86,15 @@ def test_after_the_job_go_to_work_zero_or_stay():
     assert link.command("SET", "AFTERJOB", 4).code == "BAD_PARAM"
 
 
-def test_optional_stop_off_runs_through_m01():
-    link = _link(optstop=0)
+def test_optional_stop_off_runs_through_m01(tmp_path):
+    link = _link(tmp_path, optstop=0)
     seen = _run_answering(link, PROGRAM)
     assert [event.index for event, *_ in seen] == [5, 9]
     assert_oracle(link.executed(), PROGRAM)
 
 
-def test_stop_job_at_a_tool_change_ends_it_cleanly():
-    link = _link()
+def test_stop_job_at_a_tool_change_ends_it_cleanly(tmp_path):
+    link = _link(tmp_path)
     assert link.session.start_job(PROGRAM)
     assert link.run_until(lambda: link.rec.of("on_program_stop"), 120.0)
     link.session.resume()
