@@ -56,6 +56,7 @@ class MainWindow(QMainWindow):
         self.loader = ProgramLoader(self, self.profile.motion.arc_tolerance_mm)
         self._build_widgets(port_lister)
         self._build_docks()
+        from app.ui.cover_banner import CoverBanner
         from app.ui.menus import build_menus
         from app.ui.operator_actions import OperatorActions
         from app.ui.program_stops import ProgramStops
@@ -64,6 +65,7 @@ class MainWindow(QMainWindow):
         self.operator = OperatorActions(self)
         self.binder = SessionBinder(self)
         self.program_stops = ProgramStops(self)
+        self.cover_banner = CoverBanner(self)
         self.actions_by_name = build_menus(self)
         if restore:
             self.restore_state()

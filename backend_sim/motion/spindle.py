@@ -2,9 +2,10 @@
 
 Contract: evaluated lazily and exactly from the time of the last command, so it costs
 nothing per tick. ``command(now_ms, rpm)`` sets the target (capped by what the supply
-minus the L298N drop can reach; OFF brakes, so the spindle stops within half a second); ``measured_rpm(now_ms)`` is the pulse count of the last
-complete ``GATE_MS`` gate scaled to rpm, as the MCU's timer capture would report it.
-``settled(now_ms)`` says whether the speed still changes (after OFF it decays to 0).
+minus the L298N drop can reach; OFF brakes, so the spindle stops within half a
+second); ``measured_rpm(now_ms)`` is the pulse count of the last complete ``GATE_MS``
+gate scaled to rpm, as the MCU's timer capture would report it. ``settled(now_ms)``
+says whether the speed still changes (after OFF it decays to 0).
 """
 
 from __future__ import annotations
