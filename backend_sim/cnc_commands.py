@@ -15,6 +15,7 @@ from backend_sim.motion.dialect import DialectError, DialectParser
 from backend_sim.motion.events import MotionError
 
 AXES = "XYZ"
+OFFSET_NAMES = ("OFFSET_X", "OFFSET_Y", "OFFSET_Z")  # GET: the work offset, machine mm
 RUNNING = frozenset({"RUN", "HOLD", "HOMING", "JOG"})
 
 
@@ -202,7 +203,9 @@ def _set(mcu, cmd: Command) -> str:
 def _get(mcu, cmd: Command) -> str:
     (name,) = _args(cmd, 1, 1)
     value = mcu.stops.get(name)
-    if value is None:
+    if name in OFFSET_NAMES:
+        value = mcu.offset[OFFSET_NAMES.index(name)]
+    elif value is None:
         value = int(mcu.check_mode) if name == "CHECK" else _param(mcu.mc.get_param, name)
     return f"{name} {value:g}"
 

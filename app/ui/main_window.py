@@ -59,6 +59,7 @@ class MainWindow(QMainWindow):
         from app.ui.cover_banner import CoverBanner
         from app.ui.menus import build_menus
         from app.ui.operator_actions import OperatorActions
+        from app.ui.preflight import Preflight
         from app.ui.program_stops import ProgramStops
         from app.ui.session_binder import SessionBinder
 
@@ -66,6 +67,7 @@ class MainWindow(QMainWindow):
         self.binder = SessionBinder(self)
         self.program_stops = ProgramStops(self)
         self.cover_banner = CoverBanner(self)
+        self.preflight = Preflight(self)
         self.actions_by_name = build_menus(self)
         if restore:
             self.restore_state()

@@ -81,6 +81,9 @@ class OperatorActions(QObject):
                 f"{errors[0].message}). Fix them before running.",
             )
             return
+        if self.w.preflight.blocks_start():
+            self.w.notifier.error(self.tr("Program leaves the travel"), self.w.preflight.message())
+            return
         status = self.w.binder.status
         if status is not None and not status.homed and not self.w.controls.check_mode.isChecked():
             self.w.notifier.warning("Not homed", "Home the machine before starting a job (Machine ▸ Home).")
@@ -201,6 +204,7 @@ class OperatorActions(QObject):
     def apply_settings(self, profile) -> None:
         self.w.profile = profile
         self.link.set_link_timing(profile.link)
+        self.w.preflight.run()
         self.w.loader.tolerance = profile.motion.arc_tolerance_mm
         try:
             save_settings(self.w.config_dir / FILE_NAME, profile)

@@ -268,5 +268,7 @@ class SessionBinder(QObject):
         busy = self.state in BUSY
         paused = self.state == "PAUSED" or (self.status is not None and self.status.state == "HOLD")
         has_program = self.w.loaded is not None
-        self.w.controls.set_state(self.connected, busy, paused, has_program)
+        preflight = getattr(self.w, "preflight", None)
+        startable = has_program and not (preflight is not None and preflight.blocks_start())
+        self.w.controls.set_state(self.connected, busy, paused, startable)
         self.w.sd_panel.set_enabled(self.connected, has_program, busy)
