@@ -3,8 +3,11 @@
 ``JobControl`` is mixed into ``Session`` (it uses its ``submit``, ``_set_state``,
 ``_send``, listener and clock). Contract of the operator calls:
 
-- ``start_job(program)`` (a ``Program`` with ``device_lines`` or a list of lines):
-  only when READY with nothing in flight; sends ``JOB n`` and streams once it is open.
+- ``start_job(program, start=0)`` (a ``Program`` with ``device_lines`` or a list of
+  lines): only when READY with nothing in flight; sends ``JOB n`` and streams once it
+  is open. With ``start`` > 0 (start from a line) the stream is the restore preamble
+  of ``modal.restart_preamble`` followed by lines ``start..``; progress stays in
+  program line indices.
 - ``pause()`` sends ``!`` (repeated until the status shows HOLD); ``resume()`` sends
   ``RESUME``; ``stop()`` sends 0x18 (repeated until IDLE) and an urgent ``STOP``; no
   D frame is sent after a stop.
@@ -45,13 +48,17 @@ class JobControl:
 
     # ------------------------------------------------------------------ operator calls
 
-    def start_job(self, program) -> bool:
+    def start_job(self, program, start: int = 0) -> bool:
         lines = device_lines(program)
         if not self._can_start(lines, "job"):
             return False
+        if not 0 <= start < len(lines):
+            return self._refuse("BAD_START", f"line {start} is not in the program (0..{len(lines) - 1})")
         self.lines = lines
         free = self.status.free if self.status else 1
-        self.stream = Stream.job(lines, self.rtt, free, boot=self.boot or "", max_window=self.max_window)
+        pre = restart_preamble(lines, start)
+        self.stream = Stream.job(lines, self.rtt, free, start, pre, boot=self.boot or "",
+                                 max_window=self.max_window)
         self._set_state(S.STARTING)
         self.submit("JOB", len(lines), then=self._job_opened)
         return True

@@ -35,7 +35,7 @@ would run in the worker thread; relay through a QObject signal instead.
 Frames of kind D, A, F and S reach ``frame_logged`` only after ``set_verbose_frames(True)``.
 
 Slots (call them through ``SerialController`` of the same name, or a queued signal):
-``connect_to(url)``, ``disconnect_from()``, ``send_command(text)``, ``start_job(program)``
+``connect_to(url)``, ``disconnect_from()``, ``send_command(text)``, ``start_job(program[, start])``
 (a ``Program`` or a list of device lines), ``pause()``, ``resume()``, ``stop()``,
 ``jog(axis, distance_mm, feed_mm_min)``, ``home(mode)``, ``upload_to_sd(name, lines)``,
 ``run_from_sd(name)``, ``list_sd()``, ``delete_sd(name)``, ``resume_after_reconnect()``,
@@ -210,8 +210,10 @@ class SerialWorker(QObject):
         self.session.send_command(text)
 
     @Slot(object)
-    def start_job(self, program) -> None:
-        self.session.start_job(program)
+    def start_job(self, program, start: int = 0) -> None:
+        """The job from device line ``start`` (0: the whole program; else the modal state
+        before ``start`` is restored first)."""
+        self.session.start_job(program, start)
 
     @Slot()
     def pause(self) -> None:

@@ -192,19 +192,20 @@ class SessionBinder(QObject):
             self._progress_dirty = True
         self.w.console.set_resends(event.resends, event.resend_rate, event.resend_rate > 0.1)
 
-    def begin_job(self, loaded) -> None:
-        """Called when the operator starts ``loaded``: fresh progress (None: an MDI line)."""
+    def begin_job(self, loaded, first: int = 0) -> None:
+        """Called when the operator starts ``loaded``: fresh progress (None: an MDI line);
+        ``first``: the device line a start-from-line run begins at."""
         self._drain_progress()
         self.job = loaded
-        self.job_done = -1
+        self.job_done = first - 1
         self.last_job_event = None
         if loaded is None:
             self.tracker = None
             return
         program = loaded.program
         count = device_count(program)
-        self.tracker = ProgressTracker(line_times(program.toolpath, count), count, time.monotonic())
-        self.w.preview.set_done(-1)
+        self.tracker = ProgressTracker(line_times(program.toolpath, count), count, time.monotonic(), first)
+        self.w.preview.set_done(first - 1)
         self._progress_dirty = True
 
     def on_job_finished(self, event) -> None:

@@ -123,3 +123,15 @@ def test_console_answers_program_stops(tmp_path, capsys, monkeypatch):
     assert main([url, "-q", "run", str(job)]) == 1
     captured = capsys.readouterr()
     assert "program stop at device line 5: M06 T2" in captured.out and "error: job failed" in captured.err
+
+
+def test_console_runs_from_a_line(tmp_path, capsys):
+    job = tmp_path / "stops.ngc"
+    job.write_text(STOPS)
+    url = f"sim://?speed=500&sd={tmp_path}"
+    args = ["-q", "--at-stops", "continue", "--from", "8", "check", "on", ",", "run", str(job)]
+    assert main([url, *args]) == 0
+    out = capsys.readouterr().out
+    restoring = "M03 S3000; G00 Z5.000; G00 X20.000 Y10.000 F600"
+    assert f"starting at line 8 (device line 6); restoring: {restoring}" in out
+    assert "job completed: 9 lines" in out
