@@ -226,7 +226,17 @@ class SessionBinder(QObject):
         if event.completed:
             self.w.status.showMessage("Job finished", 15000)
         else:
-            self.w.notifier.warning("Job ended", f"The job did not complete: {event.reason}")
+            self.w.notifier.warning("Job ended", f"The job did not complete: {event.reason}"
+                                    + self._where_it_stopped(event))
+
+    def _where_it_stopped(self, event) -> str:
+        """Which source line the job stopped at and how much ran (the log keeps the rest)."""
+        line_map = getattr(getattr(self.job, "program", None), "line_map", None)
+        nxt = event.done + 1
+        if line_map is None or not 0 <= nxt < len(line_map):
+            return ""
+        return self.tr(" (at source line %1; %2 device lines ran, see the console)").replace(
+            "%1", str(int(line_map[nxt]))).replace("%2", str(nxt))
 
     def on_command(self, result) -> None:
         if result.verb == "SD" and result.args[:1] == ("LIST",) and result.ok:

@@ -106,3 +106,32 @@ def test_stop_job_at_a_tool_change_ends_it_cleanly(tmp_path):
     assert not link.rec.last("on_job_finished").completed
     assert [seq for seq, _ in link.executed()] == list(range(9))
     assert link.session.state is SessionState.READY
+
+
+def test_a_link_loss_at_a_stop_resumes_and_asks_again(tmp_path):
+    link = _link(tmp_path)
+    assert link.session.start_job(PROGRAM)
+    assert link.run_until(lambda: link.rec.of("on_program_stop"), 120.0)
+    link.sim.faults.unplug()
+    link.step()
+    assert link.session.state is SessionState.INTERRUPTED
+    link.run_for(4.0)  # host lost on the machine too; it keeps holding at the stop
+    assert link.sim.cnc.mc.waiting is not None and link.sim.cnc.status().flags.endswith("W")
+    link.sim.faults.replug()
+    link.attach()
+    assert link.run_until(lambda: link.session.state is SessionState.RESUME_OFFERED, 3.0)
+    assert link.session.resume_after_reconnect()
+    assert link.run_until(lambda: len(link.rec.of("on_program_stop")) == 2, 5.0)  # asked again
+    assert link.rec.of("on_program_stop")[1].index == STOPS[0]
+    assert link.sim.cnc.mc.waiting is not None  # RESUME FROM did not release the stop
+    seen = [link.rec.of("on_program_stop")[1]]
+    while len(seen) < 3:
+        assert link.session.resume()
+        count = len(link.rec.of("on_program_stop"))
+        assert link.run_until(lambda c=count: len(link.rec.of("on_program_stop")) > c, 120.0)
+        seen.append(link.rec.of("on_program_stop")[-1])
+    assert [event.index for event in seen] == STOPS
+    assert link.session.resume()
+    assert link.run_until(lambda: link.rec.of("on_job_finished"), 120.0)
+    assert link.rec.last("on_job_finished").completed
+    assert_oracle(link.executed(), PROGRAM)
