@@ -26,7 +26,7 @@ ROOT = Path(__file__).resolve().parents[1]
 DATA = ROOT / "bench" / "data"
 JOB_LINES = 100_000
 STREAM_LIMIT_S = 600.0
-SPEED = 2  # machine clock 2x real time (the link timers are wall-clock at any factor; 2 keeps figures comparable)
+SPEED = 2  # machine clock 2x real time (link timers are wall-clock at any factor; 2 keeps figures comparable)
 
 
 def big_file() -> Path:
