@@ -96,3 +96,13 @@ def test_stop_job_at_the_prompt_ends_the_job(qtbot, ready):
     qtbot.waitUntil(lambda: window.binder.last_job_event is not None, timeout=60_000)
     assert not window.binder.last_job_event.completed
     assert [seq for seq, _ in _executed(window)] == list(range(5))
+
+
+def test_tool_diameter_comes_from_the_tool_table_when_there_is_one(tmp_path):
+    from app.ui.stop_prompt import tool_diameter
+
+    tools = pytest.importorskip("app.gcode.tools")  # the tool table of issue 9 (semantics)
+    tools.save_tools(tmp_path / tools.FILE_NAME, {2: tools.Tool(2, 6.0), 3: tools.Tool(3)})
+    assert tool_diameter(2, tmp_path) == 6.0
+    assert tool_diameter(3, tmp_path) is None and tool_diameter(7, tmp_path) is None
+    assert tool_diameter(None, tmp_path) is None
