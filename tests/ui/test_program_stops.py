@@ -106,3 +106,19 @@ def test_tool_diameter_comes_from_the_tool_table_when_there_is_one(tmp_path):
     assert tool_diameter(2, tmp_path) == 6.0
     assert tool_diameter(3, tmp_path) is None and tool_diameter(7, tmp_path) is None
     assert tool_diameter(None, tmp_path) is None
+
+
+def test_an_sd_run_prompts_too_and_the_panel_ok_closes_the_prompt(qtbot, ready, tmp_path):
+    window = ready
+    (tmp_path / "stops.nc").write_text("\n".join(window.loaded.program.device_lines) + "\n")
+    window.operator.run_from_sd("stops.nc")
+    prompt = window.program_stops.prompt
+    qtbot.waitUntil(prompt.isVisible, timeout=120_000)
+    assert window.program_stops.events[-1].line == "M00"
+    window.link.sim.panel.press("OK")  # answered on the machine instead
+    qtbot.waitUntil(lambda: not prompt.isVisible(), timeout=30_000)
+    qtbot.waitUntil(prompt.isVisible, timeout=120_000)  # M01
+    qtbot.mouseClick(prompt.continue_button, Qt.MouseButton.LeftButton)
+    qtbot.waitUntil(lambda: prompt.isVisible() and window.program_stops.events[-1].tool == 2, timeout=120_000)
+    qtbot.mouseClick(prompt.stop_button, Qt.MouseButton.LeftButton)
+    qtbot.waitUntil(lambda: window.link.sim.main.sd_job is None, timeout=30_000)
