@@ -52,3 +52,16 @@ def test_work_zero_at_x50_blocks_start_until_moved_back(qtbot, window, tmp_path)
     window.operator.zero("X")  # back to machine X0
     qtbot.waitUntil(lambda: not window.preflight.errors, timeout=10_000)
     assert start.isEnabled()
+
+
+def test_the_check_runs_again_when_the_profile_changes(qtbot, window, tmp_path):
+    from dataclasses import replace
+
+    path = tmp_path / "wide.ngc"
+    path.write_text(SOURCE)
+    open_and_wait(qtbot, window, path)
+    assert not window.preflight.errors  # default work offset, 150 mm of X travel
+    profile = window.profile
+    window.operator.apply_settings(replace(profile, travel=replace(profile.travel, x_max=110.0)))
+    assert window.preflight.errors and "X+ leaves the travel by 10.000 mm" in window.preflight.message()
+    assert window.preflight.blocks_start()
