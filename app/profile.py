@@ -118,6 +118,15 @@ class Link:
 
 
 @dataclass(frozen=True)
+class Job:
+    """What the machine does at program stops and after a job (docs/protocol.md)."""
+
+    optional_stop: int = _f(1, 0, 1, "M01 holds the job (1) or is skipped (0)")
+    stop_spindle: int = _f(0, 0, 1, "M00/M01 also stop the spindle (1)")
+    after_job: int = _f(1, 0, 3, "after the job: 0 stay, 1 lift Z, 2 work zero X0 Y0, 3 home")
+
+
+@dataclass(frozen=True)
 class MachineProfile:
     """All numbers of the machine (DESIGN.md); every field has a checked range."""
 
@@ -127,6 +136,7 @@ class MachineProfile:
     motion: Motion = field(default_factory=Motion)
     pid: Pid = field(default_factory=Pid)
     link: Link = field(default_factory=Link)
+    job: Job = field(default_factory=Job)
 
     def to_dict(self) -> dict[str, dict[str, float]]:
         return {f.name: _section_dict(getattr(self, f.name)) for f in fields(self)}

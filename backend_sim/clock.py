@@ -10,10 +10,17 @@ wall clock:
 - ``speed=None``: as fast as possible (tests, benchmarks; ``pace`` never waits).
 
 Only the simulator advances the clock (``advance_to``); everybody else reads it.
+
+Link time (``link_now``) is the clock of the host-facing link timers (host lost, the
+LED and buzzer): simulated time divided by the speed factor, so at any factor it runs
+in step with the wall clock and a host that knows nothing of the factor keeps the link
+alive; unpaced (tests), it is simulated time. It is derived from simulated time, so
+the simulation stays deterministic.
 """
 
 from __future__ import annotations
 
+import math
 import time
 from dataclasses import dataclass, field
 
@@ -28,11 +35,21 @@ class SimClock:
     now_ms: int = 0
     _wall0: float = field(default=0.0, repr=False)
     _sim0: int = field(default=0, repr=False)
+    _link0: float = field(default=0.0, repr=False)
 
     @property
     def now(self) -> float:
         """Simulated seconds since power-up."""
         return self.now_ms * MS
+
+    @property
+    def link_now(self) -> float:
+        """Link seconds: simulated seconds / speed since the last anchor (see the module)."""
+        return self._link0 + (self.now_ms - self._sim0) * MS / (self.speed or 1.0)
+
+    def ms_at_link(self, link_s: float) -> int:
+        """The first simulated ms at which ``link_now`` reaches ``link_s``."""
+        return self._sim0 + math.ceil((link_s - self._link0) * (self.speed or 1.0) * 1000 - 1e-6)
 
     def advance_to(self, ms: int) -> None:
         if ms < self.now_ms:
@@ -43,11 +60,12 @@ class SimClock:
         """Change the pacing; the wall clock reference restarts at the current time."""
         if speed is not None and speed <= 0:
             raise ValueError(f"speed must be > 0 or None, not {speed}")
-        self.speed = speed
         self.anchor()
+        self.speed = speed
 
     def anchor(self) -> None:
         """Tie the current simulated time to the current wall time."""
+        self._link0 = self.link_now
         self._wall0 = time.monotonic()
         self._sim0 = self.now_ms
 

@@ -15,6 +15,7 @@ from backend_sim.motion.dialect import DialectError, DialectParser
 from backend_sim.motion.events import MotionError
 
 AXES = "XYZ"
+OFFSET_NAMES = ("OFFSET_X", "OFFSET_Y", "OFFSET_Z")  # GET: the work offset, machine mm
 RUNNING = frozenset({"RUN", "HOLD", "HOMING", "JOG"})
 
 
@@ -97,11 +98,12 @@ def _job(mcu, cmd: Command) -> str:
     (count,) = _args(cmd, 1, 1)
     if not count.isdigit() or int(count) < 1:
         raise Refused("BAD_ARGS", f"JOB {count}: a line count >= 1")
+    if not mcu.check_mode:
+        _cover_closed(mcu)
     _not_running(mcu)
     _alarm_free(mcu)
     if not mcu.check_mode:
         _homed(mcu)
-        _cover_closed(mcu)
     mcu.reset_parser()
     mcu.job.start(int(count))
     mcu.lines.clear()
@@ -141,7 +143,7 @@ def _resume_from(mcu, cmd: Command) -> str:
     _cover_closed(mcu)
     mcu.job.expected = seq
     mcu.job.bad_stretch = False
-    mcu.mc.resume()
+    mcu.mc.resume(release_stop=False)
     return f"FROM {seq}"
 
 
@@ -173,6 +175,8 @@ def _jog(mcu, cmd: Command) -> None:
 def _spindle(mcu, cmd: Command) -> None:
     (value,) = _args(cmd, 1, 1)
     line = "M05" if value == "OFF" else f"M03 S{_number(value, 'rpm'):g}"
+    if value != "OFF":
+        _cover_closed(mcu)
     if mcu.job.open:
         raise Refused("BUSY", "a job is open: use M03/M05 in the program")
     _alarm_free(mcu)
@@ -191,14 +195,18 @@ def _set(mcu, cmd: Command) -> str:
         if mcu.job.open:
             raise Refused("BUSY", "a job is open")
         mcu.check_mode = bool(number)
-    else:
+    elif not _param(mcu.stops.set, name, number):
         _param(mcu.mc.set_param, name, number)
     return f"{name} {value}"
 
 
 def _get(mcu, cmd: Command) -> str:
     (name,) = _args(cmd, 1, 1)
-    value = int(mcu.check_mode) if name == "CHECK" else _param(mcu.mc.get_param, name)
+    value = mcu.stops.get(name)
+    if name in OFFSET_NAMES:
+        value = mcu.offset[OFFSET_NAMES.index(name)]
+    elif value is None:
+        value = int(mcu.check_mode) if name == "CHECK" else _param(mcu.mc.get_param, name)
     return f"{name} {value:g}"
 
 

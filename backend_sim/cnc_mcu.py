@@ -21,7 +21,7 @@ from app.comm.deframer import Deframer, Dropped, Realtime
 from app.comm.frame import Ack as AckFrame
 from app.comm.frame import Alarm, Command, Data, Error, Finished, Frame, Log, Nak, Ok, Status
 from app.profile import MachineProfile
-from backend_sim import cnc_commands
+from backend_sim import cnc_commands, program_stops
 from backend_sim.exec_log import ExecLog
 from backend_sim.flash import Flash
 from backend_sim.job_stream import JobStream, Verdict
@@ -58,6 +58,7 @@ class CncMcu:
         self.offset = self.flash.load_offset()
         self.lost_ms = round(profile.link.lost_s * 1000)
         self.cover_open = False
+        self.stops = program_stops.StopSettings()
         self.boot()
 
     # ------------------------------------------------------------------ life cycle
@@ -185,7 +186,7 @@ class CncMcu:
     def _queue_line(self, seq: int, line: str) -> None:
         if seq >= self.job.total:
             return self.refuse_line(seq, "BAD_SEQ", f"beyond JOB {self.job.total}")
-        if not self.check_mode and self.mc.free_slots() <= 0:
+        if not self.check_mode and self.mc.free_slots() < program_stops.slots_needed(line):
             self.send(Nak(seq))
             return None
         start = self.parser.position
@@ -193,6 +194,8 @@ class CncMcu:
             move = self.parser.parse(seq, line)
         except DialectError as exc:
             return self.refuse_line(seq, exc.code, exc.text)
+        if move.kind == "stop" and not self.check_mode:
+            return self._queue_stop(move, line)
         violation = soft_limit_violation(start, move, self.profile.travel)
         if violation:
             return self.refuse_line(seq, "SOFT_LIMIT", violation)
@@ -209,6 +212,19 @@ class CncMcu:
         if self.check_mode:  # validated and finished at once: the dry run's executed log
             self.exec_log.add(seq, line)
             self._finished_up_to(seq)
+        return None
+
+    def _queue_stop(self, move, line: str) -> None:
+        """A program stop: its moves (``program_stops.expand``) into the motion queue."""
+        clearance = self.profile.travel.limits()[2][1]
+        try:
+            for part in program_stops.expand(move, self.parser, self.stops, clearance):
+                self.mc.enqueue(part)
+        except MotionError as exc:
+            return self.refuse_line(move.seq, exc.code, exc.text)
+        self.lines[move.seq] = line
+        self.job.accepted(move.seq)
+        self.send(AckFrame(move.seq, self.free_slots()))
         return None
 
     def refuse_line(self, seq: int, code: str, text: str) -> None:
@@ -243,17 +259,29 @@ class CncMcu:
         if last and self.job.open:
             self.job.close()
             self.send(Log(f"job done, {self.job.total} lines"))
+            if not self.check_mode:
+                program_stops.after_job(self.mc, self.stops, self.offset, self.profile)
             self.send_status()
 
     def _on_alarm(self, event: ev.Alarm) -> None:
         self.send(Alarm(event.code, event.text))
         if event.code == "COVER_OPEN":
-            return
+            return self._cover_opened(event)
         for pending in self.pending:
             self.send(Error(pending.id, event.code, event.text))
         self.pending.clear()
         self.job.close()
         self.lines.clear()
+
+    def _on_program_stop(self, event: ev.ProgramStop) -> None:
+        self.send(Log(f"STOP {event.seq} {event.line}"))
+        self.send_status()
+
+    def _cover_opened(self, event: ev.Alarm) -> None:
+        """Homing, a jog or a spindle command cut short by the cover: refused, at once."""
+        for pending in [p for p in self.pending if p.verb in ("HOME", "JOG", "SPINDLE")]:
+            self.pending.remove(pending)
+            self.send(Error(pending.id, "COVER_OPEN", f"{pending.verb} stopped: {event.text}"))
 
     def _on_state(self, event: ev.StateChanged) -> None:
         self.state = event.state
@@ -290,12 +318,14 @@ class CncMcu:
         flags = "H" if self.mc.homed else ""
         flags += "C" if self.cover_open else ""
         flags += "P" if self.mc.spindle_on else ""
+        flags += "W" if self.mc.waiting is not None else ""
         return flags
 
     def status(self) -> Status:
         pos = self.mc.measured_mm
         x, y, z = (pos[k] - self.offset[k] for k in range(3))
-        return Status(self.boot_id, self.mc.state, x, y, z, self.job.acc, self.job.done,
+        state = "HOLD" if self.mc.waiting is not None else self.mc.state
+        return Status(self.boot_id, state, x, y, z, self.job.acc, self.job.done,
                       self.free_slots(), int(round(self.mc.spindle_rpm)), self.flags())
 
     def send_status(self) -> None:
@@ -322,4 +352,5 @@ _EVENTS = {
     ev.Homed: CncMcu._on_done_event,
     ev.Held: CncMcu._on_done_event,
     ev.Stopped: CncMcu._on_done_event,
+    ev.ProgramStop: CncMcu._on_program_stop,
 }

@@ -11,11 +11,13 @@ Contract:
 - real-time bytes go down ahead of every queue (``Wire.write_urgent``).
 - CNC frames go up (``S`` with merged flags), except the answers to the main MCU's own
   commands (ids from ``OWN_ID0``) and, during ``SD RUN``, the stream's ``A``/``N``/``F``.
-- heartbeat: 3 s without a valid host frame while connected -> flag ``L``,
-  ``X HOST_LOST``, LED blinks fast, buzzer beeps, a host job feed-holds (an SD job
-  carries on). The UART hop likewise (it sends the CNC MCU a ``PING`` after every
-  second without sending anything): ``U``, ``X UART_LOST``. Until the host has sent
-  one valid frame nothing goes up (as USB CDC with no host reading).
+- heartbeat: 3 s without a valid host frame while connected (in link time,
+  ``SimClock.link_now``: wall-clock seconds at any speed factor, so a host needs no
+  knowledge of the factor) -> flag ``L``, ``X HOST_LOST``, LED blinks fast, buzzer
+  beeps, a host job feed-holds (an SD job carries on). The UART hop likewise (it sends
+  the CNC MCU a ``PING`` after every second without sending anything): ``U``,
+  ``X UART_LOST``; both ends of the UART are the machine's, so it runs on machine time.
+  Until the host has sent one valid frame nothing goes up (as USB CDC with no host reading).
 """
 
 from __future__ import annotations
@@ -74,7 +76,7 @@ class MainMcu:
         self.uart_rx = Deframer(realtime=False)
         self.host_link = LinkState.UNKNOWN
         self.uart_link = LinkState.OK
-        self.last_host = now
+        self.last_host = self.clock.link_now
         self.last_uart = now
         self.next_ping = now + PING_PERIOD_S
         self.next_housekeeping = now + HOUSEKEEPING_S
@@ -96,14 +98,15 @@ class MainMcu:
         due = self.next_ping
         if self.host_rx.pending() or self.uart_rx.pending():
             due = min(due, self.next_housekeeping)
-        if self.host_link is LinkState.OK:
-            due = min(due, self.last_host + self.lost_s)
         if self.uart_link is LinkState.OK:
             due = min(due, self.last_uart + self.lost_s)
         job_due = self.sd_job.next_due() if self.sd_job is not None else None
         if job_due is not None and job_due < due:
             due = job_due
-        return max(to_ms(due), self.clock.now_ms + 1)
+        due_ms = to_ms(due)
+        if self.host_link is LinkState.OK:
+            due_ms = min(due_ms, self.clock.ms_at_link(self.last_host + self.lost_s))
+        return max(due_ms, self.clock.now_ms + 1)
 
     def service(self) -> None:
         now = self.clock.now
@@ -125,7 +128,7 @@ class MainMcu:
             main_sd.check_job(self)
 
     def _watchdogs(self, now: float) -> None:
-        if self.host_link is LinkState.OK and now - self.last_host >= self.lost_s:
+        if self.host_link is LinkState.OK and self.clock.link_now - self.last_host >= self.lost_s:
             self.host_link = LinkState.LOST
             self.notice = "HOST LOST"
             self.to_host(Alarm("HOST_LOST", f"no valid host frame for {self.lost_s:g} s"))
@@ -153,7 +156,7 @@ class MainMcu:
                 self._host_frame(item)
 
     def _host_alive(self) -> None:
-        self.last_host = self.clock.now
+        self.last_host = self.clock.link_now
         if self.host_link is LinkState.LOST:
             self.notice = "host back"
         self.host_link = LinkState.OK
@@ -314,7 +317,7 @@ class MainMcu:
         own = ("L" if self.host_lost else "") + ("U" if self.uart_lost else "")
         own += "S" if self.sd_job is not None else ""
         cnc = self.status.flags if self.status is not None else ""
-        return "".join(f for f in "HCLUPS" if f in cnc + own)
+        return "".join(f for f in "HCLUPSW" if f in cnc + own)
 
     def merged_status(self) -> Status:
         """The CNC MCU's last status with the main MCU's flags (boot ``0``: none yet)."""
@@ -345,12 +348,15 @@ class MainMcu:
     def led(self) -> bool:
         """Heartbeat: 1 Hz blink; fast 5 Hz blink while a link is lost."""
         period = 200 if self.alert else 1000
-        return self.clock.now_ms % period < period // 2
+        return self._link_ms() % period < period // 2
 
     @property
     def buzzer(self) -> bool:
         """Beeps 200 ms every second while a link is lost."""
-        return self.alert and self.clock.now_ms % 1000 < 200
+        return self.alert and self._link_ms() % 1000 < 200
+
+    def _link_ms(self) -> int:
+        return int(self.clock.link_now * 1000)
 
 
 _OWN = {

@@ -1,8 +1,11 @@
 """The OLED pages and the button menu of the main MCU, usable with no host at all.
 
-Pages (explicit ``Page`` enum): STATUS (state, flags, X/Y/Z, PID gains, links, notice),
-MENU (Run SD file, Pause, Resume, Stop, Home), FILES (the SD card; OK runs the file).
-UP/DOWN move the cursor, OK selects, EXIT goes back. ``lines()`` gives the 8 text rows
+Pages (explicit ``Page`` enum): STATUS (state, flags, X/Y/Z, measured spindle rpm, PID
+gains, links, notice), MENU (Run SD file, Pause, Resume, Stop, Home), FILES (the SD
+card; OK runs the file). UP/DOWN move the cursor, OK selects, EXIT goes back. Two
+screens take over the STATUS page: COVER OPEN (close to continue) while the cover is
+open, and PROGRAM STOP / TOOL CHANGE while a job holds at ``M00``/``M01``/``M06``
+(OK continues with ``RESUME``, EXIT stops the job). ``lines()`` gives the 8 text rows
 the OLED shows now; the cursor row starts with ``oled.INVERT``.
 """
 
@@ -39,7 +42,14 @@ class Menu:
     # ------------------------------------------------------------------ buttons
 
     def press(self, button: str) -> None:
+        if self.page is Page.STATUS and self._waiting() is not None and button in ("OK", "EXIT"):
+            self._command("RESUME" if button == "OK" else "STOP")
+            return
         _PRESS[self.page][button](self)
+
+    def _waiting(self):
+        """The program stop the job holds at (a parsed move), else None."""
+        return self.cnc.mc.waiting
 
     def _enter_menu(self) -> None:
         self.page, self.cursor = Page.MENU, 0
@@ -98,6 +108,12 @@ class Menu:
 
     def lines(self) -> list[str]:
         if self.page is Page.STATUS:
+            if self.cnc.cover_open:
+                return ["COVER OPEN", "", "close the cover", "to continue", "", "spindle stopped",
+                        "", self.main.notice[:21]]
+            waiting = self._waiting()
+            if waiting is not None:
+                return self._stop_lines(waiting)
             return self._status_lines()
         title = "MENU" if self.page is Page.MENU else "SD FILES"
         items = self._items() or ["(empty)"]
@@ -118,11 +134,18 @@ class Menu:
             f"X {s.x:10.3f}",
             f"Y {s.y:10.3f}",
             f"Z {s.z:10.3f}",
-            f"P{kp:g} I{ki:g} D{kd:g}"[:21],
+            f"S{s.rpm} P{kp:g} I{ki:g} D{kd:g}"[:21],
             link,
             self._job_line(),
             main.notice[:21],
         ]
+
+    def _stop_lines(self, waiting) -> list[str]:
+        tool = waiting.source.startswith(("M06", "M6"))
+        title = "TOOL CHANGE" if tool else "PROGRAM STOP"
+        what = (f"fit tool T{waiting.tool}" if waiting.tool >= 0 else "fit the next tool") if tool else ""
+        return [title, f"line {waiting.stop_of}: {waiting.source}"[:21], what, "",
+                "OK   continue", "EXIT stop job", self._job_line(), self.main.notice[:21]]
 
     def _job_line(self) -> str:
         job = self.main.sd_job

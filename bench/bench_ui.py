@@ -26,7 +26,7 @@ ROOT = Path(__file__).resolve().parents[1]
 DATA = ROOT / "bench" / "data"
 JOB_LINES = 100_000
 STREAM_LIMIT_S = 600.0
-SPEED = 2  # machine clock 2x real time: at higher factors a 0.6 s stall of a loaded host reads as a lost link
+SPEED = 2  # machine clock 2x real time (link timers are wall-clock at any factor; 2 keeps figures comparable)
 
 
 def big_file() -> Path:
@@ -221,7 +221,6 @@ def bench_streaming(config: Path) -> None:
     total = len(window.loaded.program.device_lines)  # rendered before the clock starts
     proc, pty = _start_simulator(config / "sd")
     try:
-        window.link.call("set_time_scale", float(SPEED))  # the machine's clock runs SPEED x
         window.operator.connect_to(pty)
         _wait(app, lambda: binder.status is not None, 30)
         window.controls.check_mode.setChecked(True)

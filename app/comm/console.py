@@ -9,8 +9,12 @@ Frames are printed as ``> `` (sent) and ``< `` (received); ``-q`` hides the stre
 traffic (D, A, F, S). ``run`` homes if the machine is not homed, streams the file,
 waits for the last ``F``, prints the final status line and exits 0 only if the job
 completed; otherwise it exits 1 with the reason. Exit 2: bad usage or file; 3: the
-port cannot be opened or the link was lost. Against ``cnc-sim --pty --speed N`` pass
-``--time-scale N`` so the heartbeat runs on machine time (``sim://`` does it itself).
+port cannot be opened or the link was lost. At a program stop (``M00``/``M01``/``M06``)
+``run`` asks on stdin (Enter continues, ``stop`` ends the job), or answers as
+``--at-stops continue|stop`` says. ``--from LINE`` runs FILE from that source line,
+the modal state of the lines before it restored first (as the window's "Start here").
+The heartbeat runs on the wall clock, also against ``cnc-sim --pty --speed N`` (the
+machine keeps its link timers in wall time).
 """
 
 from __future__ import annotations
@@ -21,9 +25,9 @@ import sys
 import time
 from pathlib import Path
 
-from app.comm.clock import ScaledClock
 from app.comm.events import FrameEvent
 from app.comm.listener import SessionListener, SessionState
+from app.comm.modal import device_index_of, restart_preamble
 from app.comm.session import Session
 from app.comm.transport import open_transport
 
@@ -45,6 +49,7 @@ class Printer(SessionListener):
     def __init__(self, out, quiet: bool) -> None:
         self.out, self.quiet = out, quiet
         self.results, self.jobs, self.errors = [], [], []
+        self.stops: list = []  # program stops not answered yet
         self._last_progress = 0.0
 
     def on_frame(self, event: FrameEvent):
@@ -76,15 +81,20 @@ class Printer(SessionListener):
     def on_error(self, event):
         self.errors.append(event)
 
+    def on_program_stop(self, event):
+        self.stops.append(event)
+
 
 class Console:
     """Drives one Session over one transport, synchronously, for the commands above."""
 
     def __init__(self, transport, out=None, quiet: bool = False, timeout: float = 3600.0,
-                 time_scale: float = 1.0) -> None:
+                 at_stops: str = "ask", from_line: int | None = None) -> None:
         self.transport, self.out, self.timeout = transport, out or sys.stdout, timeout
+        self.at_stops = at_stops  # "ask" (stdin), "continue" or "stop"
+        self.from_line = from_line  # run FILE starts at this source line (start from a line)
         self.printer = Printer(self.out, quiet)
-        clock = getattr(transport, "clock", None) or ScaledClock(time_scale)
+        clock = getattr(transport, "clock", None) or time.monotonic
         self.session = Session(None, self.printer, clock)
         self.session.attach(transport.write)
 
@@ -156,16 +166,27 @@ class Console:
         self.wait(lambda: self.session.status.state in ("IDLE", "ALARM"), 30.0, "the stop")
 
     def cmd_run(self, path: str) -> None:
-        lines = load_lines(path)
+        program = load_program(path)
+        lines = list(program.device_lines)
+        start = 0
+        if self.from_line is not None:
+            start = device_index_of(program.line_map.tolist(), self.from_line)
+            if start is None:
+                raise ConsoleError(f"{path}: nothing runs from line {self.from_line} on", 2)
+            print(f"starting at line {self.from_line} (device line {start}); restoring: "
+                  + "; ".join(restart_preamble(lines, start)), file=self.out)
         if not self.session.status.homed and not self.checking():
             print("not homed: homing first", file=self.out)
             self.cmd_home()
             self.command("STATUS")
         jobs = len(self.printer.jobs)
-        if not self.session.start_job(lines):
+        if not self.session.start_job(lines, start):
             raise ConsoleError(f"job refused: {self.printer.errors[-1].text}")
-        self.wait(lambda: len(self.printer.jobs) > jobs or self.session.state is SessionState.INTERRUPTED,
-                  what="the job to end")
+        ended = lambda: len(self.printer.jobs) > jobs or self.session.state is SessionState.INTERRUPTED  # noqa: E731
+        while not ended():
+            self.wait(lambda: ended() or bool(self.printer.stops), what="the job to end")
+            if self.printer.stops:
+                self.answer_stop(self.printer.stops.pop(0))
         self.command("STATUS", timeout=5.0)
         self.print_status()
         job = self.printer.jobs[-1] if len(self.printer.jobs) > jobs else None
@@ -174,6 +195,20 @@ class Console:
         if not job.completed:
             raise ConsoleError(f"job failed at line {job.done + 1} of {job.total}: {job.reason}")
         print(f"job completed: {job.total} lines", file=self.out)
+
+    def answer_stop(self, event) -> None:
+        """The machine holds at a program stop: continue or stop, as ``at_stops`` says."""
+        print(f"program stop at device line {event.index}: {event.line}", file=self.out)
+        answer = self.at_stops
+        if answer == "ask":
+            try:
+                answer = input("Enter continues, 'stop' ends the job: ").strip().lower() or "continue"
+            except EOFError:
+                answer = "stop"
+        if answer.startswith("s"):
+            self.session.stop()
+        else:
+            self.session.resume()
 
     def cmd_sd(self, action: str, *args) -> None:
         action = action.lower()
@@ -209,6 +244,11 @@ class Console:
 
 def load_lines(path: str) -> list[str]:
     """The normalised device lines of a G-code file; ConsoleError(2) if unusable."""
+    return list(load_program(path).device_lines)
+
+
+def load_program(path: str):
+    """The loaded ``Program`` of a G-code file with lines to run; ConsoleError(2) if unusable."""
     from app.gcode import load
 
     try:
@@ -221,7 +261,7 @@ def load_lines(path: str) -> list[str]:
         raise ConsoleError(f"{path}: {len(errors)} error(s); line {first.line}: {first.message}", 2)
     if not program.device_lines:
         raise ConsoleError(f"{path}: no lines to run", 2)
-    return list(program.device_lines)
+    return program
 
 
 def split_commands(words: list[str]) -> list[list[str]]:
@@ -244,15 +284,18 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("command", nargs="*", help="command and arguments (see module help)")
     parser.add_argument("-q", "--quiet", action="store_true", help="hide D/A/F/S traffic")
     parser.add_argument("--timeout", type=float, default=3600.0, help="seconds to wait per command")
-    parser.add_argument("--time-scale", type=float, default=1.0,
-                        help="machine time per wall second (cnc-sim --speed N on a pty: N)")
+    parser.add_argument("--at-stops", choices=("ask", "continue", "stop"), default="ask",
+                        help="at M00/M01/M06 program stops: ask on stdin, continue or stop the job")
+    parser.add_argument("--from", dest="from_line", type=int, metavar="LINE",
+                        help="run FILE from this source line, the modal state before it restored")
     args = parser.parse_intermixed_args(argv)
     try:
         transport = open_transport(args.url)
     except (OSError, ValueError) as exc:
         print(f"cannot open {args.url}: {exc}", file=sys.stderr)
         return 3
-    console = Console(transport, quiet=args.quiet, timeout=args.timeout, time_scale=args.time_scale)
+    console = Console(transport, quiet=args.quiet, timeout=args.timeout, at_stops=args.at_stops,
+                      from_line=args.from_line)
     commands = split_commands(args.command) or (shlex.split(line) for line in sys.stdin)
     try:
         console.connect()

@@ -43,6 +43,21 @@ class StatusEvent:
 
 
 @dataclass(frozen=True)
+class ProgramStopEvent:
+    """The machine holds at a program stop (docs/protocol.md, "Program stops").
+
+    ``index`` is the program line index of the stop's device line, ``line`` its text
+    (``M00``, ``M01``, ``M06 T2``), ``code`` 0, 1 or 6 and ``tool`` the tool an
+    ``M06`` names (None: not named). ``RESUME`` continues, ``STOP`` ends the job.
+    """
+
+    index: int
+    line: str
+    code: int
+    tool: int | None = None
+
+
+@dataclass(frozen=True)
 class ProgressEvent:
     """Progress of the stream ``kind`` ("job" or "upload"), in program line indices.
 

@@ -3,8 +3,11 @@
 ``JobControl`` is mixed into ``Session`` (it uses its ``submit``, ``_set_state``,
 ``_send``, listener and clock). Contract of the operator calls:
 
-- ``start_job(program)`` (a ``Program`` with ``device_lines`` or a list of lines):
-  only when READY with nothing in flight; sends ``JOB n`` and streams once it is open.
+- ``start_job(program, start=0)`` (a ``Program`` with ``device_lines`` or a list of
+  lines): only when READY with nothing in flight; sends ``JOB n`` and streams once it
+  is open. With ``start`` > 0 (start from a line) the stream is the restore preamble
+  of ``modal.restart_preamble`` followed by lines ``start..``; progress stays in
+  program line indices.
 - ``pause()`` sends ``!`` (repeated until the status shows HOLD); ``resume()`` sends
   ``RESUME``; ``stop()`` sends 0x18 (repeated until IDLE) and an urgent ``STOP``; no
   D frame is sent after a stop.
@@ -20,12 +23,13 @@ from app.comm import frame as fr
 from app.comm.events import CommandResult, ResumeOffer, StatusEvent
 from app.comm.listener import JOB_STATES, RECOVERY_STATES, SENDING_STATES, SessionState
 from app.comm.modal import restart_preamble
+from app.comm.stops import stop_event
 from app.comm.stream import Stream, sd_crc32
 
 S = SessionState
 PROGRESS_EVERY_S = 0.1
 UNKNOWN_BOOT = "0"
-STOP_ALARMS = frozenset({"LIMIT", "SOFT_LIMIT", "COVER_OPEN", "FOLLOWING_ERROR"})
+STOP_ALARMS = frozenset({"LIMIT", "SOFT_LIMIT", "FOLLOWING_ERROR"})  # COVER_OPEN holds: RESUME goes on
 
 
 def _refused_seq(text: str, default: int) -> int:
@@ -44,13 +48,17 @@ class JobControl:
 
     # ------------------------------------------------------------------ operator calls
 
-    def start_job(self, program) -> bool:
+    def start_job(self, program, start: int = 0) -> bool:
         lines = device_lines(program)
         if not self._can_start(lines, "job"):
             return False
+        if not 0 <= start < len(lines):
+            return self._refuse("BAD_START", f"line {start} is not in the program (0..{len(lines) - 1})")
         self.lines = lines
         free = self.status.free if self.status else 1
-        self.stream = Stream.job(lines, self.rtt, free, boot=self.boot or "", max_window=self.max_window)
+        pre = restart_preamble(lines, start)
+        self.stream = Stream.job(lines, self.rtt, free, start, pre, boot=self.boot or "",
+                                 max_window=self.max_window)
         self._set_state(S.STARTING)
         self.submit("JOB", len(lines), then=self._job_opened)
         return True
@@ -174,8 +182,8 @@ class JobControl:
         free = self.status.free if self.status else 1
         self.stream.window.restart_at(seq, free)
         self._set_state(S.STREAMING)
-        if self.status is not None and self.status.state == "HOLD":
-            self.submit("RESUME")
+        if self.status is not None and self.status.state == "HOLD" and "W" not in self.status.flags:
+            self.submit("RESUME")  # a feed hold of the link loss (a program stop waits for the operator)
 
     def _stop_answered(self, result: CommandResult) -> None:
         if result.ok and self.state is S.STOPPING:
@@ -266,8 +274,21 @@ class JobControl:
         elif event.state == "RUN" and self.state is S.PAUSED:
             self._set_state(S.STREAMING)
         self._lines_finished(event.done, now)
+        self._program_stop(event)
         if self.stream is not None and event.state == "ALARM":
             self._finish_stream(False, "the machine is in ALARM")
+
+    def _program_stop(self, event: StatusEvent) -> None:
+        """Report a program stop the machine now holds at (flag ``W``), once."""
+        if self.stream is None or self.stream.kind != "job":
+            return
+        seq = self.program_stops.update(event.flags, event.done)
+        if seq is None or seq >= self.stream.window.total:
+            return
+        index = self.stream.program_index(seq)
+        line = self.lines[index] if 0 <= index < len(self.lines) else ""
+        self._log("info", f"program stop at line {index}: {line}")
+        self.listener.on_program_stop(stop_event(index, line))
 
     def _report_progress(self, now: float, force: bool = False) -> None:
         last, when = self._last_progress

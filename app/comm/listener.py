@@ -20,6 +20,7 @@ from app.comm.events import (
     JobEvent,
     LinkEvent,
     LogEvent,
+    ProgramStopEvent,
     ProgressEvent,
     ResumeOffer,
     StateEvent,
@@ -90,3 +91,5 @@ class SessionListener:
     def on_error(self, event: ErrorEvent) -> None: ...
 
     def on_resume_offer(self, event: ResumeOffer) -> None: ...
+
+    def on_program_stop(self, event: ProgramStopEvent) -> None: ...

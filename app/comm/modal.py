@@ -6,7 +6,7 @@ machine-dialect lines that put back what the lines before ``start`` left in forc
 spindle (``M03 S..``), a retract to the highest Z seen, a rapid to the XY where line
 ``start - 1`` ended carrying the modal feed (``F``; the dialect keeps F modal from any
 motion line), and a feed move down to its Z. Units need no line: the dialect is
-absolute millimetres only.
+absolute millimetres only. The same preamble starts a job from a chosen line.
 """
 
 from __future__ import annotations
@@ -56,6 +56,15 @@ def modal_state(lines: list[str], start: int) -> ModalState:
     for line in lines[:start]:
         state.apply(line)
     return state
+
+
+def device_index_of(line_map, source_line: int) -> int | None:
+    """The first device line of ``source_line`` (1-based), else of the next source line
+    that has one; None past the end. ``line_map``: device index -> source line."""
+    for index, line in enumerate(line_map):
+        if line >= source_line:
+            return index
+    return None
 
 
 def _fmt(value: float) -> str:

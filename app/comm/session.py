@@ -42,6 +42,7 @@ from app.comm.jobs import UNKNOWN_BOOT, JobControl
 from app.comm.listener import JOB_STATES, SENDING_STATES, TRANSITIONS, SessionListener, SessionState
 from app.comm.realtime import NAMES, RealtimeRepeater
 from app.comm.rtt import RttEstimator
+from app.comm.stops import StopWatch
 from app.comm.stream import Stream
 from app.comm.window import MAX_WINDOW
 from app.profile import Link
@@ -71,6 +72,7 @@ class Session(JobControl):
         self.boot: str | None = None
         self.homed_boot: str | None = None
         self.lines: list[str] = []
+        self.program_stops = StopWatch()
         self.max_window = MAX_WINDOW
         self._write = write
         self._out = bytearray()
@@ -92,6 +94,7 @@ class Session(JobControl):
         self.deframer = dfr.Deframer()
         self.realtime.clear()
         self._last_progress = (None, float("-inf"))
+        self.program_stops.forget()
         self.link.attach(self.clock())
         self._emit_link()
         if self.state is S.DISCONNECTED:

@@ -22,6 +22,7 @@ Signals (all carry one frozen dataclass of ``app.comm.events`` unless said other
 ``job_finished``              ``JobEvent``: a job or SD upload ended (completed or why not)
 ``error_occurred``            ``ErrorEvent``: LINK_LOST, RETRIES_EXHAUSTED, MACHINE_RESET, ...
 ``resume_offered``            ``ResumeOffer``: after a reconnect mid-job (same or new boot)
+``program_stopped``           ``ProgramStopEvent``: the machine holds at M00/M01/M06 (RESUME goes on)
 ``connected``                 ``str``: the URL just opened
 ``connect_failed``            ``str``: why a URL could not be opened
 ``disconnected``              ``str``: why the transport closed (operator, unplug, ...)
@@ -34,22 +35,23 @@ would run in the worker thread; relay through a QObject signal instead.
 Frames of kind D, A, F and S reach ``frame_logged`` only after ``set_verbose_frames(True)``.
 
 Slots (call them through ``SerialController`` of the same name, or a queued signal):
-``connect_to(url)``, ``disconnect_from()``, ``send_command(text)``, ``start_job(program)``
+``connect_to(url)``, ``disconnect_from()``, ``send_command(text)``, ``start_job(program[, start])``
 (a ``Program`` or a list of device lines), ``pause()``, ``resume()``, ``stop()``,
 ``jog(axis, distance_mm, feed_mm_min)``, ``home(mode)``, ``upload_to_sd(name, lines)``,
 ``run_from_sd(name)``, ``list_sd()``, ``delete_sd(name)``, ``resume_after_reconnect()``,
-``confirm_restart()``, ``set_verbose_frames(on)``, ``set_time_scale(scale)`` (the
-machine is simulated ``scale`` times faster than real time, e.g. ``cnc-sim --speed 20``
-on a pty; ``sim://`` lends its own clock), ``shutdown()``.
+``confirm_restart()``, ``set_verbose_frames(on)``, ``shutdown()``. The session's timers
+run on the wall clock (a machine simulated N times faster keeps its link timers in
+wall-clock time), on the transport's ``clock()`` if it has one (``sim://``), or on
+the ``clock`` given to the worker (tests).
 """
 
 from __future__ import annotations
 
 import contextlib
+import time
 
 from PySide6.QtCore import QObject, Qt, QThread, QTimer, Signal, Slot
 
-from app.comm.clock import ScaledClock
 from app.comm.events import FrameEvent, LogEvent
 from app.comm.listener import SessionListener
 from app.comm.session import Session
@@ -58,7 +60,7 @@ from app.comm.transport import open_transport
 SLOT_NAMES = frozenset({
     "connect_to", "disconnect_from", "send_command", "start_job", "pause", "resume", "stop",
     "jog", "home", "upload_to_sd", "run_from_sd", "list_sd", "delete_sd",
-    "resume_after_reconnect", "confirm_restart", "set_verbose_frames", "set_time_scale", "shutdown",
+    "resume_after_reconnect", "confirm_restart", "set_verbose_frames", "shutdown",
 })
 PUMP_MS = 5
 IDLE_PUMP_MS = 50  # with no port open: nothing arrives, the session's timers are coarse
@@ -106,6 +108,9 @@ class _Relay(SessionListener):
     def on_resume_offer(self, event):
         self.w.resume_offered.emit(event)
 
+    def on_program_stop(self, event):
+        self.w.program_stopped.emit(event)
+
 
 class SerialWorker(QObject):
     """Owns transport and Session in the worker thread (see the module docstring)."""
@@ -121,6 +126,7 @@ class SerialWorker(QObject):
     job_finished = Signal(object)
     error_occurred = Signal(object)
     resume_offered = Signal(object)
+    program_stopped = Signal(object)
     connected = Signal(str)
     connect_failed = Signal(str)
     disconnected = Signal(str)
@@ -129,8 +135,7 @@ class SerialWorker(QObject):
     def __init__(self, clock=None, opener=open_transport) -> None:
         super().__init__()
         self._fixed_clock = clock
-        self._scaled = ScaledClock(1.0)
-        self.session = Session(None, _Relay(self), clock or self._scaled)
+        self.session = Session(None, _Relay(self), clock or time.monotonic)
         self.transport = None
         self.url = ""
         self.verbose_frames = False
@@ -205,8 +210,10 @@ class SerialWorker(QObject):
         self.session.send_command(text)
 
     @Slot(object)
-    def start_job(self, program) -> None:
-        self.session.start_job(program)
+    def start_job(self, program, start: int = 0) -> None:
+        """The job from device line ``start`` (0: the whole program; else the modal state
+        before ``start`` is restored first)."""
+        self.session.start_job(program, start)
 
     @Slot()
     def pause(self) -> None:
@@ -256,18 +263,11 @@ class SerialWorker(QObject):
     def set_verbose_frames(self, on: bool) -> None:
         self.verbose_frames = bool(on)
 
-    @Slot(float)
-    def set_time_scale(self, scale: float) -> None:
-        """Machine time runs ``scale`` times faster than the wall (``cnc-sim --speed``)."""
-        self._scaled = ScaledClock(scale)
-        if self.transport is not None:
-            self.session.clock = self._clock_for(self.transport)
-
     # ------------------------------------------------------------------ internals
 
     def _clock_for(self, transport):
-        """The in-process simulator's clock, else the wall clock scaled by the time scale."""
-        return self._fixed_clock or getattr(transport, "clock", None) or self._scaled
+        """The injected clock, else the transport's own (``sim://``), else the wall clock."""
+        return self._fixed_clock or getattr(transport, "clock", None) or time.monotonic
 
     def _write(self, data: bytes) -> None:
         self.transport.write(data)

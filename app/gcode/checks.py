@@ -4,7 +4,9 @@
   with the profile's default work offset: ``line 12, column 5: X+ beyond travel
   (152.300 > 150)``, in work coordinates, one per line, axis and direction;
 - feed moves at feed 0 (no F yet, or F0): LinuxCNC would refuse them; here they warn
-  and the time estimate uses the maximum feed.
+  and the time estimate uses the maximum feed;
+- a spindle speed the motor cannot reach (``max_spindle_rpm``: no-load speed at the
+  supply minus the bridge drop): ``S9000 is beyond the spindle's maximum (3750 rpm)``.
 Vectorised over all rows; at most ``Report.limit`` of each kind are listed.
 """
 
@@ -15,9 +17,9 @@ import numpy as np
 from app.profile import MachineProfile
 
 from .arcs import arc_box
-from .diagnostics import Report
+from .diagnostics import ERROR, Diagnostic, Report
 from .lexer import lex_line
-from .ops import ARC_CCW, ARC_CW, FEED, PLANE_AXES, Ops
+from .ops import ARC_CCW, ARC_CW, FEED, PLANE_AXES, SPINDLE, Ops
 
 
 def _column(lines: list[str], line_no: int, letter: str) -> int:
@@ -31,14 +33,13 @@ def _arc_extremes(ops: Ops, rows: np.ndarray):
     return arc_box(ops.starts()[rows], ops.end[rows], ops.center[rows], axes, ops.turn[rows])
 
 
-def _may_bulge_out(ops: Ops, rows: np.ndarray, profile: MachineProfile) -> np.ndarray:
+def _may_bulge_out(ops: Ops, rows: np.ndarray, limits: np.ndarray) -> np.ndarray:
     """Mask of arcs whose full circle reaches past the travel (the others cannot)."""
     center = ops.center.take(rows, axis=0)
     step = ops.starts().take(rows, axis=0) - center
     radius = np.sqrt(step[:, 0] * step[:, 0] + step[:, 1] * step[:, 1] + step[:, 2] * step[:, 2])
     del step  # the centre shares the normal axis: only the other two reach out
     normal = np.array(PLANE_AXES)[:, 2][ops.plane[rows]]
-    limits = _limits(profile)
     out = np.zeros(len(rows), bool)
     for axis in range(3):
         reach = radius * (normal != axis)
@@ -46,27 +47,29 @@ def _may_bulge_out(ops: Ops, rows: np.ndarray, profile: MachineProfile) -> np.nd
     return out
 
 
-def _limits(profile: MachineProfile) -> np.ndarray:
-    """(3, 2) travel limits in work coordinates (the default work offset applied)."""
-    offset = np.array(profile.travel.work_offset())
+def _limits(profile: MachineProfile, offset=None) -> np.ndarray:
+    """(3, 2) travel limits in work coordinates (``offset``: machine mm of work zero;
+    default: the profile's default work offset)."""
+    offset = np.array(profile.travel.work_offset() if offset is None else offset, dtype=float)
     return np.array(profile.travel.limits()) - offset[:, None]
 
 
-def _candidates(ops: Ops, profile: MachineProfile) -> np.ndarray:
+def _candidates(ops: Ops, limits: np.ndarray) -> np.ndarray:
     """Moves that may leave the travel: an end outside, or an arc whose circle reaches out."""
-    limits = _limits(profile)
     kind = ops.kind
     out = np.zeros(len(kind), bool)
     for axis in range(3):
         out |= (ops.end[:, axis] < limits[axis, 0]) | (ops.end[:, axis] > limits[axis, 1])
     out &= kind <= ARC_CCW
     arcs = np.flatnonzero((kind == ARC_CW) | (kind == ARC_CCW))
-    out[arcs[_may_bulge_out(ops, arcs, profile)]] = True
+    out[arcs[_may_bulge_out(ops, arcs, limits)]] = True
     return np.flatnonzero(out)
 
 
-def _envelope(ops: Ops, profile: MachineProfile, lines: list[str], report: Report) -> None:
-    moves = _candidates(ops, profile)
+def _violations(ops: Ops, limits: np.ndarray):
+    """Per axis and direction past ``limits``: (axis name, sign, limit, rows, values), in
+    work coordinates, rows in program order."""
+    moves = _candidates(ops, limits)
     if not len(moves):
         return
     low, high = ops.end[moves].copy(), ops.end[moves].copy()
@@ -75,18 +78,39 @@ def _envelope(ops: Ops, profile: MachineProfile, lines: list[str], report: Repor
     arcs = np.flatnonzero((ops.kind[moves] == ARC_CW) | (ops.kind[moves] == ARC_CCW))
     if len(arcs):
         low[arcs], high[arcs] = _arc_extremes(ops, moves[arcs])
-    for axis, (lo, hi) in enumerate(_limits(profile).tolist()):
-        name = "XYZ"[axis]
+    for axis, (lo, hi) in enumerate(limits.tolist()):
         for sign, values, limit, beyond in (("+", high, hi, np.greater), ("-", low, lo, np.less)):
             hit = beyond(values[:, axis], limit + (1e-9 if sign == "+" else -1e-9))
-            out, vals = moves[hit], values[hit, axis]
-            rel = ">" if sign == "+" else "<"
-            for row, value in zip(out[: report.limit].tolist(), vals[: report.limit].tolist(), strict=True):
-                line = int(ops.line[row])
-                report.warning(line, _column(lines, line, name),
-                               f"{name}{sign} beyond travel ({value:.3f} {rel} {limit:g})",
-                               f"{name}{sign} beyond travel")
-            report.overflow("warning", f"{name}{sign} beyond travel", len(out) - report.limit)
+            if hit.any():
+                yield "XYZ"[axis], sign, limit, moves[hit], values[hit, axis]
+
+
+def _envelope(ops: Ops, profile: MachineProfile, lines: list[str], report: Report) -> None:
+    for name, sign, limit, out, vals in _violations(ops, _limits(profile)):
+        rel = ">" if sign == "+" else "<"
+        for row, value in zip(out[: report.limit].tolist(), vals[: report.limit].tolist(), strict=True):
+            line = int(ops.line[row])
+            report.warning(line, _column(lines, line, name),
+                           f"{name}{sign} beyond travel ({value:.3f} {rel} {limit:g})",
+                           f"{name}{sign} beyond travel")
+        report.overflow("warning", f"{name}{sign} beyond travel", len(out) - report.limit)
+
+
+def preflight(ops: Ops, profile: MachineProfile, lines: list[str], offset) -> list[Diagnostic]:
+    """Errors for moves that would leave the travel with the work zero at ``offset``
+    (machine mm, as the machine reports it): the first line per axis and direction,
+    by how much, in program order. Empty when the whole program fits."""
+    out = []
+    for name, sign, limit, rows, values in _violations(ops, _limits(profile, offset)):
+        row, value = int(rows[0]), float(values[0])
+        line = int(ops.line[row])
+        k = "XYZ".index(name)
+        message = (f"{name}{sign} leaves the travel by {abs(value - limit):.3f} mm with the work zero at "
+                   f"machine {name}{offset[k]:.3f} ({name} {value + offset[k]:.3f} "
+                   f"{'>' if sign == '+' else '<'} {limit + offset[k]:g}); "
+                   f"{len(rows)} move{'s' if len(rows) != 1 else ''} in all")
+        out.append(Diagnostic(line, _column(lines, line, name) if lines else 0, ERROR, message))
+    return sorted(out)
 
 
 def _feed_zero(ops: Ops, lines: list[str], report: Report) -> None:
@@ -98,7 +122,26 @@ def _feed_zero(ops: Ops, lines: list[str], report: Report) -> None:
     report.overflow("warning", message, len(rows) - report.limit)
 
 
+def max_spindle_rpm(profile: MachineProfile) -> float:
+    """The speed the spindle reaches at full duty: no-load rpm scaled by the voltage left."""
+    sp = profile.spindle
+    return sp.no_load_rpm * max(0.0, sp.supply_v - profile.axis.bridge_drop_v) / sp.supply_v
+
+
+def _spindle_speed(ops: Ops, profile: MachineProfile, lines: list[str], report: Report) -> None:
+    top = max_spindle_rpm(profile)
+    rows = np.flatnonzero((ops.kind == SPINDLE) & (ops.value > top + 0.5))
+    key = "S beyond the spindle's maximum"
+    for row in rows[: report.limit].tolist():
+        line = int(ops.line[row])
+        report.warning(line, _column(lines, line, "S"),
+                       f"S{ops.value[row]:g} is beyond the spindle's maximum ({top:.0f} rpm): it runs at "
+                       f"{top:.0f} rpm", key)
+    report.overflow("warning", key, len(rows) - report.limit)
+
+
 def run(ops: Ops, profile: MachineProfile, lines: list[str], report: Report) -> None:
-    """Add the envelope and feed warnings of ``ops`` to ``report``."""
+    """Add the envelope, feed and spindle speed warnings of ``ops`` to ``report``."""
     _envelope(ops, profile, lines, report)
     _feed_zero(ops, lines, report)
+    _spindle_speed(ops, profile, lines, report)

@@ -20,6 +20,7 @@ from .lexer import Word
 from .motion import do_motion
 from .ops import END, PAUSE, SPINDLE, OpBuffer
 from .state import State
+from .stops import stop_value
 from .usage import check_usage
 from .words import ALLOWED_LETTERS, G_CODES, M_CODES, REFUSED_G, REFUSED_LETTERS
 
@@ -96,9 +97,9 @@ def _spindle(state: State, mgroups, params, line_no, ops: OpBuffer, report: Repo
     ops.add(line_no, SPINDLE, state.pos, value=(state.speed or -1.0) if state.spindle_on else 0.0)
 
 
-def _pause(line_no, column, message, ops: OpBuffer, state: State, report: Report) -> None:
+def _pause(line_no, column, message, ops: OpBuffer, state: State, report: Report, stop: float = 0.0) -> None:
     report.warning(line_no, column, message, message)
-    ops.add(line_no, PAUSE, state.pos, message=f"line {line_no}: {message}")
+    ops.add(line_no, PAUSE, state.pos, value=stop, message=f"line {line_no}: {message}")
 
 
 def _tool_change(state, mgroups, params, line_no, ops, report) -> None:
@@ -114,9 +115,11 @@ def _tool_change(state, mgroups, params, line_no, ops, report) -> None:
     kind = M_CODES[int(code)][1]
     tooling.change(state, kind, params, word.column)
     if kind == "change":
-        tool = f" T{state.selected}" if "T" in params or state.selected else ""
+        named = "T" in params or state.selected
+        tool = f" T{state.selected}" if named else ""
         _pause(line_no, word.column,
-               f"tool change{tool} M6: this machine has one tool; the job pauses here", ops, state, report)
+               f"tool change{tool} M6: this machine has one tool; the job pauses here", ops, state, report,
+               stop_value(6, state.selected if named else None))
 
 
 def _stop(state, mgroups, line_no, ops, report) -> None:
@@ -130,7 +133,8 @@ def _stop(state, mgroups, line_no, ops, report) -> None:
         ops.add(line_no, END, state.pos)
     else:
         comp.flush(state, ops)
-        _pause(line_no, stop[1].column, f"M{code} program stop: the job pauses here", ops, state, report)
+        _pause(line_no, stop[1].column, f"M{code} program stop: the job pauses here", ops, state, report,
+               stop_value(code))
 
 
 def finish_program(state: State, ops: OpBuffer) -> None:

@@ -28,7 +28,7 @@ import numpy as np
 
 from .arcs import RADIUS_TOL, segments, spiral_refused, sweep
 from .numbers import rounded
-from .ops import ARC_CCW, ARC_CW, PAUSE, PLANE_AXES, XY, Ops
+from .ops import ARC_CCW, ARC_CW, PLANE_AXES, XY, Ops
 
 ROUNDING = 0.001
 
@@ -78,7 +78,7 @@ def _axes(ops: Ops, rows) -> np.ndarray:
 def plan(ops: Ops, tolerance: float) -> Plan:
     """How many device lines each row becomes (vectorised)."""
     kind = ops.kind
-    count = np.where(kind == PAUSE, 0, 1).astype(np.int64)
+    count = np.ones(len(kind), np.int64)  # a PAUSE row is one stop line (M00, M01, M06 T..)
     chords = np.zeros(len(ops), bool)
     arcs = np.flatnonzero((kind == ARC_CW) | (kind == ARC_CCW))
     if len(arcs):

@@ -85,7 +85,7 @@ class Program:
 
     @property
     def pauses(self) -> list[tuple[int, str]]:
-        """(device index to pause before, message) for M0, M1 and tool changes."""
+        """(device index of the stop line, message) for M0, M1 and tool changes."""
         return self._rendered()[2]
 
     @cached_property

@@ -1,10 +1,11 @@
 """Writing the device lines of a normaliser ``Plan``, vectorised (see normalize.py).
 
 Each interpreted row becomes ``plan.count`` device rows (arcs turned into chords
-become several G01 rows, pauses none). Per device row: a code, a target in whole
-thousandths of a millimetre, I J for arcs, and a value (feed, seconds or rpm). Which
-words a line needs follows from the previous row's target (what the device already
-knows) and the last feed sent; every distinct number is formatted once.
+become several G01 rows; a pause is its stop line, ``M00``/``M01``/``M06 T..``).
+Per device row: a code, a target in whole thousandths of a millimetre, I J for arcs,
+and a value (feed, seconds or rpm). Which words a line needs follows from the
+previous row's target (what the device already knows) and the last feed sent; every
+distinct number is formatted once.
 """
 
 from __future__ import annotations
@@ -14,12 +15,13 @@ import numpy as np
 from .arcs import chord_points
 from .numbers import fmt, milli, rounded
 from .ops import ARC_CCW, ARC_CW, DWELL, END, FEED, PAUSE, PLANE_AXES, RAPID, SPINDLE, Ops
+from .stops import device_line
 
-G00, G01, G02, G03, G04, M03, M02 = range(7)
+G00, G01, G02, G03, G04, M03, M02, M00 = range(8)
 _CODE_OF_KIND = np.zeros(8, np.int8)
 _KINDS = [RAPID, FEED, ARC_CW, ARC_CCW, DWELL, SPINDLE, END, PAUSE]
-_CODE_OF_KIND[_KINDS] = [G00, G01, G02, G03, G04, M03, M02, M02]  # PAUSE rows are never written
-_CODE_TEXT = np.array(["G00", "G01", "G02", "G03", "G04", "M03", "M02"], dtype=object)
+_CODE_OF_KIND[_KINDS] = [G00, G01, G02, G03, G04, M03, M02, M00]
+_CODE_TEXT = np.array(["G00", "G01", "G02", "G03", "G04", "M03", "M02", "M00"], dtype=object)
 ROUNDING = 0.001
 
 
@@ -116,6 +118,8 @@ def render(ops: Ops, count, chords, tolerance: float, default_rpm: float):
     line[off] = "M05"
     first = np.cumsum(count) - count
     pause_rows = np.flatnonzero(ops.kind == PAUSE)
+    stops = np.flatnonzero(code == M00)
+    line[stops] = [device_line(v) for v in ops.value[op[stops]].tolist()]
     pauses = list(zip(first[pause_rows].tolist(), ops.messages, strict=True))
     return line.tolist(), ops.line[op], pauses
 

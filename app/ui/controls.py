@@ -68,6 +68,12 @@ class MachineControls(QWidget):
         self.check_mode = QCheckBox("Check mode (dry run, no motion)")
         self.check_mode.toggled.connect(self.check_mode_toggled.emit)
         grid.addWidget(self.check_mode, 3, 0, 1, 2)
+        self.optional_stop = QCheckBox(self.tr("Optional stop (M01 holds the job)"))
+        self.optional_stop.setChecked(True)
+        grid.addWidget(self.optional_stop, 4, 0, 1, 2)
+        self.override_travel = QCheckBox(self.tr("Override travel check (check mode only)"))
+        self.override_travel.setToolTip(self.tr("run a program that leaves the travel as a dry run"))
+        grid.addWidget(self.override_travel, 5, 0, 1, 2)
         return box
 
     def _spindle_box(self) -> QGroupBox:
@@ -107,6 +113,7 @@ class MachineControls(QWidget):
             button.setEnabled(enable.get(key, idle))
         self.jog.setEnabled(idle)
         self.check_mode.setEnabled(idle)
+        self.override_travel.setEnabled(idle and self.check_mode.isChecked())
 
     def set_rpm(self, rpm: int) -> None:
         self.rpm_label.setText(f"measured {rpm} rpm")

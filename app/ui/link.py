@@ -13,12 +13,13 @@ import threading
 
 from PySide6.QtCore import QObject, QTimer
 
-from app.comm.transport import SimTransport, is_sim, open_transport, sim_options, start_simulator
+from app.comm.transport import is_sim, open_transport
 from app.comm.worker import SerialController, SerialWorker
 
 
 class SimOpener:
-    """``open_transport`` for the worker, reusing one running simulator for ``sim://``."""
+    """``open_transport`` for the worker, reusing one running simulator for ``sim://``
+    (keyed by the URL; the port's ``simulator`` is set before it opens)."""
 
     def __init__(self, profile=None):
         self.profile = profile
@@ -27,21 +28,19 @@ class SimOpener:
         self._lock = threading.Lock()
 
     def __call__(self, url: str):
-        if not is_sim(url):
+        if not is_sim(url or "sim://"):
             return open_transport(url)
-        options = sim_options(url)
-        key = (options.get("speed", "1"), options.get("sd"))
         with self._lock:
-            if self.sim is None or key != self._key:
-                self._replace(key, options)
-            port = self.sim.host_port
-            if not port.is_open:
-                port.open()
-            return SimTransport(self.sim, owns_sim=False)
-
-    def _replace(self, key, options) -> None:
-        self.stop()
-        self.sim, self._key = start_simulator(options, self.profile), key
+            port = open_transport(url, do_not_open=True)
+            port.profile = self.profile
+            if self.sim is not None and url == self._key:
+                port.simulator = self.sim
+            port.open()
+            if port.simulator is not self.sim:
+                self.stop()
+                self.sim, self._key = port.simulator, url
+            port.owns_simulator = False  # the opener keeps it across connections
+            return port
 
     def stop(self) -> None:
         sim, self.sim = self.sim, None

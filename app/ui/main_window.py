@@ -60,12 +60,20 @@ class MainWindow(QMainWindow):
         self.tools = self.loader.tools = tools.tools
         self._build_widgets(port_lister)
         self._build_docks()
+        from app.ui.cover_banner import CoverBanner
         from app.ui.menus import build_menus
         from app.ui.operator_actions import OperatorActions
+        from app.ui.preflight import Preflight
+        from app.ui.program_stops import ProgramStops
         from app.ui.session_binder import SessionBinder
+        from app.ui.start_here import StartHere
 
         self.operator = OperatorActions(self)
         self.binder = SessionBinder(self)
+        self.program_stops = ProgramStops(self)
+        self.cover_banner = CoverBanner(self)
+        self.preflight = Preflight(self)
+        self.start_here = StartHere(self)
         self.actions_by_name = build_menus(self)
         if restore:
             self.restore_state()

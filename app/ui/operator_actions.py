@@ -69,10 +69,16 @@ class OperatorActions(QObject):
         self.link.call("home", mode)
 
     def start(self) -> None:
+        if self.can_start():
+            self.w.binder.begin_job(self.w.loaded)
+            self.link.call("start_job", self.w.loaded.program)
+
+    def can_start(self) -> bool:
+        """Whether the open program may start now; if not, the operator is told why."""
         loaded = self.w.loaded
         if loaded is None:
             self.w.notifier.warning("No program", "Open a G-code file first (File ▸ Open…).")
-            return
+            return False
         errors = list(loaded.program.errors)
         if errors:
             self.w.notifier.error(
@@ -80,13 +86,15 @@ class OperatorActions(QObject):
                 f"{loaded.path.name} has {len(errors)} errors (first: line {errors[0].line}: "
                 f"{errors[0].message}). Fix them before running.",
             )
-            return
+            return False
+        if self.w.preflight.blocks_start():
+            self.w.notifier.error(self.tr("Program leaves the travel"), self.w.preflight.message())
+            return False
         status = self.w.binder.status
         if status is not None and not status.homed and not self.w.controls.check_mode.isChecked():
             self.w.notifier.warning("Not homed", "Home the machine before starting a job (Machine ▸ Home).")
-            return
-        self.w.binder.begin_job(loaded)
-        self.link.call("start_job", loaded.program)
+            return False
+        return True
 
     def pause(self) -> None:
         self.link.call("pause")
@@ -201,6 +209,7 @@ class OperatorActions(QObject):
     def apply_settings(self, profile) -> None:
         self.w.profile = profile
         self.link.set_link_timing(profile.link)
+        self.w.preflight.run()
         self.w.loader.tolerance = profile.motion.arc_tolerance_mm
         try:
             save_settings(self.w.config_dir / FILE_NAME, profile)

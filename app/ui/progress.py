@@ -1,5 +1,7 @@
 """Job progress (no Qt): percent by executed line, elapsed time, and the remaining
-time from the program's estimate corrected by the rate measured so far."""
+time from the program's estimate corrected by the rate measured so far. Time spent
+held (a program stop waiting for the operator, a feed hold) is not motion: it counts
+in the elapsed time but not in the measured rate (``hold(now)``/``release(now)``)."""
 
 from __future__ import annotations
 
@@ -37,13 +39,29 @@ class ProgressTracker:
         self.started = started
         self.first = first  # lines already done when this run started (resume)
         self.done = first
+        self.held_s = 0.0
+        self._held_since: float | None = None
+
+    def hold(self, now: float) -> None:
+        if self._held_since is None:
+            self._held_since = now
+
+    def release(self, now: float) -> None:
+        if self._held_since is not None:
+            self.held_s += max(now - self._held_since, 0.0)
+            self._held_since = None
+
+    def moving(self, now: float) -> float:
+        """Seconds of the run not spent held."""
+        held = self.held_s + (max(now - self._held_since, 0.0) if self._held_since is not None else 0.0)
+        return max(now - self.started - held, 0.0)
 
     def update(self, done_lines: int) -> None:
         self.done = max(self.done, min(done_lines, self.total))
 
     def view(self, now: float) -> ProgressView:
         elapsed = max(now - self.started, 0.0)
-        return ProgressView(self.done, self.total, elapsed, self._remaining(elapsed))
+        return ProgressView(self.done, self.total, elapsed, self._remaining(self.moving(now)))
 
     def _remaining(self, elapsed: float) -> float | None:
         if self.total == 0 or self.done >= self.total:

@@ -192,19 +192,20 @@ class SessionBinder(QObject):
             self._progress_dirty = True
         self.w.console.set_resends(event.resends, event.resend_rate, event.resend_rate > 0.1)
 
-    def begin_job(self, loaded) -> None:
-        """Called when the operator starts ``loaded``: fresh progress (None: an MDI line)."""
+    def begin_job(self, loaded, first: int = 0) -> None:
+        """Called when the operator starts ``loaded``: fresh progress (None: an MDI line);
+        ``first``: the device line a start-from-line run begins at."""
         self._drain_progress()
         self.job = loaded
-        self.job_done = -1
+        self.job_done = first - 1
         self.last_job_event = None
         if loaded is None:
             self.tracker = None
             return
         program = loaded.program
         count = device_count(program)
-        self.tracker = ProgressTracker(line_times(program.toolpath, count), count, time.monotonic())
-        self.w.preview.set_done(-1)
+        self.tracker = ProgressTracker(line_times(program.toolpath, count), count, time.monotonic(), first)
+        self.w.preview.set_done(first - 1)
         self._progress_dirty = True
 
     def on_job_finished(self, event) -> None:
@@ -225,7 +226,17 @@ class SessionBinder(QObject):
         if event.completed:
             self.w.status.showMessage("Job finished", 15000)
         else:
-            self.w.notifier.warning("Job ended", f"The job did not complete: {event.reason}")
+            self.w.notifier.warning("Job ended", f"The job did not complete: {event.reason}"
+                                    + self._where_it_stopped(event))
+
+    def _where_it_stopped(self, event) -> str:
+        """Which source line the job stopped at and how much ran (the log keeps the rest)."""
+        line_map = getattr(getattr(self.job, "program", None), "line_map", None)
+        nxt = event.done + 1
+        if line_map is None or not 0 <= nxt < len(line_map):
+            return ""
+        return self.tr(" (at source line %1; %2 device lines ran, see the console)").replace(
+            "%1", str(int(line_map[nxt]))).replace("%2", str(nxt))
 
     def on_command(self, result) -> None:
         if result.verb == "SD" and result.args[:1] == ("LIST",) and result.ok:
@@ -268,5 +279,7 @@ class SessionBinder(QObject):
         busy = self.state in BUSY
         paused = self.state == "PAUSED" or (self.status is not None and self.status.state == "HOLD")
         has_program = self.w.loaded is not None
-        self.w.controls.set_state(self.connected, busy, paused, has_program)
+        preflight = getattr(self.w, "preflight", None)
+        startable = has_program and not (preflight is not None and preflight.blocks_start())
+        self.w.controls.set_state(self.connected, busy, paused, startable)
         self.w.sd_panel.set_enabled(self.connected, has_program, busy)

@@ -60,6 +60,9 @@ class MotionController(ControllerOps):
         self._cover = False
         self.pressed = [False, False, False]
         self.state = None
+        self.spin_up: tuple[float, int] | None = None  # (rpm, since ms): RESUME waits for the spindle
+        self.cover_rpm = 0.0  # the job's spindle speed the cover stopped
+        self.waiting = None  # the program stop the job waits at
         self.reset()
 
     # -- construction -------------------------------------------------------------
@@ -126,9 +129,11 @@ class MotionController(ControllerOps):
         return max(0, self.capacity - len(self.job))
 
     def idle(self) -> bool:
-        """State IDLE or ALARM, nothing queued or stopping, and every axis at rest: the
-        machine will not change until a command (the MCU may stop ticking it)."""
-        return self.state in ("IDLE", "ALARM") and not self.stopping and self._restful()
+        """State IDLE or ALARM, nothing queued or stopping, every axis at rest and the
+        spindle at its speed: the machine will not change until a command (the MCU may
+        stop ticking it)."""
+        return (self.state in ("IDLE", "ALARM") and not self.stopping and self._restful()
+                and self.spindle.settled(self.now_ms))
 
     def events(self) -> list:
         out = self._events[:]
@@ -173,7 +178,7 @@ class MotionController(ControllerOps):
 
     def _restful(self) -> bool:
         """At rest and nothing will change: the state is a fixed point of the loop."""
-        if self.state not in ("IDLE", "HOLD", "ALARM") or self.stopping:
+        if self.state not in ("IDLE", "HOLD", "ALARM") or self.stopping or self.spin_up is not None:
             return False
         if self.state != "ALARM" and not self.source_quiet():
             return False
@@ -195,6 +200,8 @@ class MotionController(ControllerOps):
         if self.stopping:
             if self.active.at_rest():
                 self._finish_stop()
+        elif self.spin_up is not None:
+            self.spun_up()
         elif self.state == "HOLD":
             if self.job.just_held():
                 self._events.append(Held())
@@ -215,7 +222,7 @@ class MotionController(ControllerOps):
         self._update_watch()
 
     def _update_watch(self) -> None:
-        self.watch = self.stopping or self.state in ("HOMING", "JOG") or (
+        self.watch = self.stopping or self.state in ("HOMING", "JOG") or self.spin_up is not None or (
             self.state == "HOLD" and not self.job.held_flag)
         self.active = self.job if self.state in ("RUN", "HOLD") else self.planner
         self.source_step = self.active.step
@@ -248,6 +255,8 @@ class MotionController(ControllerOps):
         self.homed = False
         self.stopping = False
         self.homing = None
+        self.waiting = None
+        self.spin_up, self.cover_rpm = None, 0.0
         self._spindle_off()
         self._set_state("ALARM")
         self._hold_here(self.measured_mm)

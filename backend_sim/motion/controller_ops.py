@@ -11,7 +11,7 @@ import math
 
 from backend_sim.motion import servo
 from backend_sim.motion.dialect import Move, soft_limit_violation
-from backend_sim.motion.events import Alarm, Finished, Homed, MotionError, StateChanged, Stopped
+from backend_sim.motion.events import Alarm, Finished, Homed, MotionError, ProgramStop, StateChanged, Stopped
 from backend_sim.motion.homing import Homing
 
 _S = {name: n for n, name in enumerate(servo.STATE)}
@@ -49,13 +49,37 @@ class ControllerOps:
         elif self.state == "JOG":
             self.stop()
 
-    def resume(self) -> None:
-        if self.state != "HOLD":
+    def resume(self, release_stop: bool = True) -> None:
+        """Leave a feed hold, and (``release_stop``) go on past a program stop the job waits at."""
+        release_stop = release_stop and self.waiting is not None
+        if self.state != "HOLD" and not release_stop:
             return
         if self._cover:
             raise MotionError("COVER_OPEN", "close the cover to resume")
+        if release_stop:
+            self.waiting = None
+        if self.state != "HOLD":
+            return
+        if self.cover_rpm > 0:  # the cover stopped the spindle: back to speed first
+            rpm, self.cover_rpm = self.cover_rpm, 0.0
+            self.spindle_target = rpm
+            self.spindle.command(self.now_ms, rpm)
+            self.spin_up = (rpm, self.now_ms)
+            self.wake()
+            self._update_watch()
+            return
         self.job.resume()
         self._set_state("RUN")
+
+    def spun_up(self) -> bool:
+        """While ``resume`` waits for the spindle: True once at speed (the job goes on)."""
+        rpm, since = self.spin_up
+        if not (self.spindle.ready(self.now_ms, rpm) or self.now_ms - since > _SPINDLE_MAX_WAIT_MS):
+            return False
+        self.spin_up = None
+        self.job.resume()
+        self._set_state("RUN")
+        return True
 
     def stop(self) -> None:
         """Decelerate on the path, then flush the queue and switch the spindle off (``Stopped``)."""
@@ -72,6 +96,8 @@ class ControllerOps:
 
     def _finish_stop(self) -> None:
         self.stopping = False
+        self.waiting = None
+        self.spin_up, self.cover_rpm = None, 0.0
         self.job.flush()
         self.planner.flush()
         self.job.resume()
@@ -196,6 +222,8 @@ class ControllerOps:
         old, self.state = self.state, "IDLE"
         self.homed, self.stopping, self.homing, self.servo_on = False, False, None, True
         self.done_seq = -1
+        self.waiting = None
+        self.spin_up, self.cover_rpm = None, 0.0
         self.brk = 0
         self.spindle.reset(self.now_ms)
         self.spindle_target = 0.0
@@ -229,10 +257,15 @@ class ControllerOps:
         was, self._cover = self._cover, bool(value)
         if self._cover and not was:
             self._events.append(Alarm("COVER_OPEN", "cover opened"))
+            if self.state in ("RUN", "HOLD"):  # a job: its spindle comes back on RESUME
+                self.cover_rpm = self.spin_up[0] if self.spin_up else self.spindle_target
+                self.spin_up = None
+            self._spindle_off()
             if self.state == "RUN":
                 self.feed_hold()
             elif self.state in ("JOG", "HOMING"):
                 self.stop()
+            self._update_watch()
 
     # -- services for the planner and the simple interpolator ---------------------------
     def finished(self, move: Move) -> None:
@@ -246,6 +279,13 @@ class ControllerOps:
         if rpm <= 0:
             return True
         return self.spindle.ready(self.now_ms, rpm) or ms > _SPINDLE_MAX_WAIT_MS
+
+    def program_wait(self, move: Move, ms: int) -> bool:
+        """A program stop's wait (``stop_of``): reported once, done when ``resume`` releases it."""
+        if ms == 1:
+            self.waiting = move
+            self._events.append(ProgramStop(move.stop_of, move.source))
+        return self.waiting is None
 
     def end_of_program(self, ms: int) -> bool:
         if ms == 1:

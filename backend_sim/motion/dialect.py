@@ -10,6 +10,8 @@ absolute work millimetres, words separated by spaces or not):
     G04 P<seconds>              dwell
     M03|M3 S<rpm>   M05|M5      spindle on / off
     M02|M2  M30                 end of program
+    M00|M0  M01|M1              program stop, optional stop (the MCU holds there)
+    M06|M6 [T<n>]               tool change (the MCU holds there, spindle off, Z up)
 
 Omitted axes keep their last value; the feed and the spindle speed are modal. ``machine = work + offset``.
 ``parser.position`` is the machine position at the end of the last parsed move; the MCU
@@ -28,10 +30,11 @@ Vec3 = tuple[float, float, float]
 _WORD = re.compile(r"\s*([A-Z])\s*([-+]?(?:\d+\.?\d*|\.\d+))")
 _ALLOWED = {
     "G0": "XYZF", "G1": "XYZF", "G2": "XYZIJF", "G3": "XYZIJF", "G4": "P",
-    "M3": "S", "M5": "", "M2": "", "M30": "",
+    "M3": "S", "M5": "", "M2": "", "M30": "", "M0": "", "M1": "", "M6": "T",
 }
 _KINDS = {"G0": "rapid", "G1": "line", "G2": "arc", "G3": "arc", "G4": "dwell",
-          "M3": "spindle", "M5": "spindle", "M2": "end", "M30": "end"}
+          "M3": "spindle", "M5": "spindle", "M2": "end", "M30": "end",
+          "M0": "stop", "M1": "stop", "M6": "stop"}
 
 
 class DialectError(ValueError):
@@ -56,6 +59,8 @@ class Move:
     seconds: float = 0.0
     rpm: float = 0.0
     source: str = ""
+    tool: int = -1  # M06 T<n>; -1: not named
+    stop_of: int = -1  # a program stop's wait: the seq of its stop line
 
     @property
     def moves_axes(self) -> bool:
@@ -104,6 +109,7 @@ class DialectParser:
         self.position = tuple(float(v) for v in position)
         self.feed = 0.0
         self.rpm = 0.0  # modal spindle speed
+        self.spindle = 0.0  # the speed in force at the end of the last line (0: off)
 
     def parse(self, seq: int, line: str) -> Move:
         """One line -> Move; updates position and modal feed only if the line is valid."""
@@ -114,16 +120,26 @@ class DialectParser:
         if kind == "spindle":
             return self._spindle(seq, command, words, line)
         if kind == "end":
+            self.spindle = 0.0
             return Move(seq, "end", self.position, source=line)
+        if kind == "stop":
+            return self._stop(seq, command, words, line)
         return self._motion(seq, command, kind, words, line)
 
     def _spindle(self, seq: int, command: str, words: dict[str, float], line: str) -> Move:
         if command == "M5":
+            self.spindle = 0.0
             return Move(seq, "spindle", self.position, rpm=0.0, source=line)
         if "S" not in words and self.rpm <= 0:
             raise DialectError("BAD_LINE", "M03 needs S<rpm> (no speed set yet)")
-        self.rpm = _nonneg(words, "S", self.rpm)
+        self.rpm = self.spindle = _nonneg(words, "S", self.rpm)
         return Move(seq, "spindle", self.position, rpm=self.rpm, source=line)
+
+    def _stop(self, seq: int, command: str, words: dict[str, float], line: str) -> Move:
+        tool = words.get("T", -1.0)
+        if command == "M6" and "T" in words and not (tool >= 0 and tool == int(tool)):
+            raise DialectError("BAD_VALUE", f"tool T{tool:g} must be a whole number >= 0")
+        return Move(seq, "stop", self.position, source=line, tool=int(tool))
 
     def _dwell(self, seq: int, words: dict[str, float], line: str) -> Move:
         if "P" not in words:

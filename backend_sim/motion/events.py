@@ -43,6 +43,14 @@ class Held:
 
 
 @dataclass(frozen=True)
+class ProgramStop:
+    """Execution reached a program stop (M00/M01/M06) and waits for ``release_stop``."""
+
+    seq: int
+    line: str
+
+
+@dataclass(frozen=True)
 class Stopped:
     """A stop has finished: at rest, queue flushed, spindle off."""
 

@@ -220,4 +220,6 @@ def barrier_done(ctx, move: Move, ms: int) -> bool:
         return ctx.spindle_command(move.rpm, ms)
     if move.kind == "end":
         return ctx.end_of_program(ms)
+    if move.kind == "wait":
+        return ctx.program_wait(move, ms)
     return True

@@ -2,8 +2,10 @@
 
 Contract: evaluated lazily and exactly from the time of the last command, so it costs
 nothing per tick. ``command(now_ms, rpm)`` sets the target (capped by what the supply
-minus the L298N drop can reach); ``measured_rpm(now_ms)`` is the pulse count of the last
-complete ``GATE_MS`` gate scaled to rpm, as the MCU's timer capture would report it.
+minus the L298N drop can reach; OFF brakes, so the spindle stops within half a
+second); ``measured_rpm(now_ms)`` is the pulse count of the last complete ``GATE_MS``
+gate scaled to rpm, as the MCU's timer capture would report it. ``settled(now_ms)``
+says whether the speed still changes (after OFF it decays to 0).
 """
 
 from __future__ import annotations
@@ -12,6 +14,7 @@ import math
 
 GATE_MS = 100
 TAU_S = 0.25  # mechanical time constant of the unloaded spindle
+TAU_BRAKE_S = 0.1  # OFF brakes the motor (L298N fast stop: both bridge legs low)
 
 
 class SpindleModel:
@@ -23,6 +26,7 @@ class SpindleModel:
 
     def reset(self, now_ms: int) -> None:
         self.t_ref, self.w_ref, self.revs_ref, self.target = now_ms, 0.0, 0.0, 0.0
+        self.tau = TAU_S
 
     def effective(self, rpm: float) -> float:
         """The speed a command of ``rpm`` settles at."""
@@ -31,14 +35,15 @@ class SpindleModel:
     def command(self, now_ms: int, rpm: float) -> None:
         self.w_ref, self.revs_ref = self.true_rpm(now_ms), self._revs(now_ms)
         self.t_ref, self.target = now_ms, self.effective(rpm)
+        self.tau = TAU_BRAKE_S if self.target == 0.0 else TAU_S
 
     def true_rpm(self, now_ms: int) -> float:
         dt = (now_ms - self.t_ref) / 1000.0
-        return self.target + (self.w_ref - self.target) * math.exp(-dt / TAU_S)
+        return self.target + (self.w_ref - self.target) * math.exp(-dt / self.tau)
 
     def _revs(self, now_ms: int) -> float:
         dt = (now_ms - self.t_ref) / 1000.0
-        decay = TAU_S * (1.0 - math.exp(-dt / TAU_S))
+        decay = self.tau * (1.0 - math.exp(-dt / self.tau))
         return self.revs_ref + (self.target * dt + (self.w_ref - self.target) * decay) / 60.0
 
     def _pulses(self, now_ms: int) -> int:
@@ -58,6 +63,13 @@ class SpindleModel:
     def _before(self, t_ms: int) -> float:
         """Revolutions at a time before the last command (previous segment, approximated)."""
         return self.revs_ref - self.w_ref * (self.t_ref - t_ms) / 60000.0
+
+    def settled(self, now_ms: int) -> bool:
+        """At its target speed (within 0.5 rpm), and reading 0 once stopped: until then the
+        MCU keeps the loop and its status reports running, so the reading decays to 0."""
+        if abs(self.true_rpm(now_ms) - self.target) >= 0.5:
+            return False
+        return self.target > 0 or self.measured_rpm(now_ms) == 0.0
 
     def ready(self, now_ms: int, rpm: float) -> bool:
         """Measured speed within 5 % (or 30 rpm) of the speed ``rpm`` settles at."""

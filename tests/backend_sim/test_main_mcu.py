@@ -103,7 +103,7 @@ def test_sd_run_streams_the_file_and_carries_on_without_host(sim, host):
     host.wait(lambda f: isinstance(f, Alarm) and f.code == "HOST_LOST", timeout=5)
     assert sim.run_until(lambda: sim.main.sd_job is None, 60)
     assert [s for s, _ in sim.exec_log] == list(range(len(PROGRAM)))
-    assert sim.cnc.mc.state == "IDLE"
+    assert sim.run_until(lambda: sim.cnc.mc.state == "IDLE", 10)  # after the job: Z lifted
     host.heartbeat = True
     host.command("PING")
     host.wait(lambda f: isinstance(f, Log) and "done" in f.text, start=0)

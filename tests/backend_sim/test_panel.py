@@ -35,7 +35,7 @@ def test_status_page_shows_state_position_gains_and_link(sim):
     text = sim.panel.oled_text()
     assert text[0].startswith("IDLE")
     assert text[1].split() == ["X", "0.000"] and text[3].split() == ["Z", "-20.000"]
-    assert text[4] == "P8 I20 D0.05"
+    assert text[4] == "S0 P8 I20 D0.05"
     assert text[5] == "HOST -- UART OK"
 
 
@@ -117,3 +117,30 @@ def test_led_heartbeat_without_alert(sim):
         states.append((sim.panel.led, sim.panel.buzzer))
     assert {led for led, _ in states} == {True, False}
     assert not any(buzz for _, buzz in states)
+
+
+def test_sd_run_holds_at_program_stops_ok_continues_exit_stops(sim, tmp_path):
+    stops = ["M03 S3000", "G00 Z5", "G00 X5 Y5", "M00", "G01 X9 F600", "M06 T2", "G01 X5", "M05"]
+    (tmp_path / "sd" / "stops.nc").write_text("\n".join(stops) + "\n")
+    press(sim, "OK", "DOWN", "DOWN", "DOWN", "DOWN", "OK")
+    assert sim.run_until(lambda: sim.panel.oled_text()[7] == "HOME ok", 60)
+    press(sim, "OK", "OK", "OK")  # menu, Run SD file, the only file
+    assert sim.run_until(lambda: sim.panel.oled_text()[0] == "PROGRAM STOP", 30)
+    text = sim.panel.oled_text()
+    assert text[1] == "line 3: M00" and text[4:6] == ["OK   continue", "EXIT stop job"]
+    assert [seq for seq, _ in sim.exec_log] == [0, 1, 2]
+    press(sim, "OK")
+    assert sim.run_until(lambda: sim.panel.oled_text()[0] == "TOOL CHANGE", 30)
+    assert sim.panel.oled_text()[1:3] == ["line 5: M06 T2", "fit tool T2"]
+    assert sim.cnc.status().rpm < 3000 and "P" not in sim.cnc.flags()
+    press(sim, "EXIT")
+    assert sim.run_until(lambda: sim.main.sd_job is None, 10)
+    assert [seq for seq, _ in sim.exec_log] == [0, 1, 2, 3, 4]
+
+
+def test_oled_shows_the_measured_spindle_speed(sim, host):
+    cid = host.command("SPINDLE 3000")
+    host.wait(lambda f: f.KIND == "O" and f.id == cid)
+    sim.run_for(1.5)  # the main MCU's UART ping brings the CNC MCU's reading
+    rpm = int(sim.panel.oled_text()[4].split()[0][1:])
+    assert 2500 < rpm <= 3750

@@ -24,6 +24,7 @@ def machine(tmp_path_factory):
     port = serial.Serial(match.group(1), baudrate=115200, timeout=0.01)
     host = SerialHost(port, SPEED)
     host.ok("HOME", timeout=60)
+    host.ok("SET AFTERJOB 0")  # jobs back to back: no Z lift between them
     yield host, tmp / "sd"
     port.close()
     code, rest = stop_sim(proc)

@@ -3,7 +3,6 @@
 import pytest
 
 from app.comm import frame as fr
-from app.comm.clock import ScaledClock
 from app.comm.commands import CommandQueue
 from app.comm.heartbeat import LinkMonitor, LinkState
 from app.comm.listener import SessionState
@@ -36,16 +35,6 @@ def test_restart_stream_maps_back_to_program_lines():
 def test_sd_crc32_is_over_lines_joined_with_newline_plus_final_newline():
     assert sd_crc32(["G00 X1", "G01 X2 F100"]) == 0x9E9E5E27  # zlib.crc32(b"G00 X1\nG01 X2 F100\n")
     assert sd_crc32(["a"]) == 0xDDEAA107  # zlib.crc32(b"a\n")
-
-
-def test_scaled_clock():
-    wall = [10.0]
-    clock = ScaledClock(20.0, source=lambda: wall[0])
-    start = clock()
-    wall[0] += 0.5
-    assert clock() - start == pytest.approx(10.0)
-    with pytest.raises(ValueError):
-        ScaledClock(0)
 
 
 def test_urgent_command_goes_first_and_answers_match_ids():

@@ -6,7 +6,8 @@ import serial
 from app.comm import deframer as dfr
 from app.comm import frame as fr
 from app.comm.console import main, split_commands
-from app.comm.transport import SIM_URL, SimTransport, list_ports, open_transport, sim_options
+from app.comm.transport import list_ports, open_transport
+from backend_sim.protocol_sim import url_options
 
 SAMPLE = "resources/samples/star_passes.ngc"
 
@@ -21,22 +22,48 @@ def test_loop_url_goes_through_pyserial():
         port.close()
 
 
-def test_simulator_is_listed_first():
-    ports = list_ports()
-    assert ports[0].url == SIM_URL and "Simulated" in ports[0].description
+def test_port_list_is_what_the_os_reports():
+    assert all(not port.url.startswith("sim://") for port in list_ports())
 
 
 def test_sim_url_options():
-    assert sim_options("sim://?speed=20&sd=/tmp/x") == {"speed": "20", "sd": "/tmp/x"}
-    assert sim_options(None) == {}
+    assert url_options("sim://?speed=20&sd=/tmp/x") == {"speed": "20", "sd": "/tmp/x"}
+    assert url_options(None) == {}
     with pytest.raises(serial.SerialException, match="speed"):
         open_transport("sim://?speed=fast")
+    with pytest.raises(serial.SerialException, match="nosuch"):
+        open_transport("nosuch://x")
+
+
+def test_app_comm_does_not_import_the_simulator():
+    import ast
+    from pathlib import Path
+
+    for path in Path("app/comm").glob("*.py"):
+        for node in ast.walk(ast.parse(path.read_text())):
+            names = [a.name for a in getattr(node, "names", [])] + [getattr(node, "module", None) or ""]
+            if isinstance(node, ast.Import | ast.ImportFrom):
+                assert not any(n.startswith("backend_sim") for n in names), path
+
+
+def test_any_pyserial_program_opens_sim_urls(tmp_path):
+    import backend_sim.protocol_sim
+
+    serial.protocol_handler_packages.append("backend_sim")
+    try:
+        port = serial.serial_for_url(f"sim://?speed=5&sd={tmp_path}", timeout=0.5)
+        assert isinstance(port, backend_sim.protocol_sim.Serial) and port.sim.clock.speed == 5
+        port.write(fr.encode(fr.Command(1, "PING")))
+        assert port.readline().startswith(b"S ")
+        port.close()
+    finally:
+        serial.protocol_handler_packages.remove("backend_sim")
+    assert not port.sim.running
 
 
 def test_sim_transport_answers_a_ping(tmp_path):
     port = open_transport(f"sim://?speed=50&sd={tmp_path}")
     try:
-        assert isinstance(port, SimTransport)
         port.write(fr.encode(fr.Command(1, "PING")))
         deframer, got = dfr.Deframer(), []
         while not any(isinstance(f, fr.Status) for f in got):
@@ -78,3 +105,33 @@ def test_console_exits_non_zero_with_the_reason(tmp_path, capsys):
     captured = capsys.readouterr()
     assert rc in (1, 2), captured
     assert "error:" in captured.err
+
+
+STOPS = "G21 G90\nM3 S3000\nG0 Z5\nG0 X10 Y10\nM0\nG1 X20 F600\nT2 M6\nG1 X30\nM5\nM2\n"
+
+
+def test_console_answers_program_stops(tmp_path, capsys, monkeypatch):
+    job = tmp_path / "stops.ngc"
+    job.write_text(STOPS)
+    url = f"sim://?speed=500&sd={tmp_path}"
+    assert main([url, "-q", "--at-stops", "continue", "run", str(job)]) == 0
+    out = capsys.readouterr().out
+    assert "program stop at device line 3: M00" in out and "program stop at device line 5: M06 T2" in out
+    assert "job completed: 9 lines" in out
+    answers = iter(["", "stop"])
+    monkeypatch.setattr("builtins.input", lambda prompt="": next(answers))
+    assert main([url, "-q", "run", str(job)]) == 1
+    captured = capsys.readouterr()
+    assert "program stop at device line 5: M06 T2" in captured.out and "error: job failed" in captured.err
+
+
+def test_console_runs_from_a_line(tmp_path, capsys):
+    job = tmp_path / "stops.ngc"
+    job.write_text(STOPS)
+    url = f"sim://?speed=500&sd={tmp_path}"
+    args = ["-q", "--at-stops", "continue", "--from", "8", "check", "on", ",", "run", str(job)]
+    assert main([url, *args]) == 0
+    out = capsys.readouterr().out
+    restoring = "M03 S3000; G00 Z5.000; G00 X20.000 Y10.000 F600"
+    assert f"starting at line 8 (device line 6); restoring: {restoring}" in out
+    assert "job completed: 9 lines" in out

@@ -200,3 +200,22 @@ def test_circle_length():
 def test_refused_line_gives_no_warning():
     program = load_text("M4 G81 X1")
     assert len(program.errors) == 1 and not program.warnings
+
+
+def test_preflight_with_the_real_work_offset_names_line_axis_direction_and_amount():
+    from app.gcode.checks import preflight
+
+    program = load_text("G21 G90\nG0 Z5\nG0 X0 Y0\nG1 Z-1 F600\nG1 X120\nG1 Y20\nG2 X120 Y40 I0 J10\n")
+    assert preflight(program.ops, program.profile, program.source_lines, (0.0, 0.0, 20.0)) == []
+    (error,) = preflight(program.ops, program.profile, program.source_lines, (50.0, 0.0, 20.0))
+    assert (error.line, error.column, error.severity) == (5, 4, "error")
+    assert error.message.startswith("X+ leaves the travel by 20.000 mm with the work zero at machine X50.000")
+    low = preflight(program.ops, program.profile, program.source_lines, (0.0, 0.0, 0.5))
+    assert [(d.line, d.message[:2]) for d in low] == [(4, "Z-")] and "by 0.500 mm" in low[0].message
+
+
+def test_spindle_speed_beyond_the_motor_warns_with_the_maximum():
+    program = load_text("M3 S9000\nG0 X1\nM3 S3000\n")
+    (warning,) = [d for d in program.warnings if "spindle" in d.message]
+    assert (warning.line, warning.column) == (1, 4)
+    assert "S9000" in warning.message and "3750 rpm" in warning.message

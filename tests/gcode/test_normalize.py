@@ -102,11 +102,14 @@ def test_multi_turn_arc_becomes_chords():
     assert len(lines) > 20 and all(line.startswith("G0") for line in lines)
 
 
-def test_pauses_are_listed_not_sent():
-    program = load_text("G0 X1\nT2 M6\nG0 X2\nM0\nG0 X3")
-    assert program.device_lines == ["G00 X1 Y0 Z0", "G00 X2", "G00 X3"]
-    assert [i for i, _ in program.pauses] == [1, 2]
+def test_pauses_are_stop_lines_the_machine_holds_at():
+    program = load_text("G0 X1\nT2 M6\nG0 X2\nM0\nG0 X3\nM1\nM6\nM60")
+    # a bare M6 changes to the selected tool (LinuxCNC): T2 again
+    assert program.device_lines == ["G00 X1 Y0 Z0", "M06 T2", "G00 X2", "M00", "G00 X3", "M01",
+                                    "M06 T2", "M00"]
+    assert [i for i, _ in program.pauses] == [1, 3, 5, 6, 7]
     assert "T2" in program.pauses[0][1]
+    assert list(program.line_map) == [1, 2, 3, 4, 5, 6, 7, 8]
 
 
 def test_every_line_is_dialect_and_short():

@@ -35,6 +35,17 @@ def test_progress_remaining_is_corrected_by_the_measured_rate():
     assert tracker.view(now=100.0).remaining == 0.0
 
 
+def test_time_held_at_a_stop_is_not_motion():
+    cumulative = np.cumsum(np.full(100, 2.0))  # 2 s per line, 200 s in all
+    tracker = ProgressTracker(cumulative, 100, started=0.0)
+    tracker.update(50)
+    tracker.hold(30.0)  # a program stop: the operator changes the tool for 600 s
+    assert tracker.view(now=330.0).remaining == pytest.approx(30.0)  # 30 moving s did 100 estimated
+    tracker.release(630.0)
+    view = tracker.view(now=650.0)
+    assert view.elapsed == 650.0 and view.remaining == pytest.approx(50.0)  # 50 moving s for 100
+
+
 def test_line_times_from_toolpath():
     class Tp:
         time = np.array([1.0, 2.0, 3.0])

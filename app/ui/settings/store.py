@@ -65,6 +65,9 @@ MACHINE_SETTINGS = {
     ("pid", "ki"): "KI_{axis}",
     ("pid", "kd"): "KD_{axis}",
     ("pid", "following_error_mm"): "FERR",
+    ("job", "optional_stop"): "OPTSTOP",
+    ("job", "stop_spindle"): "STOPSPINDLE",
+    ("job", "after_job"): "AFTERJOB",
 }
 
 

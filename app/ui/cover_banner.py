@@ -1,0 +1,40 @@
+"""The cover interlock in the window: a red banner under the connection bar while the
+machine reports its cover open (flag ``C``), and the same words in the status bar."""
+
+from __future__ import annotations
+
+from PySide6.QtCore import QObject, Qt
+from PySide6.QtWidgets import QLabel, QToolBar
+
+COVER_FLAG = "C"
+
+
+class CoverBanner(QObject):
+    def __init__(self, window) -> None:
+        super().__init__(window)
+        self.w = window
+        self.label = QLabel(self.tr("COVER OPEN - close to continue: no motion, spindle stopped. "
+                                    "Resume restarts the spindle, then the job."))
+        self.label.setAlignment(Qt.AlignmentFlag.AlignCenter)
+        self.label.setStyleSheet("QLabel { background: #b00020; color: white; font-weight: bold;"
+                                 " padding: 6px; }")
+        window.addToolBarBreak()
+        self.bar = QToolBar(self.tr("Cover"), window)
+        self.bar.setObjectName("cover_toolbar")
+        self.bar.setMovable(False)
+        self.bar.addWidget(self.label)
+        window.addToolBar(self.bar)
+        self.bar.setVisible(False)
+        self.open = False
+        window.link.worker.status_changed.connect(self.on_status)
+
+    def on_status(self, event) -> None:
+        is_open = COVER_FLAG in event.flags
+        if is_open == self.open:
+            return
+        self.open = is_open
+        self.bar.setVisible(is_open)
+        if is_open:
+            self.w.status.showMessage(self.tr("COVER OPEN - close to continue"))
+        else:
+            self.w.status.showMessage(self.tr("Cover closed: press Resume to go on"), 10000)

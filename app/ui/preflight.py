@@ -1,0 +1,83 @@
+"""The job's bounds before it starts: the open program checked against the travel with
+the machine's real work offset (``checks.preflight``).
+
+The offset is read from the machine (``GET OFFSET_X|Y|Z`` on connect) and follows every
+``ZERO`` answer; until the machine has answered, the profile's default offset stands.
+The check runs again when a file is opened, the work zero changes or the settings
+change. A program that would leave the travel cannot start (``blocks_start``); only in
+check mode may the operator override it (the "Override travel check" switch).
+"""
+
+from __future__ import annotations
+
+from PySide6.QtCore import QObject
+
+from app.gcode.checks import preflight
+
+OFFSET_NAMES = ("OFFSET_X", "OFFSET_Y", "OFFSET_Z")
+
+
+class Preflight(QObject):
+    def __init__(self, window) -> None:
+        super().__init__(window)
+        self.w = window
+        self.offset: list[float | None] = [None, None, None]
+        self.errors: list = []
+        worker = window.link.worker
+        worker.connected.connect(self.ask_offset)
+        worker.command_finished.connect(self.on_command)
+        window.loader.loaded.connect(self.on_loaded)
+        window.controls.check_mode.toggled.connect(lambda _on: self.w.binder.refresh_enabled())
+        window.controls.override_travel.toggled.connect(lambda _on: self.w.binder.refresh_enabled())
+
+    def ask_offset(self, url: str = "") -> None:
+        for name in OFFSET_NAMES:
+            self.w.link.call("send_command", f"GET {name}")
+
+    def on_command(self, result) -> None:
+        if not result.ok:
+            return
+        if result.verb == "GET" and result.args[:1] and result.args[0] in OFFSET_NAMES:
+            name, value = result.info.split()[:2]
+            self.offset[OFFSET_NAMES.index(name)] = float(value)
+            if None not in self.offset:
+                self.run()
+        elif result.verb == "ZERO":
+            words = dict((w[0], float(w[1:])) for w in result.info.split() if w[:1] in "XYZ")
+            self.offset = [words.get(axis, old) for axis, old in zip("XYZ", self.offset, strict=True)]
+            self.run()
+
+    def on_loaded(self, loaded) -> None:
+        self.run()
+
+    def current_offset(self) -> tuple[float, float, float]:
+        default = self.w.profile.travel.work_offset()
+        return tuple(d if v is None else v for v, d in zip(self.offset, default, strict=True))
+
+    def run(self) -> None:
+        """Check the open program again and say what stands in the way of Start."""
+        loaded = self.w.loaded
+        program = getattr(loaded, "program", None)
+        old = [str(e) for e in self.errors]
+        self.errors = []
+        if program is not None and not program.errors:
+            self.errors = preflight(program.ops, self.w.profile, program.source_lines, self.current_offset())
+        if self.errors and [str(e) for e in self.errors] != old:
+            self.w.notifier.error(self.tr("Program leaves the travel"), self.message())
+        self.w.binder.refresh_enabled()
+
+    def message(self) -> str:
+        first = self.errors[0]
+        more = len(self.errors) - 1
+        text = self.tr("Start is disabled: line %1: %2").replace("%1", str(first.line)).replace(
+            "%2", first.message)
+        if more:
+            text += " " + self.tr("(and %n more axis/direction(s))", "", more)
+        advice = self.tr("Move the work zero or fix the program; in check mode it may be overridden.")
+        return text + " " + advice
+
+    def blocks_start(self) -> bool:
+        if not self.errors:
+            return False
+        controls = self.w.controls
+        return not (controls.check_mode.isChecked() and controls.override_travel.isChecked())

@@ -1,0 +1,76 @@
+"""Start from a line: the program panel's "Start here" (right-click a source line).
+
+The job starts at the first device line of that source line with the modal state of
+the lines before it restored by the preamble of ``app.comm.modal`` (spindle and speed,
+feed, then the position: retract, rapid over, feed down; units, distance mode and plane
+need no line: the machine's dialect is absolute millimetres in the XY plane). A
+window-modal confirmation shows that state and the preamble before anything moves.
+"""
+
+from __future__ import annotations
+
+from PySide6.QtCore import QObject
+from PySide6.QtWidgets import QMessageBox
+
+from app.comm.modal import device_index_of, modal_state, restart_preamble
+
+
+def _fill(text: str, *values) -> str:
+    """``text`` with %1, %2, ... replaced by ``values`` (translated texts keep the markers)."""
+    for n, value in enumerate(values, start=1):
+        text = text.replace(f"%{n}", str(value))
+    return text
+
+
+class StartHere(QObject):
+    def __init__(self, window) -> None:
+        super().__init__(window)
+        self.w = window
+        self.dialog: QMessageBox | None = None
+        self.pending: int | None = None  # the device line the dialog would start at
+        window.program_panel.start_here_requested.connect(self.ask)
+
+    def ask(self, source_line: int) -> None:
+        """Show the confirmation for starting at ``source_line`` (if the program may start)."""
+        loaded = self.w.loaded
+        if not self.w.operator.can_start():
+            return
+        index = device_index_of(loaded.program.line_map.tolist(), source_line)
+        if index is None:
+            self.w.notifier.warning(self.tr("Start here"), _fill(self.tr("Nothing runs from line %1 on."),
+                                                                 source_line))
+            return
+        lines = loaded.program.device_lines
+        self.pending = index
+        self.dialog = box = QMessageBox(QMessageBox.Icon.Question, self.tr("Start here"),
+                                        self._text(source_line, index, len(lines)), parent=self.w)
+        box.setInformativeText(self._state(lines, index))
+        box.setDetailedText("\n".join(restart_preamble(lines, index)) or self.tr("(nothing to restore)"))
+        self.start_button = box.addButton(self.tr("Start"), QMessageBox.ButtonRole.AcceptRole)
+        box.addButton(QMessageBox.StandardButton.Cancel)
+        box.buttonClicked.connect(self._answered)
+        box.open()
+
+    def _text(self, source_line: int, index: int, total: int) -> str:
+        return _fill(self.tr("Start the job at line %1 (device line %2 of %3)?"), source_line, index, total)
+
+    def _state(self, lines: list[str], index: int) -> str:
+        state = modal_state(lines, index)
+        rows = [self.tr("Units mm, absolute distances, XY plane (the machine's dialect).")]
+        rows.append(_fill(self.tr("Feed F%1."), f"{state.feed:g}") if state.feed else self.tr("No feed yet."))
+        if state.spindle_rpm is not None:
+            spindle = self.tr("Spindle on at S%1, up to speed before moving.")
+            rows.append(_fill(spindle, f"{state.spindle_rpm:g}"))
+        else:
+            rows.append(self.tr("Spindle off."))
+        if state.x is not None and state.y is not None:
+            rows.append(_fill(self.tr("Retract to Z%1, rapid to X%2 Y%3, feed down to Z%4."),
+                              *(f"{v:.3f}" for v in (state.top_z, state.x, state.y, state.z))))
+        return "\n".join(rows)
+
+    def _answered(self, button) -> None:
+        index, self.pending = self.pending, None
+        if button is not self.start_button or index is None or not self.w.operator.can_start():
+            return
+        self.w.binder.begin_job(self.w.loaded, index)
+        self.w.link.call("start_job", self.w.loaded.program, index)

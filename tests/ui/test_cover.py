@@ -1,0 +1,41 @@
+"""The cover in the window (issue 11): opened mid-job, the banner and the status say so,
+the spindle stops, every moving command is refused at once, no link alert; closed,
+nothing restarts until Resume, then the job completes."""
+
+from __future__ import annotations
+
+from tests.ui.conftest import open_and_wait
+
+SPEED = 20
+SOURCE = "G21 G90\nM3 S3000\nG0 Z5\nG0 X10 Y10\nG1 Z-1 F300\nG1 X120 F200\nG1 Y60\nG0 Z5\nM5\nM2\n"
+
+
+def test_cover_open_mid_job_banner_refusals_and_resume(qtbot, window, tmp_path):
+    status = lambda: window.binder.status  # noqa: E731
+    window.operator.connect_to(f"sim://?speed={SPEED}&sd={tmp_path}")
+    qtbot.waitUntil(lambda: window.binder.connected and window.binder.status is not None, timeout=60_000)
+    window.operator.home("NORMAL")
+    qtbot.waitUntil(lambda: status().homed and status().state == "IDLE", timeout=60_000)
+    path = tmp_path / "cover.ngc"
+    path.write_text(SOURCE)
+    open_and_wait(qtbot, window, path)
+    window.operator.start()
+    qtbot.waitUntil(lambda: status().done >= 3 and status().rpm > 2500, timeout=60_000)
+    sim = window.link.sim
+    sim.panel.set_cover(True)
+    qtbot.waitUntil(lambda: window.cover_banner.bar.isVisible(), timeout=10_000)
+    assert "COVER OPEN" in window.status.currentMessage()
+    qtbot.waitUntil(lambda: status().rpm == 0 and status().state == "HOLD", timeout=10_000)
+    assert sim.panel.oled_text()[0] == "COVER OPEN"
+    before = len(window.notifier.messages)
+    window.operator.jog("X", 1.0, 300.0)
+    window.operator.spindle(1000)
+    qtbot.waitUntil(lambda: len([m for m in window.notifier.messages[before:] if "COVER_OPEN" in m[2]]) == 2,
+                    timeout=10_000)
+    sim.panel.set_cover(False)
+    qtbot.waitUntil(lambda: not window.cover_banner.bar.isVisible(), timeout=10_000)
+    assert window.binder.status.state == "HOLD" and window.binder.status.rpm == 0
+    window.operator.resume()
+    qtbot.waitUntil(lambda: window.binder.last_job_event is not None, timeout=120_000)
+    assert window.binder.last_job_event.completed
+    assert not window.alert.isVisible() and window.binder.link_state == "CONNECTED"
