@@ -1,0 +1,299 @@
+"""The walk: run compiled blocks with explicit call frames, emit plain blocks.
+
+``Walker.run()`` starts at the first block of the main file and follows the control
+flow of both dialects (handlers per block kind); every ``WORDS`` block that is left
+is evaluated (all values first, then the line's assignments, as LinuxCNC does) and
+handed to ``interpret_line`` as plain words. Rows get, beside their own line, the
+file they came from, the main program's line that caused them, the subprogram and
+the loop iteration (``Trace``). Limits: a loop jumped back to more than
+``LOOP_LIMIT`` times, calls nested deeper than ``DEPTH_LIMIT``, more than
+``MOVE_LIMIT`` rows or ``BLOCK_LIMIT`` blocks run: an error naming the line. The
+first error stops the walk (rs274ngc stops too); it is reported with its file.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from app.gcode.diagnostics import ERROR, WARNING, Report
+from app.gcode.interp import interpret_line
+from app.gcode.lexer import Word
+from app.gcode.ops import OpBuffer
+
+from . import block as bk
+from .calls import FANUC_ARGUMENTS, Library
+from .errors import MacroError
+from .frame import Frame, Scope
+
+LOOP_LIMIT = 1_000_000
+DEPTH_LIMIT = 64
+MOVE_LIMIT = 20_000_000
+BLOCK_LIMIT = 50_000_000
+
+
+@dataclass
+class Trace:
+    """Per row of the expansion: file id, main-program line, subprogram id, iteration."""
+
+    files: list[str]
+    names: list[str] = field(default_factory=lambda: [""])
+    file: list[int] = field(default_factory=list)
+    call_line: list[int] = field(default_factory=list)
+    context: list[int] = field(default_factory=list)
+    iteration: list[int] = field(default_factory=list)
+    state: object = None  # the interpreter's state after the walk
+
+
+class FileReport:
+    """A ``Report`` seen through one file: what ``interpret_line`` reports gets the file."""
+
+    def __init__(self, report: Report, file: str):
+        self.report, self.file = report, file
+
+    def error(self, line, column, message, key=""):
+        self.report.add(line, column, ERROR, message, key, file=self.file)
+
+    def warning(self, line, column, message, key=""):
+        self.report.add(line, column, WARNING, message, key, file=self.file)
+
+
+class Walker:
+    """Expands one program (see the module docstring)."""
+
+    def __init__(self, library: Library, state, ops: OpBuffer, report: Report, params):
+        self.library, self.state, self.ops, self.report = library, state, ops, report
+        main = library.units[0]
+        self.fanuc = main.fanuc
+        self.scope = Scope(params, self.fanuc)
+        self.frames: list[Frame] = []
+        self.trace = Trace([main.name])
+        self.reports = [FileReport(report, "")]
+        self.blocks_run = 0
+        self._names: dict[str, int] = {"": 0}
+        first = next((i for i, b in enumerate(main.blocks) if b.kind != bk.SKIP), 0)
+        self._push(Frame(main, 0, {}, "", 0, main.program_of[first] if self.fanuc else 0))
+
+    # --- frames ------------------------------------------------------------------------
+    def _push(self, frame: Frame) -> None:
+        if len(self.frames) >= DEPTH_LIMIT + 1:
+            raise MacroError(f"calls nested deeper than {DEPTH_LIMIT} levels")
+        self.frames.append(frame)
+        self.scope.frame = frame
+        if frame.name not in self._names:
+            self._names[frame.name] = len(self.trace.names)
+            self.trace.names.append(frame.name)
+        while len(self.reports) <= frame.file_id:
+            unit = self.library.units[len(self.reports)]
+            self.trace.files.append(unit.name)
+            self.reports.append(FileReport(self.report, unit.name))
+
+    def _pop(self) -> Frame:
+        frame = self.frames.pop()
+        self.scope.frame = self.frames[-1] if self.frames else None
+        return frame
+
+    # --- the loop --------------------------------------------------------------------
+    def run(self) -> None:
+        """Walk to the end of the main program or the first error (reported)."""
+        handlers = HANDLERS
+        try:
+            while self.frames:
+                f = self.frames[-1]
+                if f.pc >= len(f.unit.blocks):
+                    self._end_of_file(f)
+                    continue
+                b = f.unit.blocks[f.pc]
+                self.blocks_run += 1
+                if self.blocks_run > BLOCK_LIMIT:
+                    raise MacroError(f"the program runs more than {BLOCK_LIMIT:,} blocks", b.line)
+                try:
+                    handlers[b.kind](self, f, b)
+                except MacroError as exc:
+                    raise exc.at(b.line, f.unit.name if f.file_id else "") from None
+        except MacroError as exc:
+            self.report.add(exc.line, exc.column, ERROR, exc.message, file=exc.file)
+
+    def _end_of_file(self, f: Frame) -> None:
+        if len(self.frames) == 1:
+            self.frames.pop()
+        elif self.fanuc:
+            self._return(f, None)
+        else:
+            raise MacroError("the file ended inside a subroutine", len(f.unit.blocks))
+
+    def loop_back(self, f: Frame, head: int) -> None:
+        count = f.counts.get(head, 0) + 1
+        if count > LOOP_LIMIT:
+            raise MacroError(f"a loop ran more than {LOOP_LIMIT:,} times (it starts at line "
+                             f"{f.unit.blocks[head].line})")
+        f.counts[head] = count
+        f.iteration = count + 1
+
+    def loop_done(self, f: Frame, head: int) -> None:
+        f.counts.pop(head, None)
+        f.iteration = 0
+
+    def test(self, fn) -> bool:
+        v = fn(self.scope)
+        return v is not None and v != 0.0
+
+    # --- plain blocks ------------------------------------------------------------------
+    def words(self, f: Frame, b: bk.Block) -> None:
+        scope = self.scope
+        words = []
+        for w in b.words:
+            v = w.value(scope)
+            if v is None:
+                if w.bare:
+                    continue  # Fanuc: a word whose parameter is vacant is left out
+                v = 0.0
+            words.append(Word(w.letter, v, w.column))
+        values = [(target(scope) if callable(target) else target, fn(scope)) for target, fn, _ in b.sets]
+        f.pc += 1
+        call = self._call_word(words) if self.fanuc else None
+        if call is not None:
+            words = [w for w in words if w is not call]
+        if words and call is None:
+            self.emit(f, b, words)
+        elif words and call.letter == "M":  # motion on an M98/M99 line runs first
+            self.emit(f, b, [w for w in words if w.letter not in "PL"])
+        for target, value in values:
+            scope.assign(target, value)
+        if call is not None:
+            self._fanuc_call(f, b, call, words)
+
+    def emit(self, f: Frame, b: bk.Block, words: list[Word]) -> None:
+        ops = self.ops
+        before = len(ops.rows)
+        self.state, _ = interpret_line(self.state, words, b.line, ops, self.reports[f.file_id])
+        n = len(ops.rows) - before
+        if n:
+            t = self.trace
+            main = self.frames[0]
+            t.file.extend([f.file_id] * n)
+            t.call_line.extend([main.unit.blocks[main.pc - 1].line if f is not main else b.line] * n)
+            t.context.extend([self._names[f.name]] * n)
+            t.iteration.extend([f.iteration] * n)
+            if len(ops.rows) > MOVE_LIMIT:
+                raise MacroError(f"the expansion makes more than {MOVE_LIMIT:,} moves", b.line)
+        if self.state.ended:
+            self.frames.clear()
+
+    def skip(self, f: Frame, b: bk.Block) -> None:
+        if f.pc in f.unit.bad:
+            self.frames.clear()  # its error is reported already; the walk stops as rs274ngc does
+            return
+        if b.skip == "block delete":
+            self.reports[f.file_id].warning(b.line, 0, "block delete '/': line skipped", "block delete")
+        f.pc += 1
+
+    # --- Fanuc ------------------------------------------------------------------------
+    def _call_word(self, words: list[Word]) -> Word | None:
+        for w in words:
+            if (w.letter == "M" and w.value in (98.0, 99.0)) or (w.letter == "G" and w.value == 65.0):
+                return w
+        return None
+
+    def _fanuc_call(self, f: Frame, b: bk.Block, call: Word, words: list[Word]) -> None:
+        by_letter = {w.letter: w.value for w in words}
+        if call.letter == "M" and call.value == 99.0:
+            self._m99(f, by_letter.get("P"))
+            return
+        if "P" not in by_letter:
+            raise MacroError(f"{call.letter}{call.value:g} needs P (the program number)", b.line, call.column)
+        number, count = int(by_letter["P"]), int(by_letter.get("L", 1))
+        if call.letter == "M" and "L" not in by_letter and number > 9999:
+            number, count = number % 10000, number // 10000  # packed M98 Pkkknnnn
+        if count < 1:
+            return
+        file_id, start = self.library.program(number, f.file_id)
+        if call.letter == "M":
+            locals_ = f.locals  # M98 keeps the caller's local level
+        else:
+            locals_ = {FANUC_ARGUMENTS[k]: v for k, v in by_letter.items() if k in FANUC_ARGUMENTS}
+            extra = sorted(set(by_letter) - set(FANUC_ARGUMENTS) - {"G", "P", "L"})
+            if extra:
+                raise MacroError(f"G65 cannot pass {', '.join(extra)} (argument specification I)", b.line)
+        unit = self.library.units[file_id]
+        name = f"O{number:04d}"
+        self._push(Frame(unit, start, locals_, name, file_id, unit.program_of[start] if unit.program_of else 0,
+                         count, b.line))
+
+    def _m99(self, f: Frame, label) -> None:
+        if len(self.frames) == 1:
+            raise MacroError("M99 outside a subprogram (the main program ends with M30)")
+        self._return(f, label)
+
+    def _return(self, f: Frame, label) -> None:
+        if f.calls_left > 1:
+            f.calls_left -= 1
+            self.loop_back(f, f.program)
+            f.pc = f.program
+            return
+        self._pop()
+        caller = self.frames[-1]
+        if label is not None:
+            caller.pc = self._label(caller, int(label))
+
+    def _label(self, f: Frame, n: int) -> int:
+        target = f.unit.labels.get((f.program, n))
+        if target is None:
+            raise MacroError(f"GOTO {n}: no block N{n} in this program")
+        return target
+
+    def goto(self, f: Frame, b: bk.Block) -> None:
+        self._jump(f, b.args[-1](self.scope))
+
+    def _jump(self, f: Frame, value) -> None:
+        if value is None:
+            raise MacroError("GOTO to a vacant label")
+        target = self._label(f, int(round(value)))
+        if target <= f.pc:
+            self.loop_back(f, target)
+        f.pc = target
+
+    def if_goto(self, f: Frame, b: bk.Block) -> None:
+        if self.test(b.args[0]):
+            self._jump(f, b.args[1](self.scope))
+        else:
+            f.pc += 1
+
+    def if_then(self, f: Frame, b: bk.Block) -> None:
+        if self.test(b.args[0]):
+            scope = self.scope
+            values = [(t(scope) if callable(t) else t, fn(scope)) for t, fn, _ in b.sets]
+            for target, value in values:
+                scope.assign(target, value)
+        f.pc += 1
+
+    def fanuc_while(self, f: Frame, b: bk.Block) -> None:
+        if self.test(b.args[0]):
+            f.pc += 1
+        else:
+            self.loop_done(f, f.pc)
+            f.pc = f.unit.jump[f.pc]
+
+    def fanuc_do(self, f: Frame, b: bk.Block) -> None:
+        f.pc += 1
+
+    def fanuc_end(self, f: Frame, b: bk.Block) -> None:
+        head = f.unit.back[f.pc]
+        self.loop_back(f, head)
+        f.pc = head
+
+    def program(self, f: Frame, b: bk.Block) -> None:
+        if f.pc == f.program:
+            f.pc += 1
+        elif len(self.frames) == 1:
+            self.frames.clear()  # the main program ran into the next program's O line
+        else:
+            self._return(f, None)
+
+
+from .owords import oword  # noqa: E402  (the o-word handlers use Walker's helpers)
+
+HANDLERS = {
+    bk.WORDS: Walker.words, bk.SKIP: Walker.skip, bk.OWORD: oword, bk.PROGRAM: Walker.program,
+    bk.IF_GOTO: Walker.if_goto, bk.IF_THEN: Walker.if_then, bk.GOTO: Walker.goto,
+    bk.WHILE: Walker.fanuc_while, bk.DO: Walker.fanuc_do, bk.END: Walker.fanuc_end,
+}
