@@ -20,12 +20,13 @@ import numpy as np
 
 from app.profile import MachineProfile
 
-from . import bulk, checks, normalize, runner
+from . import bulk, checks, macro, normalize, runner
 from .diagnostics import ERROR, WARNING, Diagnostic, Report
 from .moves import moves_of
-from .ops import OpBuffer, Ops
+from .ops import OpBuffer, Ops, Source
 from .render import render
 from .source import Lines
+from .state import State
 from .toolpath import Toolpath, build
 
 
@@ -73,8 +74,8 @@ class Program:
 
     @cached_property
     def line_map(self) -> np.ndarray:
-        """Device index -> 1-based source line (known without rendering the lines)."""
-        return np.repeat(self.ops.line, self.plan.count)
+        """Device index -> 1-based line of the main program (known without rendering)."""
+        return np.repeat(self.ops.main_lines(), self.plan.count)
 
     @property
     def device_count(self) -> int:
@@ -107,19 +108,39 @@ def _empty(name: str, message: str, profile: MachineProfile) -> Program:
     return program
 
 
-def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfile) -> Program:
-    """Interpret ``lines``; ``data`` holds their bytes, handed over (emptied) to free them early."""
+def _plain(lines: Lines, data: list[bytes], report: Report) -> Ops:
+    """The fast path; ``data`` holds the bytes, handed over (emptied) to free them early."""
     raw = data.pop()
     n = len(lines)  # reuse the chunks Lines already counted; otherwise scan makes its own
-    report = Report()
     buffer = OpBuffer()
     interpreter = runner.Runner(lines, buffer, report)
     for scan, ready in bulk.scan_stream(raw, n, lines.chunks or None):  # interpret as lines come
         interpreter.advance(scan, ready)
     del raw, scan
     interpreter.finish()
+    return buffer.finish()
+
+
+def _expanded(lines: Lines, name: str, folder: Path | None, report: Report) -> Ops:
+    """The expander's path (parameters, control flow, calls), rows traced to their source."""
+    buffer = OpBuffer()
+    trace = macro.expand(lines.as_list(), name, folder, State(), buffer, report)
     ops = buffer.finish()
-    del buffer
+    ops.source = Source(np.asarray(trace.file, np.int32), np.asarray(trace.call_line, np.int64),
+                        np.asarray(trace.context, np.int32), np.asarray(trace.iteration, np.int32),
+                        trace.files, trace.names)
+    return ops
+
+
+def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfile,
+               folder: Path | None = None) -> Program:
+    """Interpret ``lines``: the expander when the bytes in ``data`` need it, else the fast path."""
+    report = Report()
+    if macro.needs_expander(data[0]):
+        data.clear()
+        ops = _expanded(lines, name, folder, report)
+    else:
+        ops = _plain(lines, data, report)
     ops.starts()  # computed once, before two threads read it
     checking = _in_thread(checks.run, ops, profile, lines, report)  # numpy lets both run at once
     the_plan = normalize.plan(ops, profile.motion.arc_tolerance_mm)
@@ -149,13 +170,15 @@ class _in_thread(threading.Thread):
             raise self._error
 
 
-def load_text(text: str, name: str = "<text>", profile: MachineProfile | None = None) -> Program:
-    """Interpret G-code ``text``; errors and warnings are in the result, never raised."""
+def load_text(text: str, name: str = "<text>", profile: MachineProfile | None = None,
+              folder: Path | None = None) -> Program:
+    """Interpret G-code ``text``; errors and warnings are in the result, never raised.
+    ``folder`` is where its subprogram files are looked for (none when ``None``)."""
     profile = profile or MachineProfile()
     if "\x00" in text:
         return _empty(name, "not a text file (it contains NUL bytes)", profile)
     data = [text.encode("utf-8", "replace")]  # a \r is a space to the fast path
-    return _interpret(Lines(_split(text)), data, name, profile)
+    return _interpret(Lines(_split(text)), data, name, profile, folder)
 
 
 def load(path: str | Path, profile: MachineProfile | None = None) -> Program:
@@ -178,4 +201,4 @@ def load(path: str | Path, profile: MachineProfile | None = None) -> Program:
     lines = Lines(data=raw)  # split on first use, not here
     data = [raw]  # valid UTF-8: the bytes the fast path reads
     del raw
-    return _interpret(lines, data, str(path), profile)
+    return _interpret(lines, data, str(path), profile, path.parent)

@@ -100,8 +100,8 @@ def test_refused_line_changes_nothing():
 
 
 ERROR_CASES = [
-    ("o100 sub", 1, "o-words"),
-    ("G1 X#1", 1, "parameters"),
+    ("o100 sub", 1, "never closed"),  # the expander reads o-words and parameters
+    ("G1 X#<a>", 1, "#<a> is not set"),
     ("G81 X1 Y1 Z-1 R1", 1, "canned cycles"),
     ("G83 X1", 1, "canned cycles"),
     ("G41 D1", 1, "cutter radius compensation"),
@@ -110,7 +110,7 @@ ERROR_CASES = [
     ("G54", 1, "G54-G59"),
     ("G59.1", 1, "G54-G59"),
     ("G7", 1, "unknown G-code G7"),
-    ("M99", 1, "unknown M-code M99"),
+    ("M99", 1, "M99 outside a subprogram"),
     ("G1 X1 F1 Q5", 1, "Q words"),
     ("G0 A10", 1, "axis A"),
     ("G0 G1 X1", 1, "G0 and G1"),

@@ -53,6 +53,7 @@ def expand(lines, name: str, folder: Path | None, state, ops: OpBuffer, report: 
         report.add(exc.line, exc.column, ERROR, exc.message)
     params = getattr(state, "params", None)
     walker = Walker(Library(unit, folder), state, ops, report, params if params is not None else Params())
-    walker.run()
+    if unit.structure_ok:
+        walker.run()
     walker.trace.state = walker.state
     return walker.trace

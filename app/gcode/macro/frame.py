@@ -10,7 +10,7 @@ unset parameter as vacant (``None``).
 
 from __future__ import annotations
 
-from app.gcode.params import Params, ParamError
+from app.gcode.params import ParamError, Params
 
 from .errors import MacroError
 from .structure import Unit

@@ -40,7 +40,9 @@ class Unit:
         self.programs: dict[int, int] = {}  # Fanuc O number -> index of its O line
         self.program_of: list[int] = []  # block index -> index of its program's first block
         self.labels: dict[tuple[int, int], int] = {}  # (program start, N) -> index
+        compiled = len(self.errors)
         self._structure()
+        self.structure_ok = len(self.errors) == compiled  # jumps are only safe when balanced
 
     def fail(self, message: str, block: Block) -> None:
         self.errors.append(MacroError(message, block.line, block.column, self.name))
