@@ -2,8 +2,8 @@
 
 A ``Diagnostic`` names the 1-based physical source line, the 1-based column (0 when
 the whole line is meant), its severity (``"error"`` or ``"warning"``), a message and
-the file ("" for the program itself, else a subprogram file's path).
-``str(d)`` reads ``line 12, column 5: message`` (``O1000.nc line 3: ...`` for a file). ``Report`` collects them; it keeps
+the file ("" for the program itself, else a subprogram file's path). ``str(d)``
+reads ``line 12, column 5: message`` (``O1000.nc line 3: ...`` for a file). ``Report`` collects them; it keeps
 at most ``limit`` of each kind of message key and counts the rest, so a million-line
 file with one repeated problem stays small.
 """

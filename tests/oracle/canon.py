@@ -172,7 +172,7 @@ def canon_to_moves(calls: Iterable[CanonCall]) -> list[dict]:
 
 
 _COMMENTS = re.compile(r"\([^)]*\)|;.*$")
-_AXIS_WORD = re.compile(r"[XYZ][+-]?[0-9.]")
+_AXIS_WORD = re.compile(r"[XYZ][+-]?[0-9.#\[]")  # a number, a parameter or an expression
 
 
 def has_axis_word(source_line: str) -> bool:

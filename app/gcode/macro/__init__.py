@@ -24,11 +24,12 @@ from .structure import Unit
 from .walker import Trace, Walker
 
 _COMMENTS = re.compile(rb"\([^()\n]*\)|;[^\n]*")
-_NEEDS = re.compile(rb"(?i)[#\[o]|i\s*f|w\s*h\s*i\s*l\s*e|e\s*n\s*d|m\s*0*\s*9\s*[89](?![\d.])|g\s*0*\s*6\s*5(?![\d.])")
+_NEEDS = re.compile(rb"(?i)[#\[o]|i\s*f|w\s*h\s*i\s*l\s*e|e\s*n\s*d"
+                    rb"|m\s*0*\s*9\s*[89](?![\d.])|g\s*0*\s*6\s*5(?![\d.])")
 _TRIGGER = re.compile(rb"[#\[oOiIwWeEmMgG]")
 _FANUC = re.compile(
-    r"(?im)^[ \t]*(?:n[ \t]*\d+[ \t]*)?(?:o[ \t]*\d+[ \t]*(?:\([^\n]*\))?[ \t]*$|if[ \t]*\[|goto|while[ \t]*\[|"
-    r"(?:do|end)[ \t]*\d)|m[ \t]*0*9[ \t]*[89](?![\d.])|g[ \t]*0*6[ \t]*5(?![\d.])")
+    r"(?im)^[ \t]*(?:n[ \t]*\d+[ \t]*)?(?:o[ \t]*\d+[ \t]*(?:\([^\n]*\))?[ \t]*$|if[ \t]*\[|goto"
+    r"|while[ \t]*\[|(?:do|end)[ \t]*\d)|m[ \t]*0*9[ \t]*[89](?![\d.])|g[ \t]*0*6[ \t]*5(?![\d.])")
 
 
 def needs_expander(raw: bytes) -> bool:

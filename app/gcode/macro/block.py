@@ -80,7 +80,8 @@ def _oword(reader: Reader, block: Block) -> Block:
         if not rest and block.oname.isdigit():  # a Fanuc program number line
             block.kind, block.number = PROGRAM, int(block.oname)
             return block
-        raise reader.error(f"unknown o-word statement {rest.upper()!r}" if rest else "o-word without a keyword")
+        raise reader.error(f"unknown o-word statement {rest.upper()!r}" if rest
+                           else "o-word without a keyword")
     reader.pos += len(block.keyword)
     while reader.peek() == "[":
         block.args.append(reader.value())

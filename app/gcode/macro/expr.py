@@ -77,6 +77,9 @@ def _checked(name, test, fn, what):
     return apply
 
 
+_RANGE = "out of the range -1..1"
+
+
 def _round(x):
     return float(int(x + (-0.5 if x < 0 else 0.5)))
 
@@ -84,8 +87,8 @@ def _round(x):
 UNARY = {
     "sin": lambda x, f: math.sin(math.radians(x)), "cos": lambda x, f: math.cos(math.radians(x)),
     "tan": lambda x, f: math.tan(math.radians(x)),
-    "asin": _checked("asin", lambda x: -1.0 <= x <= 1.0, lambda x: math.degrees(math.asin(x)), "out of -1..1"),
-    "acos": _checked("acos", lambda x: -1.0 <= x <= 1.0, lambda x: math.degrees(math.acos(x)), "out of -1..1"),
+    "asin": _checked("asin", lambda x: -1.0 <= x <= 1.0, lambda x: math.degrees(math.asin(x)), _RANGE),
+    "acos": _checked("acos", lambda x: -1.0 <= x <= 1.0, lambda x: math.degrees(math.acos(x)), _RANGE),
     "atan": lambda x, f: math.degrees(math.atan(x)), "abs": lambda x, f: abs(x),
     "sqrt": _checked("sqrt", lambda x: x >= 0.0, math.sqrt, "square root of a negative number"),
     "exp": _checked("exp", lambda x: x < 709.0, math.exp, "too large"),
@@ -179,8 +182,8 @@ class Reader:
             self.pos += 1
             return self.atan2(arg, self.expression(), "]")
         self.expect("]", f"to close {name.upper()}[")
-        if name == "atan" and self.peek() == "/":
-            self.pos += 1
+        if name == "atan" and (self.peek() == "/" or not self.fanuc):
+            self.expect("/", "after ATAN[a] (the form is ATAN[a]/[b])")
             self.expect("[", "after ATAN[a]/ (the form is ATAN[a]/[b])")
             return self.atan2(arg, self.expression(), "]")
         op, fail = UNARY[name], self.failer(start)

@@ -16,7 +16,7 @@ from __future__ import annotations
 from .block import DO, END, OWORD, PROGRAM, SKIP, WHILE, Block, compile_line
 from .errors import MacroError
 
-LOOP_HEADS = {"while", "do", "repeat"}
+LOOP_HEADS = {"while", "do"}  # break/continue work in these (not in repeat, as rs274ngc)
 
 
 class Unit:

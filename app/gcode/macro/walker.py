@@ -216,8 +216,8 @@ class Walker:
                 raise MacroError(f"G65 cannot pass {', '.join(extra)} (argument specification I)", b.line)
         unit = self.library.units[file_id]
         name = f"O{number:04d}"
-        self._push(Frame(unit, start, locals_, name, file_id, unit.program_of[start] if unit.program_of else 0,
-                         count, b.line))
+        program = unit.program_of[start] if unit.program_of else 0
+        self._push(Frame(unit, start, locals_, name, file_id, program, count, b.line))
 
     def _m99(self, f: Frame, label) -> None:
         if len(self.frames) == 1:
