@@ -100,7 +100,7 @@ def expected_moves(rec: CanonRecord) -> list[dict]:
 
 
 def test_every_sample_and_case_has_a_recording():
-    sources = sorted(SAMPLES.glob("*.ngc")) + sorted(CASES.glob("*.ngc"))
+    sources = sorted(SAMPLES.glob("*.ngc")) + [p for p in sorted(CASES.glob("*.ngc")) if p not in record.libraries()]
     recorded = {p.stem for p in RECORDS}
     missing = [p.name for p in sources if p.stem not in recorded]
     assert not missing, f"run tests/oracle/record.py for {missing}"
