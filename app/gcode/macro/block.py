@@ -13,8 +13,9 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+from .batch import simple_shape
 from .errors import MacroError
-from .expr import Fn, Reader
+from .expr import Reader, compile_code, compile_codes
 from .text import squeeze
 
 WORDS, SKIP, OWORD, PROGRAM, IF_GOTO, IF_THEN, GOTO, WHILE, DO, END = range(10)
@@ -27,11 +28,11 @@ LETTERS = set("abcdefghijklmnpqrstuvwxyz")  # a word's letter ('o' is a statemen
 
 @dataclass
 class Word:
-    """A G-code word: letter (upper case), 1-based column, value function, bare #param?"""
+    """A G-code word: letter (upper case), 1-based column, value code, bare #param?"""
 
     letter: str
     column: int
-    value: Fn
+    code: str
     bare: bool  # a lone parameter: a vacant one drops the word (Fanuc)
 
 
@@ -42,14 +43,32 @@ class Block:
     line: int
     kind: int
     words: list[Word] = field(default_factory=list)
-    sets: list[tuple] = field(default_factory=list)  # (target, value fn, column)
+    sets: list[tuple] = field(default_factory=list)  # (target: int, name or code, value code, column)
     label: int | None = None
     keyword: str = ""
     oname: str = ""
-    args: list[Fn] = field(default_factory=list)
+    args: list = field(default_factory=list)  # codes, then compiled functions ``fn(S)``
     number: int = 0  # O program number, GOTO label, DO/END loop number
     column: int = 0
     skip: str = ""
+    values: object = None  # fn(S) -> (word values..., set values..., computed set targets...)
+    targets: list = field(default_factory=list)  # per set: a number, a name, or (index into values,)
+    simple: bool = False  # only G X Y Z I J F words, each once: may go to the fast path
+
+    def finish(self) -> Block:
+        """Compile the codes of the line into functions (done once)."""
+        codes = [w.code for w in self.words] + [value for _, value, _ in self.sets]
+        self.targets = []
+        for target, _, _ in self.sets:
+            if isinstance(target, str) and target.startswith("_index("):  # a computed number
+                self.targets.append((len(codes),))
+                codes.append(target)
+            else:
+                self.targets.append(target)
+        self.values = compile_codes(codes) if codes else None
+        self.simple = self.kind == WORDS and simple_shape([w.letter for w in self.words])
+        self.args = [compile_code(a) for a in self.args]
+        return self
 
 
 def _integer(reader: Reader, what: str) -> int:
@@ -164,6 +183,10 @@ def _fanuc(reader: Reader, block: Block) -> Block | None:
 
 def compile_line(line: str, line_no: int, fanuc: bool) -> Block:
     """The ``Block`` of one source line (``fanuc``: the dialect's assignment rule)."""
+    return _read_line(line, line_no, fanuc).finish()
+
+
+def _read_line(line: str, line_no: int, fanuc: bool) -> Block:
     sq = squeeze(line, line_no)
     block = Block(line_no, WORDS)
     text = sq.text

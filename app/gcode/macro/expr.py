@@ -1,26 +1,27 @@
-"""Expressions and parameter references, compiled once into closures.
+"""Expressions and parameter references, compiled once into Python code.
 
 ``Reader`` walks a squeezed line (``text.py``) and turns each value it reads into a
-function ``fn(env) -> float | None``; evaluating a line again (a loop, a call) only
-calls those functions. ``env`` gives ``num(n)`` (``#n``), ``named(name)``
-(``#<name>``) and ``exists(name)``. ``None`` is Fanuc's vacant value (``#0``, an
-unset parameter); arithmetic reads it as 0, ``EQ``/``NE`` tell it from 0.
+Python expression (a string) over the scope ``S`` of the walk: ``S.num(n)`` for
+``#n``, ``S.named(name)`` for ``#<name>``, ``S.exists(name)``. ``block.py`` joins a
+line's values into one function, compiled once, so running the line again (a loop,
+a call) costs one call. ``None`` is Fanuc's vacant value (``#0``, an unset
+parameter): arithmetic reads it as 0, ``EQ``/``NE`` tell it from 0.
 
 Precedence as LinuxCNC's rs274ngc, all left-associative: ``**``; ``* / MOD``;
 ``+ -``; ``EQ NE GT GE LT LE``; ``AND OR XOR``. A unary sign belongs to its operand
-(``-2**2`` is 4). Angles are degrees; ``ATAN[a]/[b]`` is atan2. ``EQ``/``NE`` allow
-1e-4 as rs274ngc does. Errors name the line and column of the operator or function.
+(``-2**2`` is 4). Angles are degrees; ``ATAN[a]/[b]`` is atan2 (Fanuc also takes
+``ATAN[a]`` and ``ATAN[a,b]``). ``EQ``/``NE`` allow 1e-4 as rs274ngc does. Errors
+(division by zero, ``SQRT`` of a negative, ``ACOS`` out of range ...) name the line
+and column of the operator or function, and are raised when the line runs.
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
 
 from .errors import MacroError
 from .text import Squeezed
 
-Fn = Callable[[object], "float | None"]
 EQUAL_TOLERANCE = 1e-4
 PRECEDENCE = {"**": 6, "*": 5, "/": 5, "mod": 5, "+": 4, "-": 4,
               "eq": 3, "ne": 3, "gt": 3, "ge": 3, "lt": 3, "le": 3, "and": 2, "or": 2, "xor": 2}
@@ -31,74 +32,112 @@ def _z(v):
     return 0.0 if v is None else v
 
 
-def _equal(a, b) -> float:
+def _eq(a, b) -> float:
     if a is None or b is None:
         return 1.0 if a is b else 0.0
     return 1.0 if abs(a - b) < EQUAL_TOLERANCE else 0.0
 
 
-def _divide(a, b, fail):
+def _div(a, b, line, col):
     if b == 0.0:
-        fail("division by zero")
+        raise MacroError("division by zero", line, col)
     return a / b
 
 
-def _power(a, b, fail):
+def _pow(a, b, line, col):
     if a < 0 and b != int(b):
-        fail("negative number raised to a non-integer power")
+        raise MacroError("negative number raised to a non-integer power", line, col)
     try:
         return float(a ** b)
     except (OverflowError, ZeroDivisionError):
-        fail(f"{a:g} ** {b:g} cannot be computed")
+        raise MacroError(f"{a:g} ** {b:g} cannot be computed", line, col) from None
 
 
-def _mod(a, b, fail):
+def _mod(a, b, line, col):
     if b == 0.0:
-        fail("MOD by zero")
+        raise MacroError("MOD by zero", line, col)
     r = math.fmod(a, b)
     return r + abs(b) if r < 0 else r
 
 
-BINARY = {
-    "+": lambda a, b, f: a + b, "-": lambda a, b, f: a - b, "*": lambda a, b, f: a * b,
-    "/": _divide, "**": _power, "mod": _mod,
-    "gt": lambda a, b, f: float(a > b), "ge": lambda a, b, f: float(a >= b),
-    "lt": lambda a, b, f: float(a < b), "le": lambda a, b, f: float(a <= b),
-    "and": lambda a, b, f: float(a != 0.0 and b != 0.0), "or": lambda a, b, f: float(a != 0.0 or b != 0.0),
-    "xor": lambda a, b, f: float((a != 0.0) != (b != 0.0)),
-}
-
-
 def _checked(name, test, fn, what):
-    def apply(x, fail):
+    def apply(x, line, col):
         if not test(x):
-            fail(f"{name.upper()} of {x:g}: {what}")
+            raise MacroError(f"{name.upper()} of {x:g}: {what}", line, col)
         return fn(x)
     return apply
 
 
-_RANGE = "out of the range -1..1"
-
-
-def _round(x):
+def _round(x, line, col):
     return float(int(x + (-0.5 if x < 0 else 0.5)))
 
 
-UNARY = {
-    "sin": lambda x, f: math.sin(math.radians(x)), "cos": lambda x, f: math.cos(math.radians(x)),
-    "tan": lambda x, f: math.tan(math.radians(x)),
+def _index(v, line, col) -> int:
+    if v is None:
+        raise MacroError("parameter number is vacant", line, col)
+    n = round(v)
+    if abs(v - n) > 1e-4:
+        raise MacroError(f"parameter number {v:g} is not a whole number", line, col)
+    return int(n)
+
+
+def _atan2(y, x):
+    return math.degrees(math.atan2(y, x))
+
+
+def _unset(name, line, col):
+    raise MacroError(f"named parameter #<{name}> is not set", line, col)
+
+
+_RANGE = "out of the range -1..1"
+FUNCTIONS = {
+    "sin": lambda x, line, col: math.sin(math.radians(x)),
+    "cos": lambda x, line, col: math.cos(math.radians(x)),
+    "tan": lambda x, line, col: math.tan(math.radians(x)),
     "asin": _checked("asin", lambda x: -1.0 <= x <= 1.0, lambda x: math.degrees(math.asin(x)), _RANGE),
     "acos": _checked("acos", lambda x: -1.0 <= x <= 1.0, lambda x: math.degrees(math.acos(x)), _RANGE),
-    "atan": lambda x, f: math.degrees(math.atan(x)), "abs": lambda x, f: abs(x),
+    "atan": lambda x, line, col: math.degrees(math.atan(x)),
+    "abs": lambda x, line, col: abs(x),
     "sqrt": _checked("sqrt", lambda x: x >= 0.0, math.sqrt, "square root of a negative number"),
     "exp": _checked("exp", lambda x: x < 709.0, math.exp, "too large"),
     "ln": _checked("ln", lambda x: x > 0.0, math.log, "logarithm of zero or a negative number"),
-    "round": lambda x, f: _round(x), "fix": lambda x, f: float(math.floor(x)),
-    "fup": lambda x, f: float(math.ceil(x)),
+    "round": _round,
+    "fix": lambda x, line, col: float(math.floor(x)),
+    "fup": lambda x, line, col: float(math.ceil(x)),
 }
+NAMESPACE = {"_z": _z, "_eq": _eq, "_div": _div, "_pow": _pow, "_mod": _mod, "_index": _index,
+             "_atan2": _atan2, "_unset": _unset, "inf": math.inf, "nan": math.nan,
+             **{f"_f_{k}": v for k, v in FUNCTIONS.items()}}
+_NAMES = sorted([*FUNCTIONS, "exists"], key=len, reverse=True)
+_COMPARE = {"gt": ">", "ge": ">=", "lt": "<", "le": "<="}
 
 
-_FUNCTIONS = sorted([*UNARY, "exists"], key=len, reverse=True)
+def compile_codes(codes: list[str]):
+    """One function ``fn(S) -> tuple`` computing every code of a line at once."""
+    return eval("lambda S: (" + "".join(c + ", " for c in codes) + ")", NAMESPACE)  # noqa: S307
+
+
+def compile_code(code: str):
+    """A function ``fn(S) -> value`` computing ``code``."""
+    return eval("lambda S: " + code, NAMESPACE)  # noqa: S307
+
+
+def constant(code: str) -> float | None:
+    """The value of ``code`` when it is a plain number, else None."""
+    try:
+        return float(code)
+    except ValueError:
+        return None
+
+
+def _fold(code: str) -> str:
+    """``code`` computed now when it reads no parameter and cannot fail, else as is."""
+    if "S." in code:
+        return code
+    try:
+        return repr(float(eval(code, NAMESPACE)))  # noqa: S307 (our own generated code)
+    except (MacroError, ArithmeticError, ValueError, TypeError, NameError):
+        return code  # an error is reported when the line runs, as rs274ngc does
 
 
 class Reader:
@@ -130,12 +169,13 @@ class Reader:
             end += 1
         return self.text[self.pos:end]
 
-    def failer(self, at: int):
-        line, col = self.line_no, self.sq.column(at)
+    def where(self, at: int) -> str:
+        """``line, column`` of position ``at``, as code arguments."""
+        return f"{self.line_no}, {self.sq.column(at)}"
 
-        def fail(message: str):
-            raise MacroError(message, line, col)
-        return fail
+    def z(self, code: str) -> str:
+        """``code`` read as a number: Fanuc's vacant value becomes 0."""
+        return f"_z({code})" if self.fanuc and constant(code) is None else code
 
     # --- values ----------------------------------------------------------------------
     def number(self) -> float:
@@ -147,30 +187,29 @@ class Reader:
             raise self.error("a number was expected here", start)
         return float(token)
 
-    def value(self) -> Fn:
+    def value(self) -> str:
         """One real value: ``[expr]``, ``#param``, a function, a signed number or value."""
         c = self.peek()
         if c == "[":
             self.pos += 1
-            fn = self.expression()
+            code = self.expression()
             self.expect("]", "to close the expression")
-            return fn
+            return code
         if c == "#":
             return self.parameter()
         if c and c in "+-":
             self.pos += 1
             inner = self.value()
-            return inner if c == "+" else _fold1(lambda x: -_z(x), inner)
+            return inner if c == "+" else _fold(f"(-{self.z(inner)})")
         if c.isalpha():
             return self.function()
         if c.isdigit() or c == ".":
-            v = self.number()
-            return _const(v)
+            return repr(self.number())
         raise self.error("a value was expected here" if c else "a value was expected at the end of the line")
 
-    def function(self) -> Fn:
+    def function(self) -> str:
         start = self.pos
-        name = next((f for f in _FUNCTIONS if self.text.startswith(f, start)), None)
+        name = next((f for f in _NAMES if self.text.startswith(f, start)), None)
         if name is None:
             raise self.error(f"unknown function or word {self.letters().upper()!r}", start)
         self.pos += len(name)
@@ -178,28 +217,27 @@ class Reader:
             return self.exists()
         self.expect("[", f"after {name.upper()}")
         arg = self.expression()
-        if name == "atan" and self.peek() == ",":
+        if name == "atan" and self.fanuc and self.peek() == ",":
             self.pos += 1
-            return self.atan2(arg, self.expression(), "]")
+            return self.atan2(arg, self.expression())
         self.expect("]", f"to close {name.upper()}[")
         if name == "atan" and (self.peek() == "/" or not self.fanuc):
             self.expect("/", "after ATAN[a] (the form is ATAN[a]/[b])")
             self.expect("[", "after ATAN[a]/ (the form is ATAN[a]/[b])")
-            return self.atan2(arg, self.expression(), "]")
-        op, fail = UNARY[name], self.failer(start)
-        return _fold1(lambda x: op(_z(x), fail), arg)
+            return self.atan2(arg, self.expression())
+        return _fold(f"_f_{name}({self.z(arg)}, {self.where(start)})")
 
-    def atan2(self, y: Fn, x: Fn, close: str) -> Fn:
-        self.expect(close, "to close ATAN")
-        return _fold2(lambda a, b: math.degrees(math.atan2(_z(a), _z(b))), y, x)
+    def atan2(self, y: str, x: str) -> str:
+        self.expect("]", "to close ATAN")
+        return _fold(f"_atan2({self.z(y)}, {self.z(x)})")
 
-    def exists(self) -> Fn:
+    def exists(self) -> str:
         self.expect("[", "after EXISTS")
         self.expect("#", "in EXISTS[#<name>]")
         self.expect("<", "in EXISTS[#<name>]")
         name = self.name()
         self.expect("]", "to close EXISTS[")
-        return lambda env: 1.0 if env.exists(name) else 0.0
+        return f"(1.0 if S.exists({name!r}) else 0.0)"
 
     def name(self) -> str:
         end = self.text.find(">", self.pos)
@@ -210,34 +248,28 @@ class Reader:
             raise self.error("empty parameter name", end)
         return name
 
-    def parameter(self) -> Fn:
-        """``#n``, ``#[expr]``, ``##n`` or ``#<name>`` as a reading function."""
-        fail = self.failer(self.pos)
+    def parameter(self) -> str:
+        """``#n``, ``#[expr]``, ``##n`` or ``#<name>`` as code reading it."""
+        at = self.pos
         target = self.target()
         if isinstance(target, str):
-            def named(env):
-                v = env.named(target)
-                if v is None:
-                    fail(f"named parameter #<{target}> is not set")
-                return v
-            return named
-        if isinstance(target, int):
-            return lambda env: env.num(target)
-        index = target
-        return lambda env: env.num(index(env))
+            return f"(S.named({target!r}) if S.has({target!r}) else _unset({target!r}, {self.where(at)}))"
+        return f"S.num({target})"
 
-    def target(self):
-        """After ``#``: a name (str), a fixed number (int) or a function giving the number."""
+    def target(self) -> str | int:
+        """After ``#``: a name (str), or code giving the number (int when fixed)."""
         at = self.pos
         self.expect("#", "")
         if self.peek() == "<":
             self.pos += 1
             return self.name()
         if self.peek().isdigit():
-            v = self.number()
-            return _index(v, self.failer(at))
-        fn, fail = self.value(), self.failer(at)
-        return lambda env: _index(fn(env), fail)
+            return _index(self.number(), self.line_no, self.sq.column(at))
+        code = self.value()
+        fixed = constant(code)
+        if fixed is not None:
+            return _index(fixed, self.line_no, self.sq.column(at))
+        return f"_index({code}, {self.where(at)})"
 
     # --- binary expressions ----------------------------------------------------------
     def operator(self) -> str | None:
@@ -251,7 +283,7 @@ class Reader:
                 return op
         return None
 
-    def expression(self, min_prec: int = 1) -> Fn:
+    def expression(self, min_prec: int = 1) -> str:
         """A binary expression (precedence climbing, left-associative)."""
         left = self.value()
         while True:
@@ -261,49 +293,22 @@ class Reader:
             at = self.pos
             self.pos += len(op)
             right = self.expression(PRECEDENCE[op] + 1)
-            left = _binary(op, left, right, self.failer(at))
+            left = _fold(self.binary(op, left, right, at))
 
-
-def _index(v, fail) -> int:
-    if v is None:
-        fail("parameter number is vacant")
-    n = round(v)
-    if abs(v - n) > 1e-4:
-        fail(f"parameter number {v:g} is not a whole number")
-    return int(n)
-
-
-def _const(v: float) -> Fn:
-    fn = lambda env: v  # noqa: E731
-    fn.constant = v
-    return fn
-
-
-def _fold1(op, a: Fn) -> Fn:
-    if hasattr(a, "constant"):
-        try:
-            return _const(op(a.constant))
-        except MacroError:  # reported when the line runs, as rs274ngc does
-            pass
-    return lambda env: op(a(env))
-
-
-def _fold2(op, a: Fn, b: Fn) -> Fn:
-    if hasattr(a, "constant") and hasattr(b, "constant"):
-        try:
-            return _const(op(a.constant, b.constant))
-        except MacroError:  # reported when the line runs, as rs274ngc does
-            pass
-    return lambda env: op(a(env), b(env))
-
-
-def _binary(op: str, a: Fn, b: Fn, fail) -> Fn:
-    if op in ("eq", "ne"):
-        flip = op == "ne"
-        return _fold2(lambda x, y: _equal(x, y) if not flip else 1.0 - _equal(x, y), a, b)
-    f = BINARY[op]
-    if op == "+":
-        return _fold2(lambda x, y: _z(x) + _z(y), a, b)
-    if op == "*":
-        return _fold2(lambda x, y: _z(x) * _z(y), a, b)
-    return _fold2(lambda x, y: f(_z(x), _z(y), fail), a, b)
+    def binary(self, op: str, a: str, b: str, at: int) -> str:
+        if op in ("eq", "ne"):
+            test = f"_eq({a}, {b})" if self.fanuc else f"(1.0 if abs({a} - {b}) < {EQUAL_TOLERANCE} else 0.0)"
+            return test if op == "eq" else f"(1.0 - {test})"
+        a, b = self.z(a), self.z(b)
+        if op in ("+", "-", "*"):
+            return f"({a} {op} {b})"
+        if op in _COMPARE:
+            return f"(1.0 if {a} {_COMPARE[op]} {b} else 0.0)"
+        if op == "and":
+            return f"(1.0 if {a} != 0.0 and {b} != 0.0 else 0.0)"
+        if op == "or":
+            return f"(1.0 if {a} != 0.0 or {b} != 0.0 else 0.0)"
+        if op == "xor":
+            return f"(1.0 if ({a} != 0.0) != ({b} != 0.0) else 0.0)"
+        helper = {"/": "_div", "**": "_pow", "mod": "_mod"}[op]
+        return f"{helper}({a}, {b}, {self.where(at)})"

@@ -16,6 +16,7 @@ from .errors import MacroError
 from .structure import Unit
 
 FANUC_LOCALS, LINUXCNC_LOCALS = 33, 30
+MACHINE_PARAMETERS = 5000
 
 
 class Frame:
@@ -41,8 +42,11 @@ class Scope:
         self.params, self.fanuc = params, fanuc
         self.local_max = FANUC_LOCALS if fanuc else LINUXCNC_LOCALS
         self.frame: Frame | None = None
+        self.sync = None  # called before reading a machine parameter (#5000 and up)
 
     def num(self, n: int):
+        if n >= MACHINE_PARAMETERS and self.sync is not None:
+            self.sync()  # the interpreter's rows so far must be in before it is read
         if n <= self.local_max and n > 0:
             v = self.frame.locals.get(n)
         elif n == 0 and self.fanuc:
@@ -59,6 +63,10 @@ class Scope:
     def named(self, name: str) -> float | None:
         """The value of ``#<name>``, ``None`` when unset (the reader refuses it)."""
         return self.params.get_named(name) if name[0] == "_" else self.frame.named.get(name)
+
+    def has(self, name: str) -> bool:
+        """True when ``#<name>`` is set."""
+        return name in (self.params.named if name[0] == "_" else self.frame.named)
 
     def exists(self, name: str) -> bool:
         table = self.params.named if name[0] == "_" else self.frame.named

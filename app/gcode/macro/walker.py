@@ -21,6 +21,7 @@ from app.gcode.lexer import Word
 from app.gcode.ops import OpBuffer
 
 from . import block as bk
+from .batch import MAX_ROWS, Batch
 from .calls import FANUC_ARGUMENTS, Library
 from .errors import MacroError
 from .frame import Frame, Scope
@@ -65,10 +66,13 @@ class Walker:
         main = library.units[0]
         self.fanuc = main.fanuc
         self.scope = Scope(params, self.fanuc)
+        self.scope.sync = self.flush
         self.frames: list[Frame] = []
         self.trace = Trace([main.name])
         self.reports = [FileReport(report, "")]
         self.blocks_run = 0
+        self.batch = Batch()
+        self.pending_call = None
         self._names: dict[str, int] = {"": 0}
         first = next((i for i, b in enumerate(main.blocks) if b.kind != bk.SKIP), 0)
         self._push(Frame(main, 0, {}, "", 0, main.program_of[first] if self.fanuc else 0))
@@ -112,6 +116,7 @@ class Walker:
                     raise exc.at(b.line, f.unit.name if f.file_id else "") from None
         except MacroError as exc:
             self.report.add(exc.line, exc.column, ERROR, exc.message, file=exc.file)
+        self.flush()
 
     def _end_of_file(self, f: Frame) -> None:
         if len(self.frames) == 1:
@@ -140,41 +145,69 @@ class Walker:
     # --- plain blocks ------------------------------------------------------------------
     def words(self, f: Frame, b: bk.Block) -> None:
         scope = self.scope
+        values = b.values(scope) if b.values is not None else ()
+        n = len(b.words)
+        f.pc += 1
+        meta = (f.file_id, self._call_line(f, b), self._names[f.name], f.iteration, self.reports[f.file_id])
+        if b.simple and self.state.fast_path_ok() and self.batch.add(b, values[:n], meta):
+            if len(self.batch) >= MAX_ROWS:
+                self.flush()
+        else:
+            self._general(f, b, values, n)
+        self.assign(b, values, n)
+        if self.pending_call is not None:
+            block, call, words = self.pending_call
+            self.pending_call = None
+            self._fanuc_call(f, block, call, words)
+
+    def assign(self, b: bk.Block, values, n: int) -> None:
+        """Apply the line's assignments (their values were read with the line)."""
+        for target, value in zip(b.targets, values[n:], strict=False):
+            self.scope.assign(values[target[0]] if type(target) is tuple else target, value)
+
+    def _general(self, f: Frame, b: bk.Block, values, n: int) -> None:
         words = []
-        for w in b.words:
-            v = w.value(scope)
+        for w, v in zip(b.words, values, strict=False):
             if v is None:
                 if w.bare:
                     continue  # Fanuc: a word whose parameter is vacant is left out
                 v = 0.0
             words.append(Word(w.letter, v, w.column))
-        values = [(target(scope) if callable(target) else target, fn(scope)) for target, fn, _ in b.sets]
-        f.pc += 1
         call = self._call_word(words) if self.fanuc else None
-        if call is not None:
-            words = [w for w in words if w is not call]
-        if words and call is None:
-            self.emit(f, b, words)
-        elif words and call.letter == "M":  # motion on an M98/M99 line runs first
-            self.emit(f, b, [w for w in words if w.letter not in "PL"])
-        for target, value in values:
-            scope.assign(target, value)
-        if call is not None:
-            self._fanuc_call(f, b, call, words)
+        if call is None:
+            if words:
+                self.emit(f, b, words)
+            return
+        if call.letter == "M":  # motion on an M98/M99 line runs first
+            rest = [w for w in words if w is not call and w.letter not in "PL"]
+            if rest:
+                self.emit(f, b, rest)
+        self.pending_call = (b, call, [w for w in words if w is not call])
+
+    def _call_line(self, f: Frame, b: bk.Block) -> int:
+        main = self.frames[0]
+        return b.line if f is main else main.unit.blocks[main.pc - 1].line
+
+    def flush(self) -> None:
+        """Interpret the collected plain blocks."""
+        if len(self.batch):
+            self.state = self.batch.flush(self.state, self.ops, self.trace)
+            if len(self.trace.file) > MOVE_LIMIT:
+                raise MacroError(f"the expansion makes more than {MOVE_LIMIT:,} moves")
 
     def emit(self, f: Frame, b: bk.Block, words: list[Word]) -> None:
+        self.flush()
         ops = self.ops
         before = len(ops.rows)
         self.state, _ = interpret_line(self.state, words, b.line, ops, self.reports[f.file_id])
         n = len(ops.rows) - before
         if n:
             t = self.trace
-            main = self.frames[0]
             t.file.extend([f.file_id] * n)
-            t.call_line.extend([main.unit.blocks[main.pc - 1].line if f is not main else b.line] * n)
+            t.call_line.extend([self._call_line(f, b)] * n)
             t.context.extend([self._names[f.name]] * n)
             t.iteration.extend([f.iteration] * n)
-            if len(ops.rows) > MOVE_LIMIT:
+            if len(t.file) > MOVE_LIMIT:
                 raise MacroError(f"the expansion makes more than {MOVE_LIMIT:,} moves", b.line)
         if self.state.ended:
             self.frames.clear()
@@ -260,10 +293,7 @@ class Walker:
 
     def if_then(self, f: Frame, b: bk.Block) -> None:
         if self.test(b.args[0]):
-            scope = self.scope
-            values = [(t(scope) if callable(t) else t, fn(scope)) for t, fn, _ in b.sets]
-            for target, value in values:
-                scope.assign(target, value)
+            self.assign(b, b.values(self.scope), 0)
         f.pc += 1
 
     def fanuc_while(self, f: Frame, b: bk.Block) -> None:
