@@ -23,11 +23,28 @@ LETTERS = "XYZIJF"
 SIMPLE_LETTERS = frozenset("GXYZIJF")
 MAX_ROWS = 1 << 16
 _NAN = float("nan")
+_MOTION = (0.0, 1.0, 2.0, 3.0)
 
 
 def simple_shape(letters: list[str]) -> bool:
     """True when a block of these word letters may go to the fast path."""
-    return len(set(letters)) == len(letters) and SIMPLE_LETTERS.issuperset(letters)
+    return bool(letters) and len(set(letters)) == len(letters) and SIMPLE_LETTERS.issuperset(letters)
+
+
+def row_maker(letters: list[str], vacant: bool):
+    """A compiled ``fn(values) -> (g, [X Y Z I J F]) or None`` for a block of these words
+    (``None`` when its G word is not G0-G3; ``vacant``: a ``None`` value leaves a word out)."""
+    row = ["nan"] * 6
+    g = "-1.0"
+    for i, c in enumerate(letters):
+        code = f"v[{i}]" if not vacant else f"(nan if v[{i}] is None else v[{i}])"
+        if c == "G":
+            g = f"v[{i}]" if not vacant else f"(-1.0 if v[{i}] is None else v[{i}])"
+        else:
+            row[LETTERS.index(c)] = code
+    body = f"(({g}), [{', '.join(row)}])"
+    check = "" if "G" not in letters else f" if {g} in MOTION else None"
+    return eval(f"lambda v: {body}{check}", {"nan": _NAN, "MOTION": _MOTION})  # noqa: S307
 
 
 class Batch:
@@ -35,30 +52,21 @@ class Batch:
 
     def __init__(self) -> None:
         self.g: list[int] = []
-        self.columns = {c: [] for c in LETTERS}
+        self.rows: list[list[float]] = []  # X Y Z I J F per block, NaN when absent
         self.blocks: list[tuple] = []  # (block, words values, file id, call line, context, iteration, report)
 
     def __len__(self) -> int:
         return len(self.g)
 
-    def add(self, block, values: list, meta: tuple) -> bool:
-        """Add a block whose word ``values`` (None: left out) are all known; False
-        (nothing added) when its G word is not G0-G3."""
-        row = dict.fromkeys(LETTERS, _NAN)
-        g = -1
-        for w, v in zip(block.words, values, strict=False):
-            if v is None:
-                continue
-            if w.letter == "G":
-                if v not in (0.0, 1.0, 2.0, 3.0):
-                    return False
-                g = int(v)
-            else:
-                row[w.letter] = v
-        self.g.append(g)
-        for c in LETTERS:
-            self.columns[c].append(row[c])
-        self.blocks.append((block, values, *meta))
+    def add(self, block, values, iteration: int, where: tuple) -> bool:
+        """Add a block whose word ``values`` are all known; False (nothing added) when
+        its G word is not G0-G3. ``where``: (file id, calling line or 0, subprogram, report)."""
+        made = block.row(values)
+        if made is None:
+            return False
+        self.g.append(made[0])
+        self.rows.append(made[1])
+        self.blocks.append((block, values, iteration, where))
         return True
 
     def flush(self, state, ops, trace):
@@ -66,9 +74,11 @@ class Batch:
         if not self.g:
             return state
         n = len(self.g)
-        values = {c: np.asarray(self.columns[c], np.float64) for c in LETTERS}
+        table = np.array(self.rows, np.float64).reshape(n, 6)
+        values = {c: table[:, i] for i, c in enumerate(LETTERS)}
         values["M"] = values["S"] = np.full(n, np.nan)
-        scan = Scan(np.ones(n, bool), np.asarray(self.g, np.int8), np.full(n, -1, np.int8), values)
+        g = np.asarray(self.g, np.float64).astype(np.int8)
+        scan = Scan(np.ones(n, bool), g, np.full(n, -1, np.int8), values)
         before = len(ops.blocks)
         state, stop = vector.run(scan, 0, n, state, ops)
         if len(ops.blocks) > before:
@@ -84,15 +94,18 @@ class Batch:
         line, *rest = ops.blocks[-1]
         index = line - 1  # vector.run numbers rows by their place in the batch
         meta = [self.blocks[i] for i in index.tolist()]
-        ops.blocks[-1] = (np.fromiter((m[0].line for m in meta), np.int64, len(meta)), *rest)
-        trace.file.extend(m[2] for m in meta)
-        trace.call_line.extend(m[3] for m in meta)
-        trace.context.extend(m[4] for m in meta)
-        trace.iteration.extend(m[5] for m in meta)
+        lines = [m[0].line for m in meta]
+        ops.blocks[-1] = (np.asarray(lines, np.int64), *rest)
+        trace.file.extend(m[3][0] for m in meta)
+        trace.call_line.extend([m[3][1] or line for m, line in zip(meta, lines, strict=True)])
+        trace.context.extend(m[3][2] for m in meta)
+        trace.iteration.extend(m[2] for m in meta)
 
     def _one(self, i: int, state, ops, trace):
-        block, values, file_id, call_line, context, iteration, report = self.blocks[i]
-        words = [Word(w.letter, v, w.column) for w, v in zip(block.words, values, strict=False) if v is not None]
+        block, values, iteration, (file_id, call_line, context, report) = self.blocks[i]
+        call_line = call_line or block.line
+        pairs = zip(block.words, values, strict=False)
+        words = [Word(w.letter, v, w.column) for w, v in pairs if v is not None]
         before = len(ops.rows)
         state, _ = interpret_line(state, words, block.line, ops, report)
         n = len(ops.rows) - before

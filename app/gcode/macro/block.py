@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from .batch import simple_shape
+from .batch import row_maker, simple_shape
 from .errors import MacroError
 from .expr import Reader, compile_code, compile_codes
 from .text import squeeze
@@ -54,6 +54,9 @@ class Block:
     values: object = None  # fn(S) -> (word values..., set values..., computed set targets...)
     targets: list = field(default_factory=list)  # per set: a number, a name, or (index into values,)
     simple: bool = False  # only G X Y Z I J F words, each once: may go to the fast path
+    row: object = None  # for a simple block: values -> a batch row (batch.row_maker)
+    assigns: list = field(default_factory=list)  # (target, index of its value)
+    vacant: bool = False  # Fanuc: a parameter may be vacant
 
     def finish(self) -> Block:
         """Compile the codes of the line into functions (done once)."""
@@ -67,6 +70,10 @@ class Block:
                 self.targets.append(target)
         self.values = compile_codes(codes) if codes else None
         self.simple = self.kind == WORDS and simple_shape([w.letter for w in self.words])
+        if self.simple:
+            self.row = row_maker([w.letter for w in self.words], self.vacant)
+        n = len(self.words)
+        self.assigns = [(target, n + i) for i, target in enumerate(self.targets)]
         self.args = [compile_code(a) for a in self.args]
         return self
 
@@ -183,7 +190,9 @@ def _fanuc(reader: Reader, block: Block) -> Block | None:
 
 def compile_line(line: str, line_no: int, fanuc: bool) -> Block:
     """The ``Block`` of one source line (``fanuc``: the dialect's assignment rule)."""
-    return _read_line(line, line_no, fanuc).finish()
+    block = _read_line(line, line_no, fanuc)
+    block.vacant = fanuc
+    return block.finish()
 
 
 def _read_line(line: str, line_no: int, fanuc: bool) -> Block:

@@ -90,6 +90,8 @@ class Walker:
             unit = self.library.units[len(self.reports)]
             self.trace.files.append(unit.name)
             self.reports.append(FileReport(self.report, unit.name))
+        call_line = self._call_line(frame, None) if len(self.frames) > 1 else 0
+        frame.where = (frame.file_id, call_line, self._names[frame.name], self.reports[frame.file_id])
 
     def _pop(self) -> Frame:
         frame = self.frames.pop()
@@ -146,24 +148,25 @@ class Walker:
     def words(self, f: Frame, b: bk.Block) -> None:
         scope = self.scope
         values = b.values(scope) if b.values is not None else ()
-        n = len(b.words)
         f.pc += 1
-        meta = (f.file_id, self._call_line(f, b), self._names[f.name], f.iteration, self.reports[f.file_id])
-        if b.simple and self.state.fast_path_ok() and self.batch.add(b, values[:n], meta):
+        if b.simple and self.state.fast_path_ok() and self.batch.add(b, values, f.iteration, f.where):
             if len(self.batch) >= MAX_ROWS:
                 self.flush()
         else:
-            self._general(f, b, values, n)
-        self.assign(b, values, n)
+            self._general(f, b, values, len(b.words))
+        if b.assigns:
+            assign = self.scope.assign
+            for target, i in b.assigns:
+                assign(values[target[0]] if type(target) is tuple else target, values[i])
         if self.pending_call is not None:
             block, call, words = self.pending_call
             self.pending_call = None
             self._fanuc_call(f, block, call, words)
 
-    def assign(self, b: bk.Block, values, n: int) -> None:
+    def assign(self, b: bk.Block, values) -> None:
         """Apply the line's assignments (their values were read with the line)."""
-        for target, value in zip(b.targets, values[n:], strict=False):
-            self.scope.assign(values[target[0]] if type(target) is tuple else target, value)
+        for target, i in b.assigns:
+            self.scope.assign(values[target[0]] if type(target) is tuple else target, values[i])
 
     def _general(self, f: Frame, b: bk.Block, values, n: int) -> None:
         words = []
@@ -184,7 +187,8 @@ class Walker:
                 self.emit(f, b, rest)
         self.pending_call = (b, call, [w for w in words if w is not call])
 
-    def _call_line(self, f: Frame, b: bk.Block) -> int:
+    def _call_line(self, f: Frame, b: bk.Block | None) -> int:
+        """The main program's line that ``b`` of frame ``f`` runs for."""
         main = self.frames[0]
         return b.line if f is main else main.unit.blocks[main.pc - 1].line
 
@@ -293,7 +297,7 @@ class Walker:
 
     def if_then(self, f: Frame, b: bk.Block) -> None:
         if self.test(b.args[0]):
-            self.assign(b, b.values(self.scope), 0)
+            self.assign(b, b.values(self.scope))
         f.pc += 1
 
     def fanuc_while(self, f: Frame, b: bk.Block) -> None:
