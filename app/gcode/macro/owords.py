@@ -62,6 +62,11 @@ def _next(w, f: Frame, b) -> None:
     f.pc += 1
 
 
+def _do(w, f: Frame, b) -> None:
+    w.loop_pass(f, f.pc)
+    f.pc += 1
+
+
 def _while(w, f: Frame, b) -> None:
     back = f.unit.back.get(f.pc)
     if back is not None:  # the 'while' closing a 'do'
@@ -73,6 +78,7 @@ def _while(w, f: Frame, b) -> None:
             f.pc += 1
         return
     if w.test(b.args[0]):
+        w.loop_pass(f, f.pc)
         f.pc += 1
     else:
         w.loop_done(f, f.pc)
@@ -89,6 +95,7 @@ def _repeat(w, f: Frame, b) -> None:
     count = b.args[0](w.scope) or 0.0
     if count >= 1:
         f.repeat_left[f.pc] = int(count)
+        w.loop_pass(f, f.pc)
         f.pc += 1
     else:
         f.pc = f.unit.jump[f.pc]
@@ -127,7 +134,7 @@ def _continue(w, f: Frame, b) -> None:
 HANDLERS = {
     "sub": _sub, "call": _call, "return": _return, "endsub": _return, "if": _if,
     "elseif": _branch_end, "else": _branch_end, "endif": _next, "while": _while,
-    "endwhile": _endwhile, "do": _next, "repeat": _repeat, "endrepeat": _endrepeat,
+    "endwhile": _endwhile, "do": _do, "repeat": _repeat, "endrepeat": _endrepeat,
     "break": _break, "continue": _continue,
 }
 

@@ -81,6 +81,8 @@ class Walker:
     def _push(self, frame: Frame) -> None:
         if len(self.frames) >= DEPTH_LIMIT + 1:
             raise MacroError(f"calls nested deeper than {DEPTH_LIMIT} levels")
+        if self.frames:
+            frame.iteration = frame.iteration or self.frames[-1].iteration  # the caller's loop pass
         self.frames.append(frame)
         self.scope.frame = frame
         if frame.name not in self._names:
@@ -134,7 +136,11 @@ class Walker:
             raise MacroError(f"a loop ran more than {LOOP_LIMIT:,} times (it starts at line "
                              f"{f.unit.blocks[head].line})")
         f.counts[head] = count
-        f.iteration = count + 1
+        f.iteration = count + 1  # passes are counted from 1
+
+    def loop_pass(self, f: Frame, head: int) -> None:
+        """A loop's test passed: the rows that follow are of pass ``count + 1``."""
+        f.iteration = f.counts.get(head, 0) + 1
 
     def loop_done(self, f: Frame, head: int) -> None:
         f.counts.pop(head, None)
@@ -214,7 +220,20 @@ class Walker:
             if len(t.file) > MOVE_LIMIT:
                 raise MacroError(f"the expansion makes more than {MOVE_LIMIT:,} moves", b.line)
         if self.state.ended:
+            if f is self.frames[0]:
+                self._after_end(f)
             self.frames.clear()
+
+    def _after_end(self, f: Frame) -> None:
+        """One warning for the first block after M2/M30 (Fanuc: before the next program)."""
+        for i in range(f.pc, len(f.unit.blocks)):
+            b = f.unit.blocks[i]
+            if b.kind == bk.PROGRAM:
+                return
+            if b.kind != bk.SKIP or i in f.unit.bad:
+                ended = self.state.ended
+                self.report.warning(b.line, 0, f"ignored: the program ended at line {ended} (M2/M30)")
+                return
 
     def skip(self, f: Frame, b: bk.Block) -> None:
         if f.pc in f.unit.bad:
@@ -302,12 +321,14 @@ class Walker:
 
     def fanuc_while(self, f: Frame, b: bk.Block) -> None:
         if self.test(b.args[0]):
+            self.loop_pass(f, f.pc)
             f.pc += 1
         else:
             self.loop_done(f, f.pc)
             f.pc = f.unit.jump[f.pc]
 
     def fanuc_do(self, f: Frame, b: bk.Block) -> None:
+        self.loop_pass(f, f.pc)
         f.pc += 1
 
     def fanuc_end(self, f: Frame, b: bk.Block) -> None:
