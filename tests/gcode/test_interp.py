@@ -110,7 +110,7 @@ ERROR_CASES = [
     ("G54", 1, "G54-G59"),
     ("G59.1", 1, "G54-G59"),
     ("G7", 1, "unknown G-code G7"),
-    ("M99", 1, "M99 outside a subprogram"),
+    ("M99", 1, "unknown M-code M99"),
     ("G1 X1 F1 Q5", 1, "Q words"),
     ("G0 A10", 1, "axis A"),
     ("G0 G1 X1", 1, "G0 and G1"),
