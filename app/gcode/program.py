@@ -87,6 +87,20 @@ class Program:
         """(device index to pause before, message) for M0, M1 and tool changes."""
         return self._rendered()[2]
 
+    def context_at(self, device_index: int) -> tuple[str, int]:
+        """(subprogram, loop pass) that device line ``device_index`` comes from: ``("", 0)``
+        for the main program outside loops (and for every line of a plain program)."""
+        source = self.ops.source
+        if source is None or not len(self.ops):
+            return "", 0
+        row = int(np.searchsorted(self.plan.first, device_index, "right")) - 1
+        row = min(max(row, 0), len(self.ops) - 1)
+        return source.names[int(source.context[row])], int(source.iteration[row])
+
+    def moves_per_line(self) -> np.ndarray:
+        """Number of moves each 1-based line of the main program produced (index 0 unused)."""
+        return np.bincount(self.toolpath.source_line, minlength=len(self.lines) + 1)
+
     @cached_property
     def moves(self) -> list[dict]:
         """The interpreted motion in the ``cnc-gcode moves`` JSON format."""
