@@ -103,24 +103,34 @@ class Walker:
     # --- the loop --------------------------------------------------------------------
     def run(self) -> None:
         """Walk to the end of the main program or the first error (reported)."""
-        handlers = HANDLERS
+        frames = self.frames
         try:
-            while self.frames:
-                f = self.frames[-1]
+            while frames:
+                f = frames[-1]
                 if f.pc >= len(f.unit.blocks):
                     self._end_of_file(f)
                     continue
-                b = f.unit.blocks[f.pc]
-                self.blocks_run += 1
-                if self.blocks_run > BLOCK_LIMIT:
-                    raise MacroError(f"the program runs more than {BLOCK_LIMIT:,} blocks", b.line)
-                try:
-                    handlers[b.kind](self, f, b)
-                except MacroError as exc:
-                    raise exc.at(b.line, f.unit.name if f.file_id else "") from None
+                self._run_frame(f, frames)
         except MacroError as exc:
             self.report.add(exc.line, exc.column, ERROR, exc.message, file=exc.file)
         self.flush()
+
+    def _run_frame(self, f: Frame, frames: list[Frame]) -> None:
+        """Run blocks of frame ``f`` until it ends, calls or returns."""
+        handlers, blocks = HANDLERS, f.unit.blocks
+        n, left = len(blocks), BLOCK_LIMIT - self.blocks_run
+        ran, b = 0, None
+        try:
+            while frames and frames[-1] is f and f.pc < n:
+                b = blocks[f.pc]
+                ran += 1
+                if ran > left:
+                    raise MacroError(f"the program runs more than {BLOCK_LIMIT:,} blocks", b.line)
+                handlers[b.kind](self, f, b)
+        except MacroError as exc:
+            raise exc.at(b.line if b is not None else 0, f.unit.name if f.file_id else "") from None
+        finally:
+            self.blocks_run += ran
 
     def _end_of_file(self, f: Frame) -> None:
         if len(self.frames) == 1:
@@ -347,8 +357,10 @@ class Walker:
 
 from .owords import oword  # noqa: E402  (the o-word handlers use Walker's helpers)
 
-HANDLERS = {
+HANDLERS = [None] * 10  # by block kind
+for _kind, _handler in {
     bk.WORDS: Walker.words, bk.SKIP: Walker.skip, bk.OWORD: oword, bk.PROGRAM: Walker.program,
     bk.IF_GOTO: Walker.if_goto, bk.IF_THEN: Walker.if_then, bk.GOTO: Walker.goto,
     bk.WHILE: Walker.fanuc_while, bk.DO: Walker.fanuc_do, bk.END: Walker.fanuc_end,
-}
+}.items():
+    HANDLERS[_kind] = _handler
