@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 
 from .batch import row_maker, simple_shape
 from .errors import MacroError
-from .expr import Reader, compile_code, compile_codes
+from .expr import Reader, compile_code, compile_codes, constant
 from .text import squeeze
 
 WORDS, SKIP, OWORD, PROGRAM, IF_GOTO, IF_THEN, GOTO, WHILE, DO, END = range(10)
@@ -23,7 +23,8 @@ O_KEYWORDS = ("sub", "endsub", "call", "return", "if", "elseif", "else", "endif"
               "endwhile", "do", "repeat", "endrepeat", "break", "continue")
 WITH_VALUE = {"if", "elseif", "while", "repeat"}  # keywords that need one [value]
 MAY_VALUE = {"return", "endsub"}  # keywords that may carry one [value]
-LETTERS = set("abcdefghijklmnpqrstuvwxyz")  # a word's letter ('o' is a statement)
+LETTERS = set("abcdefghijklmnpqrstuvwxyz")
+_CALLS = {("M", 98.0), ("M", 99.0), ("G", 65.0)}  # a word's letter ('o' is a statement)
 
 
 @dataclass
@@ -57,6 +58,8 @@ class Block:
     row: object = None  # for a simple block: values -> a batch row (batch.row_maker)
     assigns: list = field(default_factory=list)  # (target, index of its value)
     vacant: bool = False  # Fanuc: a parameter may be vacant
+    call: Word | None = None  # Fanuc: the M98/M99/G65 word of the line (a constant)
+    call_only: bool = False  # Fanuc: the line is only that call and its P/L/arguments
 
     def finish(self) -> Block:
         """Compile the codes of the line into functions (done once)."""
@@ -72,6 +75,10 @@ class Block:
         self.simple = self.kind == WORDS and simple_shape([w.letter for w in self.words])
         if self.simple:
             self.row = row_maker([w.letter for w in self.words], self.vacant)
+        if self.vacant and self.kind == WORDS:  # Fanuc: a call line read without building words
+            self.call = next((w for w in self.words if (w.letter, constant(w.code)) in _CALLS), None)
+            self.call_only = self.call is not None and (
+                self.call.letter == "G" or all(w.letter in "MPL" for w in self.words))
         n = len(self.words)
         self.assigns = [(target, n + i) for i, target in enumerate(self.targets)]
         self.args = [compile_code(a) for a in self.args]

@@ -22,6 +22,9 @@ import math
 from .errors import MacroError
 from .text import Squeezed
 
+FANUC_LOCALS, LINUXCNC_LOCALS = 33, 30
+MACHINE_PARAMETERS = 5000  # #5000 and up: the interpreter's (read after a sync)
+
 EQUAL_TOLERANCE = 1e-4
 PRECEDENCE = {"**": 6, "*": 5, "/": 5, "mod": 5, "+": 4, "-": 4,
               "eq": 3, "ne": 3, "gt": 3, "ge": 3, "lt": 3, "le": 3, "and": 2, "or": 2, "xor": 2}
@@ -254,7 +257,21 @@ class Reader:
         target = self.target()
         if isinstance(target, str):
             return f"(S.named({target!r}) if S.has({target!r}) else _unset({target!r}, {self.where(at)}))"
+        if isinstance(target, int):
+            return self.fixed_parameter(target)
         return f"S.num({target})"
+
+    def fixed_parameter(self, n: int) -> str:
+        """Code reading ``#n`` for a fixed ``n``: the tables directly (no call), except
+        for the machine's parameters, which ``S.num`` reads after a sync."""
+        default = "" if self.fanuc else ", 0.0"  # LinuxCNC: unset reads 0; Fanuc: vacant
+        if n == 0 and self.fanuc:
+            return "None"
+        if 0 < n <= (FANUC_LOCALS if self.fanuc else LINUXCNC_LOCALS):
+            return f"S.frame.locals.get({n}{default})"
+        if 0 < n < MACHINE_PARAMETERS:
+            return f"S.params.numbered.get({n}{default})"
+        return f"S.num({n})"
 
     def target(self) -> str | int:
         """After ``#``: a name (str), or code giving the number (int when fixed)."""

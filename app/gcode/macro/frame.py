@@ -10,13 +10,11 @@ unset parameter as vacant (``None``).
 
 from __future__ import annotations
 
-from app.gcode.params import ParamError, Params
+from app.gcode.params import LAST, ParamError, Params
 
 from .errors import MacroError
+from .expr import FANUC_LOCALS, LINUXCNC_LOCALS, MACHINE_PARAMETERS
 from .structure import Unit
-
-FANUC_LOCALS, LINUXCNC_LOCALS = 33, 30
-MACHINE_PARAMETERS = 5000
 
 
 class Frame:
@@ -52,6 +50,8 @@ class Scope:
             v = self.frame.locals.get(n)
         elif n == 0 and self.fanuc:
             return None
+        elif 0 < n <= LAST:
+            v = self.params.numbered.get(n)
         else:
             try:
                 v = self.params.get(n)

@@ -165,7 +165,9 @@ class Walker:
         scope = self.scope
         values = b.values(scope) if b.values is not None else ()
         f.pc += 1
-        if b.simple and self.state.fast_path_ok() and self.batch.add(b, values, f.iteration, f.where):
+        if not b.words or b.call_only:
+            pass
+        elif b.simple and self.state.fast_path_ok() and self.batch.add(b, values, f.iteration, f.where):
             if len(self.batch) >= MAX_ROWS:
                 self.flush()
         else:
@@ -174,10 +176,15 @@ class Walker:
             assign = self.scope.assign
             for target, i in b.assigns:
                 assign(values[target[0]] if type(target) is tuple else target, values[i])
-        if self.pending_call is not None:
+        if b.call_only:
+            call = b.call
+            by_letter = {w.letter: v for w, v in zip(b.words, values, strict=False) if v is not None}
+            self._fanuc_call(f, b, call.letter, by_letter.pop(call.letter), call.column, by_letter)
+        elif self.pending_call is not None:
             block, call, words = self.pending_call
             self.pending_call = None
-            self._fanuc_call(f, block, call, words)
+            by_letter = {w.letter: w.value for w in words}
+            self._fanuc_call(f, block, call.letter, call.value, call.column, by_letter)
 
     def assign(self, b: bk.Block, values) -> None:
         """Apply the line's assignments (their values were read with the line)."""
@@ -260,20 +267,20 @@ class Walker:
                 return w
         return None
 
-    def _fanuc_call(self, f: Frame, b: bk.Block, call: Word, words: list[Word]) -> None:
-        by_letter = {w.letter: w.value for w in words}
-        if call.letter == "M" and call.value == 99.0:
+    def _fanuc_call(self, f: Frame, b: bk.Block, letter: str, code: float, column: int, by_letter) -> None:
+        """Run ``M98``/``G65`` (a call) or ``M99`` (a return); ``by_letter``: the other words."""
+        if letter == "M" and code == 99.0:
             self._m99(f, by_letter.get("P"))
             return
         if "P" not in by_letter:
-            raise MacroError(f"{call.letter}{call.value:g} needs P (the program number)", b.line, call.column)
+            raise MacroError(f"{letter}{code:g} needs P (the program number)", b.line, column)
         number, count = int(by_letter["P"]), int(by_letter.get("L", 1))
-        if call.letter == "M" and "L" not in by_letter and number > 9999:
+        if letter == "M" and "L" not in by_letter and number > 9999:
             number, count = number % 10000, number // 10000  # packed M98 Pkkknnnn
         if count < 1:
             return
         file_id, start = self.library.program(number, f.file_id)
-        if call.letter == "M":
+        if letter == "M":
             locals_ = f.locals  # M98 keeps the caller's local level
         else:
             locals_ = {FANUC_ARGUMENTS[k]: v for k, v in by_letter.items() if k in FANUC_ARGUMENTS}
