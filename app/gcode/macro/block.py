@@ -199,7 +199,10 @@ def compile_line(line: str, line_no: int, fanuc: bool) -> Block:
     """The ``Block`` of one source line (``fanuc``: the dialect's assignment rule)."""
     block = _read_line(line, line_no, fanuc)
     block.vacant = fanuc
-    return block.finish()
+    try:
+        return block.finish()
+    except (SyntaxError, RecursionError, MemoryError):  # Python's own limits on one expression
+        raise MacroError("the line's expressions are too complex (too many operations)", line_no) from None
 
 
 def _read_line(line: str, line_no: int, fanuc: bool) -> Block:

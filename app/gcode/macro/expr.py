@@ -26,6 +26,7 @@ FANUC_LOCALS, LINUXCNC_LOCALS = 33, 30
 MACHINE_PARAMETERS = 5000  # #5000 and up: the interpreter's (read after a sync)
 
 EQUAL_TOLERANCE = 1e-4
+MAX_DEPTH = 50  # brackets, functions and signs inside each other
 PRECEDENCE = {"**": 6, "*": 5, "/": 5, "mod": 5, "+": 4, "-": 4,
               "eq": 3, "ne": 3, "gt": 3, "ge": 3, "lt": 3, "le": 3, "and": 2, "or": 2, "xor": 2}
 _WORD_OPS = ("mod", "eq", "ne", "gt", "ge", "lt", "le", "and", "or", "xor")
@@ -148,6 +149,7 @@ class Reader:
 
     def __init__(self, sq: Squeezed, line_no: int, fanuc: bool, pos: int = 0):
         self.sq, self.text, self.line_no, self.fanuc, self.pos = sq, sq.text, line_no, fanuc, pos
+        self.depth = 0
 
     # --- helpers ---------------------------------------------------------------------
     def error(self, message: str, at: int | None = None) -> MacroError:
@@ -192,6 +194,15 @@ class Reader:
 
     def value(self) -> str:
         """One real value: ``[expr]``, ``#param``, a function, a signed number or value."""
+        self.depth += 1
+        try:
+            return self._value()
+        finally:
+            self.depth -= 1
+
+    def _value(self) -> str:
+        if self.depth > MAX_DEPTH:
+            raise self.error(f"expression nested more than {MAX_DEPTH} deep")
         c = self.peek()
         if c == "[":
             self.pos += 1

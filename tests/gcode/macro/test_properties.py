@@ -50,3 +50,21 @@ def test_an_expansion_is_deterministic(text):
     assert a.moves == b.moves and a.diagnostics == b.diagnostics
     assert a.device_lines == b.device_lines
     assert np.array_equal(a.ops.source.call_line, b.ops.source.call_line)
+
+
+MACRO_ALPHABET = "GXYZFIJMOPLNW#[]<>_=+-*/.0123456789 \n()oifdnwhlegtsqrabcu"
+WORDS = "#1 #<a> #<_b> [ ] = + * / EQ LT GOTO IF WHILE DO1 END1 o1 sub endsub call while endwhile do if " \
+        "else endif repeat break M98 M99 G65 P1 O1 N1 G1 X SQRT ATAN 1 0 -"
+TOKENS = [*WORDS.split(" "), "\n", " "]
+macro_tokens = st.sampled_from(TOKENS)
+macro_text = st.one_of(st.text(alphabet=MACRO_ALPHABET, max_size=200),
+                       st.lists(macro_tokens, max_size=60).map("".join))
+
+
+@SETTINGS
+@given(macro_text)
+def test_any_macro_text_loads_without_exception(text):
+    program = load_text("#1 = 1\n" + text)
+    for d in program.diagnostics:
+        assert d.line >= 1 and d.message
+    assert len(program.line_map) == len(program.device_lines)
