@@ -10,9 +10,11 @@ parameter): arithmetic reads it as 0, ``EQ``/``NE`` tell it from 0.
 Precedence as LinuxCNC's rs274ngc, all left-associative: ``**``; ``* / MOD``;
 ``+ -``; ``EQ NE GT GE LT LE``; ``AND OR XOR``. A unary sign belongs to its operand
 (``-2**2`` is 4). Angles are degrees; ``ATAN[a]/[b]`` is atan2 (Fanuc also takes
-``ATAN[a]`` and ``ATAN[a,b]``). ``EQ``/``NE`` allow 1e-4 as rs274ngc does. Errors
-(division by zero, ``SQRT`` of a negative, ``ACOS`` out of range ...) name the line
-and column of the operator or function, and are raised when the line runs.
+``ATAN[a]`` and ``ATAN[a,b]``). ``FIX``/``FUP`` are floor/ceiling in LinuxCNC and
+toward/away from zero in Fanuc (its manual: ``FIX[-1.2]`` is -1, ``FUP[-1.2]`` -2).
+``EQ``/``NE`` allow 1e-4 as rs274ngc does. Errors (division by zero, ``SQRT`` of a
+negative, ``ACOS`` out of range ...) name the line and column of the operator or
+function, and are raised when the line runs.
 """
 
 from __future__ import annotations
@@ -108,11 +110,13 @@ FUNCTIONS = {
     "round": _round,
     "fix": lambda x, line, col: float(math.floor(x)),
     "fup": lambda x, line, col: float(math.ceil(x)),
+    "fix_fanuc": lambda x, line, col: float(math.trunc(x)),
+    "fup_fanuc": lambda x, line, col: float(math.copysign(math.ceil(abs(x)), x)),
 }
 NAMESPACE = {"_z": _z, "_eq": _eq, "_div": _div, "_pow": _pow, "_mod": _mod, "_index": _index,
              "_atan2": _atan2, "_unset": _unset, "inf": math.inf, "nan": math.nan,
              **{f"_f_{k}": v for k, v in FUNCTIONS.items()}}
-_NAMES = sorted([*FUNCTIONS, "exists"], key=len, reverse=True)
+_NAMES = sorted([*(f for f in FUNCTIONS if not f.endswith("_fanuc")), "exists"], key=len, reverse=True)
 _COMPARE = {"gt": ">", "ge": ">=", "lt": "<", "le": "<="}
 
 
@@ -239,6 +243,8 @@ class Reader:
             self.expect("/", "after ATAN[a] (the form is ATAN[a]/[b])")
             self.expect("[", "after ATAN[a]/ (the form is ATAN[a]/[b])")
             return self.atan2(arg, self.expression())
+        if self.fanuc and name in ("fix", "fup"):
+            name += "_fanuc"  # Fanuc: FIX toward zero, FUP away from zero (LinuxCNC: floor, ceil)
         return _fold(f"_f_{name}({self.z(arg)}, {self.where(start)})")
 
     def atan2(self, y: str, x: str) -> str:

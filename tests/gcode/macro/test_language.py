@@ -120,3 +120,8 @@ def test_rows_carry_the_calling_line_subprogram_and_iteration(tmp_path):
 ])
 def test_plain_programs_take_the_fast_path(text):
     assert load_text(text).ops.source is None
+
+
+def test_fix_and_fup_follow_each_dialect():
+    assert xs("G1 X[FIX[-1.2]] Y0 F100\nG1 X[FUP[-1.2]]\nM2\n") == [-2.0, -1.0]  # LinuxCNC: floor, ceil
+    assert xs("O0001\nG1 X[FIX[-1.2]] Y0 F100\nG1 X[FUP[-1.2]]\nG1 X[FUP[1.2]]\nM30\n") == [-1.0, -2.0, 2.0]

@@ -16,7 +16,7 @@ from tests.oracle.test_oracle import expected_moves, lines_as_recorded
 
 HERE = Path(__file__).resolve().parent
 DATA = HERE.parents[1] / "oracle" / "data"
-TWINS = {"twin.nc": "macro_twin_fanuc"}
+TWINS = {"twin.nc": "macro_twin_fanuc", "twin2.nc": "macro_twin_fanuc2"}
 
 
 @pytest.mark.parametrize("name", sorted(TWINS))
