@@ -58,6 +58,7 @@ class Block:
     row: object = None  # for a simple block: values -> a batch row (batch.row_maker)
     assigns: list = field(default_factory=list)  # (target, index of its value)
     vacant: bool = False  # Fanuc: a parameter may be vacant
+    run: object = None  # the walker's handler for this block (walker.bind)
     call: Word | None = None  # Fanuc: the M98/M99/G65 word of the line (a constant)
     call_only: bool = False  # Fanuc: the line is only that call and its P/L/arguments
 

@@ -67,17 +67,20 @@ def _do(w, f: Frame, b) -> None:
     f.pc += 1
 
 
+def _do_while(w, f: Frame, b) -> None:
+    back = f.unit.back[f.pc]  # the 'while' closing a 'do'
+    v = b.args[0](w.scope)
+    if v is not None and v != 0.0:
+        w.loop_back(f, back - 1)
+        f.pc = back
+    else:
+        w.loop_done(f, back - 1)
+        f.pc += 1
+
+
 def _while(w, f: Frame, b) -> None:
-    back = f.unit.back.get(f.pc)
-    if back is not None:  # the 'while' closing a 'do'
-        if w.test(b.args[0]):
-            w.loop_back(f, back - 1)
-            f.pc = back
-        else:
-            w.loop_done(f, back - 1)
-            f.pc += 1
-        return
-    if w.test(b.args[0]):
+    v = b.args[0](w.scope)
+    if v is not None and v != 0.0:
         w.loop_pass(f, f.pc)
         f.pc += 1
     else:
@@ -133,12 +136,12 @@ def _continue(w, f: Frame, b) -> None:
 
 HANDLERS = {
     "sub": _sub, "call": _call, "return": _return, "endsub": _return, "if": _if,
-    "elseif": _branch_end, "else": _branch_end, "endif": _next, "while": _while,
+    "elseif": _branch_end, "else": _branch_end, "endif": _next, "while": _while, "do-while": _do_while,
     "endwhile": _endwhile, "do": _do, "repeat": _repeat, "endrepeat": _endrepeat,
     "break": _break, "continue": _continue,
 }
 
 
-def oword(w, f: Frame, b) -> None:
-    """Run one o-word statement."""
-    HANDLERS[b.keyword](w, f, b)
+def handler(b):
+    """The function that runs o-word statement ``b``."""
+    return HANDLERS[b.keyword]

@@ -43,6 +43,7 @@ class Unit:
         compiled = len(self.errors)
         self._structure()
         self.structure_ok = len(self.errors) == compiled  # jumps are only safe when balanced
+        self.bound = False  # the walker has given each block its handler
 
     def fail(self, message: str, block: Block) -> None:
         self.errors.append(MacroError(message, block.line, block.column, self.name))
@@ -154,6 +155,7 @@ class Unit:
             _, _, head, _ = stack.pop()
             self.back[i] = head + 1  # do ... while [c]: true goes back into the body
             self.jump[head] = i + 1
+            b.keyword = "do-while"  # the walker's handler for the end of a do loop
             return
         self._open(stack, i, b)
 

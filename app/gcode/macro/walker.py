@@ -63,6 +63,7 @@ class Walker:
 
     def __init__(self, library: Library, state, ops: OpBuffer, report: Report, params):
         self.library, self.state, self.ops, self.report = library, state, ops, report
+        self.fast_ok = state.fast_path_ok()  # the state changes only in flush() and emit()
         main = library.units[0]
         self.fanuc = main.fanuc
         self.scope = Scope(params, self.fanuc)
@@ -117,7 +118,9 @@ class Walker:
 
     def _run_frame(self, f: Frame, frames: list[Frame]) -> None:
         """Run blocks of frame ``f`` until it ends, calls or returns."""
-        handlers, blocks = HANDLERS, f.unit.blocks
+        blocks = f.unit.blocks
+        if not f.unit.bound:
+            bind(f.unit)
         n, left = len(blocks), BLOCK_LIMIT - self.blocks_run
         ran, b = 0, None
         try:
@@ -126,7 +129,7 @@ class Walker:
                 ran += 1
                 if ran > left:
                     raise MacroError(f"the program runs more than {BLOCK_LIMIT:,} blocks", b.line)
-                handlers[b.kind](self, f, b)
+                b.run(self, f, b)
         except MacroError as exc:
             raise exc.at(b.line if b is not None else 0, f.unit.name if f.file_id else "") from None
         finally:
@@ -167,8 +170,8 @@ class Walker:
         f.pc += 1
         if not b.words or b.call_only:
             pass
-        elif b.simple and self.state.fast_path_ok() and self.batch.add(b, values, f.iteration, f.where):
-            if len(self.batch) >= MAX_ROWS:
+        elif b.simple and self.fast_ok and self.batch.add(b, values, f.iteration, f.where):
+            if len(self.batch.g) >= MAX_ROWS:
                 self.flush()
         else:
             self._general(f, b, values, len(b.words))
@@ -219,6 +222,7 @@ class Walker:
         """Interpret the collected plain blocks."""
         if len(self.batch):
             self.state = self.batch.flush(self.state, self.ops, self.trace)
+            self.fast_ok = self.state.fast_path_ok()
             if len(self.trace.file) > MOVE_LIMIT:
                 raise MacroError(f"the expansion makes more than {MOVE_LIMIT:,} moves")
 
@@ -227,6 +231,7 @@ class Walker:
         ops = self.ops
         before = len(ops.rows)
         self.state, _ = interpret_line(self.state, words, b.line, ops, self.reports[f.file_id])
+        self.fast_ok = self.state.fast_path_ok()
         n = len(ops.rows) - before
         if n:
             t = self.trace
@@ -362,12 +367,19 @@ class Walker:
             self._return(f, None)
 
 
-from .owords import oword  # noqa: E402  (the o-word handlers use Walker's helpers)
+from .owords import handler as oword_handler  # noqa: E402  (the o-word handlers use Walker's helpers)
 
 HANDLERS = [None] * 10  # by block kind
 for _kind, _handler in {
-    bk.WORDS: Walker.words, bk.SKIP: Walker.skip, bk.OWORD: oword, bk.PROGRAM: Walker.program,
+    bk.WORDS: Walker.words, bk.SKIP: Walker.skip, bk.OWORD: None, bk.PROGRAM: Walker.program,
     bk.IF_GOTO: Walker.if_goto, bk.IF_THEN: Walker.if_then, bk.GOTO: Walker.goto,
     bk.WHILE: Walker.fanuc_while, bk.DO: Walker.fanuc_do, bk.END: Walker.fanuc_end,
 }.items():
     HANDLERS[_kind] = _handler
+
+
+def bind(unit) -> None:
+    """Give every block of ``unit`` the handler that runs it (once per unit)."""
+    for b in unit.blocks:
+        b.run = oword_handler(b) if b.kind == bk.OWORD else HANDLERS[b.kind]
+    unit.bound = True
