@@ -189,6 +189,31 @@ class Walker:
             by_letter = {w.letter: w.value for w in words}
             self._fanuc_call(f, block, call.letter, call.value, call.column, by_letter)
 
+    def simple_words(self, f: Frame, b: bk.Block) -> None:
+        """``words`` for a block of G0-G3 X Y Z I J F words: straight into the batch."""
+        values = b.values(self.scope)
+        f.pc += 1
+        made = b.row(values) if self.fast_ok else None
+        if made is None:
+            self._general(f, b, values, len(b.words))
+        else:
+            batch = self.batch
+            batch.g.append(made[0])
+            batch.rows.append(made[1])
+            batch.blocks.append((b, values, f.iteration, f.where))
+            if len(batch.g) >= MAX_ROWS:
+                self.flush()
+        if b.assigns:
+            self.assign(b, values)
+
+    def assignments(self, f: Frame, b: bk.Block) -> None:
+        """``words`` for a line of assignments only."""
+        values = b.values(self.scope)
+        f.pc += 1
+        assign = self.scope.assign
+        for target, i in b.assigns:
+            assign(values[target[0]] if type(target) is tuple else target, values[i])
+
     def assign(self, b: bk.Block, values) -> None:
         """Apply the line's assignments (their values were read with the line)."""
         for target, i in b.assigns:
@@ -378,8 +403,18 @@ for _kind, _handler in {
     HANDLERS[_kind] = _handler
 
 
+def _handler(b: bk.Block):
+    if b.kind == bk.OWORD:
+        return oword_handler(b)
+    if b.kind == bk.WORDS and not b.words and b.values is not None:
+        return Walker.assignments
+    if b.kind == bk.WORDS and b.simple and not b.call_only:
+        return Walker.simple_words
+    return HANDLERS[b.kind]
+
+
 def bind(unit) -> None:
     """Give every block of ``unit`` the handler that runs it (once per unit)."""
     for b in unit.blocks:
-        b.run = oword_handler(b) if b.kind == bk.OWORD else HANDLERS[b.kind]
+        b.run = _handler(b)
     unit.bound = True
