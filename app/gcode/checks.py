@@ -82,7 +82,7 @@ def _envelope(ops: Ops, profile: MachineProfile, lines: list[str], report: Repor
             out, vals = moves[hit], values[hit, axis]
             rel = ">" if sign == "+" else "<"
             for row, value in zip(out[: report.limit].tolist(), vals[: report.limit].tolist(), strict=True):
-                line = int(ops.line[row])
+                line = int(ops.main_lines()[row])  # a subprogram's row: its calling line
                 report.warning(line, _column(lines, line, name),
                                f"{name}{sign} beyond travel ({value:.3f} {rel} {limit:g})",
                                f"{name}{sign} beyond travel")
@@ -94,7 +94,7 @@ def _feed_zero(ops: Ops, lines: list[str], report: Report) -> None:
     rows = np.flatnonzero(((kind == FEED) | (kind == ARC_CW) | (kind == ARC_CCW)) & (ops.value <= 0))
     message = "feed move at feed 0 (no F word yet, or F0)"
     for row in rows[: report.limit].tolist():
-        report.warning(int(ops.line[row]), 0, message, message)
+        report.warning(int(ops.main_lines()[row]), 0, message, message)
     report.overflow("warning", message, len(rows) - report.limit)
 
 
