@@ -22,7 +22,7 @@ from app.gcode.ops import OpBuffer
 
 from . import block as bk
 from .batch import MAX_ROWS, Batch
-from .calls import FANUC_ARGUMENTS, Library
+from .calls import Library
 from .errors import MacroError
 from .frame import Frame, Scope
 
@@ -139,7 +139,7 @@ class Walker:
         if len(self.frames) == 1:
             self.frames.pop()
         elif self.fanuc:
-            self._return(f, None)
+            fanuc.leave(self, f, None)
         else:
             raise MacroError("the file ended inside a subroutine", len(f.unit.blocks))
 
@@ -290,115 +290,25 @@ class Walker:
             self.reports[f.file_id].warning(b.line, 0, "block delete '/': line skipped", "block delete")
         f.pc += 1
 
-    # --- Fanuc ------------------------------------------------------------------------
     def _call_word(self, words: list[Word]) -> Word | None:
+        """The M98/M99/G65 word of a Fanuc line whose values were computed, if any."""
         for w in words:
             if (w.letter == "M" and w.value in (98.0, 99.0)) or (w.letter == "G" and w.value == 65.0):
                 return w
         return None
 
     def _fanuc_call(self, f: Frame, b: bk.Block, letter: str, code: float, column: int, by_letter) -> None:
-        """Run ``M98``/``G65`` (a call) or ``M99`` (a return); ``by_letter``: the other words."""
-        if letter == "M" and code == 99.0:
-            self._m99(f, by_letter.get("P"))
-            return
-        if "P" not in by_letter:
-            raise MacroError(f"{letter}{code:g} needs P (the program number)", b.line, column)
-        number, count = int(by_letter["P"]), int(by_letter.get("L", 1))
-        if letter == "M" and "L" not in by_letter and number > 9999:
-            number, count = number % 10000, number // 10000  # packed M98 Pkkknnnn
-        if count < 1:
-            return
-        file_id, start = self.library.program(number, f.file_id)
-        if letter == "M":
-            locals_ = f.locals  # M98 keeps the caller's local level
-        else:
-            locals_ = {FANUC_ARGUMENTS[k]: v for k, v in by_letter.items() if k in FANUC_ARGUMENTS}
-            extra = sorted(set(by_letter) - set(FANUC_ARGUMENTS) - {"G", "P", "L"})
-            if extra:
-                raise MacroError(f"G65 cannot pass {', '.join(extra)} (argument specification I)", b.line)
-        unit = self.library.units[file_id]
-        name = f"O{number:04d}"
-        program = unit.program_of[start] if unit.program_of else 0
-        self._push(Frame(unit, start, locals_, name, file_id, program, count, b.line))
-
-    def _m99(self, f: Frame, label) -> None:
-        if len(self.frames) == 1:
-            raise MacroError("M99 outside a subprogram (the main program ends with M30)")
-        self._return(f, label)
-
-    def _return(self, f: Frame, label) -> None:
-        if f.calls_left > 1:
-            f.calls_left -= 1
-            self.loop_back(f, f.program)
-            f.pc = f.program
-            return
-        self._pop()
-        caller = self.frames[-1]
-        if label is not None:
-            caller.pc = self._label(caller, int(label))
-
-    def _label(self, f: Frame, n: int) -> int:
-        target = f.unit.labels.get((f.program, n))
-        if target is None:
-            raise MacroError(f"GOTO {n}: no block N{n} in this program")
-        return target
-
-    def goto(self, f: Frame, b: bk.Block) -> None:
-        self._jump(f, b.args[-1](self.scope))
-
-    def _jump(self, f: Frame, value) -> None:
-        if value is None:
-            raise MacroError("GOTO to a vacant label")
-        target = self._label(f, int(round(value)))
-        if target <= f.pc:
-            self.loop_back(f, target)
-        f.pc = target
-
-    def if_goto(self, f: Frame, b: bk.Block) -> None:
-        if self.test(b.args[0]):
-            self._jump(f, b.args[1](self.scope))
-        else:
-            f.pc += 1
-
-    def if_then(self, f: Frame, b: bk.Block) -> None:
-        if self.test(b.args[0]):
-            self.assign(b, b.values(self.scope))
-        f.pc += 1
-
-    def fanuc_while(self, f: Frame, b: bk.Block) -> None:
-        if self.test(b.args[0]):
-            self.loop_pass(f, f.pc)
-            f.pc += 1
-        else:
-            self.loop_done(f, f.pc)
-            f.pc = f.unit.jump[f.pc]
-
-    def fanuc_do(self, f: Frame, b: bk.Block) -> None:
-        self.loop_pass(f, f.pc)
-        f.pc += 1
-
-    def fanuc_end(self, f: Frame, b: bk.Block) -> None:
-        head = f.unit.back[f.pc]
-        self.loop_back(f, head)
-        f.pc = head
-
-    def program(self, f: Frame, b: bk.Block) -> None:
-        if f.pc == f.program:
-            f.pc += 1
-        elif len(self.frames) == 1:
-            self.frames.clear()  # the main program ran into the next program's O line
-        else:
-            self._return(f, None)
+        fanuc.call(self, f, b, letter, code, column, by_letter)
 
 
-from .owords import handler as oword_handler  # noqa: E402  (the o-word handlers use Walker's helpers)
+from . import fanuc  # noqa: E402  (the statement handlers use Walker's helpers)
+from .owords import handler as oword_handler  # noqa: E402
 
 HANDLERS = [None] * 10  # by block kind
 for _kind, _handler in {
-    bk.WORDS: Walker.words, bk.SKIP: Walker.skip, bk.OWORD: None, bk.PROGRAM: Walker.program,
-    bk.IF_GOTO: Walker.if_goto, bk.IF_THEN: Walker.if_then, bk.GOTO: Walker.goto,
-    bk.WHILE: Walker.fanuc_while, bk.DO: Walker.fanuc_do, bk.END: Walker.fanuc_end,
+    bk.WORDS: Walker.words, bk.SKIP: Walker.skip, bk.OWORD: None, bk.PROGRAM: fanuc.program,
+    bk.IF_GOTO: fanuc.if_goto, bk.IF_THEN: fanuc.if_then, bk.GOTO: fanuc.goto,
+    bk.WHILE: fanuc.while_do, bk.DO: fanuc.do, bk.END: fanuc.end,
 }.items():
     HANDLERS[_kind] = _handler
 
