@@ -13,6 +13,7 @@ first error stops the walk (rs274ngc stops too); it is reported with its file.
 
 from __future__ import annotations
 
+import contextlib
 from dataclasses import dataclass, field
 
 from app.gcode.diagnostics import ERROR, WARNING, Report
@@ -112,9 +113,11 @@ class Walker:
                     self._end_of_file(f)
                     continue
                 self._run_frame(f, frames)
+            self.flush()
         except MacroError as exc:
             self.report.add(exc.line, exc.column, ERROR, exc.message, file=exc.file)
-        self.flush()
+            with contextlib.suppress(MacroError):  # the move limit, reported already
+                self.flush()  # the blocks before the error stay, as rs274ngc's output does
 
     def _run_frame(self, f: Frame, frames: list[Frame]) -> None:
         """Run blocks of frame ``f`` until it ends, calls or returns."""

@@ -104,3 +104,10 @@ def test_an_expansion_past_the_move_limit_stops(monkeypatch):
 def test_errors_of_several_lines_are_all_listed_before_running():
     found = errors("G1 X[1 +] F100\nG1 Y[2 *] F100\nM2\n")
     assert [f[1] for f in found] == [1, 2]
+
+
+def test_the_moves_before_an_error_stay():
+    program = load_text("#1 = 0\no1 while [#1 LT 5]\n  G1 X#1 F100\n  #1 = [#1 + 1]\no1 endwhile\n"
+                        "G1 X[1/0]\nG1 X9\nM2\n")
+    assert [m["end"][0] for m in program.moves] == [0.0, 1.0, 2.0, 3.0, 4.0]
+    assert [(d.line, d.column) for d in program.errors] == [(6, 7)]
