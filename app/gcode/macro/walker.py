@@ -275,12 +275,18 @@ class Walker:
             self.frames.clear()
 
     def _after_end(self, f: Frame) -> None:
-        """One warning for the first block after M2/M30 (Fanuc: before the next program)."""
-        for i in range(f.pc, len(f.unit.blocks)):
-            b = f.unit.blocks[i]
+        """One warning for the first block after M2/M30 (Fanuc: before the next program;
+        LinuxCNC: subroutine definitions are not "after" anything)."""
+        i, blocks = f.pc, f.unit.blocks
+        while i < len(blocks):
+            b = blocks[i]
             if b.kind == bk.PROGRAM:
                 return
-            if b.kind != bk.SKIP or i in f.unit.bad:
+            if b.kind == bk.OWORD and b.keyword == "sub":
+                i = f.unit.jump[i]
+                continue
+            i += 1
+            if b.kind != bk.SKIP or i - 1 in f.unit.bad:
                 ended = self.state.ended
                 self.report.warning(b.line, 0, f"ignored: the program ended at line {ended} (M2/M30)")
                 return

@@ -125,3 +125,8 @@ def test_plain_programs_take_the_fast_path(text):
 def test_fix_and_fup_follow_each_dialect():
     assert xs("G1 X[FIX[-1.2]] Y0 F100\nG1 X[FUP[-1.2]]\nM2\n") == [-2.0, -1.0]  # LinuxCNC: floor, ceil
     assert xs("O0001\nG1 X[FIX[-1.2]] Y0 F100\nG1 X[FUP[-1.2]]\nG1 X[FUP[1.2]]\nM30\n") == [-1.0, -2.0, 2.0]
+
+
+def test_subroutines_may_be_defined_after_m2_and_called_before():
+    program = load_text("o100 call [2]\nG1 X#<_value> F100\nM2\no100 sub\n  G1 X#1 F100\no100 endsub [7]\n")
+    assert [m["end"][0] for m in program.moves] == [2.0, 7.0] and not program.diagnostics
