@@ -89,7 +89,7 @@ def _envelope(ops: Ops, profile: MachineProfile, lines: list[str], report: Repor
     for name, sign, limit, out, vals in _violations(ops, _limits(profile)):
         rel = ">" if sign == "+" else "<"
         for row, value in zip(out[: report.limit].tolist(), vals[: report.limit].tolist(), strict=True):
-            line = int(ops.line[row])
+            line = int(ops.main_lines()[row])  # a subprogram's row: its calling line
             report.warning(line, _column(lines, line, name),
                            f"{name}{sign} beyond travel ({value:.3f} {rel} {limit:g})",
                            f"{name}{sign} beyond travel")
@@ -103,7 +103,7 @@ def preflight(ops: Ops, profile: MachineProfile, lines: list[str], offset) -> li
     out = []
     for name, sign, limit, rows, values in _violations(ops, _limits(profile, offset)):
         row, value = int(rows[0]), float(values[0])
-        line = int(ops.line[row])
+        line = int(ops.main_lines()[row])
         k = "XYZ".index(name)
         message = (f"{name}{sign} leaves the travel by {abs(value - limit):.3f} mm with the work zero at "
                    f"machine {name}{offset[k]:.3f} ({name} {value + offset[k]:.3f} "
@@ -118,7 +118,7 @@ def _feed_zero(ops: Ops, lines: list[str], report: Report) -> None:
     rows = np.flatnonzero(((kind == FEED) | (kind == ARC_CW) | (kind == ARC_CCW)) & (ops.value <= 0))
     message = "feed move at feed 0 (no F word yet, or F0)"
     for row in rows[: report.limit].tolist():
-        report.warning(int(ops.line[row]), 0, message, message)
+        report.warning(int(ops.main_lines()[row]), 0, message, message)
     report.overflow("warning", message, len(rows) - report.limit)
 
 
@@ -133,7 +133,7 @@ def _spindle_speed(ops: Ops, profile: MachineProfile, lines: list[str], report: 
     rows = np.flatnonzero((ops.kind == SPINDLE) & (ops.value > top + 0.5))
     key = "S beyond the spindle's maximum"
     for row in rows[: report.limit].tolist():
-        line = int(ops.line[row])
+        line = int(ops.main_lines()[row])
         report.warning(line, _column(lines, line, "S"),
                        f"S{ops.value[row]:g} is beyond the spindle's maximum ({top:.0f} rpm): it runs at "
                        f"{top:.0f} rpm", key)

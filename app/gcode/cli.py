@@ -1,9 +1,12 @@
-"""``cnc-gcode check|normalize|moves FILE`` (also ``python -m app.gcode``).
+"""``cnc-gcode check|normalize|moves|expand FILE`` (also ``python -m app.gcode``).
 
 - ``check``: a summary (lines, moves, bounds, cut and rapid length, estimated time,
   warnings, errors with their lines); exit status 1 when there are errors;
 - ``normalize``: the device lines, one per line;
-- ``moves``: the interpreted motion as JSON Lines (see ``moves.py``).
+- ``moves``: the interpreted motion as JSON Lines (see ``moves.py``);
+- ``expand``: the device lines of any program (parametric ones expanded), with
+  ``--trace`` each followed by the source line it came from as a comment:
+  ``(line 12)``, or ``(O0010.nc line 3, called at line 7)`` for a subprogram file.
 Exit status 2 for a usage error. Diagnostics go to standard error for
 ``normalize`` and ``moves``, to standard output for ``check``.
 """
@@ -12,6 +15,9 @@ from __future__ import annotations
 
 import argparse
 import sys
+from pathlib import Path
+
+import numpy as np
 
 from .moves import to_jsonl
 from .program import Program, load
@@ -56,7 +62,30 @@ def _moves(p: Program) -> int:
     return 1 if p.errors else 0
 
 
-COMMANDS = {"check": _check, "normalize": _normalize, "moves": _moves}
+def trace_comments(p: Program) -> list[str]:
+    """Per device line, where it comes from: ``(line 12)`` or ``(F line 3, called at line 7)``."""
+    rows = np.repeat(np.arange(len(p.ops)), p.plan.count)
+    lines = p.ops.line[rows].tolist()
+    source = p.ops.source
+    if source is None:
+        return [f"(line {n})" for n in lines]
+    names = [Path(f).name for f in source.files]
+    files, calls = source.file[rows].tolist(), source.call_line[rows].tolist()
+    return [f"({names[f]} line {n}, called at line {c})" if f else f"(line {n})"
+            for n, f, c in zip(lines, files, calls, strict=True)]
+
+
+def _expand(p: Program, trace: bool = False) -> int:
+    _print_diagnostics(p)
+    if trace:
+        comments = trace_comments(p)
+        sys.stdout.write("".join(f"{line} {c}\n" for line, c in zip(p.device_lines, comments, strict=True)))
+    else:
+        sys.stdout.write("".join(line + "\n" for line in p.device_lines))
+    return 1 if p.errors else 0
+
+
+COMMANDS = {"check": _check, "normalize": _normalize, "moves": _moves, "expand": _expand}
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -64,8 +93,12 @@ def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(prog="cnc-gcode", description="Check and convert G-code for the mill.")
     parser.add_argument("command", choices=sorted(COMMANDS))
     parser.add_argument("file")
+    parser.add_argument("--trace", action="store_true", help="expand: each line's source line as a comment")
     args = parser.parse_args(argv)
+    if args.trace and args.command != "expand":
+        parser.error("--trace goes with expand")
     try:
-        return COMMANDS[args.command](load(args.file))
+        program = load(args.file)
+        return _expand(program, args.trace) if args.command == "expand" else COMMANDS[args.command](program)
     except BrokenPipeError:
         return 0

@@ -1,8 +1,9 @@
 """Diagnostics: what the G-code core reports instead of raising.
 
 A ``Diagnostic`` names the 1-based physical source line, the 1-based column (0 when
-the whole line is meant), its severity (``"error"`` or ``"warning"``) and a message.
-``str(d)`` reads ``line 12, column 5: message``. ``Report`` collects them; it keeps
+the whole line is meant), its severity (``"error"`` or ``"warning"``), a message and
+the file ("" for the program itself, else a subprogram file's path). ``str(d)``
+reads ``line 12, column 5: message`` (``O1000.nc line 3: ...`` for a file). ``Report`` collects them; it keeps
 at most ``limit`` of each kind of message key and counts the rest, so a million-line
 file with one repeated problem stays small.
 """
@@ -24,10 +25,11 @@ class Diagnostic:
     column: int
     severity: str
     message: str
+    file: str = ""  # "" for the program itself; a subprogram file's path otherwise
 
     def __str__(self) -> str:
         where = f"line {self.line}" + (f", column {self.column}" if self.column else "")
-        return f"{where}: {self.message}"
+        return f"{self.file + ' ' if self.file else ''}{where}: {self.message}"
 
 
 @dataclass
@@ -39,14 +41,15 @@ class Report:
     dropped: Counter = field(default_factory=Counter)
     _seen: Counter = field(default_factory=Counter)
 
-    def add(self, line: int, column: int, severity: str, message: str, key: str = "") -> None:
-        """Record one diagnostic (or count it once ``limit`` of its key are kept)."""
+    def add(self, line: int, column: int, severity: str, message: str, key: str = "", file: str = "") -> None:
+        """Record one diagnostic (or count it once ``limit`` of its key are kept); ``file``
+        names a subprogram file ("" for the program itself)."""
         key = key or message
         self._seen[severity, key] += 1
         if self._seen[severity, key] > self.limit:
             self.dropped[severity, key] += 1
             return
-        self.items.append(Diagnostic(line, column, severity, message))
+        self.items.append(Diagnostic(line, column, severity, message, file))
 
     def overflow(self, severity: str, key: str, count: int) -> None:
         """Count ``count`` more diagnostics of ``key`` that were not listed one by one."""

@@ -6,11 +6,14 @@
 "turn": -1, "feed": 400.0}`` (``center`` in the plane's axes: XY (X, Y), XZ (Z, X),
 YZ (Y, Z); ``turn`` < 0 clockwise), ``{"line": 30, "kind": "dwell", "seconds": 0.5}``.
 Millimetres, absolute; ``line`` is the 1-based physical source line; arcs whole.
+A move made by a subprogram file of an expanded program also has ``"file"`` (the
+file's name); its ``line`` is the line in that file.
 """
 
 from __future__ import annotations
 
 import json
+from pathlib import Path
 
 import numpy as np
 
@@ -43,7 +46,16 @@ def moves_of(ops: Ops) -> list[dict]:
             out.append(_arc(lines[i], ends[i], centers[i], planes[i], turns[i], values[i]))
         else:
             out.append({"line": lines[i], "kind": "dwell", "seconds": values[i]})
+    if ops.source is not None:
+        _name_files(out, ops.source.file[rows].tolist(), ops.source.files)
     return out
+
+
+def _name_files(moves: list[dict], file_ids: list[int], files: list[str]) -> None:
+    names = [Path(f).name for f in files]
+    for move, file_id in zip(moves, file_ids, strict=True):
+        if file_id:
+            move["file"] = names[file_id]
 
 
 def to_jsonl(moves: list[dict]) -> str:

@@ -8,6 +8,12 @@ the row; events keep the position), the arc centre (NaN for non-arcs), the plane
 the feed in mm/min for moves, seconds for a dwell, rpm for SPINDLE (0 = off).
 ``OpBuffer`` gathers rows from the fast path (whole arrays) and the general path
 (one row at a time) and ``finish()`` returns one ``Ops`` of numpy arrays.
+
+Rows of an expanded program (``macro``) also carry a ``Source``: per row the file
+(0 = the program, else an index into ``files``), the line of the main program that
+made it (the calling line for rows of a subprogram), the subprogram (an index into
+``names``, 0 = none) and the loop iteration (0 = not in a loop). A plain program
+has no ``Source``: every row comes from its own line of the main file.
 """
 
 from __future__ import annotations
@@ -27,6 +33,18 @@ _NAN3 = (float("nan"),) * 3
 
 
 @dataclass
+class Source:
+    """Where the rows of an expanded program come from (see the module docstring)."""
+
+    file: np.ndarray  # int32 per row
+    call_line: np.ndarray  # int64 per row
+    context: np.ndarray  # int32 per row
+    iteration: np.ndarray  # int32 per row
+    files: list[str]
+    names: list[str]
+
+
+@dataclass
 class Ops:
     """Columns of the interpreted program (see the module docstring)."""
 
@@ -39,9 +57,14 @@ class Ops:
     value: np.ndarray
     messages: list[str]  # one per PAUSE row, in order
     _starts: np.ndarray | None = field(default=None, repr=False)
+    source: Source | None = None  # set for expanded programs
 
     def __len__(self) -> int:
         return len(self.line)
+
+    def main_lines(self) -> np.ndarray:
+        """Per row, the line of the main program it belongs to (the calling line)."""
+        return self.line if self.source is None else self.source.call_line
 
     def starts(self) -> np.ndarray:
         """Start point of every row: the previous row's end ((0, 0, 0) for the first).

@@ -20,11 +20,11 @@ import numpy as np
 
 from app.profile import MachineProfile
 
-from . import bulk, checks, normalize, runner
+from . import bulk, checks, macro, normalize, runner
 from .diagnostics import ERROR, WARNING, Diagnostic, Report
 from .moves import moves_of
 from .offsets import ACTIVE_SYSTEM
-from .ops import OpBuffer, Ops
+from .ops import OpBuffer, Ops, Source
 from .render import render
 from .source import Lines
 from .state import State
@@ -75,8 +75,8 @@ class Program:
 
     @cached_property
     def line_map(self) -> np.ndarray:
-        """Device index -> 1-based source line (known without rendering the lines)."""
-        return np.repeat(self.ops.line, self.plan.count)
+        """Device index -> 1-based line of the main program (known without rendering)."""
+        return np.repeat(self.ops.main_lines(), self.plan.count)
 
     @property
     def device_count(self) -> int:
@@ -87,6 +87,20 @@ class Program:
     def pauses(self) -> list[tuple[int, str]]:
         """(device index of the stop line, message) for M0, M1 and tool changes."""
         return self._rendered()[2]
+
+    def context_at(self, device_index: int) -> tuple[str, int]:
+        """(subprogram, loop pass) that device line ``device_index`` comes from: ``("", 0)``
+        for the main program outside loops (and for every line of a plain program)."""
+        source = self.ops.source
+        if source is None or not len(self.ops):
+            return "", 0
+        row = int(np.searchsorted(self.plan.first, device_index, "right")) - 1
+        row = min(max(row, 0), len(self.ops) - 1)
+        return source.names[int(source.context[row])], int(source.iteration[row])
+
+    def moves_per_line(self) -> np.ndarray:
+        """Number of moves each 1-based line of the main program produced (index 0 unused)."""
+        return np.bincount(self.toolpath.source_line, minlength=len(self.lines) + 1)
 
     @cached_property
     def moves(self) -> list[dict]:
@@ -109,22 +123,47 @@ def _empty(name: str, message: str, profile: MachineProfile) -> Program:
     return program
 
 
-def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfile,
-               tools: dict | None = None) -> Program:
-    """Interpret ``lines``; ``data`` holds their bytes, handed over (emptied) to free them early."""
-    raw = data.pop()
-    n = len(lines)  # reuse the chunks Lines already counted; otherwise scan makes its own
-    report = Report()
-    buffer = OpBuffer()
+def _start_state(profile: MachineProfile, tools: dict | None) -> State:
+    """The interpreter's state before the first line: LinuxCNC's, in G54, with the tool table."""
     start = State(tools=dict(tools or {}), arc_tolerance=profile.motion.arc_tolerance_mm)
     start.params.set(ACTIVE_SYSTEM, 1)  # G54, as LinuxCNC starts
+    return start
+
+
+def _plain(lines: Lines, data: list[bytes], start: State, report: Report) -> Ops:
+    """The fast path; ``data`` holds the bytes, handed over (emptied) to free them early."""
+    raw = data.pop()
+    n = len(lines)  # reuse the chunks Lines already counted; otherwise scan makes its own
+    buffer = OpBuffer()
     interpreter = runner.Runner(lines, buffer, report, start)
     for scan, ready in bulk.scan_stream(raw, n, lines.chunks or None):  # interpret as lines come
         interpreter.advance(scan, ready)
     del raw, scan
     interpreter.finish()
+    return buffer.finish()
+
+
+def _expanded(lines: Lines, name: str, folder: Path | None, start: State, report: Report) -> Ops:
+    """The expander's path (parameters, control flow, calls), rows traced to their source."""
+    buffer = OpBuffer()
+    trace = macro.expand(lines.as_list(), name, folder, start, buffer, report)
     ops = buffer.finish()
-    del buffer
+    ops.source = Source(np.asarray(trace.file, np.int32), np.asarray(trace.call_line, np.int64),
+                        np.asarray(trace.context, np.int32), np.asarray(trace.iteration, np.int32),
+                        trace.files, trace.names)
+    return ops
+
+
+def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfile,
+               tools: dict | None = None, folder: Path | None = None) -> Program:
+    """Interpret ``lines``: the expander when the bytes in ``data`` need it, else the fast path."""
+    report = Report()
+    start = _start_state(profile, tools)
+    if macro.needs_expander(data[0]):
+        data.clear()
+        ops = _expanded(lines, name, folder, start, report)
+    else:
+        ops = _plain(lines, data, start, report)
     ops.starts()  # computed once, before two threads read it
     checking = _in_thread(checks.run, ops, profile, lines, report)  # numpy lets both run at once
     the_plan = normalize.plan(ops, profile.motion.arc_tolerance_mm)
@@ -155,19 +194,21 @@ class _in_thread(threading.Thread):
 
 
 def load_text(text: str, name: str = "<text>", profile: MachineProfile | None = None,
-              tools: dict | None = None) -> Program:
+              tools: dict | None = None, folder: Path | None = None) -> Program:
     """Interpret G-code ``text``; errors and warnings are in the result, never raised.
-    ``tools`` is the tool table (``tools.Tool`` by number) for T, G43 H and G41 D."""
+    ``tools`` is the tool table (``tools.Tool`` by number) for T, G43 H and G41 D;
+    ``folder`` is where its subprogram files are looked for (none when ``None``)."""
     profile = profile or MachineProfile()
     if "\x00" in text:
         return _empty(name, "not a text file (it contains NUL bytes)", profile)
     data = [text.encode("utf-8", "replace")]  # a \r is a space to the fast path
-    return _interpret(Lines(_split(text)), data, name, profile, tools)
+    return _interpret(Lines(_split(text)), data, name, profile, tools, folder)
 
 
 def load(path: str | Path, profile: MachineProfile | None = None, tools: dict | None = None) -> Program:
     """Read and interpret a G-code file; unreadable or non-UTF-8 files give an error.
-    ``tools`` is the tool table, as for ``load_text``."""
+    ``tools`` is the tool table, as for ``load_text``; subprogram files are looked for
+    in the file's folder."""
     path = Path(path)
     profile = profile or MachineProfile()
     try:
@@ -186,4 +227,4 @@ def load(path: str | Path, profile: MachineProfile | None = None, tools: dict | 
     lines = Lines(data=raw)  # split on first use, not here
     data = [raw]  # valid UTF-8: the bytes the fast path reads
     del raw
-    return _interpret(lines, data, str(path), profile, tools)
+    return _interpret(lines, data, str(path), profile, tools, path.parent)

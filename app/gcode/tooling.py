@@ -122,3 +122,23 @@ def set_entry(state, level: int, params, column: int) -> None:
     except ToolError as exc:
         raise LineError(column, str(exc)) from None
     state.tools = {**state.tools, number: new}
+
+
+TOOL_NUMBER, TOOL_OFFSETS, TOOL_DIAMETER, POSITION = 5400, 5401, 5410, 5420
+
+
+def publish(state) -> None:
+    """Write the parameters derived from ``state`` into ``state.params``, as LinuxCNC keeps
+    them: #5400 the tool in the spindle, #5401-#5409 its length offsets (X Y Z A B C U V
+    W), #5410 its diameter, #5420-#5428 the current point in program coordinates and
+    units. The expander calls this before a macro reads #5000 and up."""
+    params, scale = state.params, state.scale
+    entry = state.tools.get(state.tool)
+    params.set(TOOL_NUMBER, state.tool)
+    for i in range(9):
+        value = state.offsets.tool[i] / scale if i < 3 else 0.0
+        params.set(TOOL_OFFSETS + i, value)
+    params.set(TOOL_DIAMETER, (entry.diameter if entry is not None else 0.0) / scale)
+    point = state.program_pos()
+    for i in range(9):
+        params.set(POSITION + i, point[i] / scale if i < 3 else 0.0)

@@ -166,5 +166,5 @@ def build(ops: Ops, device_first: np.ndarray, profile: MachineProfile) -> Toolpa
     dwell = kind == DWELL
     time[dwell] = value[dwell]
     feed[dwell] = 0.0
-    source, device = ops.line[rows], device_first[rows]
+    source, device = ops.main_lines()[rows], device_first[rows]
     return Toolpath(start, end, kind, center, plane, turn, source, device, feed, length, time)

@@ -8,7 +8,6 @@ import threading
 import time
 from collections import deque
 
-import numpy as np
 from PySide6.QtCore import QObject, Qt, QTimer
 
 from app.comm.listener import BUSY_STATES, JOB_STATES, RECOVERY_STATES, SessionState
@@ -273,7 +272,7 @@ class SessionBinder(QObject):
         line_map = getattr(self.job.program, "line_map", None)
         seq = min(self.job_done + 1, device_count(self.job.program) - 1)
         if line_map is not None and 0 <= seq < len(line_map):
-            self.w.program_panel.set_current_line(int(np.asarray(line_map)[seq]))
+            self.w.program_panel.show_device_line(self.job.program, seq)
 
     def refresh_enabled(self) -> None:
         busy = self.state in BUSY

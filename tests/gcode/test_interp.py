@@ -100,8 +100,8 @@ def test_refused_line_changes_nothing():
 
 
 ERROR_CASES = [
-    ("o100 sub", 1, "o-words"),
-    ("G1 X#1", 1, "parameters"),
+    ("o100 sub", 1, "never closed"),  # the expander reads o-words and parameters
+    ("G1 X#<a>", 1, "#<a> is not set"),
     ("G81 X1 Y1 Z-1 R1", 1, "Cannot feed with zero feed rate"),
     ("G83 X1 F10", 1, "R clearance plane unspecified"),
     ("G41 D1", 1, "Requested tool 1 not found in the tool table"),

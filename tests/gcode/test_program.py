@@ -31,7 +31,7 @@ def test_crlf_and_no_final_newline():
 
 
 def test_errors_everywhere_still_load_the_rest():
-    program = load_text("G0 X1\nG81\nG0 X2\nQ1\nG0 X3\n#1=2\nG0 X4")
+    program = load_text("G0 X1\nG81\nG0 X2\nQ1\nG0 X3\nG0 A2\nG0 X4")
     assert [d.line for d in program.errors] == [2, 4, 6]
     assert [m["end"][0] for m in program.moves] == [1, 2, 3, 4]
 

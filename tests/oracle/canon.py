@@ -223,7 +223,7 @@ def _offset_values(call: CanonCall, scale: float) -> list[float]:
 
 
 _COMMENTS = re.compile(r"\([^)]*\)|;.*$")
-_AXIS_WORD = re.compile(r"[XYZ@^][+-]?[0-9.]")  # @ ^: polar words
+_AXIS_WORD = re.compile(r"[XYZ@^][+-]?[0-9.#\[]")  # a number, a parameter or an expression; @ ^: polar
 
 
 def has_axis_word(source_line: str) -> bool:

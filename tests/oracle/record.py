@@ -7,7 +7,11 @@ Run it where LinuxCNC is installed (Debian: ``apt-get install linuxcnc-uspace``)
 
 CI never runs this: the tests read only the committed ``tests/oracle/data/*.canon``.
 
-Sources: ``resources/samples/*.ngc`` and ``tests/oracle/cases/*.ngc``; data goes to
+Sources: ``resources/samples/*.ngc`` and ``tests/oracle/cases/*.ngc`` except the
+subroutine files ``cases/lib_*.ngc``, which are copied beside every program so that
+``o<lib_name> call`` finds them (line k of the i-th of them, from 0, numbered
+``N<LIB_LINES * (i + 1) + k>`` so that its moves can be told from the program's);
+data goes to
 ``tests/oracle/data/<stem>.canon`` (stems must be unique across both folders). A few
 cases are also run with other rs274 switches (``VARIANTS``): ``<stem>+<tag>.canon``.
 
@@ -76,8 +80,11 @@ def rs274_version() -> str:
     return out.stdout.strip() if out.returncode == 0 else "unknown linuxcnc version"
 
 
-def number_lines(text: str) -> str:
-    """Give line k the word N<k> (after an optional block-delete slash)."""
+LIB_LINES = 10000
+
+
+def number_lines(text: str, offset: int = 0) -> str:
+    """Give line k the word N<offset + k> (after an optional block-delete slash)."""
     body, newline = (text[:-1], "\n") if text.endswith("\n") else (text, "")
     out = []
     for k, line in enumerate(body.split("\n"), start=1):
@@ -85,18 +92,27 @@ def number_lines(text: str) -> str:
             out.append(line)
             continue
         m = _LEADING_N.match(line)
-        out.append(f"{m.group(1)}N{k} {line[m.end() :]}")
+        out.append(f"{m.group(1)}N{offset + k} {line[m.end() :]}")
     return "\n".join(out) + newline
 
 
+def libraries() -> list[Path]:
+    """The subroutine files copied beside every program (``cases/lib_*.ngc``)."""
+    return sorted((HERE / "cases").glob("lib_*.ngc"))
+
+
 def run_rs274(
-    program: str, extra: tuple[str, ...] = (), tool_table: str = TOOL_TABLE
+    program: str, extra: tuple[str, ...] = (), tool_table: str = TOOL_TABLE, numbered: bool = True
 ) -> tuple[int, str, str]:
-    """Run rs274 on ``program`` text in a fresh temporary HOME; (exit code, stdout, stderr)."""
+    """Run rs274 on ``program`` text in a fresh temporary HOME, the subroutine files beside
+    it (numbered like the program when ``numbered``); (exit code, stdout, stderr)."""
     with tempfile.TemporaryDirectory(prefix="rs274-") as tmp:
         tmpdir = Path(tmp)
         (tmpdir / "tool.tbl").write_text(tool_table)
         (tmpdir / "program.ngc").write_text(program)
+        for i, lib in enumerate(libraries()):
+            text = lib.read_text()
+            (tmpdir / lib.name).write_text(number_lines(text, LIB_LINES * (i + 1)) if numbered else text)
         env = {"HOME": tmp, "PATH": "/usr/bin:/bin", "LANG": "C", "LC_ALL": "C"}
         proc = subprocess.run(
             ["rs274", "-g", *extra, "-t", "tool.tbl", "program.ngc"],
@@ -123,7 +139,7 @@ def record(source: Path, extra: tuple[str, ...] = ()) -> str:
     text = source.read_text()
     table = tool_table_for(source.stem)
     rc, out, err = run_rs274(number_lines(text), extra, table)
-    rc0, out0, err0 = run_rs274(text, extra, table)
+    rc0, out0, err0 = run_rs274(text, extra, table, numbered=False)
     if rc != rc0 or strip_n_column(out) != strip_n_column(out0):
         raise SystemExit(f"{source}: numbering the lines changed rs274's output")
     err_lines, err0_lines = stderr_lines(err), stderr_lines(err0)
@@ -154,7 +170,7 @@ def record(source: Path, extra: tuple[str, ...] = ()) -> str:
 
 
 def sources() -> list[Path]:
-    found = sorted(p for d in SOURCE_DIRS for p in d.glob("*.ngc"))
+    found = sorted(p for d in SOURCE_DIRS for p in d.glob("*.ngc") if p not in libraries())
     stems = [p.stem for p in found]
     dup = {s for s in stems if stems.count(s) > 1}
     if dup:

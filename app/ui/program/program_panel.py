@@ -3,6 +3,7 @@ highlighted), and the problems list (double-click jumps to the line)."""
 
 from __future__ import annotations
 
+import numpy as np
 from PySide6.QtCore import Qt, Signal
 from PySide6.QtGui import QFontDatabase
 from PySide6.QtWidgets import (
@@ -38,6 +39,8 @@ class ProgramPanel(QWidget):
         self.source.doubleClicked.connect(lambda index: self.line_activated.emit(index.row() + 1))
         self.source.setContextMenuPolicy(Qt.ContextMenuPolicy.CustomContextMenu)
         self.source.customContextMenuRequested.connect(self._source_menu)
+        self.context = QLabel()  # where an expanded program is: subprogram and loop pass
+        self.context.hide()
         self.problems = QTreeWidget()
         self.problems.setHeaderLabels(["Line", "Col", "", "Message"])
         self.problems.setRootIsDecorated(False)
@@ -49,15 +52,28 @@ class ProgramPanel(QWidget):
         layout.setContentsMargins(4, 4, 4, 4)
         layout.addWidget(self.summary)
         layout.addWidget(self.tabs, 1)
+        layout.addWidget(self.context)
+        self.program = None
 
     def show_program(self, program, name: str = "") -> None:
         errors = list(_diagnostics(program, "errors"))
         warnings = list(_diagnostics(program, "warnings"))
-        self.source_model.set_lines(program.lines, [d.line for d in errors])  # read as they scroll in
+        self.program = program
+        expanded = getattr(getattr(program, "ops", None), "source", None) is not None
+        moves = program.moves_per_line() if expanded else None
+        self.source_model.set_lines(program.lines, [d.line for d in errors], moves,  # read as they scroll in
+                                    (lambda line: _device_lines_of(program, line)) if expanded else None)
+        if expanded:
+            header = self.source.horizontalHeader()
+            header.setSectionResizeMode(0, QHeaderView.ResizeMode.Stretch)
+            header.setSectionResizeMode(1, QHeaderView.ResizeMode.ResizeToContents)
+        self.context.hide()
         self.summary.setText(describe(program, name))
         self._fill_problems(errors, warnings)
 
     def clear(self) -> None:
+        self.program = None
+        self.context.hide()
         self.source_model.set_lines([])
         self.problems.clear()
         self.summary.setText("No program open.")
@@ -96,6 +112,20 @@ class ProgramPanel(QWidget):
         self.source.scrollTo(index, QAbstractItemView.ScrollHint.PositionAtCenter)
         self.tabs.setCurrentWidget(self.source)
 
+    def show_device_line(self, program, index: int) -> None:
+        """Follow machine line ``index`` of ``program``: highlight the main program's line
+        that made it and, inside a subprogram or loop, say which one and which pass."""
+        self.set_current_line(int(program.line_map[index]))
+        name, iteration = program.context_at(index) if hasattr(program, "context_at") else ("", 0)
+        if not name and not iteration:
+            self.context.hide()
+            return
+        parts = [self.tr("in subprogram %1").replace("%1", name)] if name else []
+        if iteration:
+            parts.append(self.tr("loop pass %1").replace("%1", f"{iteration:,}"))
+        self.context.setText(", ".join(parts))
+        self.context.show()
+
     def set_current_line(self, line: int, follow: bool = True) -> None:
         """Highlight the executing 1-based source line and keep it in view."""
         if line == self.source_model.current_line:
@@ -121,6 +151,13 @@ def _source_view(model: SourceModel) -> QTableView:
     rows.setSectionResizeMode(QHeaderView.ResizeMode.Fixed)
     rows.setDefaultSectionSize(view.fontMetrics().height() + 2)
     return view
+
+
+def _device_lines_of(program, line: int, limit: int = 12) -> list[str]:
+    """The first ``limit`` machine lines made by 1-based ``line`` of the main program."""
+    indices = np.flatnonzero(np.asarray(program.line_map) == line)[:limit]
+    device = program.device_lines
+    return [device[i] for i in indices.tolist()]
 
 
 def _diagnostics(program, kind: str):

@@ -1,0 +1,71 @@
+"""The expander: parametric programs (Fanuc macro B, LinuxCNC o-words) -> plain blocks.
+
+``needs_expander(raw)`` is the loader's cheap test on a file's bytes: ``#``, ``[``,
+an ``O`` word, ``WHILE``/``END``/``GOTO``/``DO`` outside comments, ``M98``/``M99``/``G65``.
+``expand(lines, name, folder, state, ops, report)`` compiles the program
+(``structure.Unit``), walks it (``walker.Walker``) and hands every block left to
+``interp.interpret_line``; it returns the ``Trace`` of the rows it added. The
+dialect is Fanuc when the program has a bare ``O`` number line, ``IF [``, ``GOTO``,
+``WHILE [``, ``DO``/``END`` or ``M98``/``M99``/``G65``; else LinuxCNC. Nothing
+here imports Qt.
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+from app.gcode.diagnostics import ERROR, Report
+from app.gcode.ops import OpBuffer
+from app.gcode.params import Params
+
+from .calls import Library
+from .structure import Unit
+from .walker import Trace, Walker
+
+_COMMENTS = re.compile(rb"\([^()\n]*\)|;[^\n]*")
+_PARENS = re.compile(rb"\([^()]*\)")
+_PLAIN = b" \t\r0123456789.-+GXYZIJKFMSNRTgxyzijkfmsnrt"  # what plain lines are made of
+_MACRO_BYTES = b"#[oOwWeE"  # parameters, expressions, o-words, O numbers, GOTO, DO, WHILE, END
+_UPPER = bytes.maketrans(b"abcdefghijklmnopqrstuvwxyz", b"ABCDEFGHIJKLMNOPQRSTUVWXYZ")
+_CALLS = (b"M98", b"M99", b"G65", b"M098", b"M099", b"G065")
+_FANUC = re.compile(
+    r"(?im)^[ \t]*(?:n[ \t]*\d+[ \t]*)?(?:o[ \t]*\d+[ \t]*(?:\([^\n]*\))?[ \t]*$|if[ \t]*\[|goto"
+    r"|while[ \t]*\[|(?:do|end)[ \t]*\d)|m[ \t]*0*9[ \t]*[89](?![\d.])|g[ \t]*0*6[ \t]*5(?![\d.])")
+
+
+def needs_expander(raw: bytes) -> bool:
+    """True when the program uses anything beyond plain words (see the module docstring).
+
+    Costs two ``bytes.translate`` passes: the bytes of plain lines are dropped first,
+    so only comments and unusual letters are left to look at."""
+    rest = raw.translate(None, _PLAIN)
+    if b";" in rest:
+        rest = _COMMENTS.sub(b"", rest)
+    elif b"(" in rest:  # lines need not be told apart: drop the newlines before the comments
+        rest = _PARENS.sub(b"", rest.translate(None, b"\n"))
+    if any(rest.find(c) >= 0 for c in (bytes([b]) for b in _MACRO_BYTES)):
+        return True
+    if any(c in rest for c in (b"P", b"p", b"L", b"l")):  # M98 P, G65 P, L counts
+        squeezed = raw.translate(_UPPER, b" \t\r")
+        return any(call in squeezed for call in _CALLS)
+    return False
+
+
+def is_fanuc(text: str) -> bool:
+    """True when ``text`` is written in Fanuc macro B rather than LinuxCNC o-words."""
+    return _FANUC.search(re.sub(r"\([^()\n]*\)", "", text)) is not None
+
+
+def expand(lines, name: str, folder: Path | None, state, ops: OpBuffer, report: Report) -> Trace:
+    """Expand the program ``lines`` into ``ops`` (see the module docstring)."""
+    fanuc = is_fanuc("\n".join(lines))
+    unit = Unit(name, lines, fanuc)
+    for exc in unit.errors:
+        report.add(exc.line, exc.column, ERROR, exc.message)
+    params = getattr(state, "params", None)
+    walker = Walker(Library(unit, folder), state, ops, report, params if params is not None else Params())
+    if unit.structure_ok:
+        walker.run()
+    walker.trace.state = walker.state
+    return walker.trace

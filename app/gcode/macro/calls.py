@@ -1,0 +1,79 @@
+"""Finding what a call names: LinuxCNC subroutines and Fanuc subprograms.
+
+A LinuxCNC ``o<name> call`` (or ``o100 call``) runs the ``sub`` of that name in the
+calling file, else in the main file, else in ``name.ngc`` in the program's folder.
+A Fanuc ``M98 Pn`` / ``G65 Pn`` runs program ``On`` of the calling file, else of the
+main file, else the file ``Onnnn.nc``, ``onnnn.nc`` or ``nnnn.nc`` (four digits, or
+the number as written) in the program's folder. ``Library`` compiles each file once.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from .errors import MacroError
+from .structure import Unit
+
+# Fanuc argument specification I: address -> local number
+FANUC_ARGUMENTS = {"A": 1, "B": 2, "C": 3, "I": 4, "J": 5, "K": 6, "D": 7, "E": 8, "F": 9, "H": 11,
+                   "M": 13, "Q": 17, "R": 18, "S": 19, "T": 20, "U": 21, "V": 22, "W": 23,
+                   "X": 24, "Y": 25, "Z": 26}
+
+
+def read_lines(path: Path) -> list[str]:
+    """The lines of a subprogram file, or a ``MacroError`` saying why not."""
+    try:
+        text = path.read_bytes().decode("utf-8")
+    except OSError as exc:
+        raise MacroError(f"cannot read {path}: {exc.strerror or exc}") from None
+    except UnicodeDecodeError:
+        raise MacroError(f"{path} is not a UTF-8 text file") from None
+    return [line[:-1] if line.endswith("\r") else line for line in text.split("\n")]
+
+
+class Library:
+    """The compiled files of one expansion: file id -> ``Unit`` (0 is the main file)."""
+
+    def __init__(self, main: Unit, folder: Path | None):
+        self.units: list[Unit] = [main]
+        self.folder = folder
+        self._by_path: dict[Path, int] = {}
+
+    def _load(self, path: Path) -> int:
+        file_id = self._by_path.get(path)
+        if file_id is None:
+            unit = Unit(str(path), read_lines(path), self.units[0].fanuc)
+            if unit.errors:
+                raise unit.errors[0]
+            file_id = len(self.units)
+            self.units.append(unit)
+            self._by_path[path] = file_id
+        return file_id
+
+    def _find_file(self, names: list[str], what: str) -> int:
+        if self.folder is None:
+            raise MacroError(f"{what} is not defined (a program without a folder cannot use other files)")
+        for name in names:
+            if (self.folder / name).is_file():
+                return self._load(self.folder / name)
+        raise MacroError(f"{what} is not defined in this file nor in {names[0]} beside it")
+
+    def subroutine(self, name: str, caller: int) -> tuple[int, int]:
+        """(file id, index of the ``sub`` block) of the LinuxCNC subroutine ``name``."""
+        for file_id in (caller, 0):
+            if name in self.units[file_id].subs:
+                return file_id, self.units[file_id].subs[name]
+        file_id = self._find_file([f"{name}.ngc"], f"subroutine o<{name}>")
+        if name not in self.units[file_id].subs:
+            raise MacroError(f"{self.units[file_id].name} does not define o<{name}> sub")
+        return file_id, self.units[file_id].subs[name]
+
+    def program(self, number: int, caller: int) -> tuple[int, int]:
+        """(file id, first block) of the Fanuc program ``O<number>``."""
+        for file_id in (caller, 0):
+            if number in self.units[file_id].programs:
+                return file_id, self.units[file_id].programs[number]
+        names = [f"O{number:04d}.nc", f"o{number:04d}.nc", f"{number:04d}.nc",
+                 f"O{number}.nc", f"o{number}.nc", f"{number}.nc"]
+        file_id = self._find_file(list(dict.fromkeys(names)), f"subprogram O{number:04d}")
+        return file_id, self.units[file_id].programs.get(number, 0)

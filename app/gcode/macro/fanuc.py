@@ -1,0 +1,118 @@
+"""Fanuc macro B statements, run by the walker (``fn(walker, frame, block)``).
+
+``M98 Pn Lk`` (and the packed ``M98 Pkkknnnn``) runs program ``On`` k times with the
+caller's locals; ``G65 Pn Lk`` with new locals from its arguments (specification I);
+``M99`` returns (``M99 Pn``: to the caller's block ``Nn``), and runs the program again
+while repetitions are left. ``GOTO n`` / ``IF [c] GOTO n`` jump to block ``Nn`` of the
+same program (a jump back counts toward the loop limit), ``IF [c] THEN`` assigns,
+``WHILE [c] DO m`` / ``DO m`` / ``END m`` loop. An ``O`` line met in the flow ends the
+program it does not start (the main program stops; a subprogram returns).
+"""
+
+from __future__ import annotations
+
+from .calls import FANUC_ARGUMENTS
+from .errors import MacroError
+from .frame import Frame
+
+
+def call(w, f: Frame, b, letter: str, code: float, column: int, by_letter: dict) -> None:
+    """Run ``M98``/``G65`` (a call) or ``M99`` (a return); ``by_letter``: the other words."""
+    if letter == "M" and code == 99.0:
+        if len(w.frames) == 1:
+            raise MacroError("M99 outside a subprogram (the main program ends with M30)")
+        leave(w, f, by_letter.get("P"))
+        return
+    if "P" not in by_letter:
+        raise MacroError(f"{letter}{code:g} needs P (the program number)", b.line, column)
+    number, count = int(by_letter["P"]), int(by_letter.get("L", 1))
+    if letter == "M" and "L" not in by_letter and number > 9999:
+        number, count = number % 10000, number // 10000  # packed M98 Pkkknnnn
+    if count < 1:
+        return
+    file_id, start = w.library.program(number, f.file_id)
+    if letter == "M":
+        locals_ = f.locals  # M98 keeps the caller's local level
+    else:
+        locals_ = {FANUC_ARGUMENTS[k]: v for k, v in by_letter.items() if k in FANUC_ARGUMENTS}
+        extra = sorted(set(by_letter) - set(FANUC_ARGUMENTS) - {"G", "P", "L"})
+        if extra:
+            raise MacroError(f"G65 cannot pass {', '.join(extra)} (argument specification I)", b.line)
+    unit = w.library.units[file_id]
+    program = unit.program_of[start] if unit.program_of else 0
+    w._push(Frame(unit, start, locals_, f"O{number:04d}", file_id, program, count, b.line))
+
+
+def leave(w, f: Frame, label) -> None:
+    """The end of a subprogram: again while repetitions are left, else back to the caller."""
+    if f.calls_left > 1:
+        f.calls_left -= 1
+        w.loop_back(f, f.program)
+        f.pc = f.program
+        return
+    w._pop()
+    caller = w.frames[-1]
+    if label is not None:
+        caller.pc = _label(caller, int(label))
+
+
+def _label(f: Frame, n: int) -> int:
+    target = f.unit.labels.get((f.program, n))
+    if target is None:
+        raise MacroError(f"GOTO {n}: no block N{n} in this program")
+    return target
+
+
+def _jump(w, f: Frame, value) -> None:
+    if value is None:
+        raise MacroError("GOTO to a vacant label")
+    target = _label(f, int(round(value)))
+    if target <= f.pc:
+        w.loop_back(f, target)
+    f.pc = target
+
+
+def goto(w, f: Frame, b) -> None:
+    _jump(w, f, b.args[-1](w.scope))
+
+
+def if_goto(w, f: Frame, b) -> None:
+    if w.test(b.args[0]):
+        _jump(w, f, b.args[1](w.scope))
+    else:
+        f.pc += 1
+
+
+def if_then(w, f: Frame, b) -> None:
+    if w.test(b.args[0]):
+        w.assign(b, b.values(w.scope))
+    f.pc += 1
+
+
+def while_do(w, f: Frame, b) -> None:
+    if w.test(b.args[0]):
+        w.loop_pass(f, f.pc)
+        f.pc += 1
+    else:
+        w.loop_done(f, f.pc)
+        f.pc = f.unit.jump[f.pc]
+
+
+def do(w, f: Frame, b) -> None:
+    w.loop_pass(f, f.pc)
+    f.pc += 1
+
+
+def end(w, f: Frame, b) -> None:
+    head = f.unit.back[f.pc]
+    w.loop_back(f, head)
+    f.pc = head
+
+
+def program(w, f: Frame, b) -> None:
+    if f.pc == f.program:
+        f.pc += 1
+    elif len(w.frames) == 1:
+        w.frames.clear()  # the main program ran into the next program's O line
+    else:
+        leave(w, f, None)

@@ -1,0 +1,147 @@
+"""LinuxCNC o-word statements, run by the walker (``oword(walker, frame, block)``).
+
+``sub`` met in the flow is skipped to after its ``endsub``; ``call`` pushes a frame
+whose ``#1``.. hold the arguments (the others read 0) and whose named locals start
+empty; ``return``/``endsub`` pop it and leave their value in ``#<_value>`` (and
+``#<_value_returned>`` = 1, else 0). ``if``/``elseif``/``else``/``endif``, ``while``/
+``endwhile``, ``do``/``while``, ``repeat``/``endrepeat``, ``break`` and ``continue``
+use the jump tables of ``structure.Unit``; every jump back counts toward the loop limit.
+"""
+
+from __future__ import annotations
+
+from .errors import MacroError
+from .frame import Frame
+
+
+def _sub(w, f: Frame, b) -> None:
+    f.pc = f.unit.jump[f.pc]
+
+
+def _call(w, f: Frame, b) -> None:
+    scope = w.scope
+    args = [fn(scope) for fn in b.args]
+    file_id, start = w.library.subroutine(b.oname, f.file_id)
+    f.pc += 1
+    locals_ = {i + 1: (0.0 if v is None else v) for i, v in enumerate(args)}
+    w._push(Frame(w.library.units[file_id], start + 1, locals_, f"o<{b.oname}>" if not b.oname.isdigit()
+                  else f"o{b.oname}", file_id, caller_line=b.line))
+
+
+def _return(w, f: Frame, b) -> None:
+    params = w.scope.params
+    if b.args:
+        params.set_named("_value", b.args[0](w.scope))
+        params.set_named("_value_returned", 1.0)
+    else:
+        params.set_named("_value_returned", 0.0)
+    if len(w.frames) == 1:
+        raise MacroError(f"o{b.oname} {b.keyword} reached outside a call")
+    w._pop()
+
+
+def _if(w, f: Frame, b) -> None:
+    if w.test(b.args[0]):
+        f.pc += 1
+        return
+    blocks, jump = f.unit.blocks, f.unit.jump
+    target = jump[f.pc]
+    while blocks[target].keyword == "elseif":
+        if w.test(blocks[target].args[0]):
+            f.pc = target + 1
+            return
+        target = jump[target]
+    f.pc = target + 1  # past 'else' into its branch, or past 'endif'
+
+
+def _branch_end(w, f: Frame, b) -> None:
+    f.pc = f.unit.back[f.pc]  # the end of a taken branch: past endif
+
+
+def _next(w, f: Frame, b) -> None:
+    f.pc += 1
+
+
+def _do(w, f: Frame, b) -> None:
+    w.loop_pass(f, f.pc)
+    f.pc += 1
+
+
+def _do_while(w, f: Frame, b) -> None:
+    back = f.unit.back[f.pc]  # the 'while' closing a 'do'
+    v = b.args[0](w.scope)
+    if v is not None and v != 0.0:
+        w.loop_back(f, back - 1)
+        f.pc = back
+    else:
+        w.loop_done(f, back - 1)
+        f.pc += 1
+
+
+def _while(w, f: Frame, b) -> None:
+    v = b.args[0](w.scope)
+    if v is not None and v != 0.0:
+        w.loop_pass(f, f.pc)
+        f.pc += 1
+    else:
+        w.loop_done(f, f.pc)
+        f.pc = f.unit.jump[f.pc]
+
+
+def _endwhile(w, f: Frame, b) -> None:
+    head = f.unit.back[f.pc]
+    w.loop_back(f, head)
+    f.pc = head
+
+
+def _repeat(w, f: Frame, b) -> None:
+    count = b.args[0](w.scope) or 0.0
+    if count >= 1:
+        f.repeat_left[f.pc] = int(count)
+        w.loop_pass(f, f.pc)
+        f.pc += 1
+    else:
+        f.pc = f.unit.jump[f.pc]
+
+
+def _endrepeat(w, f: Frame, b) -> None:
+    head = f.unit.back[f.pc]
+    left = f.repeat_left[head] - 1
+    if left > 0:
+        f.repeat_left[head] = left
+        w.loop_back(f, head)
+        f.pc = head + 1
+    else:
+        f.repeat_left.pop(head, None)
+        w.loop_done(f, head)
+        f.pc += 1
+
+
+def _break(w, f: Frame, b) -> None:
+    head = f.unit.back[f.pc]
+    f.repeat_left.pop(head, None)
+    w.loop_done(f, head)
+    f.pc = f.unit.jump[head]
+
+
+def _continue(w, f: Frame, b) -> None:
+    head = f.unit.back[f.pc]
+    keyword = f.unit.blocks[head].keyword
+    if keyword == "while":
+        w.loop_back(f, head)
+        f.pc = head
+    else:  # do: the closing while tests; repeat: endrepeat counts
+        f.pc = f.unit.jump[head] - 1
+
+
+HANDLERS = {
+    "sub": _sub, "call": _call, "return": _return, "endsub": _return, "if": _if,
+    "elseif": _branch_end, "else": _branch_end, "endif": _next, "while": _while, "do-while": _do_while,
+    "endwhile": _endwhile, "do": _do, "repeat": _repeat, "endrepeat": _endrepeat,
+    "break": _break, "continue": _continue,
+}
+
+
+def handler(b):
+    """The function that runs o-word statement ``b``."""
+    return HANDLERS[b.keyword]

@@ -1,0 +1,191 @@
+"""A source file compiled into blocks, with every jump target found before running.
+
+``Unit(name, lines, fanuc)`` compiles each line once (``block.py``) and records what
+the walker needs: ``jump[i]`` (where a LinuxCNC ``if``/``elseif`` goes when false,
+where ``else``/``elseif`` go after a taken branch, where a loop exits),
+``back[i]`` (the head a loop end or ``continue`` returns to), ``subs`` (o-name ->
+index of its ``sub``), and for Fanuc the programs in the file (``O`` number ->
+first index), the ``N`` labels of each program and the ``WHILE``/``DO``-``END``
+pairs. Lines that do not compile are kept in ``errors`` (all of them, so one load
+lists every problem) and become ``SKIP`` blocks that stop the run if reached.
+Unbalanced structures are errors naming the line and column.
+"""
+
+from __future__ import annotations
+
+from .block import DO, END, OWORD, PROGRAM, SKIP, WHILE, Block, compile_line
+from .errors import MacroError
+
+LOOP_HEADS = {"while", "do"}  # break/continue work in these (not in repeat, as rs274ngc)
+
+
+class Unit:
+    """One compiled source file (see the module docstring)."""
+
+    def __init__(self, name: str, lines, fanuc: bool):
+        self.name, self.fanuc = name, fanuc
+        self.blocks: list[Block] = []
+        self.errors: list[MacroError] = []
+        self.bad: set[int] = set()
+        for i, text in enumerate(lines):
+            try:
+                self.blocks.append(compile_line(text, i + 1, fanuc))
+            except MacroError as exc:
+                self.errors.append(exc.at(i + 1, name))
+                self.bad.add(i)
+                self.blocks.append(Block(i + 1, SKIP))
+        self.jump: dict[int, int] = {}
+        self.back: dict[int, int] = {}
+        self.subs: dict[str, int] = {}
+        self.programs: dict[int, int] = {}  # Fanuc O number -> index of its O line
+        self.program_of: list[int] = []  # block index -> index of its program's first block
+        self.labels: dict[tuple[int, int], int] = {}  # (program start, N) -> index
+        compiled = len(self.errors)
+        self._structure()
+        self.structure_ok = len(self.errors) == compiled  # jumps are only safe when balanced
+        self.bound = False  # the walker has given each block its handler
+
+    def fail(self, message: str, block: Block) -> None:
+        self.errors.append(MacroError(message, block.line, block.column, self.name))
+
+    def _structure(self) -> None:
+        if self.fanuc:
+            self._programs()
+            self._fanuc_loops()
+        else:
+            self._owords()
+
+    # --- Fanuc -----------------------------------------------------------------------
+    def _programs(self) -> None:
+        start = 0
+        for i, b in enumerate(self.blocks):
+            if b.kind == PROGRAM:
+                start = i
+                if b.number in self.programs:
+                    self.fail(f"program O{b.number} is defined twice", b)
+                self.programs.setdefault(b.number, i)
+            self.program_of.append(start)
+            if b.label is not None:
+                self.labels.setdefault((start, b.label), i)
+
+    def _fanuc_loops(self) -> None:
+        open_loops: list[tuple[int, int]] = []  # (DO number, index)
+        program = 0
+        for i, b in enumerate(self.blocks):
+            if self.program_of[i] != program:
+                self._unclosed_do(open_loops)
+                open_loops, program = [], self.program_of[i]
+            if b.kind in (WHILE, DO):
+                if not 1 <= b.number <= 3:
+                    self.fail(f"DO {b.number}: the loop number must be 1, 2 or 3", b)
+                if any(n == b.number for n, _ in open_loops):
+                    self.fail(f"DO {b.number} inside another loop DO {b.number}", b)
+                open_loops.append((b.number, i))
+            elif b.kind == END:
+                if not open_loops or open_loops[-1][0] != b.number:
+                    expected = f" (the open loop is DO {open_loops[-1][0]})" if open_loops else ""
+                    self.fail(f"END {b.number} without its DO {b.number}{expected}", b)
+                    continue
+                _, head = open_loops.pop()
+                self.jump[head], self.back[i] = i + 1, head
+        self._unclosed_do(open_loops)
+
+    def _unclosed_do(self, open_loops) -> None:
+        for number, i in open_loops:
+            self.fail(f"DO {number} has no END {number}", self.blocks[i])
+
+    # --- LinuxCNC o-words --------------------------------------------------------------
+    def _owords(self) -> None:
+        stack: list[tuple[str, str, int, list[int]]] = []  # (keyword, o-name, index, branches)
+        for i, b in enumerate(self.blocks):
+            if b.kind != OWORD:
+                continue
+            handler = getattr(self, "_o_" + b.keyword, None)
+            if handler is not None:
+                handler(stack, i, b)
+        for keyword, _, i, _ in stack:
+            self.fail(f"'{keyword}' is never closed", self.blocks[i])
+
+    def _open(self, stack, i, b) -> None:
+        stack.append((b.keyword, b.oname, i, [i]))
+
+    def _close(self, stack, i, b, opener: str, closer: str) -> tuple | None:
+        if not stack or stack[-1][0] != opener or stack[-1][1] != b.oname:
+            top = f" (open: o{stack[-1][1]} {stack[-1][0]})" if stack else ""
+            self.fail(f"o{b.oname} {closer} without o{b.oname} {opener}{top}", b)
+            return None
+        return stack.pop()
+
+    def _o_sub(self, stack, i, b) -> None:
+        if any(k == "sub" for k, *_ in stack):
+            self.fail(f"o{b.oname} sub inside another sub", b)
+        if b.oname in self.subs:
+            self.fail(f"o{b.oname} sub is defined twice", b)
+        self.subs.setdefault(b.oname, i)
+        self._open(stack, i, b)
+
+    def _o_endsub(self, stack, i, b) -> None:
+        opened = self._close(stack, i, b, "sub", "endsub")
+        if opened:
+            self.jump[opened[2]] = i + 1
+
+    def _o_if(self, stack, i, b) -> None:
+        self._open(stack, i, b)
+
+    def _o_elseif(self, stack, i, b) -> None:
+        if not stack or stack[-1][0] != "if" or stack[-1][1] != b.oname:
+            self.fail(f"o{b.oname} {b.keyword} without o{b.oname} if", b)
+            return
+        stack[-1][3].append(i)
+
+    _o_else = _o_elseif
+
+    def _o_endif(self, stack, i, b) -> None:
+        opened = self._close(stack, i, b, "if", "endif")
+        if not opened:
+            return
+        branches = opened[3]
+        for here, nxt in zip(branches, branches[1:] + [i], strict=True):
+            self.jump[here] = nxt  # a false test goes to the next branch
+        for here in branches[1:]:
+            self.back[here] = i + 1  # the end of a taken branch goes past endif
+
+    def _o_while(self, stack, i, b) -> None:
+        if stack and stack[-1][0] == "do" and stack[-1][1] == b.oname:
+            _, _, head, _ = stack.pop()
+            self.back[i] = head + 1  # do ... while [c]: true goes back into the body
+            self.jump[head] = i + 1
+            b.keyword = "do-while"  # the walker's handler for the end of a do loop
+            return
+        self._open(stack, i, b)
+
+    def _o_endwhile(self, stack, i, b) -> None:
+        opened = self._close(stack, i, b, "while", "endwhile")
+        if opened:
+            self.jump[opened[2]], self.back[i] = i + 1, opened[2]
+
+    _o_do = _o_if
+
+    def _o_repeat(self, stack, i, b) -> None:
+        self._open(stack, i, b)
+
+    def _o_endrepeat(self, stack, i, b) -> None:
+        opened = self._close(stack, i, b, "repeat", "endrepeat")
+        if opened:
+            self.jump[opened[2]], self.back[i] = i + 1, opened[2]
+
+    def _o_break(self, stack, i, b) -> None:
+        self._loop_exit(stack, i, b)
+
+    _o_continue = _o_break
+
+    def _loop_exit(self, stack, i, b) -> None:
+        loop = next((s for s in reversed(stack) if s[0] in LOOP_HEADS and s[1] == b.oname), None)
+        if loop is None:
+            self.fail(f"o{b.oname} {b.keyword} outside a loop o{b.oname}", b)
+            return
+        self.back[i] = loop[2]  # resolved by the walker: the loop head's exit or test
+
+    def _o_return(self, stack, i, b) -> None:
+        if not any(k == "sub" and n == b.oname for k, n, *_ in stack):
+            self.fail(f"o{b.oname} return outside o{b.oname} sub", b)
