@@ -45,7 +45,7 @@ class Pocket:
     def _enter(self, path: Path, shape: Polygon, points, z_from: float, z: float) -> None:
         cut = self.cut
         centre = rings.centre_of(shape)
-        room = self.allowed.exterior.distance(Point(centre)) if self.allowed.geom_type == "Polygon" else 0.0
+        room = self.allowed.boundary.distance(Point(centre)) if not self.allowed.is_empty else 0.0
         radius = min(entry.HELIX_FRACTION * cut.tool_diameter, room - 1e-4)
         lap = rings.lap_from(points, centre)
         if radius >= 0.05:

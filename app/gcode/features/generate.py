@@ -15,12 +15,14 @@ from . import entry, finish, rings
 from .clearing import Island, Pocket
 from .cutting import Cutting
 from .kinds import Face, Holes, PocketCircle, PocketRect, Profile, Slot
-from .moves import SPINDLE, TOOL, Move, Path
+from .moves import RAPID, SPINDLE, TOOL, Move, Path
 from .travel import check_travel
 
 
-def _start(cut: Cutting, xy=(0.0, 0.0)) -> Path:
+def _start(cut: Cutting, xy) -> Path:
+    """A path whose first move is the rapid over ``xy`` at the safe height."""
     path = Path((xy[0], xy[1], cut.safe_z))
+    path.moves.append(Move(RAPID, path.pos))
     return path
 
 
@@ -146,7 +148,7 @@ def program_moves(features, profile: MachineProfile | None = None) -> list[Move]
             moves.append(Move(TOOL, moves[-1].end, value=cut.tool))
             rpm = None
         if cut.rpm != rpm:
-            moves.append(Move(SPINDLE, body[0].end if body else (0, 0, 0), value=cut.rpm))
+            moves.append(Move(SPINDLE, moves[-1].end if moves else body[0].end, value=cut.rpm))
         tool, rpm = cut.tool, cut.rpm
         moves += body
     return moves
