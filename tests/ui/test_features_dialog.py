@@ -112,3 +112,16 @@ def test_a_malformed_point_list_says_where_and_cannot_be_converted(qtbot, window
     dialog = window.import_dialog
     assert "line 7: path 0 announced 3 points, found 2" in dialog.problem.text()
     assert not dialog.convert_button.isEnabled()
+
+
+def test_screenshot_of_the_papers_island(qtbot, dialog, tmp_path):
+    from PySide6.QtGui import QImage
+
+    from tests.ui.feature_screens import island_shot
+
+    path = island_shot(dialog, tmp_path)
+    assert dialog.problem.text() == "" and dialog.program.errors == []
+    image = QImage(str(path))
+    assert image.width() >= 1000 and image.height() >= 600
+    colours = {image.pixel(x, y) for x in range(0, image.width(), 37) for y in range(0, image.height(), 37)}
+    assert len(colours) > 20

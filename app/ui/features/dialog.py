@@ -12,6 +12,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import numpy as np
+import pyqtgraph as pg
 from PySide6.QtCore import QCoreApplication, QTimer, Signal
 from PySide6.QtWidgets import (
     QComboBox,
@@ -38,6 +40,7 @@ from . import spec
 from .forms import ERROR_STYLE, FieldForm
 
 REFRESH_MS = 150
+OUTLINE_COLOUR = "#f0f0f0"
 
 
 def _tr(text: str) -> str:
@@ -62,7 +65,7 @@ class FeatureDialog(QDialog):
         splitter.addWidget(self._job_column())
         splitter.addWidget(self._form_column())
         splitter.addWidget(self._preview_column())
-        splitter.setSizes([220, 420, 560])
+        splitter.setSizes([200, 520, 580])
         layout = QVBoxLayout(self)
         layout.addWidget(splitter, 1)
         layout.addLayout(self._buttons())
@@ -126,6 +129,8 @@ class FeatureDialog(QDialog):
     def _preview_column(self) -> QWidget:
         travel = (self.profile.travel.x_max, self.profile.travel.y_max)
         self.preview = PreviewWidget(travel=travel, offset=self.profile.travel.work_offset()[:2])
+        self.outline = self.preview.plot.plot(pen=pg.mkPen(OUTLINE_COLOUR, width=2))
+        self.outline.setZValue(20)
         self.estimate = QLabel()
         self.problem = QLabel()
         self.problem.setStyleSheet(ERROR_STYLE)
@@ -222,6 +227,7 @@ class FeatureDialog(QDialog):
             self.text = text
             self.program = load_text(text, "features.nc")
             self.preview.show_program(self.program.toolpath, self.profile.motion.arc_tolerance_mm)
+            self._draw_outlines(features)
             minutes, seconds = divmod(int(round(self.program.toolpath.estimated_time)), 60)
             self.estimate.setText(self.tr("Estimated time: %1 min %2 s, %n line(s)", "",
                                           len(self.program.source_lines)).replace("%1", str(minutes))
@@ -229,6 +235,16 @@ class FeatureDialog(QDialog):
         self.open_button.setEnabled(bad is None)
         self.save_button.setEnabled(bad is None)
         self.preview_updated.emit()
+
+    def _draw_outlines(self, features) -> None:
+        """The boundary of every feature's region (pockets, slots, islands), in white."""
+        xs, ys = [], []
+        for feature in features:
+            if hasattr(feature, "region"):
+                x, y = feature.region().exterior.xy
+                xs += [*x, np.nan]
+                ys += [*y, np.nan]
+        self.outline.setData(np.array(xs, float), np.array(ys, float), connect="finite")
 
     def _show_errors(self, bad=None) -> None:
         for form in [*self.forms.values(), self.cutting]:

@@ -8,6 +8,7 @@ import pytest
 import shapely
 
 from app.gcode.features import Cutting, Face, PocketCircle, PocketRect, Profile, Slot, parse_contour, toolpath
+from app.gcode.features.clearing import Island
 from app.gcode.features.moves import ARC, FEED, RAPID
 
 from .toolcheck import coverage, gouges, into_stock, swept, wall_error
@@ -75,10 +76,15 @@ def test_pocket_entries_are_helices_or_ramps_at_plunge_feed():
 
 
 def test_island_of_the_paper():
+    """N5 G104 Z-5 K5 H12 D12 E0 T02, N6 G105 P7 Q15 B75 C1 R2 M15 U0.5 W0 S1000 F150: the
+    paper's simulation shows 5 layers of 2 rings each; ours too, then the finishing pass."""
     cut = Cutting(tool_diameter=12, depth=5, stepdown=1, stepover=75, finish_xy=0.5, clearance=2,
                   feed=150, plunge_feed=80, rpm=1000)
     island = Profile(parse_contour(PAPER, "paper"), "outside", cut, stock=15)
+    assert len(Island(island.region(), cut, 15, False).rings) == 2
     moves = toolpath(island)
+    notes = {m.note.split(" z ")[0] for m in moves if m.note.startswith("layer")}
+    assert notes == {f"layer {k}/5" for k in range(1, 6)}
     shape = island.region()
     r = cut.radius
     allowed = shapely.geometry.box(-100, -100, 200, 200).difference(shape.buffer(r - 0.01))
