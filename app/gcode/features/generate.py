@@ -45,6 +45,7 @@ def _pocket(feature, ccw_for_climb: bool = True) -> list[Move]:
     roughed = region.buffer(-(cut.radius + cut.finish_xy))
     for k, wall in enumerate(rings.offset(region, -cut.radius)):
         finish.walls(path, wall, feature.hint(), cut, ccw, True, roughed, f"area {k + 1}")
+    path.note = ""
     entry.retract(path, cut)
     return path.moves
 
@@ -61,6 +62,7 @@ def _slot(feature: Slot) -> list[Move]:
         entry.approach(path, cut, a, z_from)
         entry.ramp(path, [a, b, a], z, cut)
         z_from = z
+    path.note = ""
     entry.retract(path, cut)
     return path.moves
 
@@ -76,6 +78,7 @@ def _profile(feature: Profile) -> list[Move]:
     _rough(path, area, cut)
     wall = rings.offset(island, cut.radius)[0]
     finish.walls(path, wall, feature.hint(), cut, ccw, False, None, "island")
+    path.note = ""
     entry.retract(path, cut)
     return path.moves
 
@@ -98,7 +101,8 @@ def _face(feature: Face) -> list[Move]:
         for j, y in enumerate(rows):
             path.feed(y=y, f=cut.feed)
             path.feed(right if j % 2 == 0 else left, f=cut.feed)
-        entry.retract(path, cut)
+        path.note = ""
+    entry.retract(path, cut)
     return path.moves
 
 
