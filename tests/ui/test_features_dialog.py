@@ -125,3 +125,14 @@ def test_screenshot_of_the_papers_island(qtbot, dialog, tmp_path):
     assert image.width() >= 1000 and image.height() >= 600
     colours = {image.pixel(x, y) for x in range(0, image.width(), 37) for y in range(0, image.height(), 37)}
     assert len(colours) > 20
+
+
+@pytest.mark.parametrize("dialect", ["plain", "fanuc21", "fanuc31"])
+def test_save_as_in_each_dialect(dialog, tmp_path, dialect):
+    dialog.refresh()
+    dialog.dialect.setCurrentIndex(dialog.dialect.findData(dialect))
+    target = tmp_path / f"{dialect}.nc"
+    dialog.save_to(target)
+    text = target.read_text()
+    assert ("O1001" in text) == (dialect != "plain")
+    assert ("WHILE" in text) == (dialect == "fanuc31")

@@ -1,8 +1,9 @@
 """``cnc-gcode feature KIND [options]``: one feature's program on standard output.
 
 Kinds and options as issue 10 lists them; lengths in mm, feeds in mm/min, angles in
-degrees. A bad parameter is reported on standard error naming the option and the
-rule (``--stepover: must be > 0 and <= 100 % (got 120)``), exit status 2.
+degrees. ``--macro fanuc21|fanuc31`` prints the parametric program for that control
+instead (``fanuc.py``). A bad parameter is reported on standard error naming the option
+and the rule (``--stepover: must be > 0 and <= 100 % (got 120)``), exit status 2.
 """
 
 from __future__ import annotations
@@ -17,6 +18,7 @@ from . import kinds
 from .contour import parse_contour
 from .cutting import Cutting
 from .errors import FeatureError
+from .fanuc import DIALECTS, write_fanuc
 from .generate import program_moves
 from .plain import write_plain
 
@@ -34,6 +36,7 @@ INTEGER = {"count"}
 
 def _common(parser: argparse.ArgumentParser, profile: MachineProfile) -> None:
     add = parser.add_argument
+    add("--macro", choices=DIALECTS, default=None, help="a parametric program for that control")
     add("--tool-diameter", type=float, required=True, metavar="D")
     add("--tool", type=int, default=1, metavar="T")
     add("--top", type=float, default=0.0, metavar="Z", help="stock top (default 0)")
@@ -108,7 +111,8 @@ def main(argv: list[str], profile: MachineProfile | None = None) -> int:
     args = _parser(profile).parse_args(argv)
     try:
         feature = build(args)
-        text = write_plain(program_moves([feature], profile), f"cnc-gcode feature {' '.join(argv)}")
+        moves, title = program_moves([feature], profile), f"cnc-gcode feature {' '.join(argv)}"
+        text = write_fanuc(moves, args.macro, title) if args.macro else write_plain(moves, title)
     except FeatureError as exc:
         print(f"cnc-gcode feature: --{exc.field.replace('_', '-')}: {exc.rule}", file=sys.stderr)
         return 2

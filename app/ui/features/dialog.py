@@ -33,6 +33,7 @@ from PySide6.QtWidgets import (
 
 from app.gcode import load_text
 from app.gcode.features import FeatureError, program_moves, write_plain
+from app.gcode.features.fanuc import write_fanuc
 from app.profile import MachineProfile
 from app.ui.preview.widget import PreviewWidget
 
@@ -58,7 +59,7 @@ class FeatureDialog(QDialog):
         self.setWindowTitle(self.tr("Machining features"))
         self.profile, self.open_program, self.generated_dir = profile, open_program, Path(generated_dir)
         self.job: list[dict] = []  # {"kind": str, "values": dict}
-        self.text = ""  # the last good program
+        self.text, self.moves = "", []  # the last good program and its moves
         self.program = None
         self._timer = QTimer(self, singleShot=True, interval=REFRESH_MS, timeout=self.refresh)
         splitter = QSplitter()
@@ -147,8 +148,14 @@ class FeatureDialog(QDialog):
         row.addStretch(1)
         self.open_button = QPushButton(self.tr("Open as program"))
         self.open_button.clicked.connect(self.open_as_program)
+        self.dialect = QComboBox()
+        for key, text in (("plain", self.tr("plain G-code")), ("fanuc21", self.tr("Fanuc 21 macro")),
+                          ("fanuc31", self.tr("Fanuc 31 macro"))):
+            self.dialect.addItem(text, key)
         self.save_button = QPushButton(self.tr("Save as…"))
         self.save_button.clicked.connect(self.save_as)
+        row.addWidget(QLabel(self.tr("Save in")))
+        row.addWidget(self.dialect)
         close = QPushButton(self.tr("Close"))
         close.clicked.connect(self.reject)
         for button in (self.open_button, self.save_button, close):
@@ -219,12 +226,13 @@ class FeatureDialog(QDialog):
         features, bad = self._features()
         if bad is None:
             try:
-                text = write_plain(program_moves(features, self.profile), self.tr("machining features"))
+                moves = program_moves(features, self.profile)
+                text = write_plain(moves, self.tr("machining features"))
             except FeatureError as exc:  # the travel: which feature cannot be known from the text
                 bad = (self.list.currentRow(), exc)
         self._show_errors(bad)
         if bad is None:
-            self.text = text
+            self.text, self.moves = text, moves
             self.program = load_text(text, "features.nc")
             self.preview.show_program(self.program.toolpath, self.profile.motion.arc_tolerance_mm)
             self._draw_outlines(features)
@@ -281,4 +289,11 @@ class FeatureDialog(QDialog):
         path, _ = QFileDialog.getSaveFileName(self, self.tr("Save the program"), "features.nc",
                                               self.tr("G-code (*.nc *.ngc *.gcode)"))
         if path:
-            Path(path).write_text(self.text, encoding="utf-8")
+            self.save_to(Path(path))
+
+    def save_to(self, path: Path) -> None:
+        """Write the job to ``path`` in the chosen dialect (plain or a Fanuc macro program)."""
+        dialect = self.dialect.currentData()
+        title = self.tr("machining features")
+        text = self.text if dialect == "plain" else write_fanuc(self.moves, dialect, title)
+        path.write_text(text, encoding="utf-8")

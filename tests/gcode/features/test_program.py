@@ -139,3 +139,12 @@ def test_cli_bad_parameter_names_the_option(args, message, capsys):
         argv += args
     assert main(argv) == 2
     assert message in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("dialect", ["fanuc21", "fanuc31"])
+def test_cli_macro_dialects(dialect, capsys):
+    assert main(["feature", "pocket-circle", "--x", "50", "--y", "50", "--diameter", "20",
+                 "--tool-diameter", "4", "--depth", "3", "--macro", dialect]) == 0
+    out = capsys.readouterr().out
+    assert out.startswith("%\nO0001") and "O1001" in out and "M99" in out
+    assert ("WHILE" in out) == (dialect == "fanuc31")
