@@ -1,7 +1,9 @@
 """Roughing a pocket (rings from the inside out) or the stock around an island
 (rings from the outside in), layer by layer.
 
-A pocket layer: every leaf of the ring tree is entered by a helix at its centre
+A pocket's ring spacing is the stepover, or less where that would leave floor uncut
+(``rings.covering_trees``). A pocket layer: every leaf of the ring tree is entered by a
+helix at its centre
 (a ramp along it where no helix fits), then each ring is cut, children before their
 parent, linked by a feed to the parent's nearest point (inside the parent: no gouge).
 An island layer: the tool goes down in open air beyond the stock ``M``, feeds onto the
@@ -25,9 +27,7 @@ class Pocket:
     def __init__(self, region: Polygon, cut: Cutting, ccw: bool) -> None:
         self.cut, self.ccw = cut, ccw
         self.allowed = region.buffer(-cut.radius, quad_segs=rings.quad_segs(cut.radius))
-        first = cut.radius + cut.finish_xy
-        leaf = min(cut.step, 0.9 * cut.radius)
-        self.trees = rings.pocket_tree(region, first, cut.step, leaf)
+        self.trees = rings.covering_trees(region, cut.radius + cut.finish_xy, cut.step, cut.radius)
 
     def layer(self, path: Path, z_from: float, z: float, note: str) -> None:
         """Clear the whole pocket at ``z``, the level above being cut to ``z_from``."""

@@ -4,6 +4,8 @@ Offsets are Euclidean (round joins) with chords within ``TOL``. A pocket's rings
 a tree: the erosion at the first offset, then each component eroded by the stepover
 again, until nothing is left; a leaf (nothing left at the stepover) is eroded once
 more by a step no larger than ``leaf_step`` so that the floor in its middle is cut.
+``covering_trees`` narrows the spacing where the stepover would leave floor uncut
+(between rings near sharp corners, where a ring ends).
 """
 
 from __future__ import annotations
@@ -11,6 +13,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
+import shapely
 from shapely.geometry import LineString, MultiPolygon, Point, Polygon
 from shapely.geometry.polygon import orient
 from shapely.ops import polylabel
@@ -51,6 +54,28 @@ class Node:
 def pocket_tree(region: Polygon, first: float, step: float, leaf_step: float) -> list[Node]:
     """Ring trees of ``region`` eroded by ``first``, then by ``step`` (see module doc)."""
     return [_grow(p, step, leaf_step) for p in offset(region, -first)]
+
+
+def uncut(trees: list[Node], first: float, region: Polygon, radius: float) -> float:
+    """Area (mm^2, slivers under 0.02 mm wide ignored) of the floor that ``radius`` tools
+    on every ring of ``trees`` leave uncut within reach (``region`` eroded by ``first``
+    and grown back by ``radius``)."""
+    lines = [LineString(node.shape.exterior.coords) for tree in trees for node in tree.walk()]
+    if not lines:
+        return 0.0
+    swept = shapely.union_all(lines).buffer(radius, quad_segs=quad_segs(radius))
+    reach = shapely.union_all(offset(region, -first)).buffer(radius, quad_segs=quad_segs(radius))
+    return float(reach.difference(swept).buffer(-0.01).area)
+
+
+def covering_trees(region: Polygon, first: float, step: float, radius: float) -> list[Node]:
+    """``pocket_tree`` at the stepover, or at a smaller spacing (15 % less each try, not
+    under half the radius) where that would leave part of the floor uncut."""
+    while True:
+        trees = pocket_tree(region, first, step, min(step, 0.9 * radius))
+        if step <= 0.5 * radius or uncut(trees, first, region, radius) <= 0.0:
+            return trees
+        step *= 0.85
 
 
 def _grow(shape: Polygon, step: float, leaf_step: float) -> Node:

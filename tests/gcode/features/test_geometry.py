@@ -133,3 +133,15 @@ def test_rapids_stay_at_safe_height_when_moving_sideways():
             if m.kind == RAPID and math.dist(pos[:2], m.end[:2]) > 1e-9:
                 assert pos[2] >= CUT.safe_z - 1e-9 and m.end[2] >= CUT.safe_z - 1e-9
             pos = m.end
+
+
+@pytest.mark.parametrize("stepover", [75.0, 100.0])
+def test_a_wide_stepover_still_cuts_the_whole_floor(stepover):
+    """Between the rings near a sharp corner (and where a ring ends) a wide stepover would
+    leave stock: the spacing narrows there, the floor is still cut and nothing rapids into it."""
+    cut = Cutting(tool_diameter=6, depth=2, stepdown=1, stepover=stepover, finish_xy=0.3)
+    for feature in (PocketRect(20, 20, 40, 25, cut, angle=15), Profile(parse_contour(PAPER), "inside", cut)):
+        moves = toolpath(feature)
+        region = feature.region()
+        assert coverage(swept(moves, cut.floor, cut.radius), region) >= 0.995
+        assert into_stock(moves, region, cut.radius, cut.top) == []
