@@ -143,5 +143,6 @@ def test_a_wide_stepover_still_cuts_the_whole_floor(stepover):
     for feature in (PocketRect(20, 20, 40, 25, cut, angle=15), Profile(parse_contour(PAPER), "inside", cut)):
         moves = toolpath(feature)
         region = feature.region()
-        assert coverage(swept(moves, cut.floor, cut.radius), region) >= 0.995
+        reachable = region.buffer(-cut.radius).buffer(cut.radius)  # a round tool leaves sharp corners
+        assert coverage(swept(moves, cut.floor, cut.radius), reachable) >= 0.995
         assert into_stock(moves, region, cut.radius, cut.top) == []
