@@ -245,13 +245,18 @@ class FeatureDialog(QDialog):
         self.preview_updated.emit()
 
     def _draw_outlines(self, features) -> None:
-        """The boundary of every feature's region (pockets, slots, islands), in white."""
+        """The boundary of every feature's region (pockets, slots, islands) and every hole,
+        in white."""
         xs, ys = [], []
+        turn = np.linspace(0, 2 * np.pi, 33)
         for feature in features:
             if hasattr(feature, "region"):
                 x, y = feature.region().exterior.xy
                 xs += [*x, np.nan]
                 ys += [*y, np.nan]
+            for cx, cy in getattr(feature, "centres", ()):
+                xs += [*(cx + feature.cut.radius * np.cos(turn)), np.nan]
+                ys += [*(cy + feature.cut.radius * np.sin(turn)), np.nan]
         self.outline.setData(np.array(xs, float), np.array(ys, float), connect="finite")
 
     def _show_errors(self, bad=None) -> None:
