@@ -93,6 +93,7 @@ def test_file_open_of_a_point_list_shows_the_options_step(qtbot, window, tmp_pat
     points.write_text("0 0 1\n10 0 1\n10 5 1\n\n20 20 1\n30 25 1\n")
     window.open_file(points)
     dialog = window.import_dialog
+    qtbot.waitUntil(lambda: dialog.convert_button.isEnabled(), timeout=10000)
     assert "scale" in dialog.summary.text() and "offset X" in dialog.summary.text()
     with qtbot.waitSignal(dialog.preview_updated, timeout=5000):
         dialog.fit.setChecked(False)
@@ -110,6 +111,7 @@ def test_a_malformed_point_list_says_where_and_cannot_be_converted(qtbot, window
                    "Path Number : 0\nNumber of Total Points : 3\n1 2 3\n4 5 6\n")
     window.open_file(bad)
     dialog = window.import_dialog
+    qtbot.waitUntil(lambda: dialog.problem.text() != "", timeout=10000)
     assert "line 7: path 0 announced 3 points, found 2" in dialog.problem.text()
     assert not dialog.convert_button.isEnabled()
 

@@ -4,11 +4,15 @@ clearance) with a preview and the summary (scale, offset, bounds) before convert
 
 "Convert and open" writes the G-code beside the other generated programs and opens
 it as any program. A malformed file shows its line and what was expected, and
-nothing can be converted.
+nothing can be converted. Reading, converting and preparing the preview run on a
+thread (a million points take seconds); only the newest request is shown, and
+``preview_updated`` is emitted when it is.
 """
 
 from __future__ import annotations
 
+import contextlib
+import threading
 from pathlib import Path
 
 from PySide6.QtCore import QTimer, Signal
@@ -27,6 +31,7 @@ from PySide6.QtWidgets import (
 from app.gcode import load_text
 from app.gcode.pointlist import ImportOptions, PointListError, read_points, to_gcode
 from app.profile import MachineProfile
+from app.ui.preview.model import PreviewModel, screen_tolerance
 from app.ui.preview.widget import PreviewWidget
 
 from .forms import ERROR_STYLE
@@ -48,6 +53,7 @@ class PointImportDialog(QDialog):
     """The options step of a point-list import (see the module docstring)."""
 
     preview_updated = Signal()
+    _converted = Signal(object)  # (request, text, placement, model, problem)
 
     def __init__(self, path: Path, profile: MachineProfile, open_program, generated_dir: Path,
                  parent=None) -> None:
@@ -55,7 +61,9 @@ class PointImportDialog(QDialog):
         self.path, self.profile, self.open_program = Path(path), profile, open_program
         self.generated_dir = Path(generated_dir)
         self.setWindowTitle(self.tr("Import points: %1").replace("%1", self.path.name))
-        self.points, self.text = None, ""
+        self.points, self.text, self.problem_text = None, "", ""
+        self._request, self._shown = 0, 0
+        self._converted.connect(self._show)
         self._timer = QTimer(self, singleShot=True, interval=REFRESH_MS, timeout=self.refresh)
         layout = QHBoxLayout(self)
         layout.addWidget(self._options())
@@ -63,7 +71,6 @@ class PointImportDialog(QDialog):
         self.preview = PreviewWidget(travel=travel, offset=profile.travel.work_offset()[:2])
         layout.addWidget(self.preview, 1)
         self.resize(1100, 650)
-        self._read()
         self.refresh()
 
     def _options(self) -> QWidget:
@@ -109,14 +116,17 @@ class PointImportDialog(QDialog):
         column.setMaximumWidth(420)
         return column
 
-    def _read(self) -> None:
-        try:
-            self.points = read_points(self.path.read_bytes(), self.path.name)
-        except OSError as exc:
-            self.problem.setText(self.tr("%1 cannot be read: %2").replace("%1", self.path.name)
-                                 .replace("%2", exc.strerror or str(exc)))
-        except PointListError as exc:
-            self.problem.setText(str(exc))
+    def _read(self) -> str:
+        """Read the file once; the problem, or "" when it reads."""
+        if self.points is None and not self.problem_text:
+            try:
+                self.points = read_points(self.path.read_bytes(), self.path.name)
+            except OSError as exc:
+                self.problem_text = self.tr("%1 cannot be read: %2").replace("%1", self.path.name) \
+                    .replace("%2", exc.strerror or str(exc))
+            except PointListError as exc:
+                self.problem_text = str(exc)
+        return self.problem_text
 
     def options(self) -> ImportOptions:
         cut_z = self.cut_z.value() if self.use_cut_z.isChecked() else None
@@ -124,27 +134,51 @@ class PointImportDialog(QDialog):
                              self.clearance.value(), self.profile.spindle.no_load_rpm)
 
     def refresh(self) -> None:
-        """Convert with the current options; preview and summary, or the problem."""
+        """Convert with the current options on a thread; ``_show`` draws the newest."""
         self._timer.stop()
         self.cut_z.setEnabled(self.use_cut_z.isChecked())
-        ok = False
-        if self.points is not None:
-            try:
-                self.text, placement = to_gcode(self.points, self.options(), self.profile)
-            except PointListError as exc:
-                self.problem.setText(str(exc))
-            else:
-                self.problem.clear()
-                program = load_text(self.text, self.path.name)
-                self.preview.show_program(program.toolpath, self.profile.motion.arc_tolerance_mm)
-                self.summary.setText(placement.describe(self.points, self.options()))
-                ok = True
-        self.convert_button.setEnabled(ok)
+        self._request += 1
+        self.convert_button.setEnabled(False)
+        self.summary.setText(self.tr("Converting…"))
+        size = self.preview.view.size()
+        args = (self._request, self.options(), (max(size.width(), 100), max(size.height(), 100)))
+        threading.Thread(target=self._convert, args=args, name="points-convert", daemon=True).start()
+
+    def _convert(self, request: int, options: ImportOptions, view_size) -> None:
+        problem = self._read()
+        if problem:
+            self._emit((request, "", None, None, problem))
+            return
+        try:
+            text, placement = to_gcode(self.points, options, self.profile)
+        except PointListError as exc:
+            self._emit((request, "", None, None, str(exc)))
+            return
+        toolpath = load_text(text, self.path.name).toolpath
+        tolerance = screen_tolerance(toolpath, view_size, self.profile.motion.arc_tolerance_mm)
+        model = PreviewModel(toolpath, tolerance)
+        model.warm(view_size)
+        self._emit((request, text, placement.describe(self.points, options), model, ""))
+
+    def _emit(self, result) -> None:
+        with contextlib.suppress(RuntimeError):  # the dialog was closed (and deleted) meanwhile
+            self._converted.emit(result)
+
+    def _show(self, result) -> None:
+        request, text, summary, model, problem = result
+        if request != self._request:  # an older request: a newer one is on its way
+            return
+        self.text = text
+        self.problem.setText(problem)
+        self.summary.setText(summary or "")
+        if model is not None:
+            self.preview.show_model(model)
+        self.convert_button.setEnabled(not problem)
         self.preview_updated.emit()
 
     def convert(self) -> None:
-        self.refresh()
-        if not self.convert_button.isEnabled():
+        """Write and open the newest conversion (nothing while one is on its way)."""
+        if not self.convert_button.isEnabled() or not self.text:
             return
         self.generated_dir.mkdir(parents=True, exist_ok=True)
         target = self.generated_dir / f"{self.path.stem}.nc"
