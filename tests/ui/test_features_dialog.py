@@ -138,3 +138,14 @@ def test_save_as_in_each_dialect(dialog, tmp_path, dialect):
     text = target.read_text()
     assert ("O1001" in text) == (dialect != "plain")
     assert ("WHILE" in text) == (dialect == "fanuc31")
+
+
+def test_file_new_from_features_opens_its_job_in_the_window(qtbot, window):
+    window.actions_by_name["features"].trigger()
+    dialog = window.feature_dialog
+    qtbot.waitUntil(lambda: dialog.program is not None, timeout=5000)
+    with qtbot.waitSignal(window.loader.loaded, timeout=20000) as blocker:
+        dialog.open_as_program()
+    loaded = blocker.args[0]
+    assert loaded.path.name == "features.nc" and loaded.program.errors == []
+    assert loaded.program.toolpath.bounds[0][2] == pytest.approx(-3.0)
