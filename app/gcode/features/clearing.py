@@ -7,7 +7,8 @@ helix at its centre
 (a ramp along it where no helix fits), then each ring is cut, children before their
 parent, linked by a feed to the parent's nearest point (inside the parent: no gouge).
 An island layer: the tool goes down in open air beyond the stock ``M``, feeds onto the
-outermost ring, then steps inwards ring by ring to ``D/2 + U``.
+outermost ring, then steps inwards ring by ring to ``D/2 + U`` (``ring_offsets``: the
+paper's H_i).
 """
 
 from __future__ import annotations
@@ -61,16 +62,23 @@ class Pocket:
             path.feed(z=z, f=cut.plunge_feed)
 
 
+def ring_offsets(cut: Cutting, stock: float) -> list[float]:
+    """The paper's ring offsets (its equation 1 and figure 6): H_1 = M - D/2, then less
+    by the stepover B·D/100 each ring while more than D/2 + U; the last ring D/2 + U."""
+    last = cut.radius + cut.finish_xy
+    offsets, h = [], stock - cut.radius
+    while h > last + 1e-9:
+        offsets.append(h)
+        h -= cut.step
+    return offsets + [last]
+
+
 class Island:
     """The rings around an island (outwards to the stock ``M``) and their walk."""
 
     def __init__(self, island: Polygon, cut: Cutting, stock: float, ccw: bool) -> None:
         self.cut, self.ccw, self.island = cut, ccw, island
-        inner = cut.radius + cut.finish_xy
-        outer = max(inner, stock - cut.radius)
-        count = max(0, math.ceil((outer - inner) / cut.step - 1e-9))
-        distances = [outer - k * (outer - inner) / count for k in range(count)] if count else []
-        self.rings = [rings.offset(island, d)[0] for d in distances + [inner]]
+        self.rings = [rings.offset(island, d)[0] for d in ring_offsets(cut, stock)]
         self.open_at = stock + cut.radius + 1.0
 
     def layer(self, path: Path, z_from: float, z: float, note: str) -> None:

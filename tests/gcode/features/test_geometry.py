@@ -146,3 +146,14 @@ def test_a_wide_stepover_still_cuts_the_whole_floor(stepover):
         reachable = region.buffer(-cut.radius).buffer(cut.radius)  # a round tool leaves sharp corners
         assert coverage(swept(moves, cut.floor, cut.radius), reachable) >= 0.995
         assert into_stock(moves, region, cut.radius, cut.top) == []
+
+
+def test_island_rings_follow_the_papers_h_i():
+    """H_i = M - D/2 - (i-1)·B·D/100 while more than D/2 + U, then D/2 + U."""
+    from app.gcode.features.clearing import ring_offsets
+
+    paper = Cutting(tool_diameter=12, depth=5, stepover=75, finish_xy=0.5)
+    assert ring_offsets(paper, 15) == [9.0, 6.5]
+    other = Cutting(tool_diameter=6, depth=5, stepover=50, finish_xy=0.5)
+    assert ring_offsets(other, 20) == pytest.approx([17, 14, 11, 8, 5, 3.5])
+    assert ring_offsets(other, 2) == [3.5]  # less stock than a ring: one ring at D/2 + U
