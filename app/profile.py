@@ -141,6 +141,12 @@ class MachineProfile:
     def to_dict(self) -> dict[str, dict[str, float]]:
         return {f.name: _section_dict(getattr(self, f.name)) for f in fields(self)}
 
+    def max_spindle_rpm(self) -> float:
+        """The speed the spindle reaches at full duty: no-load rpm scaled by the voltage
+        the H-bridge leaves (4500 rpm at 12 V less a 2 V drop: 3750 rpm)."""
+        sp = self.spindle
+        return sp.no_load_rpm * max(0.0, sp.supply_v - self.axis.bridge_drop_v) / sp.supply_v
+
 
 def _section_dict(section: Any) -> dict[str, float]:
     return {f.name: getattr(section, f.name) for f in fields(section)}

@@ -5,7 +5,7 @@
   (152.300 > 150)``, in work coordinates, one per line, axis and direction;
 - feed moves at feed 0 (no F yet, or F0): LinuxCNC would refuse them; here they warn
   and the time estimate uses the maximum feed;
-- a spindle speed the motor cannot reach (``max_spindle_rpm``: no-load speed at the
+- a spindle speed the motor cannot reach (``MachineProfile.max_spindle_rpm``: no-load speed at the
   supply minus the bridge drop): ``S9000 is beyond the spindle's maximum (3750 rpm)``.
 Vectorised over all rows; at most ``Report.limit`` of each kind are listed.
 """
@@ -122,14 +122,8 @@ def _feed_zero(ops: Ops, lines: list[str], report: Report) -> None:
     report.overflow("warning", message, len(rows) - report.limit)
 
 
-def max_spindle_rpm(profile: MachineProfile) -> float:
-    """The speed the spindle reaches at full duty: no-load rpm scaled by the voltage left."""
-    sp = profile.spindle
-    return sp.no_load_rpm * max(0.0, sp.supply_v - profile.axis.bridge_drop_v) / sp.supply_v
-
-
 def _spindle_speed(ops: Ops, profile: MachineProfile, lines: list[str], report: Report) -> None:
-    top = max_spindle_rpm(profile)
+    top = profile.max_spindle_rpm()
     rows = np.flatnonzero((ops.kind == SPINDLE) & (ops.value > top + 0.5))
     key = "S beyond the spindle's maximum"
     for row in rows[: report.limit].tolist():

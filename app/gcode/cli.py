@@ -1,4 +1,6 @@
-"""``cnc-gcode check|normalize|moves|expand FILE`` (also ``python -m app.gcode``).
+"""``cnc-gcode check|normalize|moves|expand FILE`` (also ``python -m app.gcode``), and
+``cnc-gcode feature KIND [options]`` (``features/cli.py``) and ``cnc-gcode import FILE
+[options]`` (``pointlist/cli.py``).
 
 - ``check``: a summary (lines, moves, bounds, cut and rapid length, estimated time,
   warnings, errors with their lines); exit status 1 when there are errors;
@@ -90,6 +92,13 @@ COMMANDS = {"check": _check, "normalize": _normalize, "moves": _moves, "expand":
 
 def main(argv: list[str] | None = None) -> int:
     """Run the command line; return the exit status."""
+    argv = sys.argv[1:] if argv is None else argv
+    if argv[:1] == ["feature"]:
+        from .features.cli import main as feature_main
+        return feature_main(argv[1:])
+    if argv[:1] == ["import"]:
+        from .pointlist.cli import main as import_main
+        return import_main(argv[1:])
     parser = argparse.ArgumentParser(prog="cnc-gcode", description="Check and convert G-code for the mill.")
     parser.add_argument("command", choices=sorted(COMMANDS))
     parser.add_argument("file")

@@ -146,6 +146,10 @@ class MainWindow(QMainWindow):
     # -- files ------------------------------------------------------------------------
 
     def open_file(self, path: str | Path, wait: bool = False) -> None:
+        from app.ui.features.hooks import offer_point_import
+
+        if offer_point_import(self, path):  # a point list: its options step comes first
+            return
         self.status.showMessage(f"Loading {Path(path).name}…")
         size = self.preview.view.size()  # the loader prepares the first picture for it
         self.loader.view_size = (size.width(), size.height())

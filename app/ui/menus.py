@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from PySide6.QtCore import QCoreApplication
 from PySide6.QtGui import QAction, QKeySequence
 from PySide6.QtWidgets import QFileDialog, QMenu, QMessageBox
 
@@ -12,7 +13,8 @@ from app.ui.palette import toggle_dark
 from app.ui.recent import recent_files
 from app.ui.settings.tools_dialog import open_tool_table
 
-FILTER = "G-code (*.ngc *.nc *.gcode *.gc *.tap *.cnc *.txt);;All files (*)"
+FILTER = ("G-code (*.ngc *.nc *.gcode *.gc *.tap *.cnc *.txt);;Point lists (*.xyz *.txt *.csv *.dat);;"
+          "All files (*)")
 
 
 def _action(window, menu: QMenu, text: str, slot, shortcut=None, tip: str = "") -> QAction:
@@ -39,6 +41,9 @@ def _file_menu(w, menu: QMenu, actions) -> None:
     actions["open"] = _action(w, menu, "&Open…", lambda: open_dialog(w), QKeySequence.StandardKey.Open)
     recent = menu.addMenu("Open &recent")
     recent.aboutToShow.connect(lambda: _fill_recent(w, recent))
+    tr = QCoreApplication.translate
+    actions["features"] = _action(w, menu, tr("FeatureForm", "New from &features…"), lambda: open_features(w),
+                                  "Ctrl+Shift+N", tr("FeatureForm", "pockets, slots, islands, hole patterns"))
     actions["reload"] = _action(w, menu, "&Reload", lambda: w.loaded and w.open_file(w.loaded.path), "F5")
     menu.addSeparator()
     actions["save_sd"] = _action(w, menu, "&Save to SD card…", lambda: _show_dock(w, "sd"), "Ctrl+Shift+S")
@@ -107,6 +112,12 @@ def open_dialog(w) -> None:
     path, _ = QFileDialog.getOpenFileName(w, "Open G-code", start, FILTER)
     if path:
         w.open_file(path)
+
+
+def open_features(w) -> None:
+    from app.ui.features.hooks import feature_dialog
+
+    feature_dialog(w).show()
 
 
 def _fill_recent(w, menu: QMenu) -> None:

@@ -25,7 +25,8 @@ def test_m73_state_comes_back_when_the_subroutine_returns():
 
 
 def test_a_macro_reads_the_position_and_the_tool():
-    text = "T3 M6\nG20\nG0 X1 Y0.5\n#1 = #5420\n#2 = #5421\n#3 = #5400\n#4 = #5410\nG0 X[#1 + #3] Y[#2 + #4]\nM2\n"
+    text = ("T3 M6\nG20\nG0 X1 Y0.5\n#1 = #5420\n#2 = #5421\n#3 = #5400\n#4 = #5410\n"
+            "G0 X[#1 + #3] Y[#2 + #4]\nM2\n")
     program = load_text(text, tools={3: Tool(3, 12.7)})
     assert not program.errors
     moves = [m for m in program.moves if m["kind"] == "rapid"]

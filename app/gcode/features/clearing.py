@@ -1,0 +1,101 @@
+"""Roughing a pocket (rings from the inside out) or the stock around an island
+(rings from the outside in), layer by layer.
+
+A pocket's ring spacing is the stepover, or less where that would leave floor uncut
+(``rings.covering_trees``). A pocket layer: every leaf of the ring tree is entered by a
+helix at its centre
+(a ramp along it where no helix fits), then each ring is cut, children before their
+parent, linked by a feed to the parent's nearest point (inside the parent: no gouge).
+An island layer: the tool goes down in open air beyond the stock ``M``, feeds onto the
+outermost ring, then steps inwards ring by ring to ``D/2 + U`` (``ring_offsets``: the
+paper's H_i).
+"""
+
+from __future__ import annotations
+
+import math
+
+from shapely.geometry import Point, Polygon
+
+from . import entry, rings
+from .cutting import Cutting
+from .moves import Path
+
+
+class Pocket:
+    """The tool-centre geometry of one pocket region and its roughing walk."""
+
+    def __init__(self, region: Polygon, cut: Cutting, ccw: bool) -> None:
+        self.cut, self.ccw = cut, ccw
+        self.allowed = region.buffer(-cut.radius, quad_segs=rings.quad_segs(cut.radius))
+        self.trees = rings.covering_trees(region, cut.radius + cut.finish_xy, cut.step, cut.radius)
+
+    def layer(self, path: Path, z_from: float, z: float, note: str) -> None:
+        """Clear the whole pocket at ``z``, the level above being cut to ``z_from``."""
+        for t, tree in enumerate(self.trees):
+            for node in tree.walk():
+                path.note = f"{note} area {t + 1}"
+                points = rings.ring_points(node.shape, self.ccw)
+                if not node.children:
+                    self._enter(path, node.shape, points, z_from, z)
+                else:
+                    near = rings.lap_from(points, path.pos[:2])
+                    path.feed(near[0][0], near[0][1], f=self.cut.feed)
+                    entry.lap(path, near[1:], self.cut)
+
+    def _enter(self, path: Path, shape: Polygon, points, z_from: float, z: float) -> None:
+        cut = self.cut
+        centre = rings.centre_of(shape)
+        room = self.allowed.boundary.distance(Point(centre)) if not self.allowed.is_empty else 0.0
+        radius = min(entry.HELIX_FRACTION * cut.tool_diameter, room - 1e-4)
+        lap = rings.lap_from(points, centre)
+        if radius >= 0.05:
+            entry.approach(path, cut, centre, z_from)
+            entry.helix(path, centre, radius, lap[0], z, cut, self.ccw)
+            path.feed(lap[0][0], lap[0][1], f=cut.feed)
+            entry.lap(path, lap[1:], cut)
+        elif rings.length(lap) > 0.1:
+            entry.approach(path, cut, lap[0], z_from)
+            entry.ramp(path, lap, z, cut)
+        else:
+            entry.approach(path, cut, lap[0], z_from)
+            path.feed(z=z, f=cut.plunge_feed)
+
+
+def ring_offsets(cut: Cutting, stock: float) -> list[float]:
+    """The paper's ring offsets (its equation 1 and figure 6): H_1 = M - D/2, then less
+    by the stepover B·D/100 each ring while more than D/2 + U; the last ring D/2 + U."""
+    last = cut.radius + cut.finish_xy
+    offsets, h = [], stock - cut.radius
+    while h > last + 1e-9:
+        offsets.append(h)
+        h -= cut.step
+    return offsets + [last]
+
+
+class Island:
+    """The rings around an island (outwards to the stock ``M``) and their walk."""
+
+    def __init__(self, island: Polygon, cut: Cutting, stock: float, ccw: bool) -> None:
+        self.cut, self.ccw, self.island = cut, ccw, island
+        self.rings = [rings.offset(island, d)[0] for d in ring_offsets(cut, stock)]
+        self.open_at = stock + cut.radius + 1.0
+
+    def layer(self, path: Path, z_from: float, z: float, note: str) -> None:
+        """Cut every ring at ``z`` from the outside in (``z_from`` unused: the entry is
+        in open air beyond the stock)."""
+        path.note = note
+        for k, shape in enumerate(self.rings):
+            points = rings.ring_points(shape, self.ccw)
+            near = rings.lap_from(points, path.pos[:2])
+            if k == 0:
+                entry.approach(path, self.cut, self.outside_of(near[0]), z)
+            path.feed(near[0][0], near[0][1], f=self.cut.feed)
+            entry.lap(path, near[1:], self.cut)
+
+    def outside_of(self, xy) -> tuple[float, float]:
+        """The point straight out from the island through ``xy`` at the open distance."""
+        nearest = self.island.exterior.interpolate(self.island.exterior.project(Point(xy)))
+        dx, dy = xy[0] - nearest.x, xy[1] - nearest.y
+        norm = math.hypot(dx, dy) or 1.0
+        return (nearest.x + dx / norm * self.open_at, nearest.y + dy / norm * self.open_at)

@@ -1,0 +1,81 @@
+"""The technological parameters every feature shares (the paper's section 4.1).
+
+Lengths in millimetres, feeds in mm/min, ``stepover`` in percent of the tool
+diameter. ``top`` is the stock top (work Z), ``depth`` the total depth below it; the
+floor is ``top - depth``. ``finish_xy`` (U) and ``finish_z`` (W) are left by roughing
+and taken by the finishing passes. ``clearance`` (R) is the safe height above
+``top`` and the radius of the finishing lead-in/out arcs.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from app.profile import MachineProfile
+
+from .errors import not_negative, positive, require
+
+DEFAULT_RPM = MachineProfile().max_spindle_rpm()  # what the default machine's spindle reaches
+
+@dataclass(frozen=True)
+class Cutting:
+    """Tool, depths and feeds of one feature, validated on construction."""
+
+    tool_diameter: float
+    depth: float
+    tool: int = 1
+    top: float = 0.0
+    stepdown: float = 1.0
+    stepover: float = 40.0
+    finish_xy: float = 0.0
+    finish_z: float = 0.0
+    clearance: float = 5.0
+    feed: float = 300.0
+    plunge_feed: float = 100.0
+    rpm: float = DEFAULT_RPM
+    climb: bool = True
+
+    def __post_init__(self) -> None:
+        positive(self.tool_diameter, "tool_diameter")
+        require(self.tool >= 0 and float(self.tool).is_integer(), "tool",
+                f"must be a whole number >= 0 (got {self.tool})")
+        require(self.depth > 0, "depth", f"must be > 0: the depth below the top (got {self.depth:g})")
+        positive(self.stepdown, "stepdown")
+        require(0 < self.stepover <= 100, "stepover", f"must be > 0 and <= 100 % (got {self.stepover:g})")
+        not_negative(self.finish_xy, "finish_xy")
+        not_negative(self.finish_z, "finish_z")
+        require(self.finish_z < self.depth, "finish_z",
+                f"must be less than the depth {self.depth:g} (got {self.finish_z:g})")
+        positive(self.clearance, "clearance")
+        positive(self.feed, "feed")
+        positive(self.plunge_feed, "plunge_feed")
+        positive(self.rpm, "rpm")
+        for name in ("tool_diameter", "depth", "top", "stepdown", "clearance", "feed"):
+            require(math.isfinite(getattr(self, name)), name, "must be a finite number")
+
+    @property
+    def radius(self) -> float:
+        return self.tool_diameter / 2.0
+
+    @property
+    def step(self) -> float:
+        """Stepover in millimetres."""
+        return self.tool_diameter * self.stepover / 100.0
+
+    @property
+    def floor(self) -> float:
+        return self.top - self.depth
+
+    @property
+    def safe_z(self) -> float:
+        return self.top + self.clearance
+
+    def layers(self, bottom: float) -> list[float]:
+        """Depth levels from ``top`` down to ``bottom``: equal steps of at most
+        ``stepdown``, the last exactly ``bottom``."""
+        span = self.top - bottom
+        if span <= 1e-9:
+            return []
+        count = max(1, math.ceil(span / self.stepdown - 1e-9))
+        return [self.top - span * k / count for k in range(1, count)] + [bottom]

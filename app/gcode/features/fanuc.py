@@ -1,0 +1,108 @@
+"""The Fanuc macro writers: the same moves as ``plain.py`` as a parametric program.
+
+Layers that repeat (``folding.py``) become one subprogram whose Z words are the layer's
+depth plus a constant, called once per layer from a loop:
+
+- ``fanuc31``: ``WHILE [#102 LE n] DO 1`` ... ``END 1`` around ``G65 P1001 Z#101`` (the
+  depth arrives in the subprogram as its argument ``#26``);
+- ``fanuc21``: no WHILE and no G65 (the paper's table 1): an ``IF [...] GOTO`` loop
+  around ``M98 P1001``, the depth in the common variable ``#101``.
+
+Everything else is written as in the plain program. Subprograms follow ``M30``; the
+file is wrapped in ``%`` lines. The loader's expander (issue 9) must give back exactly
+the plain program's moves.
+"""
+
+from __future__ import annotations
+
+from .folding import Inline, Repeat, fold
+from .moves import ARC, FEED, RAPID, Move
+from .plain import line_of, num
+
+DIALECTS = ("fanuc21", "fanuc31")
+FIRST_SUB = 1001
+DEPTH, COUNT = "#101", "#102"
+
+
+def _z(term: tuple[bool, float], var: str) -> str:
+    shifts, value = term
+    if not shifts:
+        return f"Z{num(value)}"
+    if abs(value) < 5e-5:
+        return f"Z{var}"
+    return f"Z[{var}{'+' if value > 0 else '-'}{num(abs(value))}]"
+
+
+def _sub_line(m: Move, previous_xy, term, var: str) -> str:
+    xy = f"X{num(m.end[0])} Y{num(m.end[1])}"
+    z = _z(term, var)
+    if m.kind == RAPID:
+        return f"G00 {xy} {z}"
+    if m.kind == FEED:
+        return f"G01 {xy} {z} F{num(m.feed)}"
+    i, j = m.center[0] - previous_xy[0], m.center[1] - previous_xy[1]
+    return f"{'G02' if m.cw else 'G03'} {xy} {z} I{num(i)} J{num(j)} F{num(m.feed)}"
+
+
+def _subprogram(number: int, item: Repeat, previous_xy, var: str) -> list[str]:
+    out = [f"O{number} (one layer; Z = the layer depth {var} plus a constant)"]
+    note = None
+    for m, term in zip(item.template, item.z_terms, strict=True):
+        if m.note and m.note != note:
+            out.append(f"({m.note.split(' z ')[0]})")
+            note = m.note
+        out.append(_sub_line(m, previous_xy, term, var))
+        previous_xy = m.end[:2]
+    return out + ["M99"]
+
+
+def _uniform_step(depths: list[float]) -> float | None:
+    steps = [b - a for a, b in zip(depths, depths[1:], strict=False)]
+    return steps[0] if all(abs(s - steps[0]) < 1e-9 for s in steps) else None
+
+
+def _loop(dialect: str, number: int, depths: list[float], label: int) -> list[str]:
+    step = _uniform_step(depths)
+    call = f"G65 P{number} Z{DEPTH}" if dialect == "fanuc31" else f"M98 P{number}"
+    if step is None:  # uneven layers: one call per layer
+        if dialect == "fanuc31":
+            return [f"G65 P{number} Z{num(d)}" for d in depths]
+        return [line for d in depths for line in (f"{DEPTH} = {num(d)}", call)]
+    head = [f"({len(depths)} layers from Z{num(depths[0])} by {num(step)})", f"{DEPTH} = {num(depths[0])}",
+            f"{COUNT} = 1"]
+    advance = [f"{DEPTH} = {DEPTH} + [{num(step)}]", f"{COUNT} = {COUNT} + 1"]
+    if dialect == "fanuc31":
+        return head + [f"WHILE [{COUNT} LE {len(depths)}] DO 1", call, *advance, "END 1"]
+    return head + [f"N{label} IF [{COUNT} GT {len(depths)}] GOTO {label + 1}", call, *advance,
+                   f"GOTO {label}", f"N{label + 1} {COUNT} = 0"]
+
+
+def write_fanuc(moves: list[Move], dialect: str, title: str = "") -> str:
+    """The program text of ``moves`` in ``dialect`` (see the module docstring)."""
+    if dialect not in DIALECTS:
+        raise ValueError(f"unknown dialect {dialect!r}: one of {', '.join(DIALECTS)}")
+    var = "#26" if dialect == "fanuc31" else DEPTH
+    main = ["%", f"O0001 ({title or 'machining features'}; {dialect.replace('fanuc', 'Fanuc ')})",
+            "G21 G90 G17"]
+    subs: list[str] = []
+    end, note, number = (None, None, None), None, FIRST_SUB
+    first = next((m for m in moves if m.kind in (RAPID, FEED, ARC)), None)
+    if first is not None and first.kind == RAPID:  # up to the safe height first, as plain.py
+        main.append(f"G00 Z{num(first.end[2])}")
+        end = (None, None, first.end[2])
+    for item in fold(moves):
+        if isinstance(item, Inline):
+            for m in item.moves:
+                if m.note and m.note != note:
+                    main.append(f"({m.note})")
+                    note = m.note
+                main.append(line_of(m, end))
+                if m.kind in (RAPID, FEED, ARC):
+                    end = m.end
+            continue
+        subs += _subprogram(number, item, end[:2], var)
+        main += _loop(dialect, number, item.depths, 10 * (number - FIRST_SUB + 1))
+        last = item.template[-1]
+        end = (last.end[0], last.end[1], None)
+        number += 1
+    return "\n".join(main + ["M05", "M30"] + subs + ["%"]) + "\n"

@@ -1,0 +1,158 @@
+"""Features -> moves: one pure function per kind, and a program of several features.
+
+Every toolpath starts and ends at the feature's safe height (``top + clearance``).
+Pockets and the island: roughing layers of at most C down to the floor + W (rings at
+D/2 + U), a floor pass at the floor when W > 0, then the walls at D/2 on every layer.
+"""
+
+from __future__ import annotations
+
+import math
+
+from app.profile import MachineProfile
+
+from . import entry, finish, rings
+from .clearing import Island, Pocket
+from .cutting import Cutting
+from .kinds import Face, Holes, PocketCircle, PocketRect, Profile, Slot
+from .moves import RAPID, SPINDLE, TOOL, Move, Path
+from .travel import check_travel
+
+
+def _start(cut: Cutting, xy) -> Path:
+    """A path whose first move is the rapid over ``xy`` at the safe height."""
+    path = Path((xy[0], xy[1], cut.safe_z))
+    path.moves.append(Move(RAPID, path.pos))
+    return path
+
+
+def _rough(path: Path, area, cut: Cutting) -> None:
+    bottom = cut.floor + cut.finish_z
+    levels = cut.layers(bottom) + ([cut.floor] if cut.finish_z > 0 else [])
+    z_from = cut.top
+    for k, z in enumerate(levels):
+        area.layer(path, z_from, z, f"layer {k + 1}/{len(levels)} z {z:.3f}")
+        z_from = z
+
+
+def _pocket(feature, ccw_for_climb: bool = True) -> list[Move]:
+    cut = feature.cut
+    ccw = cut.climb == ccw_for_climb
+    region = feature.region()
+    pocket = Pocket(region, cut, ccw)
+    path = _start(cut, rings.centre_of(region))
+    _rough(path, pocket, cut)
+    roughed = region.buffer(-(cut.radius + cut.finish_xy))
+    for k, wall in enumerate(rings.offset(region, -cut.radius)):
+        finish.walls(path, wall, feature.hint(), cut, ccw, True, roughed, f"area {k + 1}")
+    path.note = ""
+    entry.retract(path, cut)
+    return path.moves
+
+
+def _slot(feature: Slot) -> list[Move]:
+    if not feature.exact:
+        return _pocket(feature)
+    cut = feature.cut
+    a, b = (feature.x1, feature.y1), (feature.x2, feature.y2)
+    path = _start(cut, a)
+    z_from = cut.top
+    for k, z in enumerate(cut.layers(cut.floor)):
+        path.note = f"layer {k + 1} z {z:.3f}"
+        entry.approach(path, cut, a, z_from)
+        entry.ramp(path, [a, b, a], z, cut)
+        z_from = z
+    path.note = ""
+    entry.retract(path, cut)
+    return path.moves
+
+
+def _profile(feature: Profile) -> list[Move]:
+    if feature.side == "inside":
+        return _pocket(feature)
+    cut = feature.cut
+    ccw = not cut.climb  # climb milling goes clockwise around an island (M3)
+    island = feature.region()
+    area = Island(island, cut, feature.removed_stock, ccw)
+    path = _start(cut, area.outside_of(feature.hint()))
+    _rough(path, area, cut)
+    wall = rings.offset(island, cut.radius)[0]
+    finish.walls(path, wall, feature.hint(), cut, ccw, False, None, "island")
+    path.note = ""
+    entry.retract(path, cut)
+    return path.moves
+
+
+def _face(feature: Face) -> list[Move]:
+    cut = feature.cut
+    r = cut.radius
+    left, right = feature.x - r - 1.0, feature.x + feature.width + r + 1.0
+    if feature.height <= cut.tool_diameter:
+        rows = [feature.y + feature.height / 2]
+    else:
+        span = feature.height - cut.tool_diameter
+        count = math.ceil(span / cut.step - 1e-9) + 1
+        rows = [feature.y + r + span * k / (count - 1) for k in range(count)]
+    path = _start(cut, (left, rows[0]))
+    levels = cut.layers(cut.floor + cut.finish_z) + ([cut.floor] if cut.finish_z > 0 else [])
+    for k, z in enumerate(levels):
+        path.note = f"layer {k + 1}/{len(levels)} z {z:.3f}"
+        entry.approach(path, cut, (left, rows[0]), z)
+        for j, y in enumerate(rows):
+            path.feed(y=y, f=cut.feed)
+            path.feed(right if j % 2 == 0 else left, f=cut.feed)
+        path.note = ""
+    entry.retract(path, cut)
+    return path.moves
+
+
+def _holes(feature: Holes) -> list[Move]:
+    cut = feature.cut
+    path = _start(cut, feature.centres[0])
+    for k, xy in enumerate(feature.centres):
+        path.note = f"hole {k + 1}/{len(feature.centres)}"
+        entry.retract(path, cut)
+        entry.approach(path, cut, xy, cut.top)
+        depth = cut.top
+        while depth > cut.floor + 1e-9:
+            target = max(cut.floor, depth - feature.peck) if feature.peck > 0 else cut.floor
+            if depth < cut.top:  # G83: back out to R, rapid down to just above the last depth
+                path.rapid(z=cut.top + entry.GAP)
+                path.rapid(z=depth + entry.GAP)
+            path.feed(z=target, f=cut.plunge_feed)
+            depth = target
+        if feature.dwell > 0:
+            path.dwell(feature.dwell)
+        path.rapid(z=cut.safe_z)
+    return path.moves
+
+
+GENERATORS = {PocketRect: _pocket, PocketCircle: _pocket, Slot: _slot, Profile: _profile,
+              Face: _face, Holes: _holes}
+
+
+def toolpath(feature) -> list[Move]:
+    """The moves of one feature, from and back to its safe height."""
+    return GENERATORS[type(feature)](feature)
+
+
+def program_moves(features, profile: MachineProfile | None = None) -> list[Move]:
+    """The moves of several features in order, with a tool change where the tool
+    differs and the spindle started at each feature's speed; checked against the
+    machine's travel (``FeatureError`` naming the axis and direction)."""
+    profile = profile or MachineProfile()
+    moves: list[Move] = []
+    tool, rpm = None, None
+    for feature in features:
+        cut = feature.cut
+        body = toolpath(feature)
+        check_travel(body, cut, profile)
+        if tool is not None and cut.tool != tool:
+            moves.append(Move(SPINDLE, moves[-1].end, value=0))
+            moves.append(Move(TOOL, moves[-1].end, value=cut.tool))
+            rpm = None
+        if cut.rpm != rpm:
+            moves.append(Move(SPINDLE, moves[-1].end if moves else body[0].end, value=cut.rpm))
+        tool, rpm = cut.tool, cut.rpm
+        moves += body
+    return moves

@@ -1,0 +1,205 @@
+"""One frozen dataclass per feature kind, validated on construction.
+
+Positions in work millimetres, angles in degrees about X+ (counter-clockwise).
+``region()`` is the area the tool may cut (its edge may touch the boundary);
+``hint()`` where the finishing pass joins the wall. Errors are ``FeatureError`` naming
+the field: a tool wider than the pocket or slot, a size <= 0, a hole count < 1.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import ClassVar
+
+from shapely import affinity
+from shapely.geometry import LineString, Point, Polygon, box
+
+from .contour import CHORD_TOL, Contour
+from .cutting import Cutting
+from .errors import FeatureError, positive, require
+from .rings import quad_segs
+
+
+def _narrower(cut: Cutting, width: float, what: str) -> None:
+    require(cut.tool_diameter < width, "tool_diameter",
+            f"the tool ({cut.tool_diameter:g} mm) must be narrower than the {what} ({width:g} mm)")
+
+
+@dataclass(frozen=True)
+class Face:
+    """Face the rectangle ``x, y, width, height`` (lower-left corner) down by ``depth``."""
+
+    kind: ClassVar[str] = "face"
+    x: float
+    y: float
+    width: float
+    height: float
+    cut: Cutting
+
+    def __post_init__(self) -> None:
+        positive(self.width, "width")
+        positive(self.height, "height")
+
+
+@dataclass(frozen=True)
+class PocketRect:
+    """A rectangular pocket from its lower-left corner, rotated ``angle`` about it."""
+
+    kind: ClassVar[str] = "pocket-rect"
+    x: float
+    y: float
+    width: float
+    height: float
+    cut: Cutting
+    corner_radius: float = 0.0
+    angle: float = 0.0
+
+    def __post_init__(self) -> None:
+        positive(self.width, "width")
+        positive(self.height, "height")
+        require(0 <= self.corner_radius <= min(self.width, self.height) / 2, "corner_radius",
+                f"must be between 0 and half the smaller side, {min(self.width, self.height) / 2:g} "
+                f"(got {self.corner_radius:g})")
+        _narrower(self.cut, min(self.width, self.height), "pocket")
+
+    def region(self) -> Polygon:
+        shape = box(0, 0, self.width, self.height)
+        if self.corner_radius > 0:
+            r = self.corner_radius
+            shape = shape.buffer(-r).buffer(r, quad_segs=quad_segs(r))
+        shape = affinity.rotate(shape, self.angle, origin=(0, 0))
+        return affinity.translate(shape, self.x, self.y)
+
+    def hint(self):
+        a = math.radians(self.angle)
+        return (self.x + self.width / 2 * math.cos(a), self.y + self.width / 2 * math.sin(a))
+
+
+@dataclass(frozen=True)
+class PocketCircle:
+    """A round pocket of ``diameter`` about its centre ``x, y``."""
+
+    kind: ClassVar[str] = "pocket-circle"
+    x: float
+    y: float
+    diameter: float
+    cut: Cutting
+
+    def __post_init__(self) -> None:
+        positive(self.diameter, "diameter")
+        _narrower(self.cut, self.diameter, "pocket")
+
+    def region(self) -> Polygon:
+        r = self.diameter / 2
+        return Point(self.x, self.y).buffer(r, quad_segs=quad_segs(r))
+
+    def hint(self):
+        return (self.x + self.diameter / 2, self.y)
+
+
+@dataclass(frozen=True)
+class Slot:
+    """A straight slot of ``width`` with round ends, centre line from (x1, y1) to (x2, y2)."""
+
+    kind: ClassVar[str] = "slot"
+    x1: float
+    y1: float
+    x2: float
+    y2: float
+    width: float
+    cut: Cutting
+
+    def __post_init__(self) -> None:
+        positive(self.width, "width")
+        require(math.dist((self.x1, self.y1), (self.x2, self.y2)) > 0, "x2",
+                "the slot's ends must differ (use pocket-circle for a round hole)")
+        require(self.cut.tool_diameter <= self.width, "tool_diameter",
+                f"the tool ({self.cut.tool_diameter:g} mm) is wider than the slot ({self.width:g} mm)")
+
+    def region(self) -> Polygon:
+        r = self.width / 2
+        return LineString([(self.x1, self.y1), (self.x2, self.y2)]).buffer(r, quad_segs=quad_segs(r))
+
+    def hint(self):
+        dx, dy = self.x2 - self.x1, self.y2 - self.y1
+        norm = math.hypot(dx, dy)
+        half = self.width / 2 / norm
+        return ((self.x1 + self.x2) / 2 - dy * half, (self.y1 + self.y2) / 2 + dx * half)
+
+    @property
+    def exact(self) -> bool:
+        """The tool is as wide as the slot: one cut along the centre line."""
+        return self.width - self.cut.tool_diameter < 1e-6
+
+
+@dataclass(frozen=True)
+class Profile:
+    """An island (``side`` outside: stock up to ``stock`` mm around it is removed) or a
+    pocket of the contour's shape (``side`` inside)."""
+
+    kind: ClassVar[str] = "profile"
+    contour: Contour
+    side: str
+    cut: Cutting
+    stock: float = 0.0
+
+    def __post_init__(self) -> None:
+        require(self.side in ("inside", "outside"), "side", f"must be inside or outside (got {self.side!r})")
+        if self.side == "outside":
+            require(self.stock >= 0, "stock", f"must be >= 0 (got {self.stock:g})")
+        elif self.region().buffer(-self.cut.radius).is_empty:
+            raise FeatureError("tool_diameter", f"the tool ({self.cut.tool_diameter:g} mm) does not fit "
+                               f"inside the contour {self.contour.name}")
+
+    def region(self) -> Polygon:
+        return self.contour.polygon(CHORD_TOL)
+
+    def hint(self):
+        first = self.contour.segments[0]
+        if first.center is None:
+            return ((first.start[0] + first.end[0]) / 2, (first.start[1] + first.end[1]) / 2)
+        pts = first.points()
+        return pts[len(pts) // 2]
+
+    @property
+    def removed_stock(self) -> float:
+        """The stock M around an island: given, or one tool diameter."""
+        return self.stock or self.cut.tool_diameter
+
+
+@dataclass(frozen=True)
+class Holes:
+    """Holes drilled to ``depth`` at ``centres``; ``peck`` > 0: G83-style pecks of that
+    depth, ``dwell`` seconds at the bottom."""
+
+    kind: ClassVar[str] = "holes"
+    centres: tuple[tuple[float, float], ...]
+    cut: Cutting
+    peck: float = 0.0
+    dwell: float = 0.0
+
+    def __post_init__(self) -> None:
+        require(len(self.centres) >= 1, "count", "must be at least 1")
+        require(self.peck >= 0, "peck", f"must be >= 0 (got {self.peck:g})")
+        require(self.dwell >= 0, "dwell", f"must be >= 0 (got {self.dwell:g})")
+
+
+def holes_circle(x: float, y: float, diameter: float, count: int, cut: Cutting,
+                 start_angle: float = 0.0, peck: float = 0.0, dwell: float = 0.0) -> Holes:
+    """``count`` holes evenly on a circle of ``diameter`` about (x, y)."""
+    require(count >= 1, "count", f"must be at least 1 (got {count})")
+    positive(diameter, "diameter")
+    r = diameter / 2
+    angles = [math.radians(start_angle + 360.0 * k / count) for k in range(count)]
+    return Holes(tuple((x + r * math.cos(a), y + r * math.sin(a)) for a in angles), cut, peck, dwell)
+
+
+def holes_row(x: float, y: float, count: int, pitch: float, cut: Cutting,
+              angle: float = 0.0, peck: float = 0.0, dwell: float = 0.0) -> Holes:
+    """``count`` holes ``pitch`` apart from (x, y) along ``angle``."""
+    require(count >= 1, "count", f"must be at least 1 (got {count})")
+    require(pitch > 0 or count == 1, "pitch", f"must be > 0 (got {pitch:g})")
+    a = math.radians(angle)
+    return Holes(tuple((x + k * pitch * math.cos(a), y + k * pitch * math.sin(a)) for k in range(count)),
+                 cut, peck, dwell)

@@ -1,0 +1,46 @@
+"""A feature's moves against the machine's travel, worded as ``checks.py`` words it."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from app.profile import MachineProfile
+
+from .cutting import Cutting
+from .errors import FeatureError
+from .moves import ARC, Move
+
+FIELDS = {("X", "+"): "x", ("X", "-"): "x", ("Y", "+"): "y", ("Y", "-"): "y",
+          ("Z", "+"): "clearance", ("Z", "-"): "depth"}
+
+
+def limits(profile: MachineProfile) -> np.ndarray:
+    """(3, 2) travel limits in work coordinates (the default work offset applied)."""
+    offset = np.array(profile.travel.work_offset())
+    return np.array(profile.travel.limits()) - offset[:, None]
+
+
+def extent(moves: list[Move]) -> tuple[np.ndarray, np.ndarray]:
+    """(min xyz, max xyz) of the tool centre over ``moves`` (arcs by their full circle's
+    reach: a safe over-estimate)."""
+    ends = np.array([m.end for m in moves], float)
+    low, high = ends.min(axis=0), ends.max(axis=0)
+    for m in moves:
+        if m.kind == ARC and m.center is not None:
+            r = float(np.hypot(m.end[0] - m.center[0], m.end[1] - m.center[1]))
+            low[:2] = np.minimum(low[:2], np.array(m.center) - r)
+            high[:2] = np.maximum(high[:2], np.array(m.center) + r)
+    return low, high
+
+
+def check_travel(moves: list[Move], cut: Cutting, profile: MachineProfile) -> None:
+    """Raise ``FeatureError`` for the first axis and direction the tool would pass."""
+    if not moves:
+        return
+    low, high = extent(moves)
+    for axis, (lo, hi) in enumerate(limits(profile).tolist()):
+        name = "XYZ"[axis]
+        if high[axis] > hi + 1e-6:
+            raise FeatureError(FIELDS[(name, "+")], f"{name}+ beyond travel ({high[axis]:.3f} > {hi:g})")
+        if low[axis] < lo - 1e-6:
+            raise FeatureError(FIELDS[(name, "-")], f"{name}- beyond travel ({low[axis]:.3f} < {lo:g})")

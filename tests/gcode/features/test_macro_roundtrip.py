@@ -1,0 +1,80 @@
+"""The Fanuc 21 / 31 programs expand, through the loader, to the same moves as the
+plain program (0.001 mm), through the expander of issue 9 (``app.gcode.macro``)."""
+
+from __future__ import annotations
+
+import pytest
+
+from app.gcode import load_text
+from app.gcode.features import (
+    Cutting,
+    Face,
+    PocketCircle,
+    PocketRect,
+    Profile,
+    Slot,
+    holes_circle,
+    holes_row,
+    parse_contour,
+    program_moves,
+    write_plain,
+)
+from app.gcode.features.fanuc import write_fanuc
+
+from .test_program import PAPER_MOVED
+
+CUT = Cutting(tool_diameter=6, depth=3, stepdown=1, finish_xy=0.2, finish_z=0.2)
+ISLAND = Cutting(tool_diameter=12, depth=5, stepdown=1, stepover=75, finish_xy=0.5, clearance=2, feed=150,
+                 rpm=1000, tool=2)
+FEATURES = [
+    PocketRect(20, 20, 40, 25, CUT, corner_radius=4, angle=15),
+    PocketCircle(60, 60, 30, CUT),
+    Slot(20, 20, 60, 40, 8, CUT),
+    Slot(20, 20, 60, 20, 6, CUT),
+    Face(10, 10, 50, 30, CUT),
+    holes_circle(70, 70, 40, 6, CUT, peck=1, dwell=0.5),
+    holes_row(20, 100, 4, 12, CUT),
+    Profile(parse_contour(PAPER_MOVED, "paper"), "outside", ISLAND, stock=15),
+    Profile(parse_contour(PAPER_MOVED, "paper"), "inside", CUT),
+]
+
+
+def _same(plain: list[dict], macro: list[dict]) -> None:
+    assert len(macro) == len(plain)
+    for a, b in zip(plain, macro, strict=True):
+        assert a["kind"] == b["kind"]
+        for key in ("end", "center"):
+            if key in a:
+                assert max(abs(u - v) for u, v in zip(a[key], b[key], strict=True)) <= 0.001, (a, b)
+        for key in ("feed", "seconds", "turn"):
+            assert a.get(key) == b.get(key)
+
+
+@pytest.mark.parametrize("dialect", ["fanuc21", "fanuc31"])
+@pytest.mark.parametrize("feature", FEATURES, ids=lambda f: f"{f.kind}")
+def test_macro_program_expands_to_the_plain_moves(feature, dialect):
+    moves = program_moves([feature])
+    plain = load_text(write_plain(moves), "plain.nc")
+    text = write_fanuc(moves, dialect)
+    macro = load_text(text, "macro.nc")
+    assert plain.errors == [] and macro.errors == []
+    _same(plain.moves, macro.moves)
+
+
+def test_the_dialects_keep_to_what_each_control_has():
+    moves = program_moves([FEATURES[1], FEATURES[5]])
+    f21, f31 = write_fanuc(moves, "fanuc21"), write_fanuc(moves, "fanuc31")
+    assert "WHILE" not in f21 and "G65" not in f21 and "M98 P1001" in f21 and "GOTO" in f21
+    assert "WHILE [#102 LE" in f31 and "G65 P1001 Z#101" in f31 and "M98" not in f31
+    assert f21.count("O1001") == 1 and "M99" in f21
+
+
+def test_a_job_of_several_features_with_a_tool_change():
+    job = [FEATURES[0], FEATURES[7], FEATURES[4]]
+    moves = program_moves(job)
+    plain = load_text(write_plain(moves))
+    for dialect in ("fanuc21", "fanuc31"):
+        macro = load_text(write_fanuc(moves, dialect))
+        assert macro.errors == []
+        _same(plain.moves, macro.moves)
+        assert len(macro.pauses) == len(plain.pauses) == 2  # T2 for the island, T1 again for the face
