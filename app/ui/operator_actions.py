@@ -11,7 +11,7 @@ import gc
 from PySide6.QtCore import QObject
 
 from app.i18n import localize
-from app.ui.numbers import decimal, integer
+from app.ui.numbers import decimal, fill, integer
 from app.ui.program.summary import device_count
 from app.ui.recent import add_recent
 from app.ui.settings.dialog import SettingsDialog
@@ -73,14 +73,16 @@ class OperatorActions(QObject):
     def start(self) -> None:
         loaded = self.w.loaded
         if loaded is None:
-            self.w.notifier.warning(self.tr("No program"), self.tr("Open a G-code file first (File ▸ Open…)."))
+            self.w.notifier.warning(self.tr("No program"),
+                                    self.tr("Open a G-code file first (File ▸ Open…)."))
             return
         errors = list(loaded.program.errors)
         if errors:
             first = errors[0]
-            text = self.tr("%1 has %n error(s) (first: line %2: %3). Fix them before running.", "", len(errors))
-            self.w.notifier.error(self.tr("Program has errors"), text.replace("%1", loaded.path.name)
-                                  .replace("%2", integer(first.line)).replace("%3", localize(first.message)))
+            text = self.tr("%1 has %n error(s) (first: line %2: %3). Fix them before running.", "",
+                           len(errors))
+            text = fill(text, loaded.path.name, integer(first.line), localize(first.message))
+            self.w.notifier.error(self.tr("Program has errors"), text)
             return
         status = self.w.binder.status
         if status is not None and not status.homed and not self.w.controls.check_mode.isChecked():
@@ -132,7 +134,8 @@ class OperatorActions(QObject):
 
     def upload(self, name: str) -> None:
         if self.w.loaded is None:
-            self.w.notifier.warning(self.tr("No program"), self.tr("Open a G-code file to save it to the card."))
+            self.w.notifier.warning(self.tr("No program"),
+                                    self.tr("Open a G-code file to save it to the card."))
             return
         program = self.w.loaded.program
         self.w.sd_panel.set_progress(0, device_count(program))
