@@ -10,6 +10,8 @@ with errors still loads as far as it can. Arcs are computed in ``motion.py``.
 
 from __future__ import annotations
 
+from app.i18n import msg
+
 from .diagnostics import Report
 from .lexer import Word
 from .motion import LineError, do_motion
@@ -26,11 +28,12 @@ def _check_letters(words: list[Word]) -> dict[str, Word]:
     params: dict[str, Word] = {}
     for w in words:
         if w.letter in REFUSED_LETTERS or w.letter not in ALLOWED_LETTERS:
-            raise LineError(w.column, REFUSED_LETTERS.get(w.letter, f"unknown word {w.letter}"))
+            raise LineError(w.column, REFUSED_LETTERS.get(w.letter) or msg("unknown word {letter}",
+                                                                                 letter=w.letter))
         if w.letter in "GM":
             continue
         if w.letter in params:
-            raise LineError(w.column, f"two {w.letter} words on one line")
+            raise LineError(w.column, msg("two {letter} words on one line", letter=w.letter))
         params[w.letter] = w
     return params
 
@@ -43,21 +46,23 @@ def _check_codes(words: list[Word]) -> tuple[dict[str, tuple], dict[str, tuple]]
         if w.letter == "G":
             code = round(w.value, 4)
             if code in REFUSED_G:
-                raise LineError(w.column, f"{_gname(code)}: {REFUSED_G[code]}")
+                reason = msg(REFUSED_G[code])
+                raise LineError(w.column, msg("{code}: {reason}", code=_gname(code), reason=reason))
             if code not in G_CODES:
-                raise LineError(w.column, f"unknown G-code {_gname(code)}")
+                raise LineError(w.column, msg("unknown G-code {code}", code=_gname(code)))
             table, name = groups, G_CODES[code][0]
         elif w.letter == "M":
             code = w.value
             if code != int(code) or int(code) not in M_CODES:
-                raise LineError(w.column, f"unknown M-code M{code:g}")
+                raise LineError(w.column, msg("unknown M-code M{code:g}", code=code))
             table, name = mgroups, M_CODES[int(code)][0]
         else:
             continue
         if name in table:
             other = table[name][1]
-            raise LineError(w.column, f"two codes of one modal group on one line: "
-                            f"{other.letter}{other.value:g} and {w.letter}{w.value:g}")
+            first, second = f"{other.letter}{other.value:g}", f"{w.letter}{w.value:g}"
+            raise LineError(w.column, msg("two codes of one modal group on one line: {first} and {second}",
+                                          first=first, second=second))
         table[name] = (code, w)
     return groups, mgroups
 
@@ -79,7 +84,7 @@ def _spindle(state: State, mgroups, params, line_no, ops: OpBuffer, report: Repo
     kind = M_CODES[int(spin[0])][1]
     if kind == "ccw":
         report.warning(line_no, spin[1].column,
-                       "M4 (counter-clockwise) runs as M3: the spindle turns one way", "M4 runs as M3")
+                       msg("M4 (counter-clockwise) runs as M3: the spindle turns one way"), "M4 runs as M3")
     state.spindle_on = kind != "off"
     ops.add(line_no, SPINDLE, state.pos, value=(state.speed or -1.0) if state.spindle_on else 0.0)
 
@@ -93,7 +98,8 @@ def _tool_change(state, mgroups, params, line_no, ops, report) -> None:
     if "toolchange" in mgroups:
         tool = f" T{params['T'].value:g}" if "T" in params else ""
         _pause(line_no, mgroups["toolchange"][1].column,
-               f"tool change{tool} M6: this machine has one tool; the job pauses here", ops, state, report)
+               msg("tool change{tool} M6: this machine has one tool; the job pauses here", tool=tool),
+               ops, state, report)
 
 
 def _stop(state, mgroups, line_no, ops, report) -> None:
@@ -105,7 +111,8 @@ def _stop(state, mgroups, line_no, ops, report) -> None:
         state.ended = line_no
         ops.add(line_no, END, state.pos)
     else:
-        _pause(line_no, stop[1].column, f"M{code} program stop: the job pauses here", ops, state, report)
+        message = msg("M{code} program stop: the job pauses here", code=code)
+        _pause(line_no, stop[1].column, message, ops, state, report)
 
 
 def _modes(state: State, groups) -> None:
@@ -137,7 +144,7 @@ def interpret_line(
         params = _check_letters(words)
         if "coolant" in mgroups:
             report.warning(line_no, mgroups["coolant"][1].column,
-                           "coolant M7/M8/M9 ignored: this machine has no coolant", "coolant ignored")
+                           msg("coolant M7/M8/M9 ignored: this machine has no coolant"), "coolant ignored")
         _set_feed_speed(new, params)
         _tool_change(new, mgroups, params, line_no, line_ops, report)
         _spindle(new, mgroups, params, line_no, line_ops, report)

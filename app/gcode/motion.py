@@ -11,6 +11,8 @@ leave here in millimetres. Raises ``LineError``; changes ``state`` in place.
 
 from __future__ import annotations
 
+from app.i18n import msg
+
 from .arcs import ijk_error, r_center
 from .ops import ARC_CCW, ARC_CW, DWELL, FEED, PLANE_AXES, PLANE_NAMES, RAPID, OpBuffer
 from .state import State
@@ -36,10 +38,10 @@ def _col(params, letters: str) -> int:
 
 def _dwell(state: State, params, line_no: int, ops: OpBuffer) -> None:
     if "P" not in params:
-        raise LineError(0, "G4 dwell needs a P word (seconds)")
+        raise LineError(0, msg("G4 dwell needs a P word (seconds)"))
     seconds = params["P"].value
     if seconds < 0:
-        raise LineError(params["P"].column, "G4 dwell time P must not be negative")
+        raise LineError(params["P"].column, msg("G4 dwell time P must not be negative"))
     ops.add(line_no, DWELL, state.pos, value=seconds)
 
 
@@ -53,12 +55,13 @@ def _motion_to_be(state: State, groups, params) -> int | None:
 def _check_usage(motion, groups, params) -> None:
     has_axis = any(c in params for c in AXES)
     if has_axis and motion is None or has_axis and motion == 80:
-        raise LineError(_col(params, AXES), "axis word with no motion mode (G0, G1, G2 or G3)")
+        raise LineError(_col(params, AXES), msg("axis word with no motion mode (G0, G1, G2 or G3)"))
     for letter in "IJKR":
         if letter in params and motion not in (2, 3):
-            raise LineError(params[letter].column, f"{letter} word with no G2 or G3 to use it")
+            message = msg("{letter} word with no G2 or G3 to use it", letter=letter)
+            raise LineError(params[letter].column, message)
     if "P" in params and motion not in (2, 3) and "nonmodal" not in groups:
-        raise LineError(params["P"].column, "P word with no G4, G2 or G3 to use it")
+        raise LineError(params["P"].column, msg("P word with no G4, G2 or G3 to use it"))
 
 
 def _target(state: State, params) -> list[float]:
@@ -68,7 +71,7 @@ def _target(state: State, params) -> list[float]:
             v = params[c].value * state.scale
             target[i] = v if state.absolute else state.pos[i] + v
             if abs(target[i]) > LIMIT_MM:
-                raise LineError(params[c].column, f"{c} coordinate out of range")
+                raise LineError(params[c].column, msg("{axis} coordinate out of range", axis=c))
     return target
 
 
@@ -77,12 +80,13 @@ def _arc_words(state: State, params) -> None:
     name = PLANE_NAMES[state.plane]
     has_ijk = any(c in params for c in _OFFSETS)
     if "R" in params and has_ijk:
-        raise LineError(params["R"].column, "arc with both R and I/J/K words")
+        raise LineError(params["R"].column, msg("arc with both R and I/J/K words"))
     if "R" not in params and not has_ijk:
-        raise LineError(0, "R, I, J and K words all missing for arc")
+        raise LineError(0, msg("R, I, J and K words all missing for arc"))
     bad = _OFFSETS[a3]
     if "R" not in params and bad in params:
-        raise LineError(params[bad].column, f"{bad} word given for arc in {name} plane")
+        message = msg("{letter} word given for arc in {plane} plane", letter=bad, plane=name)
+        raise LineError(params[bad].column, message)
 
 
 def _turns(params, clockwise: bool) -> int:
@@ -90,7 +94,7 @@ def _turns(params, clockwise: bool) -> int:
     if "P" in params:
         p = params["P"].value
         if p != int(p) or p < 1:
-            raise LineError(params["P"].column, "arc turns P must be a whole number >= 1")
+            raise LineError(params["P"].column, msg("arc turns P must be a whole number >= 1"))
         turns = int(p)
     return -turns if clockwise else turns
 
@@ -103,13 +107,13 @@ def _arc(state: State, params, target, line_no: int, ops: OpBuffer, clockwise: b
     end = (target[a1] / k, target[a2] / k)
     if "R" in params:
         if abs(params["R"].value) * k > LIMIT_MM:
-            raise LineError(params["R"].column, "arc radius out of range")
+            raise LineError(params["R"].column, msg("arc radius out of range"))
         center, why = r_center(start, end, params["R"].value, clockwise, state.inch)
     else:
         o1 = params[_OFFSETS[a1]].value if _OFFSETS[a1] in params else 0.0
         o2 = params[_OFFSETS[a2]].value if _OFFSETS[a2] in params else 0.0
         if max(abs(o1), abs(o2)) * k > LIMIT_MM:
-            raise LineError(_col(params, _OFFSETS), "arc centre out of range")
+            raise LineError(_col(params, _OFFSETS), msg("arc centre out of range"))
         center = (o1, o2) if state.ijk_absolute else (start[0] + o1, start[1] + o2)
         why = ijk_error(start, end, center, state.inch)
     if why:

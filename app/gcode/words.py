@@ -7,6 +7,8 @@ reason the interpreter reports (line and feature).
 
 from __future__ import annotations
 
+from app.i18n import N_, msg
+
 G_CODES: dict[float, tuple[str, str, object]] = {
     0: ("motion", "motion", 0),
     1: ("motion", "motion", 1),
@@ -31,29 +33,29 @@ G_CODES: dict[float, tuple[str, str, object]] = {
     64: ("pathmode", None, None),
 }
 
-_CYCLES = "canned cycles (G81-G89) are not supported"
+_CYCLES = N_("canned cycles (G81-G89) are not supported")
 REFUSED_G: dict[float, str] = {
     **{float(g): _CYCLES for g in range(81, 90)},
     73: _CYCLES,
-    41: "cutter radius compensation (G41/G42) is not supported",
-    41.1: "cutter radius compensation (G41/G42) is not supported",
-    42: "cutter radius compensation (G41/G42) is not supported",
-    42.1: "cutter radius compensation (G41/G42) is not supported",
-    92: "G92 coordinate offsets are not supported yet",
-    92.1: "G92 coordinate offsets are not supported yet",
-    92.2: "G92 coordinate offsets are not supported yet",
-    92.3: "G92 coordinate offsets are not supported yet",
-    **{float(g): "work offsets G54-G59 are not supported yet" for g in range(54, 60)},
-    59.1: "work offsets G54-G59 are not supported yet",
-    59.2: "work offsets G54-G59 are not supported yet",
-    59.3: "work offsets G54-G59 are not supported yet",
-    93: "inverse-time feed G93 is not supported (use G94)",
-    95: "feed per revolution G95 is not supported (use G94)",
-    28: "G28 (go to a stored position) is not supported",
-    30: "G30 (go to a stored position) is not supported",
-    53: "G53 machine-coordinate moves are not supported",
-    43: "tool length offsets (G43) are not supported: this machine has one tool",
-    10: "G10 (set offsets and tables) is not supported",
+    41: N_("cutter radius compensation (G41/G42) is not supported"),
+    41.1: N_("cutter radius compensation (G41/G42) is not supported"),
+    42: N_("cutter radius compensation (G41/G42) is not supported"),
+    42.1: N_("cutter radius compensation (G41/G42) is not supported"),
+    92: N_("G92 coordinate offsets are not supported yet"),
+    92.1: N_("G92 coordinate offsets are not supported yet"),
+    92.2: N_("G92 coordinate offsets are not supported yet"),
+    92.3: N_("G92 coordinate offsets are not supported yet"),
+    **{float(g): N_("work offsets G54-G59 are not supported yet") for g in range(54, 60)},
+    59.1: N_("work offsets G54-G59 are not supported yet"),
+    59.2: N_("work offsets G54-G59 are not supported yet"),
+    59.3: N_("work offsets G54-G59 are not supported yet"),
+    93: N_("inverse-time feed G93 is not supported (use G94)"),
+    95: N_("feed per revolution G95 is not supported (use G94)"),
+    28: N_("G28 (go to a stored position) is not supported"),
+    30: N_("G30 (go to a stored position) is not supported"),
+    53: N_("G53 machine-coordinate moves are not supported"),
+    43: N_("tool length offsets (G43) are not supported: this machine has one tool"),
+    10: N_("G10 (set offsets and tables) is not supported"),
 }
 
 M_CODES: dict[int, tuple[str, str]] = {
@@ -73,7 +75,7 @@ M_CODES: dict[int, tuple[str, str]] = {
 
 ALLOWED_LETTERS = set("GMXYZIJKFSPRTN")
 REFUSED_LETTERS = {
-    **{c: f"axis {c} is not on this machine (it has X, Y and Z)" for c in "ABCUVW"},
-    **{c: f"{c} words are not supported" for c in "DEHLQ"},
+    **{c: msg("axis {axis} is not on this machine (it has X, Y and Z)", axis=c) for c in "ABCUVW"},
+    **{c: msg("{letter} words are not supported", letter=c) for c in "DEHLQ"},
 }
 AXES = "XYZ"

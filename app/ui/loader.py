@@ -171,7 +171,13 @@ def _check_runnable(path: Path, program) -> None:
     errors = list(program.errors)
     if len(program.toolpath) == 0 and errors:
         first = errors[0]
-        said = QCoreApplication.translate(
-            "Loader", "%1 does not look like G-code: nothing in it can be run "
-                      "(%n error(s); first, line %2: %3).", None, len(errors))
+        said = LoaderTexts().not_gcode(len(errors))
         raise LoadError(fill(said, path.name, first.line, localize(first.message)))
+
+
+class LoaderTexts(QObject):
+    """Texts with plurals (``self.tr`` lets lupdate see them)."""
+
+    def not_gcode(self, errors: int) -> str:
+        return self.tr("%1 does not look like G-code: nothing in it can be run "
+                       "(%n error(s); first, line %2: %3).", "", errors)

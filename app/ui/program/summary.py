@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import numpy as np
-from PySide6.QtCore import QCoreApplication
+from PySide6.QtCore import QCoreApplication, QObject
 
 from app.ui.numbers import decimal, fill, integer
 
@@ -30,13 +30,23 @@ def device_count(program) -> int:
     return len(program.line_map)
 
 
+class Summary(QObject):
+    """The translation context of the summary (``self.tr`` lets lupdate see the plurals)."""
+
+    def counts(self, lines: int, device: int, moves: int) -> tuple[str, str, str]:
+        return (self.tr("%n line(s)", "", lines), self.tr("%n machine line(s)", "", device),
+                self.tr("%n move(s)", "", moves))
+
+    def problems(self, errors: int, warnings: int) -> tuple[str, str]:
+        return self.tr("%n error(s)", "", errors), self.tr("%n warning(s)", "", warnings)
+
+
 def describe(program, name: str = "") -> str:
     tp = program.toolpath
     errors, warnings = program.errors, program.warnings
     parts = [f"<b>{name}</b>" if name else ""]
-    lines = QCoreApplication.translate("Summary", "%n line(s)", None, len(program.lines))
-    device = QCoreApplication.translate("Summary", "%n machine line(s)", None, device_count(program))
-    moves = QCoreApplication.translate("Summary", "%n move(s)", None, len(tp.start))
+    texts = Summary()
+    lines, device, moves = texts.counts(len(program.lines), device_count(program), len(tp.start))
     parts.append(fill(QCoreApplication.translate("Summary", "%1 → %2, %3"), lines, device, moves))
     box = bounds_array(getattr(tp, "bounds", None))
     if box is not None and len(tp.start):
@@ -47,8 +57,7 @@ def describe(program, name: str = "") -> str:
     estimated = format_duration(getattr(tp, "estimated_time", 0.0))
     parts.append(fill(QCoreApplication.translate("Summary", "cut %1 mm, rapid %2 mm, estimated %3"),
                       cut, rapid, estimated))
-    errors_said = QCoreApplication.translate("Summary", "%n error(s)", None, len(errors))
-    warnings_said = QCoreApplication.translate("Summary", "%n warning(s)", None, len(warnings))
+    errors_said, warnings_said = texts.problems(len(errors), len(warnings))
     status = fill(QCoreApplication.translate("Summary", "%1, %2"), errors_said, warnings_said)
     colour = "#e05050" if errors else ("#c8a000" if warnings else "#39a353")
     parts.append(f"<span style='color:{colour}'>{status}</span>")
