@@ -38,7 +38,7 @@ translations: $(QM) $(MO)
 i18n: $(STAMP)
 	$(BIN)/pyside6-lupdate -silent -no-obsolete -locations none $(UI_SOURCES) -ts $(TS)
 	$(BIN)/pybabel -q extract --no-location --omit-header -k msg -k N_ -o $(POT) $(CORE_SOURCES)
-	$(BIN)/pybabel -q update --no-location --no-fuzzy-matching -D cnc -i $(POT) -d $(I18N)
+	$(BIN)/pybabel -q update --ignore-obsolete --ignore-pot-creation-date --no-fuzzy-matching -D cnc -i $(POT) -d $(I18N)
 	$(MAKE) translations
 
 run: $(STAMP) translations
