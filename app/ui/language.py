@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from PySide6.QtCore import QCoreApplication, QLibraryInfo, QLocale, QTranslator
+from PySide6.QtCore import QCoreApplication, QEvent, QLibraryInfo, QLocale, QTranslator
 
 from app import i18n
 
@@ -50,7 +50,8 @@ class Translations:
         i18n.set_language(code)
         self.code = code
         for translator in self._installed:
-            app.installTranslator(translator)  # each one sends LanguageChange to every widget
+            app.installTranslator(translator)  # each one posts LanguageChange to every widget
+        app.sendPostedEvents(None, QEvent.Type.LanguageChange)  # re-labelled when this returns
         return code
 
 

@@ -75,6 +75,21 @@
     </message>
 </context>
 <context>
+    <name>JobStatusBar</name>
+    <message>
+        <source>machine position in work coordinates (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no job</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>line %1/%2 · elapsed %3 · remaining %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>JogPanel</name>
     <message>
         <source>Jog</source>

@@ -75,6 +75,21 @@
     </message>
 </context>
 <context>
+    <name>JobStatusBar</name>
+    <message>
+        <source>machine position in work coordinates (mm)</source>
+        <translation>vị trí máy theo tọa độ phôi (mm)</translation>
+    </message>
+    <message>
+        <source>no job</source>
+        <translation>chưa chạy chương trình</translation>
+    </message>
+    <message>
+        <source>line %1/%2 · elapsed %3 · remaining %4</source>
+        <translation>dòng %1/%2 · đã chạy %3 · còn lại %4</translation>
+    </message>
+</context>
+<context>
     <name>JogPanel</name>
     <message>
         <source>Jog</source>
