@@ -70,6 +70,7 @@ class MachineControls(QWidget):
         self.spindle_box.setTitle(self.tr("Spindle"))
         self.rpm.setSuffix(self.tr(" rpm"))
         self.zero_box.setTitle(self.tr("Work zero (here)"))
+        self.rpm_label.clear()
         self.set_rpm(self._rpm_measured)
 
     def changeEvent(self, event) -> None:  # noqa: N802 (Qt override)

@@ -111,9 +111,10 @@ class SessionBinder(QObject):
         self.w.connection.set_connected(False)
         if "operator" in reason or "shut down" in reason:
             self.w.connection.set_link("DISCONNECTED")
-        else:
-            self.w.connection.set_link("LOST", localize(reason))
-            self._alert("usb", reason)
+        else:  # the port's own words (pyserial, the OS) go to the console, not to the operator
+            self.w.console.add_log("error", reason)
+            self.w.connection.set_link("LOST", self.tr("the port failed; details in the console"))
+            self._alert("usb", self.tr("The serial port reported an error; the details are in the console."))
         self.refresh_enabled()
 
     def on_link(self, event) -> None:

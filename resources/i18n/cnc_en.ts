@@ -1108,6 +1108,14 @@ If the link drops, the machine holds; reconnect and resume from the alert.</sour
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>the port failed; details in the console</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The serial port reported an error; the details are in the console.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>%1 % resends</source>
         <translation type="unfinished"></translation>
     </message>

@@ -1106,6 +1106,14 @@ Nếu mất kết nối, máy giữ nguyên vị trí; kết nối lại và ch�
         <translation>Không mở được cổng: %1</translation>
     </message>
     <message>
+        <source>the port failed; details in the console</source>
+        <translation>cổng bị lỗi; chi tiết ở bảng lệnh</translation>
+    </message>
+    <message>
+        <source>The serial port reported an error; the details are in the console.</source>
+        <translation>Cổng serial báo lỗi; chi tiết kỹ thuật ở bảng lệnh.</translation>
+    </message>
+    <message>
         <source>%1 % resends</source>
         <translation>%1 % gửi lại</translation>
     </message>

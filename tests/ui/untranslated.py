@@ -20,7 +20,7 @@ from tests.ui.visible import plain
 I18N = Path(__file__).resolve().parents[2] / "resources" / "i18n"
 WORD = re.compile(r"[A-Za-z]{3,}")
 NOT_WORDS = re.compile(r"\S*[._/:\\#@=]\S*|\b[A-Z][A-Z_0-9]*[_0-9][A-Z_0-9]*\b")
-PLACEHOLDER = re.compile(r"%\d|%n\b|\{[a-z_]+(?:[:!][^}]*)?\}|\(s\)|\(es\)")
+PLACEHOLDER = re.compile(r"%\d|%n\b|\{[a-z_]+(?:[:!][^}]*)?\}|[A-Za-z]\((?:s|es)\)")
 # Proper names, units, G-code and protocol words, which stay as they are in every language.
 ALLOWED = {
     "cnc", "usb", "uart", "oled", "led", "pid", "mdi", "crc", "gcodetools", "inkscape", "linuxcnc",
@@ -29,6 +29,10 @@ ALLOWED = {
     "reset", "list", "put", "del", "run", "mreset", "exit", "down", "ascii", "baud", "sim",
     "ngc", "gcode", "png", "txt", "tap", "kp_x", "ferr", "check", "off", "recover", "normal",
 }
+
+
+# Whole texts that stay: the names printed on the machine's own buttons (its panel mirror).
+MACHINE_BUTTONS = {"UP", "DOWN", "OK", "EXIT", "MRESET", "RESET"}
 
 
 def _ts_pairs(path: Path) -> list[tuple[str, list[str]]]:
@@ -70,6 +74,8 @@ def english_in_vietnamese(texts) -> list[str]:
     sources, words = catalogue()
     found = []
     for where, text in texts:
+        if text in MACHINE_BUTTONS:
+            continue
         if text in sources:
             found.append(f"{where}: {text!r} (an English source)")
         elif _words(text) & words:
@@ -78,5 +84,5 @@ def english_in_vietnamese(texts) -> list[str]:
 
 
 def placeholders(texts) -> list[str]:
-    """(where, text) pairs that show an unfilled ``%1``, ``%n``, ``{name}`` or ``(s)``."""
+    """(where, text) pairs that show an unfilled ``%1``, ``%n``, ``{name}`` or ``line(s)``."""
     return sorted({f"{where}: {text!r}" for where, text in texts if PLACEHOLDER.search(text)})
