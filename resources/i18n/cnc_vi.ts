@@ -71,7 +71,7 @@
     <name>DiagnosticsView</name>
     <message>
         <source>%1 error mm</source>
-        <translation>sai lệch %1 mm</translation>
+        <translation>lệch %1 mm</translation>
     </message>
 </context>
 <context>
@@ -1188,7 +1188,7 @@ Nếu mất kết nối, máy giữ nguyên vị trí; kết nối lại và ch�
     </message>
     <message>
         <source>PID gains are pushed to the machine (SET) when you press OK while connected.</source>
-        <translation>Hệ số PID được gửi xuống máy (SET) khi bấm OK lúc đang kết nối.</translation>
+        <translation>Hệ số PID được gửi xuống máy (SET) khi bấm Đồng ý lúc đang kết nối.</translation>
     </message>
     <message>
         <source>range %1 … %2</source>

@@ -54,6 +54,7 @@ class SettingsDialog(QDialog):
         language_row = QFormLayout()
         language_row.addRow(self.language_label, self.language)
         self.tabs = QTabWidget()
+        self.tabs.setUsesScrollButtons(False)  # every tab title whole (Vietnamese ones are longer)
         for section in ORDER:
             self.tabs.addTab(self._section_page(section), "")
         self.error = QLabel("")
