@@ -1,7 +1,7 @@
 """The machine's alarm (``X``) and refusal (``E``) codes of ``docs/protocol.md`` in the
 operator's language. The machine's own text is firmware English; the window says what
 the code means and keeps the machine's values (a soft limit names the axis, the
-direction, the position and the limit)."""
+direction, the position and the limit); the console keeps the machine's words."""
 
 from __future__ import annotations
 
@@ -10,6 +10,7 @@ import re
 from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication
 
 from app.i18n import localize
+from app.ui.language import current_language
 from app.ui.numbers import decimal
 
 CONTEXT = "MachineCodes"
@@ -66,8 +67,9 @@ def _explain(code: str, text: str) -> str:
     said, text = meaning(code), localize(text or "")
     if code == "SOFT_LIMIT" and soft_limit_text(text):
         return f"{said}: {soft_limit_text(text)}"
-    if said:
-        return f"{said} ({code}{': ' + text if text else ''})"
+    if said:  # the machine's own words are firmware English: kept (and in the console) in English only
+        detail = f": {text}" if text and current_language() == "en" else ""
+        return f"{said} ({code}{detail})"
     return f"{code}: {text}".strip(": ")
 
 

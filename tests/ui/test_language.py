@@ -160,3 +160,28 @@ def test_language_remembered_and_system_default(qtbot, make_window, tmp_path):
     assert saved_language(second.qsettings) == "vi"
     apply_language(saved_language(second.qsettings))
     assert second.windowTitle() == "Điều khiển máy phay CNC"
+
+
+def test_machine_codes_in_the_operators_language(qtbot, window):
+    from app.ui.codes import alarm_text, refusal_text
+
+    assert refusal_text("NOT_HOMED", "home first") == "the machine is not homed (NOT_HOMED: home first)"
+    window.set_language("vi")
+    assert refusal_text("NOT_HOMED", "home first") == "máy chưa về gốc (NOT_HOMED)"
+    assert refusal_text("SOFT_LIMIT", "X+ 151.200 > 150") == (
+        "lệnh di chuyển sẽ vượt hành trình (giới hạn mềm): "
+        "trục X theo chiều +: 151,200 mm vượt quá giới hạn 150 mm")
+    assert alarm_text("COVER_OPEN", "") == "nắp che đang mở: không được phép chuyển động (COVER_OPEN)"
+
+
+def test_system_locale_decides_until_the_operator_chooses(qtbot, window, monkeypatch):
+    from PySide6.QtCore import QLocale
+
+    from app.ui import language
+    from app.ui.main import parse_args
+
+    monkeypatch.setattr(language.QLocale, "system", staticmethod(lambda: QLocale("vi_VN")))
+    assert saved_language(window.qsettings) == "vi"
+    window.set_language("en")
+    assert saved_language(window.qsettings) == "en"
+    assert parse_args(["--lang", "vi"]).lang == "vi" and parse_args([]).lang is None
