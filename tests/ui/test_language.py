@@ -185,3 +185,18 @@ def test_system_locale_decides_until_the_operator_chooses(qtbot, window, monkeyp
     window.set_language("en")
     assert saved_language(window.qsettings) == "en"
     assert parse_args(["--lang", "vi"]).lang == "vi" and parse_args([]).lang is None
+
+
+def test_the_window_fonts_have_every_letter_of_the_translation(qapp):
+    from PySide6.QtGui import QFontDatabase, QFontInfo, QFontMetrics
+    from PySide6.QtWidgets import QApplication
+
+    from tests.ui.untranslated import I18N, _po_pairs, _ts_pairs
+
+    pairs = _ts_pairs(I18N / "cnc_vi.ts") + _po_pairs(I18N / "vi" / "LC_MESSAGES" / "cnc.po")
+    letters = {c for _, forms in pairs for form in forms for c in form if ord(c) > 127 and c.isalpha()}
+    assert {"ệ", "ố", "ữ", "đ", "ạ"} <= letters
+    for font in (QApplication.font(), QFontDatabase.systemFont(QFontDatabase.SystemFont.FixedFont)):
+        metrics = QFontMetrics(font)
+        missing = sorted(c for c in letters if not metrics.inFontUcs4(ord(c)))
+        assert missing == [], f"{QFontInfo(font).family()} lacks {''.join(missing)}"
