@@ -136,6 +136,8 @@ def test_numbers_follow_the_language_and_entry_takes_both(qtbot, window):
     assert "12.500" in window.status.position.text()
     window.set_language("vi")
     assert "12,500" in window.status.position.text() and decimal(0.1, 1) == "0,1"
+    axis = window.position_plot.plot.getAxis("left")
+    assert axis.tickStrings([0.5, 1.0], 1.0, 0.5) == ["0,5", "1,0"]
     typed = ("1,5", "1.5", "1.234,5", "1,234.5")
     assert [parse_number(t) for t in typed] == ["1.5", "1.5", "1234.5", "1234.5"]
     dialog = window.operator.edit_settings()

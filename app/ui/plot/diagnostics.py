@@ -10,6 +10,7 @@ from PySide6.QtCore import QEvent, Qt, QTimer
 from PySide6.QtWidgets import QVBoxLayout, QWidget
 
 from app.ui.numbers import fill
+from app.ui.plot.axes import local_axes, refresh_ticks
 from app.ui.plot.history import COMMANDED, MEASURED, PositionHistory, T
 from app.ui.plot.position_plot import AXIS_COLOURS, REDRAW_MS
 from app.ui.plot.ranges import SteadyYRange
@@ -37,6 +38,8 @@ class DiagnosticsView(QWidget):
     def retranslate_ui(self) -> None:
         for axis, plot in self._error_plots:
             plot.setLabel("left", fill(self.tr("%1 error mm"), axis))
+        for plot in self.layout_widget.ci.items:
+            refresh_ticks(plot)
 
     def changeEvent(self, event) -> None:  # noqa: N802 (Qt override)
         if event.type() == QEvent.Type.LanguageChange:
@@ -44,8 +47,8 @@ class DiagnosticsView(QWidget):
         super().changeEvent(event)
 
     def _add_axis(self, row: int, axis: str, colour: str) -> None:
-        pos = self.layout_widget.addPlot(row=row, col=0)
-        err = self.layout_widget.addPlot(row=row, col=1)
+        pos = self.layout_widget.addPlot(row=row, col=0, axisItems=local_axes())
+        err = self.layout_widget.addPlot(row=row, col=1, axisItems=local_axes())
         pos.setLabel("left", f"{axis} mm")
         self._error_plots.append((axis, err))
         err.setLabel("left", fill(self.tr("%1 error mm"), axis))

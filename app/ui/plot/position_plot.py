@@ -10,6 +10,7 @@ import pyqtgraph as pg
 from PySide6.QtCore import QEvent, QTimer
 from PySide6.QtWidgets import QVBoxLayout, QWidget
 
+from app.ui.plot.axes import local_axes, refresh_ticks
 from app.ui.plot.history import MEASURED, PositionHistory, T
 from app.ui.plot.ranges import SteadyYRange
 
@@ -24,7 +25,7 @@ class PositionPlot(QWidget):
         self.history = history
         self.seconds = seconds
         self._drawn_version = -1
-        self.plot = pg.PlotWidget()
+        self.plot = pg.PlotWidget(axisItems=local_axes())
         self.retranslate_ui()
         self.plot.showGrid(x=True, y=True, alpha=0.2)
         for side in ("left", "bottom"):
@@ -46,6 +47,7 @@ class PositionPlot(QWidget):
     def retranslate_ui(self) -> None:
         self.plot.setLabel("bottom", self.tr("time"), units="s")
         self.plot.setLabel("left", self.tr("position"), units="mm")
+        refresh_ticks(self.plot.getPlotItem())
 
     def changeEvent(self, event) -> None:  # noqa: N802 (Qt override)
         if event.type() == QEvent.Type.LanguageChange:

@@ -18,6 +18,7 @@ from PySide6.QtGui import QColor, QPen
 from PySide6.QtWidgets import QVBoxLayout, QWidget
 
 from app.ui.numbers import decimal
+from app.ui.plot.axes import local_axes, refresh_ticks
 from app.ui.preview.geometry import AIR_GROUP, DEPTH_BANDS, RAPID_GROUP
 from app.ui.preview.model import PreviewModel
 from app.ui.preview.picture import PictureLayer
@@ -45,7 +46,7 @@ class PreviewWidget(QWidget):
         super().__init__(parent)
         self.model: PreviewModel | None = None
         self._done_move = -1
-        self.plot = pg.PlotWidget()
+        self.plot = pg.PlotWidget(axisItems=local_axes())
         self.plot.setAspectLocked(True)
         self.grid = False
         self.plot.setLabel("bottom", "X", units="mm")
@@ -128,6 +129,7 @@ class PreviewWidget(QWidget):
     def retranslate_ui(self) -> None:
         self.plot.setToolTip(self.tr("wheel: zoom · drag: pan · Ctrl+F: fit · Ctrl+G: grid"))
         self._update_legend()
+        refresh_ticks(self.plot.getPlotItem())
 
     def changeEvent(self, event) -> None:  # noqa: N802 (Qt override)
         if event.type() == QEvent.Type.LanguageChange:
