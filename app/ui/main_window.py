@@ -13,6 +13,7 @@ from pathlib import Path
 from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, QEvent, QSettings, QStandardPaths, Qt
 from PySide6.QtWidgets import QDockWidget, QMainWindow, QTabWidget, QWidget
 
+from app.i18n import localize
 from app.ui.connection_bar import ConnectionBar
 from app.ui.console import ConsoleView
 from app.ui.controls import MachineControls
@@ -75,7 +76,7 @@ class MainWindow(QMainWindow):
         if restore:
             self.restore_state()
         if loaded.problem:
-            self.notifier.warning(self.tr("Settings"), loaded.problem)
+            self.notifier.warning(self.tr("Settings"), localize(loaded.problem))
 
     def _build_widgets(self, port_lister) -> None:
         travel = (self.profile.travel.x_max, self.profile.travel.y_max)
