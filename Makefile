@@ -5,9 +5,10 @@ BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 SAMPLE := resources/samples/README.md
 
-# Translations (resources/i18n/): the window's Qt Linguist files, compiled to .qm, and
-# the core's gettext catalogue, compiled to .mo. `make i18n` collects new strings into
-# them (then translate the new entries); `run` and `test` recompile what changed.
+# Translations (resources/i18n/): the window's Qt Linguist files, compiled to .qm (English
+# is the source language: its file holds only the plural forms), and the core's gettext
+# catalogue, compiled to .mo. `make i18n` collects new strings into them (then translate
+# the new entries); `run` and `test` recompile what changed.
 I18N := resources/i18n
 TS := $(I18N)/cnc_vi.ts $(I18N)/cnc_en.ts
 QM := $(TS:.ts=.qm)
@@ -36,7 +37,8 @@ $(STAMP): $(BIN)/python pyproject.toml
 translations: $(QM) $(MO)
 
 i18n: $(STAMP)
-	$(BIN)/pyside6-lupdate -silent -no-obsolete -locations none $(UI_SOURCES) -ts $(TS)
+	$(BIN)/pyside6-lupdate -silent -no-obsolete -locations none $(UI_SOURCES) -ts $(I18N)/cnc_vi.ts
+	$(BIN)/pyside6-lupdate -silent -no-obsolete -locations none -pluralonly $(UI_SOURCES) -ts $(I18N)/cnc_en.ts
 	$(BIN)/pybabel -q extract --no-location --omit-header -k msg -k N_ -o $(POT) $(CORE_SOURCES)
 	$(BIN)/pybabel -q update --ignore-obsolete --ignore-pot-creation-date --no-fuzzy-matching -D cnc -i $(POT) -d $(I18N)
 	$(MAKE) translations
