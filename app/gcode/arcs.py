@@ -67,7 +67,7 @@ def radius_message(r1: float, r2: float, inch: bool) -> str:
 def r_center(start, end, radius: float, clockwise: bool, inch: bool):
     """(centre, None) of an R-format arc, or (None, why LinuxCNC refuses it)."""
     if end[0] == start[0] and end[1] == start[1]:
-        return None, "R-format arc whose end is its start (use I J K for a full circle)"
+        return None, msg("R-format arc whose end is its start (use I J K for a full circle)")
     r = abs(radius)
     mid = ((end[0] + start[0]) / 2.0, (end[1] + start[1]) / 2.0)
     half = math.hypot(mid[0] - end[0], mid[1] - end[1])

@@ -7,6 +7,7 @@ import os
 import pickle
 import subprocess
 import sys
+from pathlib import Path
 
 import pytest
 
@@ -70,3 +71,16 @@ def test_cli_check_stays_english_otherwise(tmp_path):
     assert "error: line 2, column 4: Q words are not supported" in result.stdout
     assert "cut length: 190.0 mm" in result.stdout
     assert "lỗi: dòng 2, cột 4" in _check(tmp_path, LANG="en_US.UTF-8", LC_MESSAGES="vi_VN.UTF-8").stdout
+
+
+CASES = sorted((Path(__file__).resolve().parents[1] / "oracle" / "cases").glob("*.ngc"))
+MORE = ["G0 X10\nG1 X200 F100\n", "G1 X1\n", "G4\n", "G0 A5\n", "G0 X1 X2\n", "M3 S100\nM4\nM8\nM6 T2\nM0\n",
+        "/G0 X1\nM2\nG0 X5\n", "G1 X1 F100 (open\n", "G17 G18\n", "%\nG0 X1\n%x\n", "G0 X#1\n",
+        "G1 X1 F100 I5\n"]
+
+
+@pytest.mark.parametrize("text", [p.read_text() for p in CASES] + MORE, ids=[p.stem for p in CASES] + MORE)
+def test_every_diagnostic_is_a_translated_message(text, vietnamese):
+    for d in load_text(text).diagnostics:
+        assert isinstance(d.message, i18n.Message), f"{d.message!r} is a plain string: build it with msg()"
+        assert i18n.localize(d.message) != d.message or not any(c.isalpha() for c in d.message), d.message
