@@ -98,7 +98,7 @@ class JobControl:
     def stop(self) -> bool:
         """Stop and flush now (0x18 repeated until IDLE, and an urgent ``STOP``)."""
         if self.state in RECOVERY_STATES:
-            self._finish_stream(False, "abandoned by the operator")
+            self._finish_stream(False, msg("abandoned by the operator"))
         if self.attached:
             self.realtime.request(fr.STOP_FLUSH, self.clock())
             if self.state in JOB_STATES or self.state is S.UPLOADING:
@@ -159,7 +159,7 @@ class JobControl:
                 self.stream.window.on_ack(-1, self.status.free, self.clock())
             self._set_state(S.STREAMING)
         else:
-            self._finish_stream(False, f"JOB refused: {result.code} {result.info}".strip())
+            self._finish_stream(False, msg("JOB refused: {code} {info}", code=result.code, info=result.info))
 
     def _upload_answered(self, result: CommandResult) -> None:
         if self.state is not S.UPLOADING:
@@ -172,7 +172,8 @@ class JobControl:
         if self.state is not S.RESUMING:
             return
         if not result.ok:
-            self._finish_stream(False, f"RESUME FROM refused: {result.code} {result.info}".strip())
+            self._finish_stream(False, msg("RESUME FROM refused: {code} {info}", code=result.code,
+                                               info=result.info))
             return
         free = self.status.free if self.status else 1
         self.stream.window.restart_at(seq, free)
@@ -182,17 +183,17 @@ class JobControl:
 
     def _stop_answered(self, result: CommandResult) -> None:
         if result.ok and self.state is S.STOPPING:
-            self._finish_stream(False, "stopped by the operator")
+            self._finish_stream(False, msg("stopped by the operator"))
 
     def _stop_stream(self) -> None:
         if self.state is S.UPLOADING:
-            self._finish_stream(False, "upload stopped by the operator")
+            self._finish_stream(False, msg("upload stopped by the operator"))
         elif self.state is not S.STOPPING:
             self._set_state(S.STOPPING)
 
     def _realtime_confirmed(self, byte: bytes) -> None:
         if byte == fr.STOP_FLUSH and self.state is S.STOPPING:
-            self._finish_stream(False, "stopped by the operator")
+            self._finish_stream(False, msg("stopped by the operator"))
 
     # ------------------------------------------------------------------ frames of a stream
 
@@ -231,7 +232,7 @@ class JobControl:
         if self.stream.finish_line(seq):
             self._report_progress(now, force=True)
             if self.stream.complete:
-                self._finish_stream(True, "completed")
+                self._finish_stream(True, msg("completed"))
 
     def _line_refused(self, frame: fr.Error) -> None:
         reason = f"line refused: {frame.code} {frame.text}".strip()
@@ -246,9 +247,9 @@ class JobControl:
         if self.stream is None:
             return
         if code == "UART_LOST" and self.state in JOB_STATES - {S.STOPPING}:
-            self._interrupt("the UART hop to the CNC MCU is down")
+            self._interrupt(msg("the UART hop to the CNC MCU is down"))
         elif code in STOP_ALARMS and self.state in JOB_STATES | SENDING_STATES:
-            self._finish_stream(False, f"alarm {code} {text}".strip())
+            self._finish_stream(False, msg("alarm {code} {text}", code=code, text=text))
 
     def _job_status(self, event: StatusEvent, now: float) -> None:
         stream = self.stream
@@ -261,7 +262,7 @@ class JobControl:
         if stream.kind != "job" or self.state not in SENDING_STATES:
             return
         if "U" in event.flags:
-            self._interrupt("the UART hop to the CNC MCU is down")
+            self._interrupt(msg("the UART hop to the CNC MCU is down"))
             return
         stream.window.on_status_ack(event.acc, event.free, now)
         if event.state == "HOLD" and self.state is S.STREAMING:
@@ -270,7 +271,7 @@ class JobControl:
             self._set_state(S.STREAMING)
         self._lines_finished(event.done, now)
         if self.stream is not None and event.state == "ALARM":
-            self._finish_stream(False, "the machine is in ALARM")
+            self._finish_stream(False, msg("the machine is in ALARM"))
 
     def _report_progress(self, now: float, force: bool = False) -> None:
         last, when = self._last_progress
@@ -328,4 +329,4 @@ class JobControl:
             if self.state in JOB_STATES or self.state in RECOVERY_STATES:
                 self._offer_restart("the machine was reset: home it, then confirm the restart")
         elif self.stream is not None:
-            self._finish_stream(False, "the machine was reset")
+            self._finish_stream(False, msg("the machine was reset"))
