@@ -100,7 +100,9 @@ class ProgramPanel(QWidget):
         line = int(getattr(diagnostic, "line", 0) or 0)
         column = getattr(diagnostic, "column", "") or ""
         said = self.tr("error") if kind == "error" else self.tr("warning")
-        item = QTreeWidgetItem([str(line), str(column), said, localize(diagnostic.message)])
+        message = localize(diagnostic.message)
+        item = QTreeWidgetItem([str(line), str(column), said, message])
+        item.setToolTip(3, message)  # the whole message where the column is too narrow
         item.setData(0, Qt.ItemDataRole.UserRole, line)
         item.setForeground(2, Qt.GlobalColor.red if kind == "error" else Qt.GlobalColor.darkYellow)
         return item
