@@ -45,6 +45,7 @@ class Translations:
         app = QCoreApplication.instance()
         for translator in self._installed:
             app.removeTranslator(translator)
+            translator.deleteLater()
         self._installed = [t for t in (_load(QM_DIR, f"cnc_{code}"), _load(_qt_dir(), f"qtbase_{code}")) if t]
         QLocale.setDefault(QLocale(code))
         i18n.set_language(code)
