@@ -78,8 +78,11 @@ class MachineControls(QWidget):
             self.retranslate_ui()
         super().changeEvent(event)
 
-    def _button(self, key: str, text: str, slot) -> QPushButton:
+    def _button(self, key: str, text: str, slot, tip: str = "") -> QPushButton:
+        """A button; its label and tip come from BUTTON_TEXTS when ``key`` is there, else
+        pass them already translated (``self.tr``)."""
         button = QPushButton(text)
+        button.setToolTip(tip)
         button.clicked.connect(slot)
         self.buttons[key] = button
         return button
