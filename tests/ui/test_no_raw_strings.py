@@ -16,7 +16,7 @@ TAKES_TEXT = {
     "setPrefix", "setFormat", "setLabel", "addMenu", "addAction", "setItemText", "QLabel", "QPushButton",
     "QCheckBox", "QRadioButton", "QGroupBox", "QAction", "QDockWidget", "QTreeWidgetItem", "warning",
     "error", "info", "notify", "about", "information", "critical", "question", "getOpenFileName",
-    "getSaveFileName", "setWhatsThis", "addRow",
+    "getSaveFileName", "setWhatsThis", "addRow", "_action", "_menu",
 }
 WORDS = re.compile(r"[A-Za-z]{3,}")
 MARKUP = re.compile(r"<[^>]*>")
