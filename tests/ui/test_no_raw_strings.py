@@ -23,7 +23,7 @@ MARKUP = re.compile(r"<[^>]*>")
 NOT_PROSE = re.compile(r"^(?:[\w.-]+\.\w+|(?:Ctrl|Alt|Shift)\+.*)$")  # a file name, a key
 PASSES_TEXT_ON = {"notifier.py"}  # forwards texts it is given (its first argument is a level)
 # Texts that are the same in every language: protocol words, axis names, units, names.
-SAME_EVERYWHERE = {"TX", "RX", "XY", "XYZ", "LED", "mm", "X", "Y", "Z", "left", "bottom", "%p %"}
+SAME_EVERYWHERE = {"TX", "RX", "XY", "XYZ", "LED", "mm", "X", "Y", "Z", "left", "bottom", "%p %", "Esc"}
 
 
 def _literal_text(node) -> str:
