@@ -65,6 +65,11 @@ def _session(qtbot, window, tmp_path) -> list[tuple[str, str]]:
                     timeout=60_000)
     seen += all_texts(window.alert)
     _click(qtbot, window.alert.abandon)
+    window.actions_by_name["guide"].trigger()  # Help ▸ Operator guide (a message)
+    for action in window.menuBar().actions():  # menus filled on opening (Open recent)
+        for sub in action.menu().actions():
+            if sub.menu() is not None:
+                sub.menu().aboutToShow.emit()
     seen += all_texts(window) + _settings_texts(qtbot, window)
     seen += [(f"notifier.{level}", text) for level, title, text in window.notifier.messages]
     seen += [(f"notifier.{level}.title", title) for level, title, text in window.notifier.messages]
