@@ -91,7 +91,7 @@ def _spindle(state: State, mgroups, params, line_no, ops: OpBuffer, report: Repo
 
 def _pause(line_no, column, message, ops: OpBuffer, state: State, report: Report) -> None:
     report.warning(line_no, column, message, message)
-    ops.add(line_no, PAUSE, state.pos, message=f"line {line_no}: {message}")
+    ops.add(line_no, PAUSE, state.pos, message=msg("line {line}: {message}", line=line_no, message=message))
 
 
 def _tool_change(state, mgroups, params, line_no, ops, report) -> None:
