@@ -22,6 +22,8 @@ from urllib.parse import parse_qs, urlsplit
 import serial
 import serial.tools.list_ports
 
+from app.i18n import msg
+
 SIM_URL = "sim://"
 BAUDRATE = 115200
 
@@ -53,7 +55,7 @@ def open_transport(url: str | None):
 
 def list_ports() -> list[PortInfo]:
     """The simulator first, then every serial port the OS reports."""
-    ports = [PortInfo(SIM_URL, "Simulated machine (in-process)")]
+    ports = [PortInfo(SIM_URL, msg("Simulated machine (in-process)"))]
     for port in sorted(serial.tools.list_ports.comports(), key=lambda p: p.device):
         ports.append(PortInfo(port.device, port.description or port.device))
     return ports

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from app.i18n import msg
 from app.profile import MachineProfile
 
 from .arcs import arc_box
@@ -84,7 +85,8 @@ def _envelope(ops: Ops, profile: MachineProfile, lines: list[str], report: Repor
             for row, value in zip(out[: report.limit].tolist(), vals[: report.limit].tolist(), strict=True):
                 line = int(ops.line[row])
                 report.warning(line, _column(lines, line, name),
-                               f"{name}{sign} beyond travel ({value:.3f} {rel} {limit:g})",
+                               msg("{axis}{sign} beyond travel ({value:.3f} {rel} {limit:g})", axis=name,
+                                   sign=sign, value=float(value), rel=rel, limit=float(limit)),
                                f"{name}{sign} beyond travel")
             report.overflow("warning", f"{name}{sign} beyond travel", len(out) - report.limit)
 
@@ -92,7 +94,7 @@ def _envelope(ops: Ops, profile: MachineProfile, lines: list[str], report: Repor
 def _feed_zero(ops: Ops, lines: list[str], report: Report) -> None:
     kind = ops.kind
     rows = np.flatnonzero(((kind == FEED) | (kind == ARC_CW) | (kind == ARC_CCW)) & (ops.value <= 0))
-    message = "feed move at feed 0 (no F word yet, or F0)"
+    message = msg("feed move at feed 0 (no F word yet, or F0)")
     for row in rows[: report.limit].tolist():
         report.warning(int(ops.line[row]), 0, message, message)
     report.overflow("warning", message, len(rows) - report.limit)
