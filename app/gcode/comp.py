@@ -95,7 +95,8 @@ class Comp:
                 if self.endpoint is not None:
                     dot = e["dir"][0] * (x - self.endpoint[0]) + e["dir"][1] * (y - self.endpoint[1])
                     if dot < 0:
-                        raise LineError(0, msg(_GOUGE_STRAIGHT[e["kind"]]))
+                        gouge = _GOUGE_STRAIGHT[e["kind"]]
+                        raise LineError(0, msg(gouge))
                 e["end"][0], e["end"][1] = x, y
         self.dequeue(ops)
         self.endpoint = (x, y)

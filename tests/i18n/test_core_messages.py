@@ -41,7 +41,7 @@ def test_localize_in_vietnamese_with_decimal_comma(vietnamese):
 def test_program_diagnostics_in_vietnamese(vietnamese):
     program = load_text("G0 X10\nG1 E5 F100\nG2 X1 Y1\n")
     said = [d.localized() for d in program.errors]
-    assert said == ["dòng 2, cột 4: chưa hỗ trợ từ lệnh E", "dòng 3: cung tròn thiếu cả R, I, J và K"]
+    assert said == ["dòng 2, cột 4: chưa hỗ trợ từ lệnh E", "dòng 3, cột 1: cung tròn thiếu cả R, I, J và K"]
     assert [str(d) for d in program.errors][0] == "line 2, column 4: E words are not supported"
 
 
@@ -76,7 +76,8 @@ def test_cli_check_stays_english_otherwise(tmp_path):
 CASES = sorted((Path(__file__).resolve().parents[1] / "oracle" / "cases").glob("*.ngc"))
 MORE = ["G0 X10\nG1 X200 F100\n", "G1 X1\n", "G4\n", "G0 A5\n", "G0 X1 X2\n", "M3 S100\nM4\nM8\nM6 T2\nM0\n",
         "/G0 X1\nM2\nG0 X5\n", "G1 X1 F100 (open\n", "G17 G18\n", "%\nG0 X1\n%x\n", "G0 X#1\n",
-        "G1 X1 F100 I5\n"]
+        "G1 X1 F100 I5\n", "T7 M6\nG43 H9\n", "G10 L11 P1 R2\n", "G86 X1 Y1 Z-1 R1 F100\n", "M72\n",
+        "G5 X1 Y1 F100\n", "G92\n", "G41 D3\n", "G0 X1 @5\n", "G1 X1 F100 L2\n"]
 
 
 @pytest.mark.parametrize("text", [p.read_text() for p in CASES] + MORE, ids=[p.stem for p in CASES] + MORE)
@@ -84,3 +85,18 @@ def test_every_diagnostic_is_a_translated_message(text, vietnamese):
     for d in load_text(text).diagnostics:
         assert isinstance(d.message, i18n.Message), f"{d.message!r} is a plain string: build it with msg()"
         assert i18n.localize(d.message) != d.message or not any(c.isalpha() for c in d.message), d.message
+
+
+def test_tool_table_problems_in_vietnamese(vietnamese, tmp_path):
+    from app.gcode.tools import ToolError, check_tool, load_tools
+
+    with pytest.raises(ToolError) as caught:
+        check_tool(2, -4.0, 0.0)
+    assert str(caught.value) == "tool 2: diameter -4 mm is outside 0..100 mm"
+    assert i18n.localize(caught.value.args[0]) == "dao 2: đường kính -4 mm nằm ngoài phạm vi 0..100 mm"
+    path = tmp_path / "tools.json"
+    path.write_text('{"version": 1, "tools": [{"number": 1}, {"number": 1}]}')
+    problem = load_tools(path).problem
+    assert problem.endswith("the tool table is damaged (tool 1 is listed twice); the table is empty")
+    said = i18n.localize(problem)
+    assert said.endswith("bảng dao bị hỏng (dao 1 có hai lần trong bảng); bảng dao để trống")

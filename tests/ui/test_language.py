@@ -12,6 +12,7 @@ from app import i18n
 from app.ui.language import apply_language, saved_language
 from app.ui.ports import available_ports
 from app.ui.settings.dialog import ORDER
+from app.ui.settings.tools_dialog import open_tool_table
 from tests.ui.conftest import SAMPLES, open_and_wait
 from tests.ui.untranslated import english_in_vietnamese, placeholders
 from tests.ui.visible import all_texts
@@ -70,7 +71,7 @@ def _session(qtbot, window, tmp_path) -> list[tuple[str, str]]:
         for sub in action.menu().actions():
             if sub.menu() is not None:
                 sub.menu().aboutToShow.emit()
-    seen += all_texts(window) + _settings_texts(qtbot, window)
+    seen += all_texts(window) + _settings_texts(qtbot, window) + _tool_table_texts(qtbot, window)
     seen += [(f"notifier.{level}", text) for level, title, text in window.notifier.messages]
     seen += [(f"notifier.{level}.title", title) for level, title, text in window.notifier.messages]
     window.operator.disconnect()
@@ -89,6 +90,20 @@ def _settings_texts(qtbot, window) -> list[tuple[str, str]]:
     dialog.accept()  # refused: the value is named and the dialog stays
     assert dialog.isVisible() and dialog.error.text()
     seen += all_texts(dialog)
+    dialog.reject()
+    return seen
+
+
+def _tool_table_texts(qtbot, window) -> list[tuple[str, str]]:
+    dialog = open_tool_table(window)
+    qtbot.waitExposed(dialog)
+    dialog.add_row(1, 6.0)
+    dialog.add_row(2, 3.0)
+    dialog.table.item(1, 1).setText("-4")  # out of range: named, in the operator's language
+    dialog.table.item(0, 2).setText("abc")  # not a number
+    dialog.accept()
+    assert dialog.isVisible() and dialog.error.text()
+    seen = all_texts(dialog)
     dialog.reject()
     return seen
 

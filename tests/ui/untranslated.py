@@ -19,7 +19,8 @@ from tests.ui.visible import plain
 
 I18N = Path(__file__).resolve().parents[2] / "resources" / "i18n"
 WORD = re.compile(r"[A-Za-z]{3,}")
-NOT_WORDS = re.compile(r"\S*[._/:\\#@=]\S*|\b[A-Z][A-Z_0-9]*[_0-9][A-Z_0-9]*\b")
+NOT_WORDS = re.compile(r"\S*[._/:\\#@=]\S*|\b[A-Z][A-Z_0-9]*[_0-9][A-Z_0-9]*\b"
+                       r"|\b(?:Ctrl|Alt|Shift|Meta)\+\S+")  # file names, protocol words, keys
 PLACEHOLDER = re.compile(r"%\d|%n\b|\{[a-z_]+(?:[:!][^}]*)?\}|[A-Za-z]\((?:s|es)\)")
 # Proper names, units, G-code and protocol words, which stay as they are in every language.
 ALLOWED = {

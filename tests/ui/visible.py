@@ -22,6 +22,7 @@ from PySide6.QtWidgets import (
     QProgressBar,
     QStatusBar,
     QTabBar,
+    QTableWidget,
     QTreeWidget,
     QWidget,
 )
@@ -67,6 +68,9 @@ def widget_texts(widget: QWidget) -> list[tuple[str, str]]:
         for row in range(min(widget.topLevelItemCount(), 50)):
             item = widget.topLevelItem(row)
             out += [(where + ".row", item.text(c)) for c in range(item.columnCount())]
+    elif isinstance(widget, QTableWidget):
+        headers = [widget.horizontalHeaderItem(c) for c in range(widget.columnCount())]
+        out += [(where + ".header", h.text()) for h in headers if h is not None]
     elif isinstance(widget, QStatusBar):
         out.append((where + ".message", widget.currentMessage()))
     elif isinstance(widget, pg.PlotWidget):

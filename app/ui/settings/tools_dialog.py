@@ -8,6 +8,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from PySide6.QtCore import QCoreApplication
 from PySide6.QtGui import QBrush, QColor
 from PySide6.QtWidgets import (
     QDialog,
@@ -144,10 +145,13 @@ def open_tool_table(window) -> ToolTableDialog:
         try:
             save_tools(Path(window.config_dir) / FILE_NAME, dialog.tools)
         except OSError as exc:
-            window.notifier.error(dialog.tr("Tool table not saved"),
-                                  fill(dialog.tr("Cannot write the tool table: %1"), exc.strerror or exc))
+            why = QCoreApplication.translate("ToolTableDialog", "Cannot write the tool table: %1")
+            window.notifier.error(QCoreApplication.translate("ToolTableDialog", "Tool table not saved"),
+                                  fill(why, exc.strerror or exc))
             return
-        window.status.showMessage(dialog.tr("Tool table saved: it applies to the next program opened"), 5000)
+        saved = QCoreApplication.translate("ToolTableDialog",
+                                           "Tool table saved: it applies to the next program opened")
+        window.status.showMessage(saved, 5000)
 
     dialog.accepted.connect(apply)
     dialog.open()
