@@ -528,6 +528,10 @@
         <translation>Cài đặt</translation>
     </message>
     <message>
+        <source>Tool table</source>
+        <translation>Bảng dao</translation>
+    </message>
+    <message>
         <source>CNC mill controller</source>
         <translation>Điều khiển máy phay CNC</translation>
     </message>
@@ -593,6 +597,10 @@
     <message>
         <source>Se&amp;ttings…</source>
         <translation>&amp;Cài đặt…</translation>
+    </message>
+    <message>
+        <source>Tool ta&amp;ble…</source>
+        <translation>&amp;Bảng dao…</translation>
     </message>
     <message>
         <source>&amp;Quit</source>
@@ -1421,6 +1429,77 @@ Nếu mất kết nối, máy giữ nguyên vị trí; kết nối lại và ch�
     <message>
         <source>%1, %2</source>
         <translation>%1, %2</translation>
+    </message>
+</context>
+<context>
+    <name>ToolTableDialog</name>
+    <message>
+        <source>Tool table</source>
+        <translation>Bảng dao</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>Dao</translation>
+    </message>
+    <message>
+        <source>Diameter (mm)</source>
+        <translation>Đường kính (mm)</translation>
+    </message>
+    <message>
+        <source>Length (mm)</source>
+        <translation>Chiều dài (mm)</translation>
+    </message>
+    <message>
+        <source>Comment</source>
+        <translation>Ghi chú</translation>
+    </message>
+    <message>
+        <source>Add tool</source>
+        <translation>Thêm dao</translation>
+    </message>
+    <message>
+        <source>Remove tool</source>
+        <translation>Xóa dao</translation>
+    </message>
+    <message>
+        <source>tool number</source>
+        <translation>số dao</translation>
+    </message>
+    <message>
+        <source>diameter</source>
+        <translation>đường kính</translation>
+    </message>
+    <message>
+        <source>length</source>
+        <translation>chiều dài</translation>
+    </message>
+    <message>
+        <source>row %1: %2 &apos;%3&apos; is not a number</source>
+        <translation>dòng %1: %2 &apos;%3&apos; không phải là số</translation>
+    </message>
+    <message>
+        <source>row %1: %2</source>
+        <translation>dòng %1: %2</translation>
+    </message>
+    <message>
+        <source>row %1: tool %2 is listed twice</source>
+        <translation>dòng %1: dao %2 có hai lần trong bảng</translation>
+    </message>
+    <message>
+        <source>Not saved: %1</source>
+        <translation>Chưa lưu: %1</translation>
+    </message>
+    <message>
+        <source>Cannot write the tool table: %1</source>
+        <translation>Không ghi được bảng dao: %1</translation>
+    </message>
+    <message>
+        <source>Tool table not saved</source>
+        <translation>Chưa lưu bảng dao</translation>
+    </message>
+    <message>
+        <source>Tool table saved: it applies to the next program opened</source>
+        <translation>Đã lưu bảng dao: áp dụng cho chương trình mở tiếp theo</translation>
     </message>
 </context>
 </TS>
