@@ -5,7 +5,20 @@ BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 SAMPLE := resources/samples/README.md
 
-.PHONY: run test bench lint clean
+# Translations (resources/i18n/): the window's Qt Linguist files, compiled to .qm (English
+# is the source language: its file holds only the plural forms), and the core's gettext
+# catalogue, compiled to .mo. `make i18n` collects new strings into them (then translate
+# the new entries); `run` and `test` recompile what changed.
+I18N := resources/i18n
+TS := $(I18N)/cnc_vi.ts $(I18N)/cnc_en.ts
+QM := $(TS:.ts=.qm)
+POT := $(I18N)/cnc.pot
+PO := $(I18N)/vi/LC_MESSAGES/cnc.po
+MO := $(PO:.po=.mo)
+UI_SOURCES = $(shell find app/ui -name '*.py' | sort)
+CORE_SOURCES = app/i18n.py app/profile.py app/ui/settings/store.py app/gcode app/comm
+
+.PHONY: run test bench lint clean i18n translations
 
 $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
@@ -15,10 +28,25 @@ $(STAMP): $(BIN)/python pyproject.toml
 	$(BIN)/python -m pip install --quiet -e '.[test]'
 	touch $(STAMP)
 
-run: $(STAMP)
+%.qm: %.ts | $(STAMP)
+	$(BIN)/pyside6-lrelease -silent $< -qm $@
+
+%.mo: %.po | $(STAMP)
+	$(BIN)/pybabel -q compile --use-fuzzy -D cnc -i $< -o $@
+
+translations: $(QM) $(MO)
+
+i18n: $(STAMP)
+	$(BIN)/pyside6-lupdate -silent -no-obsolete -locations none $(UI_SOURCES) -ts $(I18N)/cnc_vi.ts
+	$(BIN)/pyside6-lupdate -silent -no-obsolete -locations none -pluralonly $(UI_SOURCES) -ts $(I18N)/cnc_en.ts
+	$(BIN)/pybabel -q extract --no-location --omit-header -k msg -k N_ -o $(POT) $(CORE_SOURCES)
+	$(BIN)/pybabel -q update --ignore-obsolete --ignore-pot-creation-date --no-fuzzy-matching -D cnc -i $(POT) -d $(I18N)
+	$(MAKE) translations
+
+run: $(STAMP) translations
 	$(BIN)/python -m app.run
 
-test: $(STAMP)
+test: $(STAMP) translations
 	QT_QPA_PLATFORM=offscreen $(BIN)/python -m pytest -q
 
 bench: $(STAMP)

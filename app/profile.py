@@ -16,6 +16,8 @@ from dataclasses import dataclass, field, fields, replace
 from pathlib import Path
 from typing import Any
 
+from app.i18n import msg
+
 AXES = ("X", "Y", "Z")
 
 
@@ -164,9 +166,11 @@ def check_value(section: Any, key: str, value: Any, where: str = "") -> float | 
     try:
         number = kind(value)
     except (TypeError, ValueError):
-        raise ProfileError(f"{prefix}{key} = {value!r} is not a number") from None
+        raise ProfileError(msg("{prefix}{key} = {value!r} is not a number", prefix=prefix, key=key,
+                               value=value)) from None
     if isinstance(number, float) and not math.isfinite(number) or not lo <= number <= hi:
-        raise ProfileError(f"{prefix}{key} = {value!r} is out of range {lo:g}..{hi:g}")
+        raise ProfileError(msg("{prefix}{key} = {value!r} is out of range {lo:g}..{hi:g}", prefix=prefix,
+                               key=key, value=value, lo=float(lo), hi=float(hi)))
     return number
 
 

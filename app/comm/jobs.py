@@ -25,6 +25,7 @@ from app.comm.listener import JOB_STATES, RECOVERY_STATES, SENDING_STATES, Sessi
 from app.comm.modal import restart_preamble
 from app.comm.stops import stop_event
 from app.comm.stream import Stream, sd_crc32
+from app.i18n import msg
 
 S = SessionState
 PROGRESS_EVERY_S = 0.1
@@ -90,7 +91,7 @@ class JobControl:
     def pause(self) -> bool:
         """Feed hold now (real-time ``!``, repeated until the status shows HOLD)."""
         if not self.attached:
-            return self._refuse("NOT_CONNECTED", "not connected")
+            return self._refuse("NOT_CONNECTED", msg("not connected"))
         self.realtime.request(fr.FEED_HOLD, self.clock())
         self.tick()
         return True
@@ -105,7 +106,7 @@ class JobControl:
     def stop(self) -> bool:
         """Stop and flush now (0x18 repeated until IDLE, and an urgent ``STOP``)."""
         if self.state in RECOVERY_STATES:
-            self._finish_stream(False, "abandoned by the operator")
+            self._finish_stream(False, msg("abandoned by the operator"))
         if self.attached:
             self.realtime.request(fr.STOP_FLUSH, self.clock())
             if self.state in JOB_STATES or self.state is S.UPLOADING:
@@ -115,7 +116,7 @@ class JobControl:
 
     def resume_after_reconnect(self) -> bool:
         if self.state is not S.RESUME_OFFERED or self.status is None:
-            return self._refuse("NO_RESUME", "there is no interrupted job to resume")
+            return self._refuse("NO_RESUME", msg("there is no interrupted job to resume"))
         seq = self.status.acc + 1
         self._set_state(S.RESUMING)
         self.submit("RESUME", "FROM", seq, then=lambda r: self._resumed(r, seq))
@@ -124,10 +125,10 @@ class JobControl:
     def confirm_restart(self) -> bool:
         """After a machine reset and re-homing: restart the job at done+1 (modal state restored)."""
         if self.state is not S.RESTART_REQUIRED or self.stream is None:
-            return self._refuse("NO_RESTART", "there is no job waiting for a restart")
+            return self._refuse("NO_RESTART", msg("there is no job waiting for a restart"))
         homed = self.status is not None and self.status.homed or self.homed_boot == self.boot
         if self.status is None or not homed:
-            return self._refuse("HOME_REQUIRED", "home the machine before restarting the job")
+            return self._refuse("HOME_REQUIRED", msg("home the machine before restarting the job"))
         start = self.stream.program_index(self.stream.done) + 1
         pre = restart_preamble(self.lines, start)
         self.stream = Stream.job(self.lines, self.rtt, self.status.free, start, pre, self.boot or "",
@@ -140,14 +141,16 @@ class JobControl:
 
     def _can_start(self, lines: list[str], what: str) -> bool:
         if self.state is not S.READY or self.stream is not None:
-            return self._refuse("BUSY", f"cannot start a {what} while {self.state.name.lower()}")
+            return self._refuse("BUSY", msg("cannot start a {what} while {state}", what=what,
+                                                state=self.state.name.lower()))
         if not lines:
-            return self._refuse("EMPTY", f"the {what} has no lines")
+            return self._refuse("EMPTY", msg("the {what} has no lines", what=what))
         for seq, line in enumerate(lines):
             try:
                 fr.seal(f"D {seq} {line}")
             except fr.FrameError as exc:
-                return self._refuse("BAD_LINE", f"line {seq} cannot be sent: {exc}")
+                return self._refuse("BAD_LINE", msg("line {seq} cannot be sent: {error}", seq=seq,
+                                                                 error=str(exc)))
         return True
 
     def _refuse(self, code: str, text: str) -> bool:
@@ -164,7 +167,7 @@ class JobControl:
                 self.stream.window.on_ack(-1, self.status.free, self.clock())
             self._set_state(S.STREAMING)
         else:
-            self._finish_stream(False, f"JOB refused: {result.code} {result.info}".strip())
+            self._finish_stream(False, msg("JOB refused: {code} {info}", code=result.code, info=result.info))
 
     def _upload_answered(self, result: CommandResult) -> None:
         if self.state is not S.UPLOADING:
@@ -177,7 +180,8 @@ class JobControl:
         if self.state is not S.RESUMING:
             return
         if not result.ok:
-            self._finish_stream(False, f"RESUME FROM refused: {result.code} {result.info}".strip())
+            self._finish_stream(False, msg("RESUME FROM refused: {code} {info}", code=result.code,
+                                               info=result.info))
             return
         free = self.status.free if self.status else 1
         self.stream.window.restart_at(seq, free)
@@ -187,17 +191,17 @@ class JobControl:
 
     def _stop_answered(self, result: CommandResult) -> None:
         if result.ok and self.state is S.STOPPING:
-            self._finish_stream(False, "stopped by the operator")
+            self._finish_stream(False, msg("stopped by the operator"))
 
     def _stop_stream(self) -> None:
         if self.state is S.UPLOADING:
-            self._finish_stream(False, "upload stopped by the operator")
+            self._finish_stream(False, msg("upload stopped by the operator"))
         elif self.state is not S.STOPPING:
             self._set_state(S.STOPPING)
 
     def _realtime_confirmed(self, byte: bytes) -> None:
         if byte == fr.STOP_FLUSH and self.state is S.STOPPING:
-            self._finish_stream(False, "stopped by the operator")
+            self._finish_stream(False, msg("stopped by the operator"))
 
     # ------------------------------------------------------------------ frames of a stream
 
@@ -236,7 +240,7 @@ class JobControl:
         if self.stream.finish_line(seq):
             self._report_progress(now, force=True)
             if self.stream.complete:
-                self._finish_stream(True, "completed")
+                self._finish_stream(True, msg("completed"))
 
     def _line_refused(self, frame: fr.Error) -> None:
         reason = f"line refused: {frame.code} {frame.text}".strip()
@@ -251,9 +255,9 @@ class JobControl:
         if self.stream is None:
             return
         if code == "UART_LOST" and self.state in JOB_STATES - {S.STOPPING}:
-            self._interrupt("the UART hop to the CNC MCU is down")
+            self._interrupt(msg("the UART hop to the CNC MCU is down"))
         elif code in STOP_ALARMS and self.state in JOB_STATES | SENDING_STATES:
-            self._finish_stream(False, f"alarm {code} {text}".strip())
+            self._finish_stream(False, msg("alarm {code} {text}", code=code, text=text))
 
     def _job_status(self, event: StatusEvent, now: float) -> None:
         stream = self.stream
@@ -266,7 +270,7 @@ class JobControl:
         if stream.kind != "job" or self.state not in SENDING_STATES:
             return
         if "U" in event.flags:
-            self._interrupt("the UART hop to the CNC MCU is down")
+            self._interrupt(msg("the UART hop to the CNC MCU is down"))
             return
         stream.window.on_status_ack(event.acc, event.free, now)
         if event.state == "HOLD" and self.state is S.STREAMING:
@@ -276,7 +280,7 @@ class JobControl:
         self._lines_finished(event.done, now)
         self._program_stop(event)
         if self.stream is not None and event.state == "ALARM":
-            self._finish_stream(False, "the machine is in ALARM")
+            self._finish_stream(False, msg("the machine is in ALARM"))
 
     def _program_stop(self, event: StatusEvent) -> None:
         """Report a program stop the machine now holds at (flag ``W``), once."""
@@ -310,9 +314,10 @@ class JobControl:
         if self.stream is None:
             return
         if self.state is S.UPLOADING:
-            self._finish_stream(False, f"upload failed: {reason}")
+            self._finish_stream(False, msg("upload failed: {reason}", reason=reason))
         elif self.state is S.STOPPING:
-            self._finish_stream(False, f"stopped (link lost before the machine confirmed: {reason})")
+            self._finish_stream(False, msg("stopped (link lost before the machine confirmed: {reason})",
+                                                  reason=reason))
         elif self.state in JOB_STATES or self.state in RECOVERY_STATES:
             self._interrupt(reason)
 
@@ -339,9 +344,10 @@ class JobControl:
         self._offer(offer, S.RESTART_REQUIRED)
 
     def _machine_reset(self, event: StatusEvent) -> None:
-        self._error("MACHINE_RESET", f"the machine was reset (new boot id {event.boot}); position unknown")
+        self._error("MACHINE_RESET", msg("the machine was reset (new boot id {boot}); position unknown",
+                                                 boot=event.boot))
         if self.stream is not None and self.stream.kind == "job" and self.state is not S.STOPPING:
             if self.state in JOB_STATES or self.state in RECOVERY_STATES:
                 self._offer_restart("the machine was reset: home it, then confirm the restart")
         elif self.stream is not None:
-            self._finish_stream(False, "the machine was reset")
+            self._finish_stream(False, msg("the machine was reset"))

@@ -45,6 +45,7 @@ from app.comm.rtt import RttEstimator
 from app.comm.stops import StopWatch
 from app.comm.stream import Stream
 from app.comm.window import MAX_WINDOW
+from app.i18n import msg
 from app.profile import Link
 
 S = SessionState
@@ -134,7 +135,7 @@ class Session(JobControl):
         if self.link.update(now):
             self._emit_link()
             if self.link.state is LinkState.LOST:
-                self._link_lost(f"no valid frame for {self.link.lost_s:g} s")
+                self._link_lost(msg("no valid frame for {seconds:g} s", seconds=float(self.link.lost_s)))
         self._tick_realtime(now)
         self._tick_commands(now)
         self._tick_stream(now)
@@ -149,7 +150,7 @@ class Session(JobControl):
         if urgent and self.commands.outstanding is not None:
             dropped = self.commands.supersede()
             self._command_done(CommandResult(dropped.id, dropped.frame.verb, dropped.frame.args,
-                                             False, f"superseded by {verb}", "SUPERSEDED"))
+                                             False, msg("superseded by {verb}", verb=verb), "SUPERSEDED"))
         if then is not None:
             self._then[command.id] = then
         if self.attached:
@@ -186,7 +187,8 @@ class Session(JobControl):
 
     def _tick_realtime(self, now: float) -> None:
         for byte in self.realtime.expired(now):
-            self._error("REALTIME_UNCONFIRMED", f"the machine did not confirm the {NAMES[byte]}")
+            what = NAMES[byte]
+            self._error("REALTIME_UNCONFIRMED", msg("the machine did not confirm the {what}", what=what))
         data = self.realtime.due(now) if self.attached else b""
         if data:
             self._out += data
@@ -238,7 +240,8 @@ class Session(JobControl):
         if self.state is S.CONNECTING:
             self._set_state(S.READY)
         if old_boot is not None and event.boot not in (old_boot, UNKNOWN_BOOT):
-            self._log("warning", f"the machine was reset (boot id {old_boot} -> {event.boot})")
+            self._log("warning", msg("the machine was reset (boot id {old} -> {new})", old=old_boot,
+                                              new=event.boot))
             self._machine_reset(event)
         result = self.commands.on_status()
         if result is not None:
@@ -250,7 +253,7 @@ class Session(JobControl):
     # ------------------------------------------------------------------ link
 
     def _link_lost(self, reason: str) -> None:
-        self._error("LINK_LOST", f"link to the machine lost: {reason}")
+        self._error("LINK_LOST", msg("link to the machine lost: {reason}", reason=reason))
         self._job_link_lost(reason)
         for result in self.commands.fail_all("LINK_LOST", reason):
             self._command_done(result)
@@ -266,7 +269,8 @@ class Session(JobControl):
         if bad != self._warned:
             self._warned = bad
             if bad:
-                self._log("warning", f"poor link: {window.resend_rate:.0%} of the frames were resent")
+                self._log("warning", msg("poor link: {rate:.0%} of the frames were resent",
+                                           rate=float(window.resend_rate)))
             self._emit_link()
 
     # ------------------------------------------------------------------ output and helpers

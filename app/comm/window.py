@@ -21,6 +21,7 @@ from dataclasses import dataclass, field
 
 from app.comm.frame import Data
 from app.comm.rtt import RttEstimator
+from app.i18n import msg
 
 MAX_WINDOW = 8
 MAX_RETRIES = 10
@@ -150,7 +151,8 @@ class SendWindow:
         tries = self._retries.get(seq, 0) + 1
         self._retries[seq] = tries
         if tries > self.max_retries:
-            self.failed = f"line {seq} was resent {self.max_retries} times without an acknowledgement"
+            self.failed = msg("line {seq} was resent {count} times without an acknowledgement", seq=seq,
+                              count=self.max_retries)
             return
         self.next_seq = seq
         self._timer = now

@@ -23,6 +23,8 @@ import math
 
 import numpy as np
 
+from app.i18n import msg
+
 SPIRAL_REL = 0.001
 RADIUS_TOL = {False: 0.00005 * 25.4, True: 0.00005}  # key: inch mode
 SPIRAL_ABS = {False: 2 * 0.01 * math.sqrt(2), True: 2 * 0.001 * math.sqrt(2)}
@@ -38,7 +40,7 @@ def ijk_error(start, end, center, inch: bool) -> str | None:
     r1 = math.hypot(center[0] - start[0], center[1] - start[1])
     r2 = math.hypot(center[0] - end[0], center[1] - end[1])
     if r1 < RADIUS_TOL[inch] or r2 < RADIUS_TOL[inch]:
-        return "zero-radius arc (the centre is on the start or end point)"
+        return msg("zero-radius arc (the centre is on the start or end point)")
     if spiral_refused(abs(r1 - r2), max(r1, r2), inch):
         return radius_message(r1, r2, inch)
     return None
@@ -55,21 +57,22 @@ def spiral_refused(err, radius, inch: bool):
 def radius_message(r1: float, r2: float, inch: bool) -> str:
     """The refusal text for an arc whose end is not on its circle."""
     unit = _unit(inch)
-    return (
-        f"arc end is not on its circle: radius to start {r1:.4f}, to end {r2:.4f} {unit} "
-        f"(LinuxCNC allows {SPIRAL_ABS[inch]:.4f} {unit} or {SPIRAL_REL:.1%} of the radius)"
+    return msg(
+        "arc end is not on its circle: radius to start {r1:.4f}, to end {r2:.4f} {unit} "
+        "(LinuxCNC allows {allowed:.4f} {unit} or {share:.1%} of the radius)",
+        r1=float(r1), r2=float(r2), unit=unit, allowed=float(SPIRAL_ABS[inch]), share=float(SPIRAL_REL),
     )
 
 
 def r_center(start, end, radius: float, clockwise: bool, inch: bool):
     """(centre, None) of an R-format arc, or (None, why LinuxCNC refuses it)."""
     if end[0] == start[0] and end[1] == start[1]:
-        return None, "R-format arc whose end is its start (use I J K for a full circle)"
+        return None, msg("R-format arc whose end is its start (use I J K for a full circle)")
     r = abs(radius)
     mid = ((end[0] + start[0]) / 2.0, (end[1] + start[1]) / 2.0)
     half = math.hypot(mid[0] - end[0], mid[1] - end[1])
     if half - r > RADIUS_TOL[inch]:
-        return None, f"arc radius R{radius:g} is too small to reach the end point"
+        return None, msg("arc radius R{radius:g} is too small to reach the end point", radius=float(radius))
     if r == 0 or half / r > 1 - TINY:
         half = r
     angle = math.atan2(end[1] - start[1], end[0] - start[0])

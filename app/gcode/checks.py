@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from app.i18n import N_, msg
 from app.profile import MachineProfile
 
 from .arcs import arc_box
@@ -91,9 +92,16 @@ def _envelope(ops: Ops, profile: MachineProfile, lines: list[str], report: Repor
         for row, value in zip(out[: report.limit].tolist(), vals[: report.limit].tolist(), strict=True):
             line = int(ops.main_lines()[row])  # a subprogram's row: its calling line
             report.warning(line, _column(lines, line, name),
-                           f"{name}{sign} beyond travel ({value:.3f} {rel} {limit:g})",
+                           msg("{axis}{sign} beyond travel ({value:.3f} {rel} {limit:g})", axis=name,
+                               sign=sign, value=float(value), rel=rel, limit=float(limit)),
                            f"{name}{sign} beyond travel")
         report.overflow("warning", f"{name}{sign} beyond travel", len(out) - report.limit)
+
+
+_LEAVES_ONE = N_("{axis}{sign} leaves the travel by {by:.3f} mm with the work zero at machine "
+                 "{axis}{zero:.3f} ({axis} {value:.3f} {rel} {limit:g}); {count} move in all")
+_LEAVES_MANY = N_("{axis}{sign} leaves the travel by {by:.3f} mm with the work zero at machine "
+                  "{axis}{zero:.3f} ({axis} {value:.3f} {rel} {limit:g}); {count} moves in all")
 
 
 def preflight(ops: Ops, profile: MachineProfile, lines: list[str], offset) -> list[Diagnostic]:
@@ -105,10 +113,10 @@ def preflight(ops: Ops, profile: MachineProfile, lines: list[str], offset) -> li
         row, value = int(rows[0]), float(values[0])
         line = int(ops.main_lines()[row])
         k = "XYZ".index(name)
-        message = (f"{name}{sign} leaves the travel by {abs(value - limit):.3f} mm with the work zero at "
-                   f"machine {name}{offset[k]:.3f} ({name} {value + offset[k]:.3f} "
-                   f"{'>' if sign == '+' else '<'} {limit + offset[k]:g}); "
-                   f"{len(rows)} move{'s' if len(rows) != 1 else ''} in all")
+        template = (_LEAVES_ONE if len(rows) == 1 else _LEAVES_MANY)
+        message = msg(template, axis=name, sign=sign, by=abs(value - limit), zero=float(offset[k]),
+                      value=value + float(offset[k]), rel=">" if sign == "+" else "<",
+                      limit=float(limit + offset[k]), count=len(rows))
         out.append(Diagnostic(line, _column(lines, line, name) if lines else 0, ERROR, message))
     return sorted(out)
 
@@ -116,7 +124,7 @@ def preflight(ops: Ops, profile: MachineProfile, lines: list[str], offset) -> li
 def _feed_zero(ops: Ops, lines: list[str], report: Report) -> None:
     kind = ops.kind
     rows = np.flatnonzero(((kind == FEED) | (kind == ARC_CW) | (kind == ARC_CCW)) & (ops.value <= 0))
-    message = "feed move at feed 0 (no F word yet, or F0)"
+    message = msg("feed move at feed 0 (no F word yet, or F0)")
     for row in rows[: report.limit].tolist():
         report.warning(int(ops.main_lines()[row]), 0, message, message)
     report.overflow("warning", message, len(rows) - report.limit)

@@ -21,24 +21,32 @@ from pathlib import Path
 
 import numpy as np
 
+from app.i18n import N_, localize, msg
+
 from .moves import to_jsonl
 from .program import Program, load
 
 
 def _summary(p: Program) -> str:
+    """The ``check`` report in the language of LANG / LC_MESSAGES (``app.i18n``)."""
     tp = p.toolpath
     low, high = tp.bounds
     minutes, seconds = divmod(tp.estimated_time, 60)
+    bounds = "  ".join(f"{a} {localize(msg('{lo:.3f}..{hi:.3f}', lo=float(lo), hi=float(hi)))}"
+                       for a, lo, hi in zip("XYZ", low, high, strict=True))
     rows = [
-        f"file: {p.name}",
-        f"lines: {len(p.source_lines)}  device lines: {p.plan.total}  moves: {len(tp)}",
-        "bounds: " + "  ".join(f"{a} {lo:.3f}..{hi:.3f}" for a, lo, hi in zip("XYZ", low, high, strict=True)),
-        f"cut length: {tp.cut_length:.1f} mm  rapid length: {tp.rapid_length:.1f} mm",
-        f"estimated time: {int(minutes)} min {seconds:.0f} s",
-        f"warnings: {len(p.warnings)}  errors: {len(p.errors)}",
+        msg("file: {name}", name=p.name),
+        msg("lines: {lines}  device lines: {device}  moves: {moves}", lines=len(p.source_lines),
+            device=p.plan.total, moves=len(tp)),
+        msg("bounds: {bounds}", bounds=bounds),
+        msg("cut length: {cut:.1f} mm  rapid length: {rapid:.1f} mm", cut=float(tp.cut_length),
+            rapid=float(tp.rapid_length)),
+        msg("estimated time: {minutes} min {seconds:.0f} s", minutes=int(minutes), seconds=float(seconds)),
+        msg("warnings: {warnings}  errors: {errors}", warnings=len(p.warnings), errors=len(p.errors)),
     ]
-    rows += [f"warning: {d}" for d in p.warnings]
-    rows += [f"error: {d}" for d in p.errors]
+    rows = [localize(row) for row in rows]
+    rows += [localize(msg("warning: {what}", what=d.localized())) for d in p.warnings]
+    rows += [localize(msg("error: {what}", what=d.localized())) for d in p.errors]
     return "\n".join(rows) + "\n"
 
 
@@ -49,7 +57,8 @@ def _check(p: Program) -> int:
 
 def _print_diagnostics(p: Program) -> None:
     for d in p.diagnostics:
-        print(f"{p.name}: {d.severity}: {d}", file=sys.stderr)
+        severity = localize(msg(d.severity))
+        print(f"{p.name}: {severity}: {d.localized()}", file=sys.stderr)
 
 
 def _normalize(p: Program) -> int:
@@ -87,6 +96,7 @@ def _expand(p: Program, trace: bool = False) -> int:
     return 1 if p.errors else 0
 
 
+SEVERITIES = (N_("error"), N_("warning"))
 COMMANDS = {"check": _check, "normalize": _normalize, "moves": _moves, "expand": _expand}
 
 

@@ -18,6 +18,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
+from app.i18n import N_, msg
+
 from .comp_corners import GOUGE_ARC, HALF_PI, LEFT, PI, RIGHT, arc_to_arc, arc_to_line, find_turn, line_to_arc
 from .comp_corners import inside as _inside
 from .errors import LineError
@@ -26,7 +28,11 @@ from .ops import ARC_CCW, ARC_CW, FEED, RAPID, XY
 
 SMALL = 0.05  # TOLERANCE_CONCAVE_CORNER, radians
 EQUAL = 1e-6
-_TOO_SMALL = "Tool radius not less than arc radius with comp"
+_TOO_SMALL = N_("Tool radius not less than arc radius with comp")
+_GOUGE_STRAIGHT = {
+    "rapid": N_("Straight traverse in concave corner cannot be reached by the tool without gouging"),
+    "feed": N_("Straight feed in concave corner cannot be reached by the tool without gouging"),
+}
 
 
 @dataclass
@@ -84,14 +90,13 @@ class Comp:
                 if self.endpoint is not None and sweep != 0.0:
                     new = find_turn(*self.endpoint, *e["center"][:2], e["turn"], x, y)
                     if abs(new) > abs(sweep) + (0.001 if inch else 0.0254):
-                        raise LineError(0, GOUGE_ARC)
+                        raise LineError(0, msg(GOUGE_ARC))
             elif e["kind"] in ("rapid", "feed"):
                 if self.endpoint is not None:
                     dot = e["dir"][0] * (x - self.endpoint[0]) + e["dir"][1] * (y - self.endpoint[1])
                     if dot < 0:
-                        what = "traverse" if e["kind"] == "rapid" else "feed"
-                        raise LineError(0, f"Straight {what} in concave corner cannot be reached "
-                                        "by the tool without gouging")
+                        gouge = _GOUGE_STRAIGHT[e["kind"]]
+                        raise LineError(0, msg(gouge))
                 e["end"][0], e["end"][1] = x, y
         self.dequeue(ops)
         self.endpoint = (x, y)
@@ -118,7 +123,8 @@ class Comp:
         cx, cy = self.current[:2]
         px, py = target[:2]
         if math.hypot(px - cx, py - cy) <= self.radius:
-            raise LineError(0, "Length of cutter compensation entry move is not greater than the tool radius")
+            raise LineError(0, msg("Length of cutter compensation entry move is not greater "
+                                   "than the tool radius"))
         alpha = math.atan2(py - cy, px - cx) + (HALF_PI if self.side == LEFT else -HALF_PI)
         end = (px + self.radius * math.cos(alpha), py + self.radius * math.sin(alpha), target[2])
         self.endpoint = (cx, cy)
@@ -166,7 +172,7 @@ class Comp:
             if front is None or front["kind"] != "arc":
                 halfcorner = (beta + PI) / 2.0
                 if halfcorner == 0.0:
-                    raise LineError(0, "Zero degree inside corner is invalid for cutter compensation")
+                    raise LineError(0, msg("Zero degree inside corner is invalid for cutter compensation"))
                 retreat = r / math.tan(halfcorner)
                 mx = cx + retreat * math.cos(theta + gamma)
                 my = cy + retreat * math.sin(theta + gamma)
@@ -184,10 +190,11 @@ class Comp:
         ex, ey, ez = target
         r = self.radius
         if math.hypot(ex - cx, ey - cy) <= r:
-            raise LineError(0, "Radius of cutter compensation entry arc is not greater than the tool radius")
+            raise LineError(0, msg("Radius of cutter compensation entry arc is not greater "
+                                   "than the tool radius"))
         arc_radius = math.hypot(center[0] - cx, center[1] - cy)
         if arc_radius <= r and (self.side == LEFT and motion == 3 or self.side == RIGHT and motion == 2):
-            raise LineError(0, _TOO_SMALL)
+            raise LineError(0, msg(_TOO_SMALL))
         if _inside(self.side, turn):
             gamma = math.atan2(center[1] - ey, center[0] - ex)
         else:
@@ -197,7 +204,7 @@ class Comp:
         ab = math.atan2(center[1] - ey, center[0] - ex)
         a_ang = math.atan2(cy - ey, cx - ex) - ab
         if abs(math.cos(a_ang)) < EQUAL:
-            raise LineError(0, _TOO_SMALL)
+            raise LineError(0, msg(_TOO_SMALL))
         c_len = b_len / math.cos(a_ang)
         ncx, ncy = ex + c_len * math.cos(ab), ey + c_len * math.sin(ab)
         sweep = find_turn(cx, cy, ncx, ncy, turn, ex, ey)
@@ -223,7 +230,7 @@ class Comp:
         if side == LEFT and motion == 3 or side == RIGHT and motion == 2:
             gamma = math.atan2(ccy - ey, ccx - ex)
             if arc_radius <= r:
-                raise LineError(0, _TOO_SMALL)
+                raise LineError(0, msg(_TOO_SMALL))
         else:
             gamma = math.atan2(ey - ccy, ex - ccx)
             delta += PI
@@ -254,23 +261,23 @@ def _radius(state, code: float, params, column: int) -> float:
     name = f"G{code:g}"
     if code in (41.1, 42.1):
         if "D" not in params:
-            raise LineError(column, f"{name} with no D word")
+            raise LineError(column, msg("{code} with no D word", code=name))
         return params["D"].value * state.scale / 2.0
     if "D" not in params:
         number = state.tool
     else:
         d = params["D"]
         if d.value != round(d.value):
-            raise LineError(d.column, f"{name} requires D word to be a whole number")
+            raise LineError(d.column, msg("{code} requires D word to be a whole number", code=name))
         if d.value < 0:
-            raise LineError(d.column, "Negative D word tool radius index used")
+            raise LineError(d.column, msg("Negative D word tool radius index used"))
         number = int(round(d.value))
     if number == 0:
         return 0.0
     tool = state.tools.get(number)
     if tool is None:
         raise LineError(params["D"].column if "D" in params else column,
-                        f"Requested tool {number} not found in the tool table")
+                        msg("Requested tool {number} not found in the tool table", number=number))
     return tool.diameter / 2.0
 
 
@@ -285,9 +292,9 @@ def select(state, code: float, params, column: int, ops) -> None:
         state.comp = None
         return
     if state.plane != 0:
-        raise LineError(column, "Cutter radius compensation allowed only in XY plane on this machine")
+        raise LineError(column, msg("Cutter radius compensation allowed only in XY plane on this machine"))
     if state.comp is not None:
-        raise LineError(column, "Cannot turn cutter radius comp on when on")
+        raise LineError(column, msg("Cannot turn cutter radius comp on when on"))
     radius = _radius(state, code, params, column)
     side = LEFT if code in (41, 41.1) else RIGHT
     if radius < 0:

@@ -8,13 +8,16 @@ from __future__ import annotations
 
 import math
 
+from app.i18n import N_, msg
+
 from .errors import LineError
 
 LEFT, RIGHT = 1, -1
 HALF_PI, PI = math.pi / 2, math.pi
-GOUGE_ARC = "Arc move in concave corner cannot be reached by the tool without gouging"
-_GOUGE_LINE_ARC = "Arc to straight motion makes a corner the compensated tool can't fit in without gouging"
-_GOUGE_ARCS = "Arc to arc motion makes a corner the compensated tool can't fit in without gouging"
+GOUGE_ARC = N_("Arc move in concave corner cannot be reached by the tool without gouging")
+_GOUGE_LINE_ARC = N_("Arc to straight motion makes a corner the compensated tool can't fit in "
+                     "without gouging")
+_GOUGE_ARCS = N_("Arc to arc motion makes a corner the compensated tool can't fit in without gouging")
 
 
 def inside(side: int, turn: int) -> bool:
@@ -49,7 +52,7 @@ def arc_to_line(side: int, r: float, prev: dict, px, py, opx, opy):
     d = uncomp * math.cos(theta - phi)
     ratio = (d - r if tool_inside else d + r) / oldrad
     if not -1.0 <= ratio <= 1.0:
-        raise LineError(0, _GOUGE_LINE_ARC)
+        raise LineError(0, msg(_GOUGE_LINE_ARC))
     sign = 1 if (prev["turn"] > 0) != tool_inside else -1
     angle = sign * math.acos(ratio) + theta + PI
     return pcx + oldrad * math.cos(angle), pcy + oldrad * math.sin(angle)
@@ -62,13 +65,13 @@ def line_to_arc(side: int, r: float, turn, arc_radius, beta, theta, ccx, ccy):
         dist = arc_radius - r
         ratio = (cy + r) / dist
         if not -1.0 <= ratio <= 1.0:
-            raise LineError(0, GOUGE_ARC)
+            raise LineError(0, msg(GOUGE_ARC))
         angle = theta + math.asin(ratio) if turn > 0 else theta - math.asin(ratio)
     else:
         dist = arc_radius + r
         ratio = (cy - r) / dist
         if not -1.0 <= ratio <= 1.0:
-            raise LineError(0, GOUGE_ARC)
+            raise LineError(0, msg(GOUGE_ARC))
         angle = theta + PI - math.asin(ratio) if turn > 0 else theta + PI + math.asin(ratio)
     return ccx + dist * math.cos(angle), ccy + dist * math.sin(angle)
 
@@ -80,10 +83,10 @@ def arc_to_arc(side: int, r: float, prev: dict, turn, arc_radius, ccx, ccy):
     newrad = arc_radius - r if inside(side, turn) else arc_radius + r
     arc_cc = math.hypot(pcy - ccy, pcx - ccx)
     if oldrad == 0 or arc_cc == 0:
-        raise LineError(0, "Arc to arc motion is invalid because the arcs have the same center")
+        raise LineError(0, msg("Arc to arc motion is invalid because the arcs have the same center"))
     a = (oldrad ** 2 + arc_cc ** 2 - newrad ** 2) / (2 * oldrad * arc_cc)
     if not -1.0 <= a <= 1.0:
-        raise LineError(0, _GOUGE_ARCS)
+        raise LineError(0, msg(_GOUGE_ARCS))
     pullback = math.acos(a)
     cc_dir = math.atan2(ccy - pcy, ccx - pcx)
     plus = (turn > 0) == inside(side, prev["turn"])

@@ -13,6 +13,8 @@ from __future__ import annotations
 
 import math
 
+from app.i18n import msg
+
 from .errors import LineError
 from .ops import DWELL, FEED, RAPID, OpBuffer
 
@@ -38,8 +40,8 @@ def _polar_step(x: float, y: float, d_radius: float, d_theta: float) -> tuple[fl
     for grow, turn in ((d_radius, 0.0), (0.0, d_theta)):
         if grow or turn:
             if x == 0 and y == 0:
-                raise LineError(0, "Incremental motion with polar coordinates is indeterminate "
-                                "when at the origin")
+                raise LineError(0, msg("Incremental motion with polar coordinates is indeterminate "
+                                       "when at the origin"))
             theta, radius = math.atan2(y, x) + turn, math.hypot(y, x) + grow
             x, y = radius * math.cos(theta), radius * math.sin(theta)
     return x, y
@@ -71,7 +73,7 @@ def _drill(e: _Emitter, code, x, y, r, clear, bottom, p, q) -> None:
     """One hole at (x, y): the cycle-specific moves after reaching R."""
     if code in (73, 83):
         if q <= 0:
-            raise LineError(0, "negative or zero Q value used")
+            raise LineError(0, msg("negative or zero Q value used"))
         clearance = PECK_CLEARANCE_INCH * 25.4 / e.k
         depth = r - q
         while depth > bottom:
@@ -95,26 +97,28 @@ def run_cycle(state, code: int, params, line_no: int, ops: OpBuffer) -> None:
     """Expand one cycle block (``state.motion`` is still the mode before this line)."""
     if state.plane != 0:
         plane = ("XZ", "YZ")[state.plane - 1]
-        raise LineError(0, f"canned cycle G{code} in the {plane} plane is not supported (G17 only)")
+        raise LineError(0, msg("canned cycle {code} in the {plane} plane is not supported (G17 only)",
+                               code=f"G{code}", plane=plane))
     if state.feed == 0:
-        raise LineError(0, "Cannot feed with zero feed rate")
+        raise LineError(0, msg("Cannot feed with zero feed rate"))
     if state.comp is not None:
-        raise LineError(0, "Cannot use canned cycles with cutter compensation on")
+        raise LineError(0, msg("Cannot use canned cycles with cutter compensation on"))
     c = state.cycle
-    r = _sticky(state, params, code, "R", "r", "R clearance plane unspecified in cycle")
-    z = _sticky(state, params, code, "Z", "z", "Z value unspecified in XY plane canned cycle")
+    r = _sticky(state, params, code, "R", "r", msg("R clearance plane unspecified in cycle"))
+    z = _sticky(state, params, code, "Z", "z", msg("Z value unspecified in XY plane canned cycle"))
     p = q = 0.0
     if code in (82, 89):
-        p = _sticky(state, params, code, "P", "p", f"Dwell time P word missing with G{code}")
+        missing = msg("Dwell time P word missing with {code}", code=f"G{code}")
+        p = _sticky(state, params, code, "P", "p", missing)
     if code in (73, 83):
-        q = _sticky(state, params, code, "Q", "q", f"Q word missing with G{code}")
+        q = _sticky(state, params, code, "Q", "q", msg("Q word missing with {code}", code=f"G{code}"))
     repeats = 1
     if "L" in params:
         value = params["L"].value
         if value != int(value) or value < 0:
-            raise LineError(params["L"].column, f"L{value:g} is not a number of repeats")
+            raise LineError(params["L"].column, msg("{word} is not a number of repeats", word=f"L{value:g}"))
         if value == 0:
-            raise LineError(params["L"].column, "Cannot do zero repeats of cycle")
+            raise LineError(params["L"].column, msg("Cannot do zero repeats of cycle"))
         repeats = int(value)
     k = state.scale
     prog = [v / k for v in state.program_pos()]
@@ -140,7 +144,7 @@ def run_cycle(state, code: int, params, line_no: int, ops: OpBuffer) -> None:
         x, y = prog[0], prog[1]
     if rr < bottom:
         column = params["R"].column if "R" in params else 0
-        raise LineError(column, "R less than Z in cycle in XY plane")
+        raise LineError(column, msg("R less than Z in cycle in XY plane"))
     e = _Emitter(state, line_no, ops)
     if initial < rr:
         e.rapid(prog[0], prog[1], rr)

@@ -13,6 +13,8 @@ from __future__ import annotations
 from collections import Counter
 from dataclasses import dataclass, field
 
+from app.i18n import Message, localize, msg
+
 ERROR = "error"
 WARNING = "warning"
 
@@ -30,6 +32,14 @@ class Diagnostic:
     def __str__(self) -> str:
         where = f"line {self.line}" + (f", column {self.column}" if self.column else "")
         return f"{self.file + ' ' if self.file else ''}{where}: {self.message}"
+
+    def localized(self) -> str:
+        """``str(self)`` in the operator's language (``app.i18n``)."""
+        if self.column:
+            where = msg("line {line}, column {column}", line=self.line, column=self.column)
+        else:
+            where = msg("line {line}", line=self.line)
+        return f"{localize(where)}: {localize(self.message)}"
 
 
 @dataclass
@@ -68,5 +78,7 @@ class Report:
         out = sorted(self.items)
         for (severity, key), count in sorted(self.dropped.items()):
             last = max((d.line for d in self.items if d.severity == severity), default=0)
-            out.append(Diagnostic(last, 0, severity, f"... and {count} more like: {key}"))
+            like = key if isinstance(key, Message) else msg(key)
+            more = msg("... and {count} more like: {key}", count=count, key=like)
+            out.append(Diagnostic(last, 0, severity, more))
         return out

@@ -13,6 +13,8 @@ far as it can. Arcs are in ``motion.py``, cycles in ``cycles.py``, offsets in
 
 from __future__ import annotations
 
+from app.i18n import msg
+
 from . import comp, modal_state, offsets, tooling
 from .diagnostics import Report
 from .errors import LineError
@@ -35,11 +37,12 @@ def _check_letters(words: list[Word]) -> dict[str, Word]:
     params: dict[str, Word] = {}
     for w in words:
         if w.letter in REFUSED_LETTERS or w.letter not in ALLOWED_LETTERS:
-            raise LineError(w.column, REFUSED_LETTERS.get(w.letter, f"unknown word {w.letter}"))
+            raise LineError(w.column, REFUSED_LETTERS.get(w.letter) or msg("unknown word {letter}",
+                                                                           letter=w.letter))
         if w.letter in "GM":
             continue
         if w.letter in params:
-            raise LineError(w.column, f"two {w.letter} words on one line")
+            raise LineError(w.column, msg("two {letter} words on one line", letter=w.letter))
         params[w.letter] = w
     return params
 
@@ -52,14 +55,15 @@ def _check_codes(words: list[Word]) -> tuple[dict[str, tuple], dict[str, tuple]]
         if w.letter == "G":
             code = round(w.value, 4)
             if code in REFUSED_G:
-                raise LineError(w.column, f"{_gname(code)}: {REFUSED_G[code]}")
+                reason = msg(REFUSED_G[code])
+                raise LineError(w.column, msg("{code}: {reason}", code=_gname(code), reason=reason))
             if code not in G_CODES:
-                raise LineError(w.column, f"unknown G-code {_gname(code)}")
+                raise LineError(w.column, msg("unknown G-code {code}", code=_gname(code)))
             table, name = groups, G_CODES[code][0]
         elif w.letter == "M":
             code = w.value
             if code != int(code) or int(code) not in M_CODES:
-                raise LineError(w.column, f"unknown M-code M{code:g}")
+                raise LineError(w.column, msg("unknown M-code {code}", code=f"M{code:g}"))
             table, name = mgroups, M_CODES[int(code)][0]
         else:
             continue
@@ -69,8 +73,9 @@ def _check_codes(words: list[Word]) -> tuple[dict[str, tuple], dict[str, tuple]]
             continue
         if name in table:
             other = table[name][1]
-            raise LineError(w.column, f"two codes of one modal group on one line: "
-                            f"{other.letter}{other.value:g} and {w.letter}{w.value:g}")
+            first, second = f"{other.letter}{other.value:g}", f"{w.letter}{w.value:g}"
+            raise LineError(w.column, msg("two codes of one modal group on one line: {first} and {second}",
+                                          first=first, second=second))
         table[name] = (code, w)
     return groups, mgroups
 
@@ -92,34 +97,35 @@ def _spindle(state: State, mgroups, params, line_no, ops: OpBuffer, report: Repo
     kind = M_CODES[int(spin[0])][1]
     if kind == "ccw":
         report.warning(line_no, spin[1].column,
-                       "M4 (counter-clockwise) runs as M3: the spindle turns one way", "M4 runs as M3")
+                       msg("M4 (counter-clockwise) runs as M3: the spindle turns one way"), "M4 runs as M3")
     state.spindle_on = kind != "off"
     ops.add(line_no, SPINDLE, state.pos, value=(state.speed or -1.0) if state.spindle_on else 0.0)
 
 
 def _pause(line_no, column, message, ops: OpBuffer, state: State, report: Report, stop: float = 0.0) -> None:
     report.warning(line_no, column, message, message)
-    ops.add(line_no, PAUSE, state.pos, value=stop, message=f"line {line_no}: {message}")
+    ops.add(line_no, PAUSE, state.pos, value=stop,
+            message=msg("line {line}: {message}", line=line_no, message=message))
 
 
 def _tool_change(state, mgroups, params, line_no, ops, report) -> None:
     if not tooling.select(state, params):
         report.warning(line_no, params["T"].column,
-                       f"tool T{state.selected} is not in the tool table: its length and diameter read 0",
-                       "tool not in the table")
+                       msg("tool {tool} is not in the tool table: its length and diameter read 0",
+                           tool=f"T{state.selected}"), "tool not in the table")
     if "toolchange" not in mgroups:
         return
     code, word = mgroups["toolchange"]
     if state.comp is not None:
-        raise LineError(word.column, "cannot change tools with cutter radius compensation on")
+        raise LineError(word.column, msg("cannot change tools with cutter radius compensation on"))
     kind = M_CODES[int(code)][1]
     tooling.change(state, kind, params, word.column)
     if kind == "change":
         named = "T" in params or state.selected
         tool = f" T{state.selected}" if named else ""
         _pause(line_no, word.column,
-               f"tool change{tool} M6: this machine has one tool; the job pauses here", ops, state, report,
-               stop_value(6, state.selected if named else None))
+               msg("tool change{tool} M6: this machine has one tool; the job pauses here", tool=tool),
+               ops, state, report, stop_value(6, state.selected if named else None))
 
 
 def _stop(state, mgroups, line_no, ops, report) -> None:
@@ -133,8 +139,8 @@ def _stop(state, mgroups, line_no, ops, report) -> None:
         ops.add(line_no, END, state.pos)
     else:
         comp.flush(state, ops)
-        _pause(line_no, stop[1].column, f"M{code} program stop: the job pauses here", ops, state, report,
-               stop_value(code))
+        message = msg("M{code} program stop: the job pauses here", code=code)
+        _pause(line_no, stop[1].column, message, ops, state, report, stop_value(code))
 
 
 def finish_program(state: State, ops: OpBuffer) -> None:
@@ -151,7 +157,7 @@ def _modes(state: State, groups) -> None:
             _, name, value = G_CODES[groups[group][0]]
             if group == "plane" and state.comp is not None and state.plane != value:
                 raise LineError(groups[group][1].column,
-                                "Cannot change planes with cutter radius compensation on")
+                                msg("Cannot change planes with cutter radius compensation on"))
             setattr(state, name, value)
 
 
@@ -182,7 +188,8 @@ def _nonmodal(state: State, groups, params) -> None:
         elif level in (1, 10, 11, 12, 13):
             tooling.set_entry(state, int(level), params, word.column)
         else:
-            raise LineError(word.column, "Line with G10 does not have L1, L10, L11, L12, L13, L2, or L20")
+            raise LineError(word.column,
+                            msg("Line with G10 does not have L1, L10, L11, L12, L13, L2, or L20"))
     elif code in (92, 92.1, 92.2, 92.3, 52):
         offsets.axis_offsets(state, code, params, word.column)
 
@@ -222,7 +229,7 @@ def _apply(new: State, words, line_no, line_ops: OpBuffer, report) -> None:
     axes_taken = check_usage(new, groups, mgroups, params)
     if "coolant" in mgroups:
         report.warning(line_no, mgroups["coolant"][1].column,
-                       "coolant M7/M8/M9 ignored: this machine has no coolant", "coolant ignored")
+                       msg("coolant M7/M8/M9 ignored: this machine has no coolant"), "coolant ignored")
     _set_feed_speed(new, params)
     _tool_change(new, mgroups, params, line_no, line_ops, report)
     _spindle(new, mgroups, params, line_no, line_ops, report)

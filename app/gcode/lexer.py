@@ -17,14 +17,16 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+from app.i18n import msg
+
 from .diagnostics import Diagnostic
 
 _SPACE = " \t\r"
 _DIGITS = "0123456789"
 _SPECIAL = {
-    "#": "'#' parameters are not supported (a later version adds macros)",
-    "[": "'[' expressions are not supported",
-    "o": "o-words (subroutines, loops) are not supported",
+    "#": msg("'#' parameters are not supported (a later version adds macros)"),
+    "[": msg("'[' expressions are not supported"),
+    "o": msg("o-words (subroutines, loops) are not supported"),
 }
 
 
@@ -97,7 +99,7 @@ def _lead(text: str, line_no: int) -> tuple[int, LexedLine | None]:
         rest = lex_line(text[i + 1 :], line_no)
         if rest.error is None and not rest.words:
             return i, LexedLine(skip="%")
-        return i, _fail(line_no, i, "unexpected text after '%'")
+        return i, _fail(line_no, i, msg("unexpected text after '%'"))
     return i, None
 
 
@@ -114,7 +116,7 @@ def lex_line(text: str, line_no: int) -> LexedLine:
         elif c == "(":
             i = _skip_comment(text, i)
             if i < 0:
-                return _fail(line_no, text.index("("), "comment '(' is not closed on this line")
+                return _fail(line_no, text.index("("), msg("comment '(' is not closed on this line"))
         elif c == ";" or c == "*":
             break
         elif c.lower() in _SPECIAL:
@@ -124,9 +126,9 @@ def lex_line(text: str, line_no: int) -> LexedLine:
             if end < len(text) and text[end] in "#[":
                 return _fail(line_no, end, _SPECIAL[text[end]])
             if not _number_ok(token):
-                return _fail(line_no, i, f"word {c.upper()} has no number")
+                return _fail(line_no, i, msg("word {letter} has no number", letter=c.upper()))
             words.append(Word(c.upper(), float(token), i + 1))
             i = end
         else:
-            return _fail(line_no, i, f"unexpected character {c!r}")
+            return _fail(line_no, i, msg("unexpected character {char!r}", char=c))
     return LexedLine(words=words)

@@ -10,6 +10,8 @@ subprogram M73 is M70. Restoring with nothing saved is refused.
 
 from __future__ import annotations
 
+from app.i18n import msg
+
 from . import offsets
 from .errors import LineError
 from .ops import SPINDLE, OpBuffer
@@ -33,9 +35,9 @@ def apply(state, kind: str, column: int, line_no: int, ops: OpBuffer) -> None:
 def _restore(state, column: int, line_no: int, ops: OpBuffer) -> None:
     saved = state.saved
     if saved is None:
-        raise LineError(column, "Cannot restore context: no M70 or M73 saved it")
+        raise LineError(column, msg("Cannot restore context: no M70 or M73 saved it"))
     if state.comp is not None and (saved["plane"] != state.plane or saved["inch"] != state.inch):
-        raise LineError(column, "cannot change planes or units with cutter radius compensation on")
+        raise LineError(column, msg("cannot change planes or units with cutter radius compensation on"))
     for name in _FIELDS:
         setattr(state, name, saved[name])
     if saved["spindle_on"] != state.spindle_on:

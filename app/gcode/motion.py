@@ -17,6 +17,8 @@ from __future__ import annotations
 
 import math
 
+from app.i18n import msg
+
 from .arcs import ijk_error, r_center
 from .cycles import run_cycle
 from .errors import LineError
@@ -41,10 +43,10 @@ def _col(params, letters: str) -> int:
 
 def _dwell(state: State, params, line_no: int, ops: OpBuffer) -> None:
     if "P" not in params:
-        raise LineError(0, "G4 dwell needs a P word (seconds)")
+        raise LineError(0, msg("G4 dwell needs a P word (seconds)"))
     seconds = params["P"].value
     if seconds < 0:
-        raise LineError(params["P"].column, "G4 dwell time P must not be negative")
+        raise LineError(params["P"].column, msg("G4 dwell time P must not be negative"))
     ops.add(line_no, DWELL, state.pos, value=seconds)
 
 
@@ -58,7 +60,7 @@ def _motion_to_be(state: State, groups, params) -> int | None:
 def _check_usage(motion, params) -> None:
     has_axis = any(c in params for c in MOVE_WORDS)
     if has_axis and motion is None or has_axis and motion == 80:
-        raise LineError(_col(params, MOVE_WORDS), "axis word with no motion mode (G0, G1, G2 or G3)")
+        raise LineError(_col(params, MOVE_WORDS), msg("axis word with no motion mode (G0, G1, G2 or G3)"))
 
 
 def _target(state: State, params, machine: bool = False) -> list[float]:
@@ -82,7 +84,7 @@ def _target(state: State, params, machine: bool = False) -> list[float]:
         _polar(state, params, target)
     for i, c in enumerate(AXES):
         if c in params and abs(target[i]) > LIMIT_MM:
-            raise LineError(params[c].column, f"{c} coordinate out of range")
+            raise LineError(params[c].column, msg("{axis} coordinate out of range", axis=c))
     return target
 
 
@@ -94,8 +96,8 @@ def _polar(state: State, params, target) -> None:
     word = params["@"] if "@" in params else params["^"]
     radius, theta = math.hypot(x, y), math.atan2(y, x)
     if x == 0 and y == 0 and not (state.absolute and "^" in params):
-        why = ("Must specify angle in polar coordinate if at the origin" if state.absolute
-               else "Incremental motion with polar coordinates is indeterminate when at the origin")
+        why = (msg("Must specify angle in polar coordinate if at the origin") if state.absolute
+               else msg("Incremental motion with polar coordinates is indeterminate when at the origin"))
         raise LineError(word.column, why)
     if "@" in params:
         value = params["@"].value * state.scale
@@ -104,7 +106,7 @@ def _polar(state: State, params, target) -> None:
         value = math.radians(params["^"].value)
         theta = value if state.absolute else theta + value
     if abs(radius) > LIMIT_MM:
-        raise LineError(word.column, "polar radius out of range")
+        raise LineError(word.column, msg("polar radius out of range"))
     prog = off.to_program(target)
     prog[0], prog[1] = radius * math.cos(theta), radius * math.sin(theta)
     target[:] = off.to_frame(prog)
@@ -115,12 +117,13 @@ def _arc_words(state: State, params) -> None:
     name = PLANE_NAMES[state.plane]
     has_ijk = any(c in params for c in _OFFSETS)
     if "R" in params and has_ijk:
-        raise LineError(params["R"].column, "arc with both R and I/J/K words")
+        raise LineError(params["R"].column, msg("arc with both R and I/J/K words"))
     if "R" not in params and not has_ijk:
-        raise LineError(0, "R, I, J and K words all missing for arc")
+        raise LineError(0, msg("R, I, J and K words all missing for arc"))
     bad = _OFFSETS[a3]
     if "R" not in params and bad in params:
-        raise LineError(params[bad].column, f"{bad} word given for arc in {name} plane")
+        message = msg("{letter} word given for arc in {plane} plane", letter=bad, plane=name)
+        raise LineError(params[bad].column, message)
 
 
 def _turns(params, clockwise: bool) -> int:
@@ -128,7 +131,7 @@ def _turns(params, clockwise: bool) -> int:
     if "P" in params:
         p = params["P"].value
         if p != int(p) or p < 1:
-            raise LineError(params["P"].column, "arc turns P must be a whole number >= 1")
+            raise LineError(params["P"].column, msg("arc turns P must be a whole number >= 1"))
         turns = int(p)
     return -turns if clockwise else turns
 
@@ -137,26 +140,26 @@ def arc_geometry(state: State, params, start3, target, clockwise: bool):
     """(centre in the frame (3), signed turns) of the arc from ``start3`` to ``target``,
     checked with LinuxCNC's tolerances in program units; raises ``LineError``."""
     if state.arc_not_allowed:
-        raise LineError(0, "The move just after exiting cutter compensation mode must be straight, "
-                        "not an arc")
+        raise LineError(0, msg("The move just after exiting cutter compensation mode must be straight, "
+                               "not an arc"))
     _arc_words(state, params)
     a1, a2, a3 = PLANE_AXES[state.plane]
     k = state.scale
     off = state.offsets
     if off.rotation and state.plane != 0:
-        raise LineError(0, "arcs in G18/G19 are not supported in a rotated coordinate system (G10 L2 R)")
+        raise LineError(0, msg("arcs in G18/G19 are not supported in a rotated coordinate system (G10 L2 R)"))
     p_start, p_end = off.to_program(start3), off.to_program(target)
     start = (p_start[a1] / k, p_start[a2] / k)
     end = (p_end[a1] / k, p_end[a2] / k)
     if "R" in params:
         if abs(params["R"].value) * k > LIMIT_MM:
-            raise LineError(params["R"].column, "arc radius out of range")
+            raise LineError(params["R"].column, msg("arc radius out of range"))
         center, why = r_center(start, end, params["R"].value, clockwise, state.inch)
     else:
         o1 = params[_OFFSETS[a1]].value if _OFFSETS[a1] in params else 0.0
         o2 = params[_OFFSETS[a2]].value if _OFFSETS[a2] in params else 0.0
         if max(abs(o1), abs(o2)) * k > LIMIT_MM:
-            raise LineError(_col(params, _OFFSETS), "arc centre out of range")
+            raise LineError(_col(params, _OFFSETS), msg("arc centre out of range"))
         center = (o1, o2) if state.ijk_absolute else (start[0] + o1, start[1] + o2)
         why = ijk_error(start, end, center, state.inch)
     if why:

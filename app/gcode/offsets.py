@@ -20,6 +20,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
+from app.i18n import msg
+
 from .errors import LineError
 
 SYSTEM_BASE = 5201  # #5201 + 20 * n + axis: work offset n (1 = G54 .. 9 = G59.3)
@@ -75,14 +77,14 @@ def system_param(system: int, axis: int) -> int:
     return SYSTEM_BASE + 20 * system + axis
 
 
-def _no_comp(state, column: int, what: str) -> None:
+def _no_comp(state, column: int, message: str) -> None:
     if state.comp is not None:
-        raise LineError(column, f"cannot change {what} with cutter radius compensation on")
+        raise LineError(column, message)
 
 
 def select_system(state, system: int, column: int) -> None:
     """G54..G59.3: load work offset ``system`` from the parameters."""
-    _no_comp(state, column, "coordinate systems")
+    _no_comp(state, column, msg("cannot change coordinate systems with cutter radius compensation on"))
     if system == state.offsets.system:
         return
     state.offsets.system = system
@@ -97,16 +99,17 @@ def _axis_values(state, params) -> dict[int, float]:
 
 def _system_p(state, params, level: int, column: int) -> int:
     if "I" in params or "J" in params:
-        raise LineError(params.get("I", params.get("J")).column, "I J words not allowed with G10 L2")
+        raise LineError(params.get("I", params.get("J")).column, msg("I J words not allowed with G10 L2"))
     if "P" not in params:
-        raise LineError(column, f"G10 L{level} needs a P word (work offset 0-9)")
+        raise LineError(column, msg("{code} needs a P word (work offset 0-9)", code=f"G10 L{level}"))
     p = params["P"].value
     if p != int(p) or not 0 <= p <= 9:
-        raise LineError(params["P"].column, f"P value out of range (0-9) with G10 L{level}")
+        raise LineError(params["P"].column,
+                        msg("P value out of range (0-9) with {code}", code=f"G10 L{level}"))
     system = int(p) or state.offsets.system
     if state.comp is not None and system == state.offsets.system:
-        raise LineError(column, "cannot change the active coordinate system "
-                        "with cutter radius compensation on")
+        raise LineError(column, msg("cannot change the active coordinate system "
+                                    "with cutter radius compensation on"))
     return system
 
 
@@ -115,7 +118,7 @@ def set_system(state, params, level: int, column: int) -> None:
     the given values in that system, its rotation kept)."""
     system = _system_p(state, params, level, column)
     if "R" in params and level == 20:
-        raise LineError(params["R"].column, "R not allowed in G10 L20")
+        raise LineError(params["R"].column, msg("R not allowed in G10 L20"))
     off = state.offsets
     old = [state.param(system_param(system, i)) for i in range(3)]
     rotation = params["R"].value if "R" in params else state.param(system_param(system, 9))
@@ -147,12 +150,12 @@ def _write_g92(state, applied: bool, values=None) -> None:
 
 def axis_offsets(state, code: float, params, column: int) -> None:
     """G92, G92.1, G92.2, G92.3 and G52 (LinuxCNC: G52 sets the G92 offset itself)."""
-    _no_comp(state, column, "axis offsets")
+    _no_comp(state, column, msg("cannot change axis offsets with cutter radius compensation on"))
     off = state.offsets
     if code in (92, 52):
         values = _axis_values(state, params)
         if not values:
-            raise LineError(column, "All axes missing with G52 or G92")
+            raise LineError(column, msg("All axes missing with G52 or G92"))
         prog = off.to_program(state.pos)
         for axis, value in values.items():
             off.g92[axis] = prog[axis] + off.g92[axis] - value if code == 92 else value

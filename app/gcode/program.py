@@ -18,6 +18,7 @@ from pathlib import Path
 
 import numpy as np
 
+from app.i18n import msg
 from app.profile import MachineProfile
 
 from . import bulk, checks, macro, normalize, runner
@@ -200,7 +201,7 @@ def load_text(text: str, name: str = "<text>", profile: MachineProfile | None = 
     ``folder`` is where its subprogram files are looked for (none when ``None``)."""
     profile = profile or MachineProfile()
     if "\x00" in text:
-        return _empty(name, "not a text file (it contains NUL bytes)", profile)
+        return _empty(name, msg("not a text file (it contains NUL bytes)"), profile)
     data = [text.encode("utf-8", "replace")]  # a \r is a space to the fast path
     return _interpret(Lines(_split(text)), data, name, profile, tools, folder)
 
@@ -214,16 +215,17 @@ def load(path: str | Path, profile: MachineProfile | None = None, tools: dict | 
     try:
         raw = path.read_bytes()
     except OSError as exc:
-        return _empty(str(path), f"cannot read {path}: {exc.strerror or exc}", profile)
+        message = msg("cannot read {path}: {error}", path=str(path), error=str(exc.strerror or exc))
+        return _empty(str(path), message, profile)
     if b"\x00" in raw:
-        return _empty(str(path), "not a text file (it contains NUL bytes)", profile)
+        return _empty(str(path), msg("not a text file (it contains NUL bytes)"), profile)
     if not raw.isascii():  # ASCII is UTF-8; anything else must decode
         try:
             raw.decode("utf-8")
         except UnicodeDecodeError as exc:
             line = raw.count(b"\n", 0, exc.start) + 1
-            return _empty(str(path), f"not a UTF-8 text file (bad byte at line {line}, offset {exc.start})",
-                          profile)
+            return _empty(str(path), msg("not a UTF-8 text file (bad byte at line {line}, offset {offset})",
+                                         line=line, offset=exc.start), profile)
     lines = Lines(data=raw)  # split on first use, not here
     data = [raw]  # valid UTF-8: the bytes the fast path reads
     del raw

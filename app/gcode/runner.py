@@ -11,6 +11,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from app.i18n import msg
+
 from . import vector
 from .bulk import Scan
 from .diagnostics import Report
@@ -31,7 +33,7 @@ def _general(state: State, text: str, line_no: int, ops: OpBuffer, report: Repor
         report.add(lexed.error.line, lexed.error.column, lexed.error.severity, lexed.error.message)
         return state, True
     if lexed.skip == "block delete":
-        report.warning(line_no, 0, "block delete '/': line skipped", "block delete")
+        report.warning(line_no, 0, msg("block delete '/': line skipped"), "block delete")
     if lexed.skip or not lexed.words:
         return state, False
     return interpret_line(state, lexed.words, line_no, ops, report)
@@ -41,7 +43,7 @@ def _after_end(lines: list[str], start: int, end_line: int, report: Report) -> N
     for i in range(start, len(lines)):
         lexed = lex_line(lines[i], i + 1)
         if lexed.words or lexed.error:
-            report.warning(i + 1, 0, f"ignored: the program ended at line {end_line} (M2/M30)")
+            report.warning(i + 1, 0, msg("ignored: the program ended at line {line} (M2/M30)", line=end_line))
             return
 
 

@@ -15,6 +15,8 @@ import math
 
 import numpy as np
 
+from app.i18n import N_, msg
+
 from .errors import LineError
 from .offsets import rotate
 from .ops import FEED, OpBuffer
@@ -24,7 +26,7 @@ MAX_CHORDS = 100_000
 
 def _need(params, letters: str, message: str, column: int) -> None:
     if not all(c in params for c in letters):
-        raise LineError(column, message)
+        raise LineError(column, msg(message))
 
 
 def _step(state, i: float, j: float) -> tuple[float, float]:
@@ -35,12 +37,12 @@ def _step(state, i: float, j: float) -> tuple[float, float]:
 def _points(state, code: float, params, column: int, start, end):
     """The Bezier control points (frame mm, XY) of this block."""
     if code == 5.1:
-        _need(params, "IJ", "Must specify both I and J with G5.1", column)
+        _need(params, "IJ", N_("Must specify both I and J with G5.1"), column)
         di, dj = _step(state, params["I"].value, params["J"].value)
         return [start, (start[0] + di, start[1] + dj), end]
     if ("I" in params) != ("J" in params):
-        raise LineError(column, "Must specify both I and J, or neither")
-    _need(params, "PQ", "Must specify both P and Q with G5", column)
+        raise LineError(column, msg("Must specify both I and J, or neither"))
+    _need(params, "PQ", N_("Must specify both P and Q with G5"), column)
     if "I" in params:
         i, j = params["I"].value, params["J"].value
     else:
@@ -74,11 +76,11 @@ def bezier(points, t: np.ndarray) -> np.ndarray:
 def run_spline(state, code: float, params, target, line_no: int, ops: OpBuffer, column: int) -> None:
     """Expand one G5/G5.1 block into feed rows (``state.pos`` is the start)."""
     if state.plane != 0:
-        raise LineError(column, "splines are cut only in the XY plane on this machine")
+        raise LineError(column, msg("splines are cut only in the XY plane on this machine"))
     if state.comp is not None:
-        raise LineError(column, "Cannot convert spline with cutter radius compensation")
+        raise LineError(column, msg("Cannot convert spline with cutter radius compensation"))
     if state.feed == 0:
-        raise LineError(column, "Cannot make arc with zero feed rate")
+        raise LineError(column, msg("Cannot make arc with zero feed rate"))
     start, end = tuple(state.pos[:2]), tuple(target[:2])
     points = _points(state, code, params, column, start, end)
     n = chord_count(points, state.arc_tolerance)

@@ -9,6 +9,8 @@ in the table is refused as rs274 refuses it ("Requested tool N not found").
 
 from __future__ import annotations
 
+from app.i18n import msg
+
 from . import offsets
 from .errors import LineError
 from .tools import Tool, ToolError
@@ -17,7 +19,8 @@ from .tools import Tool, ToolError
 def _number(word, what: str) -> int:
     value = word.value
     if value != int(value) or value < 0:
-        raise LineError(word.column, f"{what} {value:g} is not a tool number (a whole number >= 0)")
+        raise LineError(word.column, msg("{word} {value} is not a tool number (a whole number >= 0)",
+                                         word=what, value=f"{value:g}"))
     return int(value)
 
 
@@ -27,7 +30,7 @@ def find(state, number: int, column: int) -> Tool:
         return _NO_TOOL
     tool = state.tools.get(number)
     if tool is None:
-        raise LineError(column, f"Requested tool {number} not found in the tool table")
+        raise LineError(column, msg("Requested tool {number} not found in the tool table", number=number))
     return tool
 
 
@@ -53,7 +56,7 @@ def change(state, kind: str, params, column: int) -> None:
     """M6 (the selected tool goes in) or M61 Q (the spindle holds tool Q, no pause)."""
     if kind == "set":
         if "Q" not in params:
-            raise LineError(column, "M61 needs a Q word (the tool number)")
+            raise LineError(column, msg("M61 needs a Q word (the tool number)"))
         number = _number(params["Q"], "Q")
         find(state, number, params["Q"].column)
     else:
@@ -70,7 +73,7 @@ def length_offset(state, code: float, params, column: int) -> None:
         offsets.set_tool_offset(state, [0.0, 0.0, tool.length])
     elif code == 43.1:
         if "Y" in params:
-            raise LineError(params["Y"].column, "G43.1: Y tool offset not allowed (X and Z only)")
+            raise LineError(params["Y"].column, msg("G43.1: Y tool offset not allowed (X and Z only)"))
         values = [params[c].value * state.scale if c in params else 0.0 for c in "XYZ"]
         offsets.set_tool_offset(state, values)
     else:
@@ -85,10 +88,11 @@ def _fanuc(level: int, params) -> bool:
 
 def _fanuc_entry(state, level: int, params, column: int, old) -> tuple[float, float]:
     if level in (11, 13):
-        raise LineError(column, f"G10 L{level} (Fanuc wear offset) is not supported: the tool table keeps "
-                        "no wear; set the worn value with L10 (length) or L12 (radius)")
+        raise LineError(column, msg("{code} (Fanuc wear offset) is not supported: the tool table keeps "
+                                    "no wear; set the worn value with L10 (length) or L12 (radius)",
+                                    code=f"G10 L{level}"))
     if "R" not in params:
-        raise LineError(column, f"G10 L{level} needs an R word (the value)")
+        raise LineError(column, msg("{code} needs an R word (the value)", code=f"G10 L{level}"))
     value = params["R"].value * state.scale
     return (old.diameter, value) if level == 10 else (2 * value, old.length)
 
@@ -98,11 +102,11 @@ def set_entry(state, level: int, params, column: int) -> None:
     L11 (the same in G59.3 without G92): the program's copy of the table changes.
     Fanuc's forms (R and no Z; L12, L13) are read as Fanuc means them (``_fanuc``)."""
     if "P" not in params:
-        raise LineError(column, f"G10 L{level} needs a P word (the tool number)")
+        raise LineError(column, msg("{code} needs a P word (the tool number)", code=f"G10 L{level}"))
     number = _number(params["P"], "P")
     old = find(state, number, params["P"].column)
     if number == 0:
-        raise LineError(params["P"].column, f"G10 L{level}: P0 is no tool")
+        raise LineError(params["P"].column, msg("{code}: P0 is no tool", code=f"G10 L{level}"))
     diameter, length = old.diameter, old.length
     if _fanuc(level, params):
         diameter, length = _fanuc_entry(state, level, params, column, old)
@@ -120,7 +124,7 @@ def set_entry(state, level: int, params, column: int) -> None:
     try:
         new = Tool(number, diameter, length, old.comment)
     except ToolError as exc:
-        raise LineError(column, str(exc)) from None
+        raise LineError(column, exc.args[0]) from None
     state.tools = {**state.tools, number: new}
 
 

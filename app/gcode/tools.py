@@ -18,6 +18,8 @@ import os
 from dataclasses import asdict, dataclass
 from pathlib import Path
 
+from app.i18n import Message, msg
+
 VERSION = 1
 FILE_NAME = "tools.json"
 MAX_TOOL = 99999
@@ -49,13 +51,16 @@ class Tool:
 def check_tool(number, diameter, length) -> None:
     """Raise ``ToolError`` naming the field unless every value is in range."""
     if isinstance(number, bool) or not isinstance(number, int) or not 1 <= number <= MAX_TOOL:
-        raise ToolError(f"tool number {number!r} is not a whole number 1..{MAX_TOOL}")
-    for name, value, lo, hi in (("diameter", diameter, 0.0, MAX_DIAMETER),
-                                ("length", length, -MAX_LENGTH, MAX_LENGTH)):
+        raise ToolError(msg("tool number {number!r} is not a whole number 1..{last}",
+                            number=number, last=MAX_TOOL))
+    for name, value, lo, hi in ((msg("diameter"), diameter, 0.0, MAX_DIAMETER),
+                                (msg("length"), length, -MAX_LENGTH, MAX_LENGTH)):
         if isinstance(value, bool) or not isinstance(value, int | float) or not math.isfinite(value):
-            raise ToolError(f"tool {number}: {name} {value!r} is not a number")
+            raise ToolError(msg("tool {number}: {name} {value!r} is not a number", number=number, name=name,
+                                value=value))
         if not lo <= value <= hi:
-            raise ToolError(f"tool {number}: {name} {value:g} mm is outside {lo:g}..{hi:g} mm")
+            raise ToolError(msg("tool {number}: {name} {value:g} mm is outside {lo:g}..{hi:g} mm",
+                                number=number, name=name, value=float(value), lo=lo, hi=hi))
 
 
 @dataclass(frozen=True)
@@ -74,18 +79,18 @@ def default_path() -> Path:
 def from_data(data) -> dict[int, Tool]:
     """The table from its JSON form; ``ToolError``/``ValueError`` say what is wrong."""
     if not isinstance(data, dict) or data.get("version") != VERSION:
-        raise ValueError(f"not a version {VERSION} tool table")
+        raise ValueError(msg("not a version {version} tool table", version=VERSION))
     rows = data.get("tools")
     if not isinstance(rows, list):
-        raise ValueError("no 'tools' list")
+        raise ValueError(msg("no 'tools' list"))
     table: dict[int, Tool] = {}
     for row in rows:
         if not isinstance(row, dict):
-            raise ValueError(f"tool entry {row!r} is not an object")
+            raise ValueError(msg("tool entry {row!r} is not an object", row=row))
         tool = Tool(row.get("number"), row.get("diameter", 0.0), row.get("length", 0.0),
                     str(row.get("comment", "")))
         if tool.number in table:
-            raise ToolError(f"tool {tool.number} is listed twice")
+            raise ToolError(msg("tool {number} is listed twice", number=tool.number))
         table[tool.number] = tool
     return table
 
@@ -101,11 +106,18 @@ def load_tools(path: Path) -> LoadedTools:
     except FileNotFoundError:
         return LoadedTools({})
     except (OSError, UnicodeDecodeError) as exc:
-        return LoadedTools({}, f"{path}: cannot read the tool table ({exc}); the table is empty")
+        return LoadedTools({}, msg("{path}: cannot read the tool table ({error}); the table is empty",
+                                   path=str(path), error=str(exc)))
     try:
         return LoadedTools(from_data(json.loads(text)))
     except (ValueError, TypeError) as exc:
-        return LoadedTools({}, f"{path}: the tool table is damaged ({exc}); the table is empty")
+        return LoadedTools({}, msg("{path}: the tool table is damaged ({error}); the table is empty",
+                                   path=str(path), error=_reason(exc)))
+
+
+def _reason(exc: Exception):
+    """The reason an exception gives: its core message (shown translated) or its text."""
+    return exc.args[0] if exc.args and isinstance(exc.args[0], Message) else str(exc)
 
 
 def save_tools(path: Path, tools: dict[int, Tool]) -> None:

@@ -8,6 +8,8 @@ rs274's reason. Returns whether the axis words belong to G10, G92, G52 or G43.1
 
 from __future__ import annotations
 
+from app.i18n import N_, msg
+
 from .errors import LineError
 from .words import CYCLES, MOVE_WORDS
 
@@ -26,12 +28,13 @@ def _axes_taken(groups, params) -> bool:
     nonmodal = groups.get("nonmodal", (None,))[0]
     taken = nonmodal in _AXIS_USERS or groups.get("toollength", (None,))[0] == 43.1
     if taken and "motion" in groups and any(c in params for c in MOVE_WORDS):
-        raise LineError(groups["motion"][1].column, "Cannot use two G codes that both use axis values")
+        raise LineError(groups["motion"][1].column, msg("Cannot use two G codes that both use axis values"))
     return taken
 
 
 def _refuse(params, letter: str, users: str) -> None:
-    raise LineError(params[letter].column, f"{letter} word with no {users} to use it")
+    raise LineError(params[letter].column, msg("{letter} word with no {users} to use it", letter=letter,
+                                               users=msg(users)))
 
 
 def check_usage(state, groups, mgroups, params) -> bool:
@@ -46,31 +49,33 @@ def check_usage(state, groups, mgroups, params) -> bool:
     m61 = mgroups.get("toolchange", (None,))[0] == 61
     if nonmodal == 53:
         if motion not in (0, 1):
-            raise LineError(groups["nonmodal"][1].column, "Must use G0 or G1 with G53")
+            raise LineError(groups["nonmodal"][1].column, msg("Must use G0 or G1 with G53"))
         distance = groups.get("distance", (None,))[0]
         if distance == 91 or distance is None and not state.absolute:
-            raise LineError(groups["nonmodal"][1].column, "Cannot use G53 incremental")
+            raise LineError(groups["nonmodal"][1].column, msg("Cannot use G53 incremental"))
         if state.comp is not None:
-            raise LineError(groups["nonmodal"][1].column, "Cannot use G53 with cutter radius compensation on")
+            raise LineError(groups["nonmodal"][1].column,
+                            msg("Cannot use G53 with cutter radius compensation on"))
         if "@" in params or "^" in params:
-            raise LineError(groups["nonmodal"][1].column, "Cannot use polar coordinates with G53")
+            raise LineError(groups["nonmodal"][1].column, msg("Cannot use polar coordinates with G53"))
     if ("@" in params or "^" in params) and ("X" in params or "Y" in params):
         letter = "X" if "X" in params else "Y"
-        raise LineError(params[letter].column, f"Cannot specify both polar coordinate and {letter} word")
+        raise LineError(params[letter].column, msg("Cannot specify both polar coordinate and {letter} word",
+                                                   letter=letter))
 
     for letter in "IJK":
         if letter in params and not (arc or spline and letter != "K"):
-            _refuse(params, letter, "G2, G3, G5 or G5.1")
+            _refuse(params, letter, N_("G2, G3, G5 or G5.1"))
     if "R" in params and not (arc or cycle or g10):
-        _refuse(params, "R", "G2, G3, G10 or canned cycle")
+        _refuse(params, "R", N_("G2, G3, G10 or canned cycle"))
     if "P" in params and not (arc or cycle or g10 or pathmode or nonmodal == 4 or motion == 5):
-        _refuse(params, "P", "G4, G2, G3, G5, G10, G64 or canned cycle")
+        _refuse(params, "P", N_("G4, G2, G3, G5, G10, G64 or canned cycle"))
     if "Q" in params and not (motion in (73, 83, 5) or m61 or pathmode):
-        _refuse(params, "Q", "G5, G64, G73, G83 or M61")
+        _refuse(params, "Q", N_("G5, G64, G73, G83 or M61"))
     if "L" in params and not (cycle or g10):
-        _refuse(params, "L", "G10 or canned cycle")
+        _refuse(params, "L", N_("G10 or canned cycle"))
     if "D" in params and groups.get("cutter", (None,))[0] not in (41, 42, 41.1, 42.1):
-        _refuse(params, "D", "G41, G41.1, G42 or G42.1")
+        _refuse(params, "D", N_("G41, G41.1, G42 or G42.1"))
     if "H" in params and groups.get("toollength", (None,))[0] != 43:
         _refuse(params, "H", "G43")
     return taken

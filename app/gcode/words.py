@@ -8,6 +8,8 @@ rs274ngc's modal groups; a line may hold one code of each.
 
 from __future__ import annotations
 
+from app.i18n import N_, msg
+
 CYCLES = (73, 81, 82, 83, 85, 89)
 
 G_CODES: dict[float, tuple[str, str | None, object]] = {
@@ -57,36 +59,36 @@ G_CODES: dict[float, tuple[str, str | None, object]] = {
     8: ("lathe", None, None),
 }
 
-_LATHE = "is a lathe code: this machine is a mill"
-_SPINDLE_SYNC = ("spindle-synchronised motion needs a spindle encoder in the motion loop, "
-                 "which this machine has not")
+_SPINDLE_SYNC = N_("spindle-synchronised motion needs a spindle encoder in the motion loop, "
+                    "which this machine has not")
 REFUSED_G: dict[float, str] = {
-    7: f"G7 (diameter mode) {_LATHE}",
+    7: N_("G7 (diameter mode) is a lathe code: this machine is a mill"),
     33: _SPINDLE_SYNC,
     33.1: _SPINDLE_SYNC,
     76: _SPINDLE_SYNC,
-    **{g: "probing (G38.x) needs a probe input, which this machine has not"
+    **{g: N_("probing (G38.x) needs a probe input, which this machine has not")
        for g in (38.2, 38.3, 38.4, 38.5)},
-    70: f"G70 (finishing cycle) {_LATHE}",
-    71: f"G71 (roughing cycle) {_LATHE}",
-    71.1: f"G71.1 (roughing cycle) {_LATHE}",
-    71.2: f"G71.2 (roughing cycle) {_LATHE}",
-    72: f"G72 (facing cycle) {_LATHE}",
-    72.1: f"G72.1 (facing cycle) {_LATHE}",
-    72.2: f"G72.2 (facing cycle) {_LATHE}",
-    74: "G74 (left-hand tapping) needs a spindle that reverses in step with Z: this one cannot",
-    84: "G84 (tapping) needs a spindle that reverses in step with Z: this one cannot",
-    86: "G86 (boring, spindle stop) needs a spindle stop and restart inside the cycle: not on this machine",
-    87: "G87 (back boring) needs spindle orientation: not on this machine",
-    88: "G88 (boring, manual retract) needs an operator retract inside the cycle: not on this machine",
-    93: "inverse-time feed G93 is not supported (use G94)",
-    95: "feed per revolution G95 is not supported (use G94)",
-    96: "constant surface speed G96 is not supported (use G97)",
-    28: "G28 (go to a stored position) is not supported",
-    30: "G30 (go to a stored position) is not supported",
-    43.2: "additive tool length offset G43.2 is not supported (use G43 or G43.1)",
-    5.2: "NURBS G5.2 are not supported (G5 cubic and G5.1 quadratic splines are)",
-    5.3: "NURBS G5.3 are not supported (G5 cubic and G5.1 quadratic splines are)",
+    70: N_("G70 (finishing cycle) is a lathe code: this machine is a mill"),
+    71: N_("G71 (roughing cycle) is a lathe code: this machine is a mill"),
+    71.1: N_("G71.1 (roughing cycle) is a lathe code: this machine is a mill"),
+    71.2: N_("G71.2 (roughing cycle) is a lathe code: this machine is a mill"),
+    72: N_("G72 (facing cycle) is a lathe code: this machine is a mill"),
+    72.1: N_("G72.1 (facing cycle) is a lathe code: this machine is a mill"),
+    72.2: N_("G72.2 (facing cycle) is a lathe code: this machine is a mill"),
+    74: N_("G74 (left-hand tapping) needs a spindle that reverses in step with Z: this one cannot"),
+    84: N_("G84 (tapping) needs a spindle that reverses in step with Z: this one cannot"),
+    86: N_("G86 (boring, spindle stop) needs a spindle stop and restart inside the cycle: "
+           "not on this machine"),
+    87: N_("G87 (back boring) needs spindle orientation: not on this machine"),
+    88: N_("G88 (boring, manual retract) needs an operator retract inside the cycle: not on this machine"),
+    93: N_("inverse-time feed G93 is not supported (use G94)"),
+    95: N_("feed per revolution G95 is not supported (use G94)"),
+    96: N_("constant surface speed G96 is not supported (use G97)"),
+    28: N_("G28 (go to a stored position) is not supported"),
+    30: N_("G30 (go to a stored position) is not supported"),
+    43.2: N_("additive tool length offset G43.2 is not supported (use G43 or G43.1)"),
+    5.2: N_("NURBS G5.2 are not supported (G5 cubic and G5.1 quadratic splines are)"),
+    5.3: N_("NURBS G5.3 are not supported (G5 cubic and G5.1 quadratic splines are)"),
 }
 
 M_CODES: dict[int, tuple[str, str]] = {
@@ -111,8 +113,8 @@ M_CODES: dict[int, tuple[str, str]] = {
 
 ALLOWED_LETTERS = set("GMXYZIJKFSPRTNDHLQ@^")
 REFUSED_LETTERS = {
-    **{c: f"axis {c} is not on this machine (it has X, Y and Z)" for c in "ABCUVW"},
-    "E": "E words are not supported",
+    **{c: msg("axis {axis} is not on this machine (it has X, Y and Z)", axis=c) for c in "ABCUVW"},
+    "E": msg("{letter} words are not supported", letter="E"),
 }
 AXES = "XYZ"
 MOVE_WORDS = "XYZ@^"  # the words that make a line move (polar @ radius, ^ angle)

@@ -3,7 +3,7 @@ Connect / Disconnect, the link indicator and the machine's state."""
 
 from __future__ import annotations
 
-from PySide6.QtCore import Signal
+from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, QEvent, Signal
 from PySide6.QtWidgets import QComboBox, QHBoxLayout, QLabel, QPushButton, QWidget
 
 from app.ui.ports import available_ports
@@ -15,6 +15,31 @@ LINK_COLOURS = {
     "LOST": "#ff3030",
     "DISCONNECTED": "#808080",
     "CONNECTING": "#5fa8d3",
+}
+
+# Words shown for codes of the protocol (translated where shown).
+LINK_STATES = {
+    "CONNECTED": QT_TRANSLATE_NOOP("LinkState", "connected"),
+    "DEGRADED": QT_TRANSLATE_NOOP("LinkState", "degraded"),
+    "LOST": QT_TRANSLATE_NOOP("LinkState", "lost"),
+    "DISCONNECTED": QT_TRANSLATE_NOOP("LinkState", "disconnected"),
+    "CONNECTING": QT_TRANSLATE_NOOP("LinkState", "connecting"),
+}
+MACHINE_STATES = {
+    "IDLE": QT_TRANSLATE_NOOP("MachineState", "IDLE"),
+    "HOMING": QT_TRANSLATE_NOOP("MachineState", "HOMING"),
+    "RUN": QT_TRANSLATE_NOOP("MachineState", "RUN"),
+    "HOLD": QT_TRANSLATE_NOOP("MachineState", "HOLD"),
+    "JOG": QT_TRANSLATE_NOOP("MachineState", "JOG"),
+    "ALARM": QT_TRANSLATE_NOOP("MachineState", "ALARM"),
+}
+FLAG_WORDS = {
+    "H": QT_TRANSLATE_NOOP("MachineFlags", "homed"),
+    "C": QT_TRANSLATE_NOOP("MachineFlags", "cover open"),
+    "L": QT_TRANSLATE_NOOP("MachineFlags", "host lost"),
+    "U": QT_TRANSLATE_NOOP("MachineFlags", "UART lost"),
+    "P": QT_TRANSLATE_NOOP("MachineFlags", "spindle"),
+    "S": QT_TRANSLATE_NOOP("MachineFlags", "SD"),
 }
 
 
@@ -39,6 +64,11 @@ class PortCombo(QComboBox):
         elif current:
             self.setEditText(current)
 
+    def changeEvent(self, event) -> None:  # noqa: N802 (Qt override)
+        if event.type() == QEvent.Type.LanguageChange:
+            self.refresh()
+        super().changeEvent(event)
+
     def showPopup(self) -> None:  # noqa: N802 (Qt override)
         self.refresh()
         super().showPopup()
@@ -60,19 +90,37 @@ class ConnectionBar(QWidget):
         for rate in BAUDS:
             self.baud.addItem(str(rate), rate)
         self.baud.setCurrentText("115200")
-        self.button = QPushButton("Connect")
+        self.button = QPushButton()
         self.button.clicked.connect(self._clicked)
         self.link = QLabel()
         self.state = QLabel("—")
         self.state.setMinimumWidth(160)
+        self.port_label, self.baud_label, self.machine_label = QLabel(), QLabel(), QLabel()
         layout = QHBoxLayout(self)
         layout.setContentsMargins(4, 0, 4, 0)
-        for widget in (QLabel("Port"), self.ports, QLabel("Baud"), self.baud, self.button, self.link):
+        for widget in (self.port_label, self.ports, self.baud_label, self.baud, self.button, self.link):
             layout.addWidget(widget)
-        layout.addWidget(QLabel("Machine:"))
+        layout.addWidget(self.machine_label)
         layout.addWidget(self.state)
         self.connected = False
-        self.set_link("DISCONNECTED")
+        self._link_shown = ("DISCONNECTED", "")
+        self._state_shown = ("—", "")
+        self.retranslate_ui()
+
+    def retranslate_ui(self) -> None:
+        self.port_label.setText(self.tr("Port"))
+        self.baud_label.setText(self.tr("Baud"))
+        self.machine_label.setText(self.tr("Machine:"))
+        self.set_connected(self.connected)
+        self.set_link(*self._link_shown)
+        state, flags = self._state_shown
+        self._state_shown = None
+        self.set_machine_state(state, flags)
+
+    def changeEvent(self, event) -> None:  # noqa: N802 (Qt override)
+        if event.type() == QEvent.Type.LanguageChange:
+            self.retranslate_ui()
+        super().changeEvent(event)
 
     def _clicked(self) -> None:
         if self.connected:
@@ -82,18 +130,23 @@ class ConnectionBar(QWidget):
 
     def set_connected(self, connected: bool) -> None:
         self.connected = connected
-        self.button.setText("Disconnect" if connected else "Connect")
+        self.button.setText(self.tr("Disconnect") if connected else self.tr("Connect"))
         self.ports.setEnabled(not connected)
         self.baud.setEnabled(not connected)
 
     def set_link(self, state: str, detail: str = "") -> None:
+        """``detail`` is shown as it is: the caller translates it."""
+        self._link_shown = (state, detail)
         colour = LINK_COLOURS.get(state, "#808080")
-        text = state.lower() + (f" ({detail})" if detail else "")
-        self.link.setText(f"<span style='color:{colour}; font-size:14pt'>●</span> link {text}")
-        self.link.setToolTip(detail or state)
+        name = QCoreApplication.translate("LinkState", LINK_STATES.get(state, state))
+        text = self.tr("link %1").replace("%1", name) + (f" ({detail})" if detail else "")
+        self.link.setText(f"<span style='color:{colour}; font-size:14pt'>●</span> {text}")
+        self.link.setToolTip(detail or name)
 
     def set_machine_state(self, state: str, flags: str = "") -> None:
-        words = {"H": "homed", "C": "cover open", "L": "host lost", "U": "UART lost",
-                 "P": "spindle", "S": "SD"}
-        extra = [words[f] for f in flags if f in words]
-        self.state.setText(state + (f" · {', '.join(extra)}" if extra else ""))
+        if (state, flags) == self._state_shown and self.state.text():
+            return
+        self._state_shown = (state, flags)
+        extra = [QCoreApplication.translate("MachineFlags", FLAG_WORDS[f]) for f in flags if f in FLAG_WORDS]
+        shown = QCoreApplication.translate("MachineState", MACHINE_STATES.get(state, state))
+        self.state.setText(shown + (f" · {', '.join(extra)}" if extra else ""))

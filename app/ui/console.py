@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from collections import deque
 
-from PySide6.QtCore import QTimer, Signal
+from PySide6.QtCore import QEvent, QTimer, Signal
 from PySide6.QtGui import QFontDatabase
 from PySide6.QtWidgets import (
     QCheckBox,
@@ -21,6 +21,9 @@ from PySide6.QtWidgets import (
     QVBoxLayout,
     QWidget,
 )
+
+from app.i18n import localize
+from app.ui.numbers import decimal, fill, integer
 
 MAX_LINES = 4000
 NOISY_KINDS = frozenset("SAFD")  # status and stream frames, hidden unless asked for
@@ -35,18 +38,17 @@ class ConsoleView(QWidget):
         self.log = QPlainTextEdit(readOnly=True)
         self.log.setMaximumBlockCount(MAX_LINES)
         self.log.setFont(QFontDatabase.systemFont(QFontDatabase.SystemFont.FixedFont))
-        self.filter = QLineEdit(placeholderText="filter (text)")
+        self.filter = QLineEdit()
         self.show_tx = QCheckBox("TX", checked=True)
         self.show_rx = QCheckBox("RX", checked=True)
-        self.show_stream = QCheckBox("stream/status frames", checked=False)
-        self.pause = QCheckBox("pause scrolling")
-        self.counters = QLabel("resends 0 (0.0 %)")
-        hint = "MDI: a G-code line (G0 X10) or a command (HOME, SD LIST, GET KP_X)"
-        self.mdi = QLineEdit(placeholderText=hint)
+        self.show_stream = QCheckBox(checked=False)
+        self.pause = QCheckBox()
+        self.counters = QLabel()
+        self.mdi = QLineEdit()
         self.mdi.returnPressed.connect(self._submit)
-        send = QPushButton("Send")
+        send = self.send = QPushButton()
         send.clicked.connect(self._submit)
-        clear = QPushButton("Clear")
+        clear = self.clear = QPushButton()
         clear.clicked.connect(self.log.clear)
         top = QHBoxLayout()
         for widget in (self.filter, self.show_tx, self.show_rx, self.show_stream):
@@ -64,6 +66,27 @@ class ConsoleView(QWidget):
         self.mdi_history: list[str] = []
         self.timer = QTimer(self, interval=100, timeout=self.flush)
         self.timer.start()
+        self._resends_shown = None
+        self._resends = (0, 0.0, False)
+        self.retranslate_ui()
+
+    def retranslate_ui(self) -> None:
+        self.filter.setPlaceholderText(self.tr("filter (text)"))
+        self.show_tx.setToolTip(self.tr("frames sent to the machine"))
+        self.show_rx.setToolTip(self.tr("frames received from the machine"))
+        self.show_stream.setText(self.tr("stream/status frames"))
+        self.pause.setText(self.tr("pause scrolling"))
+        hint = self.tr("MDI: a G-code line (G0 X10) or a command (HOME, SD LIST, GET KP_X)")
+        self.mdi.setPlaceholderText(hint)
+        self.send.setText(self.tr("Send"))
+        self.clear.setText(self.tr("Clear"))
+        self._resends_shown = None
+        self.set_resends(*self._resends)
+
+    def changeEvent(self, event) -> None:  # noqa: N802 (Qt override)
+        if event.type() == QEvent.Type.LanguageChange:
+            self.retranslate_ui()
+        super().changeEvent(event)
 
     def add_frame(self, direction: str, kind: str, text: str, ok: bool = True) -> None:
         if not self._passes(direction, kind, text):
@@ -73,9 +96,9 @@ class ConsoleView(QWidget):
 
     def add_log(self, level: str, text: str, source: str = "host") -> None:
         needle = self.filter.text().strip().lower()
-        if needle and needle not in text.lower():
+        if needle and needle not in text.lower() and needle not in localize(text).lower():
             return
-        self._pending.append(f"# {source} {level}: {text}")
+        self._pending.append(f"# {source} {level}: {localize(text)}")
 
     def _passes(self, direction: str, kind: str, text: str) -> bool:
         if (direction == "tx" and not self.show_tx.isChecked()) or (
@@ -98,11 +121,12 @@ class ConsoleView(QWidget):
 
     def set_resends(self, resends: int, rate: float, warning: bool = False) -> None:
         key = (resends, round(rate, 3), warning)
-        if key == getattr(self, "_resends_shown", None):
+        if key == self._resends_shown:
             return
-        self._resends_shown = key
+        self._resends_shown, self._resends = key, (resends, rate, warning)
         colour = "#e05050" if warning else "palette(window-text)"
-        self.counters.setText(f"<span style='color:{colour}'>resends {resends} ({rate * 100:.1f} %)</span>")
+        text = fill(self.tr("resends %1 (%2 %)"), integer(resends), decimal(rate * 100, 1))
+        self.counters.setText(f"<span style='color:{colour}'>{text}</span>")
 
     def _submit(self) -> None:
         text = self.mdi.text().strip()

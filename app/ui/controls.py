@@ -3,7 +3,7 @@ check mode. Emits requests; ``set_state`` enables what makes sense now."""
 
 from __future__ import annotations
 
-from PySide6.QtCore import Signal
+from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, QEvent, Signal
 from PySide6.QtWidgets import (
     QCheckBox,
     QGridLayout,
@@ -17,6 +17,24 @@ from PySide6.QtWidgets import (
 )
 
 from app.ui.jog_panel import JogPanel
+from app.ui.numbers import integer
+
+# key: (label, tooltip), translated in the "MachineControls" context.
+BUTTON_TEXTS = {
+    "home": (QT_TRANSLATE_NOOP("MachineControls", "Home"), ""),
+    "home_recover": (
+        QT_TRANSLATE_NOOP("MachineControls", "Home (recover)"),
+        QT_TRANSLATE_NOOP("MachineControls", "after a fault: first move away from the switches, then home"),
+    ),
+    "start": (QT_TRANSLATE_NOOP("MachineControls", "Start"), ""),
+    "pause": (QT_TRANSLATE_NOOP("MachineControls", "Pause"),
+              QT_TRANSLATE_NOOP("MachineControls", "feed hold, at once")),
+    "resume": (QT_TRANSLATE_NOOP("MachineControls", "Resume"), ""),
+    "stop": (QT_TRANSLATE_NOOP("MachineControls", "STOP"),
+             QT_TRANSLATE_NOOP("MachineControls", "stop and flush, at once")),
+    "spindle_on": (QT_TRANSLATE_NOOP("MachineControls", "On"), ""),
+    "spindle_off": (QT_TRANSLATE_NOOP("MachineControls", "Off"), ""),
+}
 
 
 class MachineControls(QWidget):
@@ -39,9 +57,30 @@ class MachineControls(QWidget):
         layout.addWidget(self._spindle_box())
         layout.addWidget(self._zero_box())
         layout.addStretch(1)
+        self._rpm_measured: int | None = None
         self.set_state(connected=False, busy=False, paused=False, has_program=False)
+        self.retranslate_ui()
+
+    def retranslate_ui(self) -> None:
+        for key, (text, tip) in BUTTON_TEXTS.items():
+            self.buttons[key].setText(QCoreApplication.translate("MachineControls", text))
+            self.buttons[key].setToolTip(QCoreApplication.translate("MachineControls", tip) if tip else "")
+        self.job_box.setTitle(self.tr("Job"))
+        self.check_mode.setText(self.tr("Check mode (dry run, no motion)"))
+        self.spindle_box.setTitle(self.tr("Spindle"))
+        self.rpm.setSuffix(self.tr(" rpm"))
+        self.zero_box.setTitle(self.tr("Work zero (here)"))
+        self.rpm_label.clear()
+        self.set_rpm(self._rpm_measured)
+
+    def changeEvent(self, event) -> None:  # noqa: N802 (Qt override)
+        if event.type() == QEvent.Type.LanguageChange:
+            self.retranslate_ui()
+        super().changeEvent(event)
 
     def _button(self, key: str, text: str, slot, tip: str = "") -> QPushButton:
+        """A button; its label and tip come from BUTTON_TEXTS when ``key`` is there, else
+        pass them already translated (``self.tr``)."""
         button = QPushButton(text)
         button.setToolTip(tip)
         button.clicked.connect(slot)
@@ -49,23 +88,20 @@ class MachineControls(QWidget):
         return button
 
     def _job_box(self) -> QGroupBox:
-        box = QGroupBox("Job")
+        box = self.job_box = QGroupBox()
         grid = QGridLayout(box)
-        grid.addWidget(self._button("home", "Home", lambda: self.home_requested.emit("NORMAL")), 0, 0)
-        recover = self._button(
-            "home_recover", "Home (recover)", lambda: self.home_requested.emit("RECOVER"),
-            "after a fault: first move away from the switches, then home",
-        )
+        grid.addWidget(self._button("home", "", lambda: self.home_requested.emit("NORMAL")), 0, 0)
+        recover = self._button("home_recover", "", lambda: self.home_requested.emit("RECOVER"))
         grid.addWidget(recover, 0, 1)
-        grid.addWidget(self._button("start", "Start", self.start_requested.emit), 1, 0)
-        pause = self._button("pause", "Pause", self.pause_requested.emit, "feed hold, at once")
+        grid.addWidget(self._button("start", "", self.start_requested.emit), 1, 0)
+        pause = self._button("pause", "", self.pause_requested.emit)
         grid.addWidget(pause, 1, 1)
-        grid.addWidget(self._button("resume", "Resume", self.resume_requested.emit), 2, 0)
-        stop = self._button("stop", "STOP", self.stop_requested.emit, "stop and flush, at once")
+        grid.addWidget(self._button("resume", "", self.resume_requested.emit), 2, 0)
+        stop = self._button("stop", "", self.stop_requested.emit)
         stop.setStyleSheet("QPushButton { font-weight: bold; color: #e03030; }"
                            " QPushButton:disabled { color: #808080; }")
         grid.addWidget(stop, 2, 1)
-        self.check_mode = QCheckBox("Check mode (dry run, no motion)")
+        self.check_mode = QCheckBox()
         self.check_mode.toggled.connect(self.check_mode_toggled.emit)
         grid.addWidget(self.check_mode, 3, 0, 1, 2)
         self.optional_stop = QCheckBox(self.tr("Optional stop (M01 holds the job)"))
@@ -77,22 +113,21 @@ class MachineControls(QWidget):
         return box
 
     def _spindle_box(self) -> QGroupBox:
-        box = QGroupBox("Spindle")
+        box = self.spindle_box = QGroupBox()
         row = QHBoxLayout(box)
         self.rpm = QSpinBox()
         self.rpm.setRange(0, 30000)
         self.rpm.setSingleStep(100)
         self.rpm.setValue(3000)
-        self.rpm.setSuffix(" rpm")
-        self.rpm_label = QLabel("measured —")
+        self.rpm_label = QLabel()
         row.addWidget(self.rpm)
-        row.addWidget(self._button("spindle_on", "On", lambda: self.spindle_requested.emit(self.rpm.value())))
-        row.addWidget(self._button("spindle_off", "Off", lambda: self.spindle_requested.emit(0)))
+        row.addWidget(self._button("spindle_on", "", lambda: self.spindle_requested.emit(self.rpm.value())))
+        row.addWidget(self._button("spindle_off", "", lambda: self.spindle_requested.emit(0)))
         row.addWidget(self.rpm_label)
         return box
 
     def _zero_box(self) -> QGroupBox:
-        box = QGroupBox("Work zero (here)")
+        box = self.zero_box = QGroupBox()
         row = QHBoxLayout(box)
         for axes in ("X", "Y", "Z", "XY", "XYZ"):
             row.addWidget(self._button(f"zero_{axes}", axes, lambda _=False, a=axes: self._zero(a)))
@@ -115,5 +150,11 @@ class MachineControls(QWidget):
         self.check_mode.setEnabled(idle)
         self.override_travel.setEnabled(idle and self.check_mode.isChecked())
 
-    def set_rpm(self, rpm: int) -> None:
-        self.rpm_label.setText(f"measured {rpm} rpm")
+    def set_rpm(self, rpm: int | None) -> None:
+        if rpm == self._rpm_measured and self.rpm_label.text():
+            return
+        self._rpm_measured = rpm
+        if rpm is None:
+            self.rpm_label.setText(self.tr("measured —"))
+        else:
+            self.rpm_label.setText(self.tr("measured %1 rpm").replace("%1", integer(rpm)))

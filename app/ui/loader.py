@@ -24,9 +24,11 @@ import time
 from dataclasses import dataclass
 from pathlib import Path
 
-from PySide6.QtCore import QObject, Signal
+from PySide6.QtCore import QCoreApplication, QObject, Signal
 
 from app.gcode import workers
+from app.i18n import localize
+from app.ui.numbers import fill
 from app.ui.preview.model import PreviewModel, screen_tolerance
 
 SNIFF_BYTES = 4096
@@ -82,7 +84,8 @@ class ProgramLoader(QObject):
             return
         except Exception as exc:  # a bug must not leave the operator waiting forever
             self.busy = False
-            self.failed.emit(str(path), f"{path.name} could not be loaded: {type(exc).__name__}: {exc}")
+            said = QCoreApplication.translate("Loader", "%1 could not be loaded: %2")
+            self.failed.emit(str(path), fill(said, path.name, f"{type(exc).__name__}: {exc}"))
             return
         self.busy = False
         self.loaded.emit(result)
@@ -132,7 +135,8 @@ def load_program(path: Path, tolerance: float = 0.01, view_size=None, tools=None
     try:
         program = load(path, tools=tools)
     except (OSError, UnicodeError, ValueError) as exc:
-        raise LoadError(f"{path.name} could not be read as G-code: {exc}") from None
+        said = QCoreApplication.translate("Loader", "%1 could not be read as G-code: %2")
+        raise LoadError(fill(said, path.name, exc)) from None
     loaded = time.perf_counter()
     _check_runnable(path, program)
     size = view_size or DEFAULT_VIEW
@@ -146,11 +150,15 @@ def _sniff(path: Path) -> None:
         with path.open("rb") as file:
             head = file.read(SNIFF_BYTES)
     except FileNotFoundError:
-        raise LoadError(f"{path} does not exist (moved or deleted?).") from None
+        said = QCoreApplication.translate("Loader", "%1 does not exist (moved or deleted?).")
+        raise LoadError(fill(said, path)) from None
     except OSError as exc:
-        raise LoadError(f"{path} cannot be opened: {exc.strerror or exc}.") from None
+        said = QCoreApplication.translate("Loader", "%1 cannot be opened: %2.")
+        raise LoadError(fill(said, path, exc.strerror or exc)) from None
     if b"\0" in head or _mostly_binary(head):
-        raise LoadError(f"{path.name} is not a G-code file (it holds binary data, such as an image).")
+        said = QCoreApplication.translate("Loader",
+                                          "%1 is not a G-code file (it holds binary data, such as an image).")
+        raise LoadError(fill(said, path.name))
 
 
 def _mostly_binary(head: bytes) -> bool:
@@ -164,7 +172,13 @@ def _check_runnable(path: Path, program) -> None:
     errors = list(program.errors)
     if len(program.toolpath) == 0 and errors:
         first = errors[0]
-        raise LoadError(
-            f"{path.name} does not look like G-code: nothing in it can be run "
-            f"({len(errors)} errors; first, line {first.line}: {first.message})."
-        )
+        said = LoaderTexts().not_gcode(len(errors))
+        raise LoadError(fill(said, path.name, first.line, localize(first.message)))
+
+
+class LoaderTexts(QObject):
+    """Texts with plurals (``self.tr`` lets lupdate see them)."""
+
+    def not_gcode(self, errors: int) -> str:
+        return self.tr("%1 does not look like G-code: nothing in it can be run "
+                       "(%n error(s); first, line %2: %3).", "", errors)

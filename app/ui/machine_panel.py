@@ -9,7 +9,7 @@ no panel (a real board) it says so and disables itself.
 from __future__ import annotations
 
 import numpy as np
-from PySide6.QtCore import Qt, QTimer
+from PySide6.QtCore import QEvent, Qt, QTimer
 from PySide6.QtGui import QImage, QPixmap
 from PySide6.QtWidgets import QCheckBox, QGridLayout, QHBoxLayout, QLabel, QPushButton, QVBoxLayout, QWidget
 
@@ -33,13 +33,13 @@ class MachinePanelView(QWidget):
         super().__init__(parent)
         self.panel = None
         self._last_frame: bytes | None = None
-        self.oled = QLabel("no machine panel (connect to the built-in simulator)")
+        self.oled = QLabel()
         self.oled.setAlignment(Qt.AlignmentFlag.AlignCenter)
         self.oled.setMinimumSize(128 * SCALE + 8, 64 * SCALE + 8)
         self.oled.setStyleSheet("background: black; color: #888; border: 2px solid #444;")
         self.led = QLabel()
         self.buzzer = QLabel()
-        self.cover = QCheckBox("Cover open")
+        self.cover = QCheckBox()
         self.cover.toggled.connect(self._cover_toggled)
         self.buttons = {name: self._button(name) for name in BUTTONS + RESETS}
         layout = QVBoxLayout(self)
@@ -51,7 +51,24 @@ class MachinePanelView(QWidget):
         layout.addLayout(indicators)
         layout.addStretch(1)
         self.timer = QTimer(self, interval=100, timeout=self.refresh)
+        self._indicators = (False, False)
         self.set_panel(None)
+        self.retranslate_ui()
+
+    def retranslate_ui(self) -> None:
+        self.cover.setText(self.tr("Cover open"))
+        self.cover.setToolTip(self.tr("the cover switch: while open the machine refuses every motion"))
+        self.oled.setToolTip(self.tr("the machine's 128 x 64 OLED (its 5x7 font is ASCII only)"))
+        for name in RESETS:
+            self.buttons[name].setToolTip(self.tr("MRESET: resets the main board; RESET: the motion board"))
+        if self.panel is None:
+            self.oled.setText(self.tr("no machine panel (connect to the built-in simulator)"))
+        self._set_indicators(*self._indicators)
+
+    def changeEvent(self, event) -> None:  # noqa: N802 (Qt override)
+        if event.type() == QEvent.Type.LanguageChange:
+            self.retranslate_ui()
+        super().changeEvent(event)
 
     def _button(self, name: str) -> QPushButton:
         button = QPushButton(name)
@@ -74,7 +91,7 @@ class MachinePanelView(QWidget):
         if panel is None:
             self.timer.stop()
             self.oled.setPixmap(QPixmap())
-            self.oled.setText("no machine panel (connect to the built-in simulator)")
+            self.oled.setText(self.tr("no machine panel (connect to the built-in simulator)"))
             self._set_indicators(False, False)
         else:
             self.timer.start()
@@ -102,8 +119,9 @@ class MachinePanelView(QWidget):
         self._set_indicators(bool(self.panel.led), bool(self.panel.buzzer))
 
     def _set_indicators(self, led: bool, buzzer: bool) -> None:
+        self._indicators = (led, buzzer)
         led_colour = "#ff3030" if led else "#402020"
-        self.led.setText(f"<span style='color:{led_colour}; font-size:16pt'>●</span> LED")
+        self.led.setText(f"<span style='color:{led_colour}; font-size:16pt'>●</span> " + self.tr("LED"))
         colour = "#ffb000" if buzzer else "#404040"
-        self.buzzer.setText(f"<span style='color:{colour}; font-size:16pt'>♪</span> buzzer"
-                            + ("" if buzzer else " off"))
+        said = self.tr("buzzer") if buzzer else self.tr("buzzer off")
+        self.buzzer.setText(f"<span style='color:{colour}; font-size:16pt'>♪</span> {said}")

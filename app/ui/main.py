@@ -21,6 +21,8 @@ def parse_args(argv: list[str] | None) -> argparse.Namespace:
     parser.add_argument("--screenshot", metavar="PNG", help="where --demo saves a screenshot of the window")
     parser.add_argument("--connect", metavar="URL", help="connect at start (e.g. sim:// or /dev/ttyUSB0)")
     parser.add_argument("--dark", action="store_true", help="dark palette")
+    parser.add_argument("--lang", choices=("vi", "en"),
+                        help="language for this run (default: the one last chosen, else the system's)")
     return parser.parse_args(argv)
 
 
@@ -50,9 +52,14 @@ def make_app():
 def main(argv: list[str] | None = None) -> int:
     args = parse_args(argv)
     app = make_app()
-    from app.ui.main_window import MainWindow
+    from PySide6.QtCore import QSettings
+
+    from app.ui.language import apply_language, saved_language
+    from app.ui.main_window import MainWindow, default_config_dir
     from app.ui.palette import apply_dark
 
+    settings = QSettings(str(default_config_dir() / "window.ini"), QSettings.Format.IniFormat)
+    apply_language(args.lang or saved_language(settings))  # before the widgets are made
     window = MainWindow(restore=not args.demo)
     if args.demo:
         window.resize(1600, 1000)

@@ -10,15 +10,17 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from PySide6.QtCore import QSettings, QStandardPaths, Qt
+from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, QEvent, QSettings, QStandardPaths, Qt
 from PySide6.QtWidgets import QDockWidget, QMainWindow, QTabWidget, QWidget
 
 from app.gcode.tools import FILE_NAME as TOOLS_FILE
 from app.gcode.tools import load_tools
+from app.i18n import localize
 from app.ui.connection_bar import ConnectionBar
 from app.ui.console import ConsoleView
 from app.ui.controls import MachineControls
 from app.ui.keep_awake import KeepAwake
+from app.ui.language import SETTING, apply_language, current_language
 from app.ui.link import MachineLink
 from app.ui.link_alert import LinkAlert
 from app.ui.loader import ProgramLoader
@@ -34,6 +36,14 @@ from app.ui.settings.store import FILE_NAME, load_settings
 from app.ui.status_bar import JobStatusBar
 
 STATE_VERSION = 1
+DOCK_TITLES = {
+    "program": QT_TRANSLATE_NOOP("MainWindow", "Program"),
+    "controls": QT_TRANSLATE_NOOP("MainWindow", "Machine controls"),
+    "sd": QT_TRANSLATE_NOOP("MainWindow", "SD card"),
+    "panel": QT_TRANSLATE_NOOP("MainWindow", "Machine panel"),
+    "plot": QT_TRANSLATE_NOOP("MainWindow", "Live position"),
+    "console": QT_TRANSLATE_NOOP("MainWindow", "Console"),
+}
 
 
 def default_config_dir() -> Path:
@@ -44,7 +54,6 @@ class MainWindow(QMainWindow):
     def __init__(self, config_dir: Path | None = None, notifier: Notifier | None = None, port_lister=None,
                  restore: bool = True):
         super().__init__()
-        self.setWindowTitle("CNC mill controller")
         self.setAcceptDrops(True)
         self.config_dir = Path(config_dir) if config_dir else default_config_dir()
         self.qsettings = QSettings(str(self.config_dir / "window.ini"), QSettings.Format.IniFormat)
@@ -75,12 +84,13 @@ class MainWindow(QMainWindow):
         self.preflight = Preflight(self)
         self.start_here = StartHere(self)
         self.actions_by_name = build_menus(self)
+        self.retranslate_ui()
         if restore:
             self.restore_state()
         if loaded.problem:
-            self.notifier.warning("Settings", loaded.problem)
+            self.notifier.warning(self.tr("Settings"), localize(loaded.problem))
         if tools.problem:
-            self.notifier.warning(self.tr("Tool table"), tools.problem)
+            self.notifier.warning(self.tr("Tool table"), localize(tools.problem))
 
     def _build_widgets(self, port_lister) -> None:
         travel = (self.profile.travel.x_max, self.profile.travel.y_max)
@@ -89,7 +99,7 @@ class MainWindow(QMainWindow):
         self.setCentralWidget(self.preview)
         kwargs = {"lister": port_lister} if port_lister else {}
         self.connection = ConnectionBar(**kwargs)
-        bar = self.addToolBar("Connection")
+        bar = self.connection_toolbar = self.addToolBar("")
         bar.setObjectName("connection_toolbar")
         bar.addWidget(self.connection)
         self.program_panel = ProgramPanel()
@@ -99,15 +109,15 @@ class MainWindow(QMainWindow):
         self.position_plot = PositionPlot(self.history)
         self.diagnostics = DiagnosticsView(self.history)
         self.plots = QTabWidget()
-        self.plots.addTab(self.position_plot, "Position")
-        self.plots.addTab(self.diagnostics, "Diagnostics (commanded vs measured)")
+        self.plots.addTab(self.position_plot, "")
+        self.plots.addTab(self.diagnostics, "")
         self.console = ConsoleView()
         self.status = JobStatusBar()
         self.setStatusBar(self.status)
         self.alert = LinkAlert(self)
 
-    def _dock(self, title: str, name: str, widget: QWidget, area) -> QDockWidget:
-        dock = QDockWidget(title, self)
+    def _dock(self, name: str, widget: QWidget, area) -> QDockWidget:
+        dock = QDockWidget(self)
         dock.setObjectName(name)
         dock.setWidget(widget)
         self.addDockWidget(area, dock)
@@ -117,12 +127,12 @@ class MainWindow(QMainWindow):
         left, right, bottom = (Qt.DockWidgetArea.LeftDockWidgetArea, Qt.DockWidgetArea.RightDockWidgetArea,
                                Qt.DockWidgetArea.BottomDockWidgetArea)
         self.docks = {
-            "program": self._dock("Program", "program_dock", self.program_panel, left),
-            "controls": self._dock("Machine controls", "controls_dock", self.controls, right),
-            "sd": self._dock("SD card", "sd_dock", self.sd_panel, right),
-            "panel": self._dock("Machine panel", "panel_dock", self.machine_panel, right),
-            "plot": self._dock("Live position", "plot_dock", self.plots, bottom),
-            "console": self._dock("Console", "console_dock", self.console, bottom),
+            "program": self._dock("program_dock", self.program_panel, left),
+            "controls": self._dock("controls_dock", self.controls, right),
+            "sd": self._dock("sd_dock", self.sd_panel, right),
+            "panel": self._dock("panel_dock", self.machine_panel, right),
+            "plot": self._dock("plot_dock", self.plots, bottom),
+            "console": self._dock("console_dock", self.console, bottom),
         }
         # Side columns run the full height; the plot and console sit under the preview only.
         self.setCorner(Qt.Corner.BottomLeftCorner, left)
@@ -143,6 +153,36 @@ class MainWindow(QMainWindow):
             self.resizeDocks(side, [330, 370], Qt.Orientation.Horizontal)
             self.resizeDocks([self.docks["plot"]], [int(self.height() * 0.3)], Qt.Orientation.Vertical)
 
+    # -- language ---------------------------------------------------------------------
+
+    @property
+    def language(self) -> str:
+        return current_language()
+
+    def set_language(self, code: str) -> None:
+        """Switch the window (and the core's messages) to ``code`` at once and remember it."""
+        code = apply_language(code)
+        self.qsettings.setValue(SETTING, code)
+
+    def retranslate_ui(self) -> None:
+        name = self.loaded.path.name if self.loaded is not None else ""
+        title = self.tr("CNC mill controller")
+        self.setWindowTitle(f"{name} — {title}" if name else title)
+        self.connection_toolbar.setWindowTitle(self.tr("Connection"))
+        self.plots.setTabText(0, self.tr("Position"))
+        self.plots.setTabText(1, self.tr("Diagnostics (commanded vs measured)"))
+        for key, dock in self.docks.items():
+            dock.setWindowTitle(QCoreApplication.translate("MainWindow", DOCK_TITLES[key]))
+        if hasattr(self, "actions_by_name"):
+            from app.ui.menus import retranslate_menus
+
+            retranslate_menus(self)
+
+    def changeEvent(self, event) -> None:  # noqa: N802 (Qt override)
+        if event.type() == QEvent.Type.LanguageChange:
+            self.retranslate_ui()
+        super().changeEvent(event)
+
     # -- files ------------------------------------------------------------------------
 
     def open_file(self, path: str | Path, wait: bool = False) -> None:
@@ -150,7 +190,7 @@ class MainWindow(QMainWindow):
 
         if offer_point_import(self, path):  # a point list: its options step comes first
             return
-        self.status.showMessage(f"Loading {Path(path).name}…")
+        self.status.showMessage(self.tr("Loading %1…").replace("%1", Path(path).name))
         size = self.preview.view.size()  # the loader prepares the first picture for it
         self.loader.view_size = (size.width(), size.height())
         self.loader.load(path, wait=wait)

@@ -10,6 +10,8 @@ import gc
 
 from PySide6.QtCore import QObject
 
+from app.i18n import localize
+from app.ui.numbers import decimal, fill, integer
 from app.ui.program.summary import device_count
 from app.ui.recent import add_recent
 from app.ui.settings.dialog import SettingsDialog
@@ -60,7 +62,7 @@ class OperatorActions(QObject):
         self.link.call("disconnect_from")
 
     def reconnect(self) -> None:
-        self.w.alert.body.setText("Reconnecting…")
+        self.w.alert.say(self.tr("Reconnecting…"))
         self.link.connect_to(self.link.url)
 
     # -- job ------------------------------------------------------------------------
@@ -77,22 +79,24 @@ class OperatorActions(QObject):
         """Whether the open program may start now; if not, the operator is told why."""
         loaded = self.w.loaded
         if loaded is None:
-            self.w.notifier.warning("No program", "Open a G-code file first (File ▸ Open…).")
+            self.w.notifier.warning(self.tr("No program"),
+                                    self.tr("Open a G-code file first (File ▸ Open…)."))
             return False
         errors = list(loaded.program.errors)
         if errors:
-            self.w.notifier.error(
-                "Program has errors",
-                f"{loaded.path.name} has {len(errors)} errors (first: line {errors[0].line}: "
-                f"{errors[0].message}). Fix them before running.",
-            )
+            first = errors[0]
+            text = self.tr("%1 has %n error(s) (first: line %2: %3). Fix them before running.", "",
+                           len(errors))
+            text = fill(text, loaded.path.name, integer(first.line), localize(first.message))
+            self.w.notifier.error(self.tr("Program has errors"), text)
             return False
         if self.w.preflight.blocks_start():
             self.w.notifier.error(self.tr("Program leaves the travel"), self.w.preflight.message())
             return False
         status = self.w.binder.status
         if status is not None and not status.homed and not self.w.controls.check_mode.isChecked():
-            self.w.notifier.warning("Not homed", "Home the machine before starting a job (Machine ▸ Home).")
+            self.w.notifier.warning(self.tr("Not homed"),
+                                    self.tr("Home the machine before starting a job (Machine ▸ Home)."))
             return False
         return True
 
@@ -124,7 +128,7 @@ class OperatorActions(QObject):
     def restart_after_reset(self) -> None:
         status = self.w.binder.status
         if status is None or not status.homed:
-            self.w.alert.body.setText("Homing first; press “Home and restart” again once homed.")
+            self.w.alert.say(self.tr("Homing first; press “Home and restart” again once homed."))
             self.home("NORMAL")
             return
         self.w.alert.hide()
@@ -138,7 +142,8 @@ class OperatorActions(QObject):
 
     def upload(self, name: str) -> None:
         if self.w.loaded is None:
-            self.w.notifier.warning("No program", "Open a G-code file to save it to the card.")
+            self.w.notifier.warning(self.tr("No program"),
+                                    self.tr("Open a G-code file to save it to the card."))
             return
         program = self.w.loaded.program
         self.w.sd_panel.set_progress(0, device_count(program))
@@ -159,7 +164,7 @@ class OperatorActions(QObject):
         program = load_text(text, name="MDI")
         errors = list(program.errors)
         if errors:
-            self.w.console.add_log("error", f"MDI: {errors[0].message}")
+            self.w.console.add_log("error", f"MDI: {localize(errors[0].message)}")
             return
         self.w.binder.begin_job(None)
         self.link.call("start_job", list(program.device_lines))
@@ -171,7 +176,7 @@ class OperatorActions(QObject):
         self.w.program_panel.show_program(loaded.program, loaded.path.name)
         self.w.preview.show_model(loaded.preview)
         self.w.sd_panel.suggest_for(loaded.path)
-        self.w.setWindowTitle(f"{loaded.path.name} — CNC mill controller")
+        self.w.retranslate_ui()  # the title names the file
         add_recent(self.w.qsettings, loaded.path)
         self.w.binder.refresh_enabled()
         # A big program is millions of long-lived objects: keep the cyclic GC from
@@ -179,16 +184,13 @@ class OperatorActions(QObject):
         gc.freeze()
         self.w.loader.shown()  # the loader may now build the rest (zoom levels, device lines)
         errors = list(loaded.program.errors)
-        self.w.status.showMessage(
-            f"Opened {loaded.path.name}: {len(loaded.program.lines):,} lines in "
-            f"{loaded.load_s + loaded.model_s:.2f} s", 10000
-        )
+        opened = self.tr("Opened %1: %n line(s) in %2 s", "", len(loaded.program.lines))
+        seconds = decimal(loaded.load_s + loaded.model_s, 2)
+        self.w.status.showMessage(opened.replace("%1", loaded.path.name).replace("%2", seconds), 10000)
         if errors:
-            self.w.notifier.warning(
-                "Program has errors",
-                f"{loaded.path.name}: {len(errors)} errors; see the Problems list. "
-                "It can be previewed but not run.",
-            )
+            text = self.tr("%1: %n error(s); see the Problems list. It can be previewed but not run.", "",
+                           len(errors))
+            self.w.notifier.warning(self.tr("Program has errors"), text.replace("%1", loaded.path.name))
 
     def program_refined(self, loaded) -> None:
         """The preview of the open program at the real tolerance (the first was coarser)."""
@@ -203,6 +205,7 @@ class OperatorActions(QObject):
     def edit_settings(self) -> SettingsDialog:
         dialog = SettingsDialog(self.w.profile, self.w)
         dialog.accepted.connect(lambda: self.apply_settings(dialog.profile))
+        dialog.language_chosen.connect(self.w.set_language)
         dialog.open()
         return dialog
 
@@ -214,9 +217,11 @@ class OperatorActions(QObject):
         try:
             save_settings(self.w.config_dir / FILE_NAME, profile)
         except OSError as exc:
-            self.w.notifier.error("Settings not saved", f"Cannot write the settings file: {exc}")
+            self.w.notifier.error(self.tr("Settings not saved"),
+                                  self.tr("Cannot write the settings file: %1").replace("%1", str(exc)))
         if self.w.binder.connected:
             for name, value in machine_settings(profile):
                 self.link.call("send_command", f"SET {name} {value}")
-        self.w.status.showMessage("Settings saved" + (" and sent to the machine" if self.w.binder.connected
-                                                      else ""), 5000)
+        saved = self.tr("Settings saved and sent to the machine") if self.w.binder.connected else \
+            self.tr("Settings saved")
+        self.w.status.showMessage(saved, 5000)

@@ -2,7 +2,13 @@
 
 from __future__ import annotations
 
-SIMULATOR = ("sim://", "Built-in simulator (sim://)")
+from PySide6.QtCore import QCoreApplication
+
+from app.i18n import localize
+
+
+def _simulator() -> tuple[str, str]:
+    return "sim://", QCoreApplication.translate("Ports", "Built-in simulator (sim://)")
 
 
 def available_ports() -> list[tuple[str, str]]:
@@ -12,10 +18,10 @@ def available_ports() -> list[tuple[str, str]]:
 
         found = list(list_ports())
     except Exception:  # noqa: BLE001 (discovery must never break the window)
-        found = [SIMULATOR]
+        found = [_simulator()]
     ports = [_pair(entry) for entry in found]
     if not any(url.startswith("sim://") for url, _ in ports):
-        ports.insert(0, SIMULATOR)
+        ports.insert(0, _simulator())
     return ports
 
 
@@ -24,7 +30,7 @@ def _pair(entry) -> tuple[str, str]:
         return entry, entry
     if isinstance(entry, tuple | list):
         url = str(entry[0])
-        return url, (f"{url} — {entry[1]}" if len(entry) > 1 and entry[1] else url)
+        return url, (f"{url} — {localize(entry[1])}" if len(entry) > 1 and entry[1] else url)
     url = str(getattr(entry, "url", None) or getattr(entry, "device", entry))
-    text = getattr(entry, "description", "") or ""
+    text = localize(getattr(entry, "description", "") or "")
     return url, (f"{url} — {text}" if text and text != url else url)

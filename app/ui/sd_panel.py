@@ -6,7 +6,7 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
-from PySide6.QtCore import Qt, Signal
+from PySide6.QtCore import QCoreApplication, QEvent, Qt, Signal
 from PySide6.QtWidgets import (
     QHBoxLayout,
     QLabel,
@@ -32,7 +32,7 @@ def name_problem(name: str) -> str:
     """Why ``name`` cannot be used on the card ("" when it can)."""
     if NAME_RE.match(name) and name not in (".", ".."):
         return ""
-    return "a card name has 1 to 32 letters, digits, '_', '-' or '.'"
+    return QCoreApplication.translate("SdPanel", "a card name has 1 to 32 letters, digits, '_', '-' or '.'")
 
 
 class SdPanel(QWidget):
@@ -43,20 +43,19 @@ class SdPanel(QWidget):
 
     def __init__(self, parent=None):
         super().__init__(parent)
-        self.name = QLineEdit(placeholderText="name on the card")
-        self.save = QPushButton("Save program to SD")
+        self.name = QLineEdit()
+        self.save = QPushButton()
         self.save.clicked.connect(self._save)
         self.progress = QProgressBar()
         self.progress.setFormat("%p %")
         self.result = QLabel("")
         self.files = QTreeWidget()
-        self.files.setHeaderLabels(["Name", "Bytes", "Lines"])
         self.files.setRootIsDecorated(False)
-        self.refresh = QPushButton("Refresh")
+        self.refresh = QPushButton()
         self.refresh.clicked.connect(self.list_requested.emit)
-        self.delete = QPushButton("Delete")
+        self.delete = QPushButton()
         self.delete.clicked.connect(lambda: self._with_selected(self.delete_requested))
-        self.run = QPushButton("Run from SD")
+        self.run = QPushButton()
         self.run.clicked.connect(lambda: self._with_selected(self.run_requested))
         save_row = QHBoxLayout()
         save_row.addWidget(self.name, 1)
@@ -71,6 +70,22 @@ class SdPanel(QWidget):
         layout.addWidget(self.files, 1)
         layout.addLayout(file_row)
         self.set_enabled(connected=False, has_program=False, busy=False)
+        self.retranslate_ui()
+
+    def retranslate_ui(self) -> None:
+        self.name.setPlaceholderText(self.tr("name on the card"))
+        self.save.setText(self.tr("Save program to SD"))
+        self.save.setToolTip(self.tr("send the open program to the card; the machine checks every line"))
+        self.files.setHeaderLabels([self.tr("Name"), self.tr("Bytes"), self.tr("Lines")])
+        self.refresh.setText(self.tr("Refresh"))
+        self.delete.setText(self.tr("Delete"))
+        self.run.setText(self.tr("Run from SD"))
+        self.run.setToolTip(self.tr("the machine runs the file on its own, even without this computer"))
+
+    def changeEvent(self, event) -> None:  # noqa: N802 (Qt override)
+        if event.type() == QEvent.Type.LanguageChange:
+            self.retranslate_ui()
+        super().changeEvent(event)
 
     def suggest_for(self, path: str | Path) -> None:
         self.name.setText(suggest_name(path))
@@ -81,7 +96,7 @@ class SdPanel(QWidget):
         if problem:
             self.result.setText(f"<span style='color:#e05050'>{problem}</span>")
             return
-        self.result.setText("uploading…")
+        self.result.setText(self.tr("uploading…"))
         self.progress.setValue(0)
         self.upload_requested.emit(name)
 

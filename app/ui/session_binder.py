@@ -11,7 +11,10 @@ from collections import deque
 from PySide6.QtCore import QObject, Qt, QTimer
 
 from app.comm.listener import BUSY_STATES, JOB_STATES, RECOVERY_STATES, SessionState
+from app.i18n import localize
+from app.ui.codes import alarm_text, refusal_text
 from app.ui.commanded import commanded_position
+from app.ui.numbers import decimal
 from app.ui.program.summary import device_count
 from app.ui.progress import ProgressTracker, line_times
 
@@ -71,8 +74,8 @@ class SessionBinder(QObject):
     # thread); a lambda would run in the emitting thread.
 
     def on_load_failed(self, path: str, text: str) -> None:
-        self.w.status.showMessage("Open failed", 5000)
-        self.w.notifier.error("Cannot open file", text)
+        self.w.status.showMessage(self.tr("Open failed"), 5000)
+        self.w.notifier.error(self.tr("Cannot open file"), localize(text))
 
     def on_log(self, event) -> None:
         self.w.console.add_log(event.level, event.text, event.source)
@@ -82,9 +85,9 @@ class SessionBinder(QObject):
 
     def on_error(self, event) -> None:
         if event.code == "LINK_LOST":
-            self.w.console.add_log("error", event.text)
+            self.w.console.add_log("error", localize(event.text))
             return
-        self.w.notifier.error("Link error", f"{event.code}: {event.text}")
+        self.w.notifier.error(self.tr("Link error"), f"{event.code}: {localize(event.text)}")
 
     # -- connection -----------------------------------------------------------------
 
@@ -99,21 +102,24 @@ class SessionBinder(QObject):
     def on_connect_failed(self, text: str) -> None:
         self.w.connection.set_connected(False)
         self.w.connection.set_link("DISCONNECTED")
-        self.w.notifier.error("Cannot connect", f"The port could not be opened: {text}")
+        self.w.notifier.error(self.tr("Cannot connect"),
+                              self.tr("The port could not be opened: %1").replace("%1", localize(text)))
 
     def on_disconnected(self, reason: str) -> None:
         self.connected = False
         self.w.connection.set_connected(False)
         if "operator" in reason or "shut down" in reason:
             self.w.connection.set_link("DISCONNECTED")
-        else:
-            self.w.connection.set_link("LOST", reason)
-            self._alert("usb", reason)
+        else:  # the port's own words (pyserial, the OS) go to the console, not to the operator
+            self.w.console.add_log("error", reason)
+            self.w.connection.set_link("LOST", self.tr("the port failed; details in the console"))
+            self._alert("usb", self.tr("The serial port reported an error; the details are in the console."))
         self.refresh_enabled()
 
     def on_link(self, event) -> None:
         self.link_state = event.state
-        detail = f"{event.resend_rate * 100:.0f} % resends" if event.quality_warning else ""
+        percent = decimal(event.resend_rate * 100, 0)
+        detail = self.tr("%1 % resends").replace("%1", percent) if event.quality_warning else ""
         self.w.connection.set_link(event.state, detail)
         self.w.console.set_resends(0, event.resend_rate, event.quality_warning)
         if event.state == "LOST":
@@ -124,7 +130,7 @@ class SessionBinder(QObject):
         if event.code == "UART_LOST":
             self._alert("uart", event.text)
         elif event.code not in ("HOST_LOST", "BOOT"):
-            self.w.notifier.warning("Machine alarm", f"{event.code}: {event.text}")
+            self.w.notifier.warning(self.tr("Machine alarm"), alarm_text(event.code, event.text))
 
     def _alert(self, what: str, detail: str) -> None:
         if not self.w.alert.isVisible():
@@ -211,8 +217,11 @@ class SessionBinder(QObject):
         self._drain_progress()  # the last lines' progress before the end
         if event.kind == "upload":
             self.last_upload_event = event
-            text = (f"saved as {event.name}: {event.total} lines, verified by the card's CRC32"
-                    if event.completed else f"not saved: {event.reason}")
+            if event.completed:
+                text = self.tr("saved as %1: %n line(s), verified by the card's CRC32", "", event.total)
+            else:
+                text = self.tr("not saved: %1").replace("%1", localize(event.reason))
+            text = text.replace("%1", event.name)
             self.w.sd_panel.upload_finished(event.completed, text)
             self.w.link.call("list_sd")
             return
@@ -223,10 +232,10 @@ class SessionBinder(QObject):
         self._progress_dirty = True
         self.tick()
         if event.completed:
-            self.w.status.showMessage("Job finished", 15000)
+            self.w.status.showMessage(self.tr("Job finished"), 15000)
         else:
-            self.w.notifier.warning("Job ended", f"The job did not complete: {event.reason}"
-                                    + self._where_it_stopped(event))
+            self.w.notifier.warning(self.tr("Job ended"), self.tr("The job did not complete: %1")
+                                    .replace("%1", localize(event.reason)) + self._where_it_stopped(event))
 
     def _where_it_stopped(self, event) -> str:
         """Which source line the job stopped at and how much ran (the log keeps the rest)."""
@@ -245,9 +254,10 @@ class SessionBinder(QObject):
         if not result.ok and result.code not in ("SUPERSEDED",) and result.verb != "PING":
             text = f"{result.verb} {' '.join(result.args)}: {result.code} {result.info}".strip()
             self.w.console.add_log("error", text, "machine")
-            self.w.status.showMessage(text, 10000)
+            shown = f"{result.verb} {' '.join(result.args)}: {refusal_text(result.code, result.info)}"
+            self.w.status.showMessage(shown, 10000)
             if result.verb in ("HOME", "JOG", "SD", "ZERO", "SPINDLE", "SET"):
-                self.w.notifier.warning("Machine refused", text)
+                self.w.notifier.warning(self.tr("Machine refused"), shown)
 
     # -- the ~30 Hz refresh -----------------------------------------------------------
 

@@ -2,8 +2,10 @@
 
 from __future__ import annotations
 
+from PySide6.QtCore import QEvent
 from PySide6.QtWidgets import QLabel, QProgressBar, QStatusBar
 
+from app.ui.numbers import decimal, fill, integer
 from app.ui.program.summary import format_duration
 from app.ui.progress import ProgressView
 
@@ -17,19 +19,38 @@ class JobStatusBar(QStatusBar):
         self.progress.setMaximumWidth(220)
         self.progress.setRange(0, 1000)
         self.progress.setFormat("%p %")
-        self.progress_text = QLabel("no job")
+        self.progress_text = QLabel()
         self.addPermanentWidget(self.position)
         self.addPermanentWidget(self.progress)
         self.addPermanentWidget(self.progress_text)
+        self._shown: tuple | None = None  # the last progress (view, label)
+        self._position: tuple | None = None
+        self.retranslate_ui()
+
+    def retranslate_ui(self) -> None:
+        self.position.setToolTip(self.tr("machine position in work coordinates (mm)"))
+        if self._shown is None:
+            self.progress_text.setText(self.tr("no job"))
+        else:
+            self.set_progress(*self._shown)
+        if self._position is not None:
+            self.set_position(*self._position)
+
+    def changeEvent(self, event) -> None:  # noqa: N802 (Qt override)
+        if event.type() == QEvent.Type.LanguageChange:
+            self.retranslate_ui()
+        super().changeEvent(event)
 
     def set_position(self, x: float, y: float, z: float) -> None:
-        self.position.setText(f"X {x:8.3f}   Y {y:8.3f}   Z {z:8.3f}")
+        self._position = (x, y, z)
+        shown = (f"{axis} {decimal(value, 3):>8}" for axis, value in zip("XYZ", (x, y, z), strict=True))
+        self.position.setText("   ".join(shown))
 
     def set_progress(self, view: ProgressView, label: str = "") -> None:
+        self._shown = (view, label)
         self.progress.setValue(int(round(view.percent * 10)))
-        self.progress.setFormat(f"{view.percent:.1f} %")
+        self.progress.setFormat(f"{decimal(view.percent, 1)} %")
         remaining = "—" if view.remaining is None else format_duration(view.remaining)
-        self.progress_text.setText(
-            f"{label}line {view.done:,}/{view.total:,} · elapsed {format_duration(view.elapsed)}"
-            f" · remaining {remaining}"
-        )
+        text = self.tr("line %1/%2 · elapsed %3 · remaining %4")
+        self.progress_text.setText(label + fill(text, integer(view.done), integer(view.total),
+                                                format_duration(view.elapsed), remaining))

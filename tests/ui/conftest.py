@@ -26,6 +26,17 @@ def _isolated_paths(qapp):
     QStandardPaths.setTestModeEnabled(True)
 
 
+@pytest.fixture(autouse=True)
+def english(qapp):
+    """The window in English, as ``cnc-gui --lang en`` shows it (the plural forms come from
+    cnc_en.qm); a test may switch, and the next one starts in English again."""
+    from app.ui.language import apply_language
+
+    apply_language("en")
+    yield
+    apply_language("en")
+
+
 @pytest.fixture
 def notifier():
     from app.ui.notifier import Notifier

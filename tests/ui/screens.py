@@ -1,5 +1,6 @@
 """Screenshots of the window: used by the tests (into tmp_path) and to refresh the ones
-in docs/screenshots (``QT_QPA_PLATFORM=offscreen python -m tests.ui.screens``)."""
+in docs/screenshots (``QT_QPA_PLATFORM=offscreen python -m tests.ui.screens``; in
+Vietnamese: ``python -m tests.ui.screens docs/screenshots/vi vi``)."""
 
 from __future__ import annotations
 
@@ -42,6 +43,15 @@ def job_shot(window, wait, out: Path, speed: float = 10, fraction: float = 0.45)
     return shots
 
 
+def settings_shot(window, wait, out: Path) -> Path:
+    """The settings dialog (language and the first tab)."""
+    dialog = window.operator.edit_settings()
+    dialog.resize(max(dialog.sizeHint().width(), 620), 560)
+    path = _save(dialog, wait, out / "settings.png")
+    dialog.reject()
+    return path
+
+
 def _save(window, wait, path: Path) -> Path:
     end = time.monotonic() + 0.4  # let the 30 Hz refresh and the plots catch up
     wait(lambda: time.monotonic() > end, 5)
@@ -50,12 +60,14 @@ def _save(window, wait, path: Path) -> Path:
     return path
 
 
-def main(out: str = "docs/screenshots") -> int:
+def main(out: str = "docs/screenshots", language: str = "en") -> int:
+    from app.ui.language import apply_language
     from app.ui.main import make_app
     from app.ui.main_window import MainWindow
     from app.ui.notifier import Notifier
 
     app = make_app()
+    apply_language(language)
 
     def wait(predicate, timeout):
         end = time.monotonic() + timeout
@@ -69,7 +81,8 @@ def main(out: str = "docs/screenshots") -> int:
     window = MainWindow(config_dir=config, notifier=Notifier(show_boxes=False), restore=False)
     window.resize(1600, 1000)
     window.show()
-    shots = [preview_shot(window, wait, Path(out))] + job_shot(window, wait, Path(out))
+    shots = [preview_shot(window, wait, Path(out)), settings_shot(window, wait, Path(out))]
+    shots += job_shot(window, wait, Path(out))
     window.close()
     print("\n".join(str(p) for p in shots))
     return 0

@@ -6,9 +6,11 @@ from __future__ import annotations
 
 import numpy as np
 import pyqtgraph as pg
-from PySide6.QtCore import Qt, QTimer
+from PySide6.QtCore import QEvent, Qt, QTimer
 from PySide6.QtWidgets import QVBoxLayout, QWidget
 
+from app.ui.numbers import fill
+from app.ui.plot.axes import local_axes, refresh_ticks
 from app.ui.plot.history import COMMANDED, MEASURED, PositionHistory, T
 from app.ui.plot.position_plot import AXIS_COLOURS, REDRAW_MS
 from app.ui.plot.ranges import SteadyYRange
@@ -24,6 +26,7 @@ class DiagnosticsView(QWidget):
         self.layout_widget.ci.setContentsMargins(2, 2, 2, 2)
         self.layout_widget.ci.setSpacing(0)
         self.position_curves, self.error_curves, self.plots, self.y_ranges = [], [], [], []
+        self._error_plots = []
         for row, (axis, colour) in enumerate(zip("XYZ", AXIS_COLOURS, strict=True)):
             self._add_axis(row, axis, colour)
         layout = QVBoxLayout(self)
@@ -32,11 +35,23 @@ class DiagnosticsView(QWidget):
         self.timer = QTimer(self, interval=REDRAW_MS, timeout=self.redraw)
         self.timer.start()
 
+    def retranslate_ui(self) -> None:
+        for axis, plot in self._error_plots:
+            plot.setLabel("left", fill(self.tr("%1 error mm"), axis))
+        for plot in self.layout_widget.ci.items:
+            refresh_ticks(plot)
+
+    def changeEvent(self, event) -> None:  # noqa: N802 (Qt override)
+        if event.type() == QEvent.Type.LanguageChange:
+            self.retranslate_ui()
+        super().changeEvent(event)
+
     def _add_axis(self, row: int, axis: str, colour: str) -> None:
-        pos = self.layout_widget.addPlot(row=row, col=0)
-        err = self.layout_widget.addPlot(row=row, col=1)
+        pos = self.layout_widget.addPlot(row=row, col=0, axisItems=local_axes())
+        err = self.layout_widget.addPlot(row=row, col=1, axisItems=local_axes())
         pos.setLabel("left", f"{axis} mm")
-        err.setLabel("left", f"{axis} error mm")
+        self._error_plots.append((axis, err))
+        err.setLabel("left", fill(self.tr("%1 error mm"), axis))
         for plot in (pos, err):
             plot.showGrid(x=True, y=True, alpha=0.2)
             plot.setMenuEnabled(False)

@@ -7,9 +7,10 @@ the history changed and the widget is visible, never once per frame.
 from __future__ import annotations
 
 import pyqtgraph as pg
-from PySide6.QtCore import QTimer
+from PySide6.QtCore import QEvent, QTimer
 from PySide6.QtWidgets import QVBoxLayout, QWidget
 
+from app.ui.plot.axes import local_axes, refresh_ticks
 from app.ui.plot.history import MEASURED, PositionHistory, T
 from app.ui.plot.ranges import SteadyYRange
 
@@ -24,9 +25,8 @@ class PositionPlot(QWidget):
         self.history = history
         self.seconds = seconds
         self._drawn_version = -1
-        self.plot = pg.PlotWidget()
-        self.plot.setLabel("bottom", "time", units="s")
-        self.plot.setLabel("left", "position", units="mm")
+        self.plot = pg.PlotWidget(axisItems=local_axes())
+        self.retranslate_ui()
         self.plot.showGrid(x=True, y=True, alpha=0.2)
         for side in ("left", "bottom"):
             self.plot.getAxis(side).enableAutoSIPrefix(False)
@@ -44,6 +44,15 @@ class PositionPlot(QWidget):
         self.timer = QTimer(self, interval=REDRAW_MS, timeout=self.redraw)
         self.timer.start()
 
+    def retranslate_ui(self) -> None:
+        self.plot.setLabel("bottom", self.tr("time"), units="s")
+        self.plot.setLabel("left", self.tr("position"), units="mm")
+        refresh_ticks(self.plot.getPlotItem())
+
+    def changeEvent(self, event) -> None:  # noqa: N802 (Qt override)
+        if event.type() == QEvent.Type.LanguageChange:
+            self.retranslate_ui()
+        super().changeEvent(event)
     def redraw(self, force: bool = False) -> bool:
         """Refill the curves if the history changed; True when something was drawn."""
         if not force and (self.history.version == self._drawn_version or not self.isVisible()):

@@ -13,10 +13,12 @@ from __future__ import annotations
 
 import numpy as np
 import pyqtgraph as pg
-from PySide6.QtCore import Qt, QTimer, Signal
+from PySide6.QtCore import QEvent, Qt, QTimer, Signal
 from PySide6.QtGui import QColor, QPen
 from PySide6.QtWidgets import QVBoxLayout, QWidget
 
+from app.ui.numbers import decimal
+from app.ui.plot.axes import local_axes, refresh_ticks
 from app.ui.preview.geometry import AIR_GROUP, DEPTH_BANDS, RAPID_GROUP
 from app.ui.preview.model import PreviewModel
 from app.ui.preview.picture import PictureLayer
@@ -44,7 +46,7 @@ class PreviewWidget(QWidget):
         super().__init__(parent)
         self.model: PreviewModel | None = None
         self._done_move = -1
-        self.plot = pg.PlotWidget()
+        self.plot = pg.PlotWidget(axisItems=local_axes())
         self.plot.setAspectLocked(True)
         self.grid = False
         self.plot.setLabel("bottom", "X", units="mm")
@@ -68,6 +70,7 @@ class PreviewWidget(QWidget):
         # Until the loader has built every level of detail, look again now and then.
         self._levels_poll = QTimer(self, singleShot=True, interval=LEVELS_POLL_MS, timeout=self._refill_now)
         self.view.setRange(xRange=(0, travel[0]), yRange=(0, travel[1]))
+        self.plot.setToolTip(self.tr("wheel: zoom · drag: pan · Ctrl+F: fit · Ctrl+G: grid"))
 
     def _make_items(self) -> None:
         self.travel_item = self._curve(pg.mkPen("#808080", width=1), z=-10)
@@ -123,6 +126,16 @@ class PreviewWidget(QWidget):
         self.fit()
         self._refill_now()
 
+    def retranslate_ui(self) -> None:
+        self.plot.setToolTip(self.tr("wheel: zoom · drag: pan · Ctrl+F: fit · Ctrl+G: grid"))
+        self._update_legend()
+        refresh_ticks(self.plot.getPlotItem())
+
+    def changeEvent(self, event) -> None:  # noqa: N802 (Qt override)
+        if event.type() == QEvent.Type.LanguageChange:
+            self.retranslate_ui()
+        super().changeEvent(event)
+
     def replace_model(self, model: PreviewModel) -> None:
         """The same program drawn from ``model`` (finer): the view and the finished part stay."""
         self.model = model
@@ -134,12 +147,12 @@ class PreviewWidget(QWidget):
         if self.model is None or self.model.empty:
             return
         edges = self.model.geometry.depth_edges
-        self.legend.addItem(self.group_samples[RAPID_GROUP], "rapid")
+        self.legend.addItem(self.group_samples[RAPID_GROUP], self.tr("rapid"))
         if len(self.model.groups[AIR_GROUP]):
-            self.legend.addItem(self.group_samples[AIR_GROUP], "feed Z ≥ 0")
+            self.legend.addItem(self.group_samples[AIR_GROUP], self.tr("feed Z ≥ 0"))
         for band in range(DEPTH_BANDS):
             if len(self.model.groups[2 + band]):
-                label = f"Z {edges[band]:.2f} … {edges[band + 1]:.2f}"
+                label = f"Z {decimal(edges[band], 2)} … {decimal(edges[band + 1], 2)}"
                 self.legend.addItem(self.group_samples[2 + band], label)
 
     def fit(self) -> None:

@@ -4,7 +4,7 @@ highlighted), and the problems list (double-click jumps to the line)."""
 from __future__ import annotations
 
 import numpy as np
-from PySide6.QtCore import Qt, Signal
+from PySide6.QtCore import QEvent, Qt, Signal
 from PySide6.QtGui import QFontDatabase
 from PySide6.QtWidgets import (
     QAbstractItemView,
@@ -19,6 +19,8 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from app.i18n import localize
+from app.ui.numbers import fill
 from app.ui.program.source_model import SourceModel
 from app.ui.program.summary import describe
 
@@ -31,7 +33,7 @@ class ProgramPanel(QWidget):
 
     def __init__(self, parent=None):
         super().__init__(parent)
-        self.summary = QLabel("No program open. File ▸ Open… or drop a G-code file on the window.")
+        self.summary = QLabel()
         self.summary.setWordWrap(True)
         self.summary.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
         self.source_model = SourceModel(self)
@@ -42,53 +44,76 @@ class ProgramPanel(QWidget):
         self.context = QLabel()  # where an expanded program is: subprogram and loop pass
         self.context.hide()
         self.problems = QTreeWidget()
-        self.problems.setHeaderLabels(["Line", "Col", "", "Message"])
         self.problems.setRootIsDecorated(False)
         self.problems.itemActivated.connect(self._problem_activated)
         self.tabs = QTabWidget()
-        self.tabs.addTab(self.source, "Source")
-        self.tabs.addTab(self.problems, "Problems")
+        self.tabs.addTab(self.source, "")
+        self.tabs.addTab(self.problems, "")
         layout = QVBoxLayout(self)
         layout.setContentsMargins(4, 4, 4, 4)
         layout.addWidget(self.summary)
         layout.addWidget(self.tabs, 1)
         layout.addWidget(self.context)
         self.program = None
+        self._shown = None  # (program, name) on show
+        self.retranslate_ui()
 
-    def show_program(self, program, name: str = "") -> None:
+    def retranslate_ui(self) -> None:
+        self.problems.setHeaderLabels([self.tr("Line"), self.tr("Col"), "", self.tr("Message")])
+        self.tabs.setTabText(0, self.tr("Source"))
+        if self._shown is None:
+            empty = self.tr("No program open. File ▸ Open… or drop a G-code file on the window.")
+            self.summary.setText(empty)
+            self.tabs.setTabText(1, self.tr("Problems"))
+        else:
+            self.show_program(*self._shown, keep_tab=True)
+
+    def changeEvent(self, event) -> None:  # noqa: N802 (Qt override)
+        if event.type() == QEvent.Type.LanguageChange:
+            self.retranslate_ui()
+        super().changeEvent(event)
+
+    def show_program(self, program, name: str = "", keep_tab: bool = False) -> None:
+        """Show ``program``; ``keep_tab``: only re-say it (another language), same listing."""
         errors = list(_diagnostics(program, "errors"))
         warnings = list(_diagnostics(program, "warnings"))
         self.program = program
-        expanded = getattr(getattr(program, "ops", None), "source", None) is not None
-        moves = program.moves_per_line() if expanded else None
-        self.source_model.set_lines(program.lines, [d.line for d in errors], moves,  # read as they scroll in
-                                    (lambda line: _device_lines_of(program, line)) if expanded else None)
-        if expanded:
-            header = self.source.horizontalHeader()
-            header.setSectionResizeMode(0, QHeaderView.ResizeMode.Stretch)
-            header.setSectionResizeMode(1, QHeaderView.ResizeMode.ResizeToContents)
-        self.context.hide()
+        if not keep_tab:
+            expanded = getattr(getattr(program, "ops", None), "source", None) is not None
+            moves = program.moves_per_line() if expanded else None
+            self.source_model.set_lines(program.lines, [d.line for d in errors], moves,  # read on scroll
+                                        (lambda line: _device_lines_of(program, line)) if expanded else None)
+            if expanded:
+                header = self.source.horizontalHeader()
+                header.setSectionResizeMode(0, QHeaderView.ResizeMode.Stretch)
+                header.setSectionResizeMode(1, QHeaderView.ResizeMode.ResizeToContents)
+            self.context.hide()
+        self._shown = (program, name)
         self.summary.setText(describe(program, name))
-        self._fill_problems(errors, warnings)
+        self._fill_problems(errors, warnings, keep_tab)
 
     def clear(self) -> None:
         self.program = None
         self.context.hide()
+        self._shown = None
         self.source_model.set_lines([])
         self.problems.clear()
-        self.summary.setText("No program open.")
+        self.summary.setText(self.tr("No program open."))
 
-    def _fill_problems(self, errors, warnings) -> None:
+    def _fill_problems(self, errors, warnings, keep_tab: bool = False) -> None:
         self.problems.clear()
         rows = [("error", d) for d in errors] + [("warning", d) for d in warnings]
-        items = [_problem_item(kind, d) for kind, d in rows[:MAX_PROBLEMS]]
+        items = [self._problem_item(kind, d) for kind, d in rows[:MAX_PROBLEMS]]
         if len(rows) > MAX_PROBLEMS:
-            items.append(QTreeWidgetItem(["", "", "", f"… and {len(rows) - MAX_PROBLEMS} more"]))
+            more = self.tr("… and %n more", "", len(rows) - MAX_PROBLEMS)
+            items.append(QTreeWidgetItem(["", "", "", more]))
         self.problems.addTopLevelItems(items)
         for column in range(3):
             self.problems.resizeColumnToContents(column)
-        self.tabs.setTabText(1, f"Problems ({len(errors)} errors, {len(warnings)} warnings)")
-        if errors:
+        counts = fill(self.tr("%1, %2"), self.tr("%n error(s)", "", len(errors)),
+                      self.tr("%n warning(s)", "", len(warnings)))
+        self.tabs.setTabText(1, fill(self.tr("Problems (%1)"), counts))
+        if errors and not keep_tab:
             self.tabs.setCurrentWidget(self.problems)
 
     def _source_menu(self, pos) -> None:
@@ -99,6 +124,17 @@ class ProgramPanel(QWidget):
         start = menu.addAction(self.tr("Start here"))
         start.triggered.connect(lambda: self.start_here_requested.emit(index.row() + 1))
         menu.popup(self.source.viewport().mapToGlobal(pos))
+
+    def _problem_item(self, kind: str, diagnostic) -> QTreeWidgetItem:
+        line = int(getattr(diagnostic, "line", 0) or 0)
+        column = getattr(diagnostic, "column", "") or ""
+        said = self.tr("error") if kind == "error" else self.tr("warning")
+        message = localize(diagnostic.message)
+        item = QTreeWidgetItem([str(line), str(column), said, message])
+        item.setToolTip(3, message)  # the whole message where the column is too narrow
+        item.setData(0, Qt.ItemDataRole.UserRole, line)
+        item.setForeground(2, Qt.GlobalColor.red if kind == "error" else Qt.GlobalColor.darkYellow)
+        return item
 
     def _problem_activated(self, item: QTreeWidgetItem) -> None:
         line = item.data(0, Qt.ItemDataRole.UserRole)
@@ -163,11 +199,3 @@ def _device_lines_of(program, line: int, limit: int = 12) -> list[str]:
 def _diagnostics(program, kind: str):
     return getattr(program, kind, ()) or ()
 
-
-def _problem_item(kind: str, diagnostic) -> QTreeWidgetItem:
-    line = int(getattr(diagnostic, "line", 0) or 0)
-    column = getattr(diagnostic, "column", "") or ""
-    item = QTreeWidgetItem([str(line), str(column), kind, str(diagnostic.message)])
-    item.setData(0, Qt.ItemDataRole.UserRole, line)
-    item.setForeground(2, Qt.GlobalColor.red if kind == "error" else Qt.GlobalColor.darkYellow)
-    return item

@@ -3,6 +3,9 @@
 from __future__ import annotations
 
 import numpy as np
+from PySide6.QtCore import QCoreApplication, QObject
+
+from app.ui.numbers import decimal, fill, integer
 
 
 def format_duration(seconds: float) -> str:
@@ -27,23 +30,35 @@ def device_count(program) -> int:
     return len(program.line_map)
 
 
+class Summary(QObject):
+    """The translation context of the summary (``self.tr`` lets lupdate see the plurals)."""
+
+    def counts(self, lines: int, device: int, moves: int) -> tuple[str, str, str]:
+        return (self.tr("%n line(s)", "", lines), self.tr("%n machine line(s)", "", device),
+                self.tr("%n move(s)", "", moves))
+
+    def problems(self, errors: int, warnings: int) -> tuple[str, str]:
+        return self.tr("%n error(s)", "", errors), self.tr("%n warning(s)", "", warnings)
+
+
 def describe(program, name: str = "") -> str:
     tp = program.toolpath
     errors, warnings = program.errors, program.warnings
     parts = [f"<b>{name}</b>" if name else ""]
-    parts.append(
-        f"{len(program.lines):,} lines → {device_count(program):,} machine lines, "
-        f"{len(tp.start):,} moves"
-    )
+    texts = Summary()
+    lines, device, moves = texts.counts(len(program.lines), device_count(program), len(tp.start))
+    parts.append(fill(QCoreApplication.translate("Summary", "%1 → %2, %3"), lines, device, moves))
     box = bounds_array(getattr(tp, "bounds", None))
     if box is not None and len(tp.start):
-        (x0, y0, z0), (x1, y1, z1) = box
-        parts.append(f"X {x0:.2f} … {x1:.2f}, Y {y0:.2f} … {y1:.2f}, Z {z0:.2f} … {z1:.2f} mm")
-    parts.append(
-        f"cut {getattr(tp, 'cut_length', 0.0):,.0f} mm, rapid {getattr(tp, 'rapid_length', 0.0):,.0f} mm, "
-        f"estimated {format_duration(getattr(tp, 'estimated_time', 0.0))}"
-    )
-    status = f"{len(errors)} errors, {len(warnings)} warnings"
+        (x0, y0, z0), (x1, y1, z1) = (map(lambda v: decimal(v, 2), row) for row in box)
+        parts.append(f"X {x0} … {x1}, Y {y0} … {y1}, Z {z0} … {z1} mm")
+    cut = integer(round(getattr(tp, "cut_length", 0.0)))
+    rapid = integer(round(getattr(tp, "rapid_length", 0.0)))
+    estimated = format_duration(getattr(tp, "estimated_time", 0.0))
+    parts.append(fill(QCoreApplication.translate("Summary", "cut %1 mm, rapid %2 mm, estimated %3"),
+                      cut, rapid, estimated))
+    errors_said, warnings_said = texts.problems(len(errors), len(warnings))
+    status = fill(QCoreApplication.translate("Summary", "%1, %2"), errors_said, warnings_said)
     colour = "#e05050" if errors else ("#c8a000" if warnings else "#39a353")
     parts.append(f"<span style='color:{colour}'>{status}</span>")
     return "<br>".join(p for p in parts if p)

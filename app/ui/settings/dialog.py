@@ -6,7 +6,9 @@ from __future__ import annotations
 
 from dataclasses import fields, replace
 
+from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, QEvent, Signal
 from PySide6.QtWidgets import (
+    QComboBox,
     QDialog,
     QDialogButtonBox,
     QFormLayout,
@@ -17,29 +19,49 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from app.i18n import localize
 from app.profile import MachineProfile, ProfileError, check_value
+from app.ui.language import LANGUAGES, current_language
+from app.ui.numbers import fill, general, parse_number
+from app.ui.settings.labels import field_doc, field_label
 
 TITLES = {
-    "pid": "PID gains", "motion": "Feeds && motion", "link": "Link && heartbeat",
-    "axis": "Axis drive", "spindle": "Spindle", "travel": "Travel && offset",
-    "job": "Program stops && end",
+    "pid": QT_TRANSLATE_NOOP("SettingsDialog", "PID gains"),
+    "motion": QT_TRANSLATE_NOOP("SettingsDialog", "Feeds && motion"),
+    "link": QT_TRANSLATE_NOOP("SettingsDialog", "Link && heartbeat"),
+    "axis": QT_TRANSLATE_NOOP("SettingsDialog", "Axis drive"),
+    "spindle": QT_TRANSLATE_NOOP("SettingsDialog", "Spindle"),
+    "travel": QT_TRANSLATE_NOOP("SettingsDialog", "Travel && offset"),
+    "job": QT_TRANSLATE_NOOP("SettingsDialog", "Program stops && end"),
 }
 ORDER = ("pid", "motion", "link", "axis", "spindle", "travel", "job")
 
 
 class SettingsDialog(QDialog):
+    language_chosen = Signal(str)  # "vi" or "en": the window switches at once
+
     def __init__(self, profile: MachineProfile, parent=None):
         super().__init__(parent)
-        self.setWindowTitle("Settings")
         self.profile = profile
         self.edits: dict[tuple[str, str], QLineEdit] = {}
+        self.labels: dict[tuple[str, str], QLabel] = {}
+        self.language = QComboBox()
+        for code, name in LANGUAGES.items():
+            self.language.addItem(name, code)
+        self.language.setCurrentIndex(max(self.language.findData(current_language()), 0))
+        self.language.activated.connect(lambda i: self.language_chosen.emit(self.language.itemData(i)))
+        self.language_label = QLabel()
+        self.language_label.setBuddy(self.language)
+        language_row = QFormLayout()
+        language_row.addRow(self.language_label, self.language)
         self.tabs = QTabWidget()
+        self.tabs.setUsesScrollButtons(False)  # every tab title whole (Vietnamese ones are longer)
         for section in ORDER:
-            self.tabs.addTab(self._section_page(section), TITLES[section])
+            self.tabs.addTab(self._section_page(section), "")
         self.error = QLabel("")
         self.error.setStyleSheet("color: #e05050;")
         self.error.setWordWrap(True)
-        note = QLabel("PID gains are pushed to the machine (SET) when you press OK while connected.")
+        note = self.note = QLabel()
         note.setWordWrap(True)
         buttons = QDialogButtonBox(
             QDialogButtonBox.StandardButton.Ok
@@ -51,22 +73,46 @@ class SettingsDialog(QDialog):
         buttons.button(QDialogButtonBox.StandardButton.RestoreDefaults).clicked.connect(self.restore_defaults)
         self.button_box = buttons
         layout = QVBoxLayout(self)
+        layout.addLayout(language_row)
         layout.addWidget(self.tabs)
         layout.addWidget(note)
         layout.addWidget(self.error)
         layout.addWidget(buttons)
+        self.retranslate_ui()
+
+    def retranslate_ui(self) -> None:
+        self.setWindowTitle(self.tr("Settings"))
+        self.language_label.setText(self.tr("&Language"))
+        self.language.setToolTip(self.tr("the window's language; it changes at once"))
+        for index, section in enumerate(ORDER):
+            self.tabs.setTabText(index, QCoreApplication.translate("SettingsDialog", TITLES[section]))
+        note = self.tr("PID gains are pushed to the machine (SET) when you press OK while connected.")
+        self.note.setText(note)
+        for section in ORDER:
+            self._label_section(section)
+
+    def changeEvent(self, event) -> None:  # noqa: N802 (Qt override)
+        if event.type() == QEvent.Type.LanguageChange:
+            self.retranslate_ui()
+        super().changeEvent(event)
+
+    def _label_section(self, section: str) -> None:
+        for spec in fields(getattr(self.profile, section)):
+            lo, hi = spec.metadata["range"]
+            doc = field_doc(spec.metadata.get("doc", ""))
+            tip = fill(self.tr("range %1 … %2"), general(lo), general(hi))
+            self.edits[section, spec.name].setToolTip(f"{doc} — {tip}" if doc else tip)
+            self.labels[section, spec.name].setText(field_label(spec.name))
 
     def _section_page(self, section: str) -> QWidget:
         page = QWidget()
         form = QFormLayout(page)
         values = getattr(self.profile, section)
         for spec in fields(values):
-            lo, hi = spec.metadata["range"]
-            edit = QLineEdit(f"{getattr(values, spec.name):g}")
-            doc = spec.metadata.get("doc", "")
-            edit.setToolTip(f"{doc + ' — ' if doc else ''}range {lo:g} … {hi:g}")
+            edit = QLineEdit(general(getattr(values, spec.name)))
             self.edits[section, spec.name] = edit
-            form.addRow(spec.name.replace("_", " "), edit)
+            self.labels[section, spec.name] = label = QLabel()
+            form.addRow(label, edit)
         return page
 
     def restore_defaults(self) -> None:
@@ -74,18 +120,19 @@ class SettingsDialog(QDialog):
 
     def _fill(self, profile: MachineProfile) -> None:
         for (section, key), edit in self.edits.items():
-            edit.setText(f"{getattr(getattr(profile, section), key):g}")
+            edit.setText(general(getattr(getattr(profile, section), key)))
 
     def checked_profile(self) -> tuple[MachineProfile | None, list[str]]:
         """The profile the fields describe, or None and the problems found."""
         problems, changes = [], {}
         for (section, key), edit in self.edits.items():
             try:
-                value = check_value(getattr(self.profile, section), key, edit.text().strip(), TITLES[section])
+                title = QCoreApplication.translate("SettingsDialog", TITLES[section])
+                value = check_value(getattr(self.profile, section), key, parse_number(edit.text()), title)
                 changes.setdefault(section, {})[key] = value
                 edit.setStyleSheet("")
             except ProfileError as exc:
-                problems.append(str(exc).replace("&&", "&"))
+                problems.append(localize(exc.args[0] if exc.args else str(exc)).replace("&&", "&"))
                 edit.setStyleSheet("background: rgba(255, 60, 60, 80);")
         if problems:
             return None, problems
@@ -95,7 +142,7 @@ class SettingsDialog(QDialog):
     def accept(self) -> None:
         profile, problems = self.checked_profile()
         if problems:
-            self.error.setText("Not saved: " + "; ".join(problems))
+            self.error.setText(fill(self.tr("Not saved: %1"), "; ".join(problems)))
             return
         self.profile = profile
         super().accept()

@@ -12,6 +12,7 @@ import json
 from dataclasses import dataclass
 from pathlib import Path
 
+from app.i18n import msg
 from app.profile import MachineProfile, ProfileError, with_overrides
 
 VERSION = 1
@@ -30,12 +31,14 @@ def load_settings(path: Path) -> Loaded:
     except FileNotFoundError:
         return Loaded(MachineProfile())
     except (OSError, UnicodeDecodeError) as exc:
-        return Loaded(MachineProfile(), f"{path}: cannot read ({exc}); using the defaults")
+        problem = msg("{path}: cannot read ({error}); using the defaults", path=str(path), error=str(exc))
+        return Loaded(MachineProfile(), problem)
     try:
         data = _migrate(json.loads(text))
         return Loaded(with_overrides(MachineProfile(), data["profile"], str(path)))
     except (json.JSONDecodeError, ProfileError, KeyError, TypeError, ValueError) as exc:
-        return Loaded(MachineProfile(), f"The settings file is damaged ({exc}); using the defaults.")
+        return Loaded(MachineProfile(), msg("The settings file is damaged ({error}); using the defaults.",
+                                            error=str(exc)))
 
 
 def _migrate(data) -> dict:

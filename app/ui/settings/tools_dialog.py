@@ -8,6 +8,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from PySide6.QtCore import QCoreApplication
 from PySide6.QtGui import QBrush, QColor
 from PySide6.QtWidgets import (
     QDialog,
@@ -21,6 +22,8 @@ from PySide6.QtWidgets import (
 )
 
 from app.gcode.tools import FILE_NAME, Tool, ToolError, check_tool, save_tools
+from app.i18n import localize
+from app.ui.numbers import fill, general, parse_number
 
 COLUMNS = 4  # number, diameter, length, comment
 _BAD = QBrush(QColor(255, 60, 60, 80))
@@ -69,7 +72,7 @@ class ToolTableDialog(QDialog):
     def add_row(self, number: int, diameter: float = 0.0, length: float = 0.0, comment: str = "") -> None:
         row = self.table.rowCount()
         self.table.insertRow(row)
-        for column, text in enumerate((f"{number}", f"{diameter:g}", f"{length:g}", comment)):
+        for column, text in enumerate((f"{number}", general(diameter), general(length), comment)):
             self.table.setItem(row, column, QTableWidgetItem(text))
 
     def remove_selected(self) -> None:
@@ -86,16 +89,16 @@ class ToolTableDialog(QDialog):
         values = []
         for column, (text, name) in enumerate(zip(texts, names, strict=True)):
             try:
-                values.append(int(text) if column == 0 else float(text))
+                values.append(int(text) if column == 0 else float(parse_number(text)))
             except ValueError:
                 self._mark(row, column)
-                raise ToolError(self.tr("row %1: %2 '%3' is not a number").replace("%1", str(row + 1))
-                                .replace("%2", name).replace("%3", text)) from None
+                message = fill(self.tr("row %1: %2 '%3' is not a number"), row + 1, name, text)
+                raise ToolError(message) from None
         try:
             check_tool(*values)
         except ToolError as exc:
             self._mark(row, 1 if "diameter" in str(exc) else 2 if "length" in str(exc) else 0)
-            message = self.tr("row %1: %2").replace("%1", str(row + 1)).replace("%2", str(exc))
+            message = fill(self.tr("row %1: %2"), row + 1, localize(exc.args[0]))
             raise ToolError(message) from None
         return Tool(values[0], values[1], values[2], self._text(row, 3))
 
@@ -119,15 +122,14 @@ class ToolTableDialog(QDialog):
                 continue
             if tool.number in tools:
                 self._mark(row, 0)
-                problems.append(self.tr("row %1: tool %2 is listed twice").replace("%1", str(row + 1))
-                                .replace("%2", str(tool.number)))
+                problems.append(fill(self.tr("row %1: tool %2 is listed twice"), row + 1, tool.number))
             tools[tool.number] = tool
         return (None, problems) if problems else (tools, [])
 
     def accept(self) -> None:
         tools, problems = self.checked_tools()
         if problems:
-            self.error.setText(self.tr("Not saved: %1").replace("%1", "; ".join(problems)))
+            self.error.setText(fill(self.tr("Not saved: %1"), "; ".join(problems)))
             return
         self.tools = tools
         super().accept()
@@ -143,10 +145,13 @@ def open_tool_table(window) -> ToolTableDialog:
         try:
             save_tools(Path(window.config_dir) / FILE_NAME, dialog.tools)
         except OSError as exc:
-            window.notifier.error(dialog.tr("Tool table not saved"),
-                                  dialog.tr("Cannot write the tool table: %1").replace("%1", str(exc)))
+            why = QCoreApplication.translate("ToolTableDialog", "Cannot write the tool table: %1")
+            window.notifier.error(QCoreApplication.translate("ToolTableDialog", "Tool table not saved"),
+                                  fill(why, exc.strerror or exc))
             return
-        window.status.showMessage(dialog.tr("Tool table saved: it applies to the next program opened"), 5000)
+        saved = QCoreApplication.translate("ToolTableDialog",
+                                           "Tool table saved: it applies to the next program opened")
+        window.status.showMessage(saved, 5000)
 
     dialog.accepted.connect(apply)
     dialog.open()

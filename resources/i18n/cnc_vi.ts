@@ -1,0 +1,1505 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="vi">
+<context>
+    <name>ConnectionBar</name>
+    <message>
+        <source>Port</source>
+        <translation>Cổng</translation>
+    </message>
+    <message>
+        <source>Baud</source>
+        <translation>Baud</translation>
+    </message>
+    <message>
+        <source>Machine:</source>
+        <translation>Máy:</translation>
+    </message>
+    <message>
+        <source>Disconnect</source>
+        <translation>Ngắt kết nối</translation>
+    </message>
+    <message>
+        <source>Connect</source>
+        <translation>Kết nối</translation>
+    </message>
+    <message>
+        <source>link %1</source>
+        <translation>liên kết: %1</translation>
+    </message>
+</context>
+<context>
+    <name>ConsoleView</name>
+    <message>
+        <source>filter (text)</source>
+        <translation>lọc (chữ)</translation>
+    </message>
+    <message>
+        <source>frames sent to the machine</source>
+        <translation>khung gửi xuống máy</translation>
+    </message>
+    <message>
+        <source>frames received from the machine</source>
+        <translation>khung nhận từ máy</translation>
+    </message>
+    <message>
+        <source>stream/status frames</source>
+        <translation>khung dữ liệu/trạng thái</translation>
+    </message>
+    <message>
+        <source>pause scrolling</source>
+        <translation>dừng cuộn</translation>
+    </message>
+    <message>
+        <source>MDI: a G-code line (G0 X10) or a command (HOME, SD LIST, GET KP_X)</source>
+        <translation>MDI: một dòng G-code (G0 X10) hoặc một lệnh (HOME, SD LIST, GET KP_X)</translation>
+    </message>
+    <message>
+        <source>Send</source>
+        <translation>Gửi</translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation>Xóa</translation>
+    </message>
+    <message>
+        <source>resends %1 (%2 %)</source>
+        <translation>gửi lại %1 (%2 %)</translation>
+    </message>
+</context>
+<context>
+    <name>DiagnosticsView</name>
+    <message>
+        <source>%1 error mm</source>
+        <translation>lệch %1 mm</translation>
+    </message>
+</context>
+<context>
+    <name>JobStatusBar</name>
+    <message>
+        <source>machine position in work coordinates (mm)</source>
+        <translation>vị trí máy theo tọa độ phôi (mm)</translation>
+    </message>
+    <message>
+        <source>no job</source>
+        <translation>chưa chạy chương trình</translation>
+    </message>
+    <message>
+        <source>line %1/%2 · elapsed %3 · remaining %4</source>
+        <translation>dòng %1/%2 · đã chạy %3 · còn lại %4</translation>
+    </message>
+</context>
+<context>
+    <name>JogPanel</name>
+    <message>
+        <source>Jog</source>
+        <translation>Chạy tay (jog)</translation>
+    </message>
+    <message>
+        <source>Jog one axis by the chosen step at the feed beside it</source>
+        <translation>Di chuyển từng trục theo bước đã chọn, với tốc độ chạy dao bên cạnh</translation>
+    </message>
+    <message>
+        <source>%1 mm</source>
+        <translation>%1 mm</translation>
+    </message>
+    <message>
+        <source> mm/min</source>
+        <translation> mm/phút</translation>
+    </message>
+</context>
+<context>
+    <name>LinkAlert</name>
+    <message>
+        <source>The USB link between this computer and the machine is lost: no valid frame for 3 s.</source>
+        <translation>Mất kết nối USB giữa máy tính và máy CNC: không nhận được khung hợp lệ nào trong 3 s.</translation>
+    </message>
+    <message>
+        <source>The machine&apos;s internal link (UART between the main board and the motion board) is lost.</source>
+        <translation>Mất liên kết bên trong máy (UART giữa bo mạch chính và bo điều khiển động cơ).</translation>
+    </message>
+    <message>
+        <source>The machine carries on with the job from its SD card.</source>
+        <translation>Máy tiếp tục chạy chương trình từ thẻ SD của nó.</translation>
+    </message>
+    <message>
+        <source>The machine holds the job on the path (feed hold), spindle as it was: it has not lost its place.</source>
+        <translation>Máy giữ dao tại chỗ trên đường chạy (tạm dừng chạy dao), trục chính giữ nguyên: máy không mất vị trí.</translation>
+    </message>
+    <message>
+        <source>No job was running; the machine stays where it is.</source>
+        <translation>Không có chương trình nào đang chạy; máy đứng yên tại chỗ.</translation>
+    </message>
+    <message>
+        <source>Link lost</source>
+        <translation>Mất kết nối</translation>
+    </message>
+    <message>
+        <source>Reconnect</source>
+        <translation>Kết nối lại</translation>
+    </message>
+    <message>
+        <source>Resume job</source>
+        <translation>Chạy tiếp</translation>
+    </message>
+    <message>
+        <source>Home and restart</source>
+        <translation>Về gốc và chạy lại</translation>
+    </message>
+    <message>
+        <source>Abandon job</source>
+        <translation>Hủy chương trình</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Đóng</translation>
+    </message>
+    <message>
+        <source>⚠ Link to the machine lost</source>
+        <translation>⚠ Mất kết nối với máy</translation>
+    </message>
+    <message>
+        <source>Check the cable and the machine&apos;s power, then reconnect.</source>
+        <translation>Kiểm tra cáp và nguồn điện của máy, rồi kết nối lại.</translation>
+    </message>
+    <message>
+        <source>✓ Link restored</source>
+        <translation>✓ Đã kết nối lại</translation>
+    </message>
+    <message>
+        <source>The machine kept its position. Resume the job at line %1 of %2: no line runs twice, none is skipped.</source>
+        <translation>Máy vẫn giữ vị trí. Chạy tiếp chương trình từ dòng %1 trên %2: không dòng nào chạy hai lần, không dòng nào bị bỏ qua.</translation>
+    </message>
+    <message>
+        <source>The machine was reset and no longer knows its position. Home it, check the stock, then restart at line %1 of %2 with the feed and spindle restored.</source>
+        <translation>Máy đã khởi động lại và không còn biết vị trí. Hãy cho máy về gốc, kiểm tra phôi, rồi chạy lại từ dòng %1 trên %2 với tốc độ chạy dao và trục chính như cũ.</translation>
+    </message>
+    <message>
+        <source>The machine answers again.</source>
+        <translation>Máy đã trả lời trở lại.</translation>
+    </message>
+</context>
+<context>
+    <name>LinkState</name>
+    <message>
+        <source>connected</source>
+        <translation>đã kết nối</translation>
+    </message>
+    <message>
+        <source>degraded</source>
+        <translation>chập chờn</translation>
+    </message>
+    <message>
+        <source>lost</source>
+        <translation>mất kết nối</translation>
+    </message>
+    <message>
+        <source>disconnected</source>
+        <translation>chưa kết nối</translation>
+    </message>
+    <message>
+        <source>connecting</source>
+        <translation>đang kết nối</translation>
+    </message>
+</context>
+<context>
+    <name>Loader</name>
+    <message>
+        <source>%1 could not be loaded: %2</source>
+        <translation>Không tải được %1: %2</translation>
+    </message>
+    <message>
+        <source>%1 could not be read as G-code: %2</source>
+        <translation>Không đọc được %1 như G-code: %2</translation>
+    </message>
+    <message>
+        <source>%1 does not exist (moved or deleted?).</source>
+        <translation>%1 không tồn tại (đã bị chuyển đi hoặc xóa?).</translation>
+    </message>
+    <message>
+        <source>%1 cannot be opened: %2.</source>
+        <translation>Không mở được %1: %2.</translation>
+    </message>
+    <message>
+        <source>%1 is not a G-code file (it holds binary data, such as an image).</source>
+        <translation>%1 không phải file G-code (nó chứa dữ liệu nhị phân, ví dụ một hình ảnh).</translation>
+    </message>
+</context>
+<context>
+    <name>LoaderTexts</name>
+    <message numerus="yes">
+        <source>%1 does not look like G-code: nothing in it can be run (%n error(s); first, line %2: %3).</source>
+        <translation>
+            <numerusform>%1 không giống G-code: không có gì trong đó chạy được (%n lỗi; lỗi đầu tiên ở dòng %2: %3).</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>MachineCodes</name>
+    <message>
+        <source>a limit switch was hit</source>
+        <translation>công tắc hành trình bị chạm</translation>
+    </message>
+    <message>
+        <source>following error: an axis fell behind its path</source>
+        <translation>sai lệch bám: một trục bị tụt lại so với quỹ đạo</translation>
+    </message>
+    <message>
+        <source>the machine lost the computer link</source>
+        <translation>máy mất kết nối với máy tính</translation>
+    </message>
+    <message>
+        <source>the link between the machine&apos;s two boards is lost</source>
+        <translation>mất liên kết giữa hai bo mạch của máy</translation>
+    </message>
+    <message>
+        <source>the machine (re)started</source>
+        <translation>máy vừa khởi động (lại)</translation>
+    </message>
+    <message>
+        <source>the machine is not homed</source>
+        <translation>máy chưa về gốc</translation>
+    </message>
+    <message>
+        <source>the move would leave the travel (soft limit)</source>
+        <translation>lệnh di chuyển sẽ vượt hành trình (giới hạn mềm)</translation>
+    </message>
+    <message>
+        <source>the machine cannot read this line</source>
+        <translation>máy không đọc được dòng này</translation>
+    </message>
+    <message>
+        <source>a value is out of range</source>
+        <translation>một giá trị nằm ngoài phạm vi</translation>
+    </message>
+    <message>
+        <source>no feed rate (F) given</source>
+        <translation>chưa có tốc độ chạy dao (F)</translation>
+    </message>
+    <message>
+        <source>the arc is not valid</source>
+        <translation>cung tròn không hợp lệ</translation>
+    </message>
+    <message>
+        <source>the line number is out of order</source>
+        <translation>số thứ tự dòng không đúng</translation>
+    </message>
+    <message>
+        <source>the machine is busy</source>
+        <translation>máy đang bận</translation>
+    </message>
+    <message>
+        <source>the cover is open: no motion allowed</source>
+        <translation>nắp che đang mở: không được phép chuyển động</translation>
+    </message>
+    <message>
+        <source>the machine is in alarm: home it after a fault</source>
+        <translation>máy đang báo lỗi: cho máy về gốc sau sự cố</translation>
+    </message>
+    <message>
+        <source>the machine&apos;s queue is full</source>
+        <translation>hàng đợi lệnh của máy đã đầy</translation>
+    </message>
+    <message>
+        <source>wrong arguments for the command</source>
+        <translation>sai tham số của lệnh</translation>
+    </message>
+    <message>
+        <source>no such setting</source>
+        <translation>không có thông số này</translation>
+    </message>
+    <message>
+        <source>the machine does not know this command</source>
+        <translation>máy không hiểu lệnh này</translation>
+    </message>
+    <message>
+        <source>the file name is not allowed on the card</source>
+        <translation>tên file không hợp lệ trên thẻ nhớ</translation>
+    </message>
+    <message>
+        <source>no such file on the card</source>
+        <translation>không có file này trên thẻ nhớ</translation>
+    </message>
+    <message>
+        <source>the SD card is full</source>
+        <translation>thẻ SD đã đầy</translation>
+    </message>
+    <message>
+        <source>the file on the card does not match (CRC)</source>
+        <translation>file trên thẻ nhớ không khớp (CRC)</translation>
+    </message>
+    <message>
+        <source>axis %1 in the %2 direction: %3 mm is past the limit %4 mm</source>
+        <translation>trục %1 theo chiều %2: %3 mm vượt quá giới hạn %4 mm</translation>
+    </message>
+</context>
+<context>
+    <name>MachineControls</name>
+    <message>
+        <source>Home</source>
+        <translation>Về gốc máy</translation>
+    </message>
+    <message>
+        <source>Home (recover)</source>
+        <translation>Về gốc (sau sự cố)</translation>
+    </message>
+    <message>
+        <source>after a fault: first move away from the switches, then home</source>
+        <translation>sau sự cố: trước hết lùi ra khỏi công tắc hành trình, rồi về gốc máy</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Chạy</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Tạm dừng</translation>
+    </message>
+    <message>
+        <source>feed hold, at once</source>
+        <translation>dừng chạy dao ngay lập tức</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>Tiếp tục</translation>
+    </message>
+    <message>
+        <source>STOP</source>
+        <translation>DỪNG</translation>
+    </message>
+    <message>
+        <source>stop and flush, at once</source>
+        <translation>dừng khẩn và xóa hàng đợi ngay lập tức</translation>
+    </message>
+    <message>
+        <source>On</source>
+        <translation>Bật</translation>
+    </message>
+    <message>
+        <source>Off</source>
+        <translation>Tắt</translation>
+    </message>
+    <message>
+        <source>Job</source>
+        <translation>Chương trình</translation>
+    </message>
+    <message>
+        <source>Check mode (dry run, no motion)</source>
+        <translation>Chạy thử (không chuyển động)</translation>
+    </message>
+    <message>
+        <source>Spindle</source>
+        <translation>Trục chính</translation>
+    </message>
+    <message>
+        <source> rpm</source>
+        <translation> vòng/phút</translation>
+    </message>
+    <message>
+        <source>Work zero (here)</source>
+        <translation>Đặt gốc phôi (tại đây)</translation>
+    </message>
+    <message>
+        <source>measured —</source>
+        <translation>đo được —</translation>
+    </message>
+    <message>
+        <source>measured %1 rpm</source>
+        <translation>đo được %1 vòng/phút</translation>
+    </message>
+</context>
+<context>
+    <name>MachineFlags</name>
+    <message>
+        <source>homed</source>
+        <translation>đã về gốc</translation>
+    </message>
+    <message>
+        <source>cover open</source>
+        <translation>nắp mở</translation>
+    </message>
+    <message>
+        <source>host lost</source>
+        <translation>mất máy tính</translation>
+    </message>
+    <message>
+        <source>UART lost</source>
+        <translation>mất UART</translation>
+    </message>
+    <message>
+        <source>spindle</source>
+        <translation>trục chính quay</translation>
+    </message>
+    <message>
+        <source>SD</source>
+        <translation>chạy từ SD</translation>
+    </message>
+</context>
+<context>
+    <name>MachinePanelView</name>
+    <message>
+        <source>Cover open</source>
+        <translation>Nắp che mở</translation>
+    </message>
+    <message>
+        <source>the cover switch: while open the machine refuses every motion</source>
+        <translation>công tắc nắp che: khi nắp mở, máy từ chối mọi chuyển động</translation>
+    </message>
+    <message>
+        <source>the machine&apos;s 128 x 64 OLED (its 5x7 font is ASCII only)</source>
+        <translation>màn hình OLED 128 x 64 của máy (phông 5x7 chỉ có ký tự ASCII)</translation>
+    </message>
+    <message>
+        <source>MRESET: resets the main board; RESET: the motion board</source>
+        <translation>MRESET: khởi động lại bo mạch chính; RESET: bo điều khiển động cơ</translation>
+    </message>
+    <message>
+        <source>no machine panel (connect to the built-in simulator)</source>
+        <translation>không có bảng điều khiển máy (hãy kết nối với bộ mô phỏng có sẵn)</translation>
+    </message>
+    <message>
+        <source>LED</source>
+        <translation>Đèn LED</translation>
+    </message>
+    <message>
+        <source>buzzer</source>
+        <translation>còi</translation>
+    </message>
+    <message>
+        <source>buzzer off</source>
+        <translation>còi tắt</translation>
+    </message>
+</context>
+<context>
+    <name>MachineState</name>
+    <message>
+        <source>IDLE</source>
+        <translation>CHỜ</translation>
+    </message>
+    <message>
+        <source>HOMING</source>
+        <translation>ĐANG VỀ GỐC</translation>
+    </message>
+    <message>
+        <source>RUN</source>
+        <translation>ĐANG CHẠY</translation>
+    </message>
+    <message>
+        <source>HOLD</source>
+        <translation>TẠM DỪNG</translation>
+    </message>
+    <message>
+        <source>JOG</source>
+        <translation>CHẠY TAY</translation>
+    </message>
+    <message>
+        <source>ALARM</source>
+        <translation>BÁO LỖI</translation>
+    </message>
+</context>
+<context>
+    <name>MainWindow</name>
+    <message>
+        <source>Program</source>
+        <translation>Chương trình</translation>
+    </message>
+    <message>
+        <source>Machine controls</source>
+        <translation>Điều khiển máy</translation>
+    </message>
+    <message>
+        <source>SD card</source>
+        <translation>Thẻ SD</translation>
+    </message>
+    <message>
+        <source>Machine panel</source>
+        <translation>Bảng điều khiển máy</translation>
+    </message>
+    <message>
+        <source>Live position</source>
+        <translation>Vị trí trực tiếp</translation>
+    </message>
+    <message>
+        <source>Console</source>
+        <translation>Bảng lệnh</translation>
+    </message>
+    <message>
+        <source>Settings</source>
+        <translation>Cài đặt</translation>
+    </message>
+    <message>
+        <source>Tool table</source>
+        <translation>Bảng dao</translation>
+    </message>
+    <message>
+        <source>CNC mill controller</source>
+        <translation>Điều khiển máy phay CNC</translation>
+    </message>
+    <message>
+        <source>Connection</source>
+        <translation>Kết nối</translation>
+    </message>
+    <message>
+        <source>Position</source>
+        <translation>Vị trí</translation>
+    </message>
+    <message>
+        <source>Diagnostics (commanded vs measured)</source>
+        <translation>Chẩn đoán (lệnh so với đo được)</translation>
+    </message>
+    <message>
+        <source>Loading %1…</source>
+        <translation>Đang tải %1…</translation>
+    </message>
+</context>
+<context>
+    <name>Menus</name>
+    <message>
+        <source>G-code (*.ngc *.nc *.gcode *.gc *.tap *.cnc *.txt);;All files (*)</source>
+        <translation>G-code (*.ngc *.nc *.gcode *.gc *.tap *.cnc *.txt);;Mọi file (*)</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Tệp</translation>
+    </message>
+    <message>
+        <source>&amp;Machine</source>
+        <translation>&amp;Máy</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Xem</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>Trợ &amp;giúp</translation>
+    </message>
+    <message>
+        <source>&amp;Open…</source>
+        <translation>&amp;Mở…</translation>
+    </message>
+    <message>
+        <source>Open &amp;recent</source>
+        <translation>Mở &amp;gần đây</translation>
+    </message>
+    <message>
+        <source>&amp;Reload</source>
+        <translation>&amp;Tải lại</translation>
+    </message>
+    <message>
+        <source>&amp;Save to SD card…</source>
+        <translation>&amp;Lưu vào thẻ SD…</translation>
+    </message>
+    <message>
+        <source>Save screens&amp;hot…</source>
+        <translation>Lưu ả&amp;nh màn hình…</translation>
+    </message>
+    <message>
+        <source>Se&amp;ttings…</source>
+        <translation>&amp;Cài đặt…</translation>
+    </message>
+    <message>
+        <source>Tool ta&amp;ble…</source>
+        <translation>&amp;Bảng dao…</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Thoát</translation>
+    </message>
+    <message>
+        <source>&amp;Connect / disconnect</source>
+        <translation>&amp;Kết nối / ngắt kết nối</translation>
+    </message>
+    <message>
+        <source>&amp;Home</source>
+        <translation>&amp;Về gốc máy</translation>
+    </message>
+    <message>
+        <source>Home after a &amp;fault</source>
+        <translation>Về gốc sau &amp;sự cố</translation>
+    </message>
+    <message>
+        <source>&amp;Start job</source>
+        <translation>&amp;Chạy chương trình</translation>
+    </message>
+    <message>
+        <source>&amp;Pause (feed hold)</source>
+        <translation>&amp;Tạm dừng (dừng chạy dao)</translation>
+    </message>
+    <message>
+        <source>R&amp;esume</source>
+        <translation>Tiếp t&amp;ục</translation>
+    </message>
+    <message>
+        <source>S&amp;top</source>
+        <translation>&amp;Dừng</translation>
+    </message>
+    <message>
+        <source>stop and flush at once</source>
+        <translation>dừng khẩn và xóa hàng đợi ngay lập tức</translation>
+    </message>
+    <message>
+        <source>&amp;Jog</source>
+        <translation>Chạy &amp;tay</translation>
+    </message>
+    <message>
+        <source>Step 0.1 mm</source>
+        <translation>Bước 0,1 mm</translation>
+    </message>
+    <message>
+        <source>Step 1 mm</source>
+        <translation>Bước 1 mm</translation>
+    </message>
+    <message>
+        <source>Step 10 mm</source>
+        <translation>Bước 10 mm</translation>
+    </message>
+    <message>
+        <source>Spindle o&amp;n</source>
+        <translation>&amp;Bật trục chính</translation>
+    </message>
+    <message>
+        <source>Spindle o&amp;ff</source>
+        <translation>Tắ&amp;t trục chính</translation>
+    </message>
+    <message>
+        <source>Set work zero X&amp;Y here</source>
+        <translation>Đặt gốc phôi X&amp;Y tại đây</translation>
+    </message>
+    <message>
+        <source>Set work zero &amp;Z here</source>
+        <translation>Đặt gốc phôi &amp;Z tại đây</translation>
+    </message>
+    <message>
+        <source>Check mode (&amp;dry run)</source>
+        <translation>Chạy t&amp;hử (không chuyển động)</translation>
+    </message>
+    <message>
+        <source>&amp;Fit program</source>
+        <translation>&amp;Vừa khung chương trình</translation>
+    </message>
+    <message>
+        <source>Zoom &amp;in</source>
+        <translation>Phóng &amp;to</translation>
+    </message>
+    <message>
+        <source>Zoom &amp;out</source>
+        <translation>Thu &amp;nhỏ</translation>
+    </message>
+    <message>
+        <source>&amp;Grid</source>
+        <translation>&amp;Lưới</translation>
+    </message>
+    <message>
+        <source>&amp;Dark palette</source>
+        <translation>Giao diện &amp;tối</translation>
+    </message>
+    <message>
+        <source>&amp;Reset layout</source>
+        <translation>&amp;Đặt lại bố cục</translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>&amp;Ngôn ngữ</translation>
+    </message>
+    <message>
+        <source>Operator &amp;guide</source>
+        <translation>&amp;Hướng dẫn sử dụng</translation>
+    </message>
+    <message>
+        <source>&amp;About</source>
+        <translation>&amp;Giới thiệu</translation>
+    </message>
+    <message>
+        <source>Open G-code</source>
+        <translation>Mở file G-code</translation>
+    </message>
+    <message>
+        <source>(none yet)</source>
+        <translation>(chưa có)</translation>
+    </message>
+    <message>
+        <source>Save screenshot</source>
+        <translation>Lưu ảnh màn hình</translation>
+    </message>
+    <message>
+        <source>PNG image (*.png)</source>
+        <translation>Ảnh PNG (*.png)</translation>
+    </message>
+    <message>
+        <source>Operator guide</source>
+        <translation>Hướng dẫn sử dụng</translation>
+    </message>
+    <message>
+        <source>About</source>
+        <translation>Giới thiệu</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;CNC mill controller&lt;/b&gt;&lt;br&gt;A desktop controller for a small 3-axis mill: G-code preview, SD upload, streaming over a checked frame protocol with resume after a link loss, and a simulator of the machine.&lt;br&gt;PySide6 + pyqtgraph. MIT licence.</source>
+        <translation>&lt;b&gt;Điều khiển máy phay CNC&lt;/b&gt;&lt;br&gt;Phần mềm điều khiển máy phay CNC 3 trục cỡ nhỏ: xem trước G-code, lưu vào thẻ SD, gửi chương trình qua giao thức khung có kiểm tra, chạy tiếp sau khi mất kết nối, và bộ mô phỏng máy.&lt;br&gt;PySide6 + pyqtgraph. Giấy phép MIT.</translation>
+    </message>
+    <message>
+        <source>1. Connect (the built-in simulator is first in the port list).
+2. File ▸ Open (or drop a file on the window); check the preview and the Problems list.
+3. Optionally save the program to the SD card (SD card dock).
+4. Home (Ctrl+H), then Start (Ctrl+R). Pause Ctrl+P, Resume Ctrl+Shift+P, Stop Esc.
+5. Jog with Ctrl+arrows (X/Y) and Ctrl+PgUp/PgDn (Z); step Alt+1/2/3.
+If the link drops, the machine holds; reconnect and resume from the alert.</source>
+        <translation>1. Kết nối (bộ mô phỏng có sẵn đứng đầu danh sách cổng).
+2. Tệp ▸ Mở (hoặc kéo thả file vào cửa sổ); kiểm tra hình xem trước và danh sách Sự cố.
+3. Nếu muốn, lưu chương trình vào thẻ SD (khung Thẻ SD).
+4. Về gốc máy (Ctrl+H), rồi Chạy (Ctrl+R). Tạm dừng Ctrl+P, Tiếp tục Ctrl+Shift+P, Dừng Esc.
+5. Chạy tay bằng Ctrl+mũi tên (X/Y) và Ctrl+PgUp/PgDn (Z); bước Alt+1/2/3.
+Nếu mất kết nối, máy giữ nguyên vị trí; kết nối lại và chạy tiếp từ hộp thông báo.</translation>
+    </message>
+</context>
+<context>
+    <name>OperatorActions</name>
+    <message>
+        <source>Reconnecting…</source>
+        <translation>Đang kết nối lại…</translation>
+    </message>
+    <message>
+        <source>No program</source>
+        <translation>Chưa có chương trình</translation>
+    </message>
+    <message>
+        <source>Open a G-code file first (File ▸ Open…).</source>
+        <translation>Hãy mở một file G-code trước (Tệp ▸ Mở…).</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 has %n error(s) (first: line %2: %3). Fix them before running.</source>
+        <translation>
+            <numerusform>%1 có %n lỗi (lỗi đầu tiên: dòng %2: %3). Hãy sửa trước khi chạy.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Program has errors</source>
+        <translation>Chương trình có lỗi</translation>
+    </message>
+    <message>
+        <source>Not homed</source>
+        <translation>Chưa về gốc</translation>
+    </message>
+    <message>
+        <source>Home the machine before starting a job (Machine ▸ Home).</source>
+        <translation>Hãy cho máy về gốc trước khi chạy chương trình (Máy ▸ Về gốc máy).</translation>
+    </message>
+    <message>
+        <source>Homing first; press “Home and restart” again once homed.</source>
+        <translation>Đang về gốc trước; khi về gốc xong, bấm lại “Về gốc và chạy lại”.</translation>
+    </message>
+    <message>
+        <source>Open a G-code file to save it to the card.</source>
+        <translation>Hãy mở một file G-code để lưu vào thẻ nhớ.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Opened %1: %n line(s) in %2 s</source>
+        <translation>
+            <numerusform>Đã mở %1: %n dòng trong %2 s</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n error(s); see the Problems list. It can be previewed but not run.</source>
+        <translation>
+            <numerusform>%1: %n lỗi; xem danh sách Sự cố. Có thể xem trước nhưng không chạy được.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Settings not saved</source>
+        <translation>Chưa lưu cài đặt</translation>
+    </message>
+    <message>
+        <source>Cannot write the settings file: %1</source>
+        <translation>Không ghi được file cài đặt: %1</translation>
+    </message>
+    <message>
+        <source>Settings saved and sent to the machine</source>
+        <translation>Đã lưu cài đặt và gửi xuống máy</translation>
+    </message>
+    <message>
+        <source>Settings saved</source>
+        <translation>Đã lưu cài đặt</translation>
+    </message>
+</context>
+<context>
+    <name>Ports</name>
+    <message>
+        <source>Built-in simulator (sim://)</source>
+        <translation>Bộ mô phỏng có sẵn (sim://)</translation>
+    </message>
+</context>
+<context>
+    <name>PositionPlot</name>
+    <message>
+        <source>time</source>
+        <translation>thời gian</translation>
+    </message>
+    <message>
+        <source>position</source>
+        <translation>vị trí</translation>
+    </message>
+</context>
+<context>
+    <name>PreviewWidget</name>
+    <message>
+        <source>wheel: zoom · drag: pan · Ctrl+F: fit · Ctrl+G: grid</source>
+        <translation>con lăn: phóng to/thu nhỏ · kéo: di chuyển · Ctrl+F: vừa khung · Ctrl+G: lưới</translation>
+    </message>
+    <message>
+        <source>rapid</source>
+        <translation>chạy dao nhanh</translation>
+    </message>
+    <message>
+        <source>feed Z ≥ 0</source>
+        <translation>chạy dao Z ≥ 0</translation>
+    </message>
+</context>
+<context>
+    <name>ProgramPanel</name>
+    <message>
+        <source>Line</source>
+        <translation>Dòng</translation>
+    </message>
+    <message>
+        <source>Col</source>
+        <translation>Cột</translation>
+    </message>
+    <message>
+        <source>Message</source>
+        <translation>Nội dung</translation>
+    </message>
+    <message>
+        <source>Source</source>
+        <translation>Mã nguồn</translation>
+    </message>
+    <message>
+        <source>No program open. File ▸ Open… or drop a G-code file on the window.</source>
+        <translation>Chưa mở chương trình nào. Tệp ▸ Mở… hoặc kéo thả file G-code vào cửa sổ.</translation>
+    </message>
+    <message>
+        <source>Problems</source>
+        <translation>Sự cố</translation>
+    </message>
+    <message>
+        <source>No program open.</source>
+        <translation>Chưa mở chương trình nào.</translation>
+    </message>
+    <message numerus="yes">
+        <source>… and %n more</source>
+        <translation>
+            <numerusform>… và %n mục nữa</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n error(s)</source>
+        <translation>
+            <numerusform>%n lỗi</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n warning(s)</source>
+        <translation>
+            <numerusform>%n cảnh báo</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Problems (%1)</source>
+        <translation>Sự cố (%1)</translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation>lỗi</translation>
+    </message>
+    <message>
+        <source>warning</source>
+        <translation>cảnh báo</translation>
+    </message>
+</context>
+<context>
+    <name>QFileDialog</name>
+    <message>
+        <source>Look in:</source>
+        <translation>Tìm trong:</translation>
+    </message>
+    <message>
+        <source>File &amp;name:</source>
+        <translation>&amp;Tên file:</translation>
+    </message>
+    <message>
+        <source>Files of type:</source>
+        <translation>Loại file:</translation>
+    </message>
+    <message>
+        <source>&amp;Open</source>
+        <translation>&amp;Mở</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>&amp;Lưu</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>Lùi</translation>
+    </message>
+    <message>
+        <source>Forward</source>
+        <translation>Tới</translation>
+    </message>
+    <message>
+        <source>Parent Directory</source>
+        <translation>Thư mục cha</translation>
+    </message>
+    <message>
+        <source>Create New Folder</source>
+        <translation>Tạo thư mục mới</translation>
+    </message>
+    <message>
+        <source>List View</source>
+        <translation>Dạng danh sách</translation>
+    </message>
+    <message>
+        <source>Detail View</source>
+        <translation>Dạng chi tiết</translation>
+    </message>
+</context>
+<context>
+    <name>QFileSystemModel</name>
+    <message>
+        <source>Name</source>
+        <translation>Tên</translation>
+    </message>
+    <message>
+        <source>Size</source>
+        <translation>Kích thước</translation>
+    </message>
+    <message>
+        <source>Date Modified</source>
+        <translation>Ngày sửa</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>Loại</translation>
+    </message>
+</context>
+<context>
+    <name>QMessageBox</name>
+    <message>
+        <source>About Qt</source>
+        <translation>Giới thiệu Qt</translation>
+    </message>
+</context>
+<context>
+    <name>QPlatformTheme</name>
+    <message>
+        <source>OK</source>
+        <translation>Đồng ý</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Hủy</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Đóng</translation>
+    </message>
+    <message>
+        <source>Restore Defaults</source>
+        <translation>Khôi phục mặc định</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>Áp dụng</translation>
+    </message>
+    <message>
+        <source>Yes</source>
+        <translation>Có</translation>
+    </message>
+    <message>
+        <source>No</source>
+        <translation>Không</translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation>Mở</translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <translation>Lưu</translation>
+    </message>
+    <message>
+        <source>Show Details...</source>
+        <translation>Xem chi tiết...</translation>
+    </message>
+    <message>
+        <source>Hide Details...</source>
+        <translation>Ẩn chi tiết...</translation>
+    </message>
+</context>
+<context>
+    <name>SdPanel</name>
+    <message>
+        <source>a card name has 1 to 32 letters, digits, &apos;_&apos;, &apos;-&apos; or &apos;.&apos;</source>
+        <translation>tên trên thẻ gồm 1 đến 32 chữ cái không dấu, chữ số, &apos;_&apos;, &apos;-&apos; hoặc &apos;.&apos;</translation>
+    </message>
+    <message>
+        <source>name on the card</source>
+        <translation>tên trên thẻ nhớ</translation>
+    </message>
+    <message>
+        <source>Save program to SD</source>
+        <translation>Lưu chương trình vào SD</translation>
+    </message>
+    <message>
+        <source>send the open program to the card; the machine checks every line</source>
+        <translation>gửi chương trình đang mở vào thẻ nhớ; máy kiểm tra từng dòng</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Tên</translation>
+    </message>
+    <message>
+        <source>Bytes</source>
+        <translation>Byte</translation>
+    </message>
+    <message>
+        <source>Lines</source>
+        <translation>Dòng</translation>
+    </message>
+    <message>
+        <source>Refresh</source>
+        <translation>Làm mới</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Xóa</translation>
+    </message>
+    <message>
+        <source>Run from SD</source>
+        <translation>Chạy từ SD</translation>
+    </message>
+    <message>
+        <source>the machine runs the file on its own, even without this computer</source>
+        <translation>máy tự chạy file, kể cả khi không có máy tính này</translation>
+    </message>
+    <message>
+        <source>uploading…</source>
+        <translation>đang gửi…</translation>
+    </message>
+</context>
+<context>
+    <name>SessionBinder</name>
+    <message>
+        <source>Open failed</source>
+        <translation>Không mở được file</translation>
+    </message>
+    <message>
+        <source>Cannot open file</source>
+        <translation>Không mở được file</translation>
+    </message>
+    <message>
+        <source>Link error</source>
+        <translation>Lỗi kết nối</translation>
+    </message>
+    <message>
+        <source>Cannot connect</source>
+        <translation>Không kết nối được</translation>
+    </message>
+    <message>
+        <source>The port could not be opened: %1</source>
+        <translation>Không mở được cổng: %1</translation>
+    </message>
+    <message>
+        <source>the port failed; details in the console</source>
+        <translation>cổng bị lỗi; chi tiết ở bảng lệnh</translation>
+    </message>
+    <message>
+        <source>The serial port reported an error; the details are in the console.</source>
+        <translation>Cổng serial báo lỗi; chi tiết kỹ thuật ở bảng lệnh.</translation>
+    </message>
+    <message>
+        <source>%1 % resends</source>
+        <translation>%1 % gửi lại</translation>
+    </message>
+    <message>
+        <source>Machine alarm</source>
+        <translation>Máy báo lỗi</translation>
+    </message>
+    <message numerus="yes">
+        <source>saved as %1: %n line(s), verified by the card&apos;s CRC32</source>
+        <translation>
+            <numerusform>đã lưu thành %1: %n dòng, đã kiểm tra bằng CRC32 của thẻ</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>not saved: %1</source>
+        <translation>chưa lưu: %1</translation>
+    </message>
+    <message>
+        <source>Job finished</source>
+        <translation>Chương trình đã chạy xong</translation>
+    </message>
+    <message>
+        <source>Job ended</source>
+        <translation>Chương trình đã dừng</translation>
+    </message>
+    <message>
+        <source>The job did not complete: %1</source>
+        <translation>Chương trình chưa chạy hết: %1</translation>
+    </message>
+    <message>
+        <source>Machine refused</source>
+        <translation>Máy từ chối lệnh</translation>
+    </message>
+</context>
+<context>
+    <name>SettingsDialog</name>
+    <message>
+        <source>PID gains</source>
+        <translation>Hệ số PID</translation>
+    </message>
+    <message>
+        <source>Feeds &amp;&amp; motion</source>
+        <translation>Chạy dao &amp;&amp; chuyển động</translation>
+    </message>
+    <message>
+        <source>Link &amp;&amp; heartbeat</source>
+        <translation>Kết nối &amp;&amp; nhịp tim</translation>
+    </message>
+    <message>
+        <source>Axis drive</source>
+        <translation>Truyền động trục</translation>
+    </message>
+    <message>
+        <source>Spindle</source>
+        <translation>Trục chính</translation>
+    </message>
+    <message>
+        <source>Travel &amp;&amp; offset</source>
+        <translation>Hành trình &amp;&amp; gốc phôi</translation>
+    </message>
+    <message>
+        <source>Settings</source>
+        <translation>Cài đặt</translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>&amp;Ngôn ngữ</translation>
+    </message>
+    <message>
+        <source>the window&apos;s language; it changes at once</source>
+        <translation>ngôn ngữ của cửa sổ; đổi ngay lập tức</translation>
+    </message>
+    <message>
+        <source>PID gains are pushed to the machine (SET) when you press OK while connected.</source>
+        <translation>Hệ số PID được gửi xuống máy (SET) khi bấm Đồng ý lúc đang kết nối.</translation>
+    </message>
+    <message>
+        <source>range %1 … %2</source>
+        <translation>phạm vi %1 … %2</translation>
+    </message>
+    <message>
+        <source>Not saved: %1</source>
+        <translation>Chưa lưu: %1</translation>
+    </message>
+</context>
+<context>
+    <name>SettingsFields</name>
+    <message>
+        <source>supply voltage (V)</source>
+        <translation>điện áp nguồn (V)</translation>
+    </message>
+    <message>
+        <source>bridge drop (V)</source>
+        <translation>sụt áp cầu H (V)</translation>
+    </message>
+    <message>
+        <source>no-load speed (rpm)</source>
+        <translation>tốc độ không tải (vòng/phút)</translation>
+    </message>
+    <message>
+        <source>gear ratio</source>
+        <translation>tỉ số truyền</translation>
+    </message>
+    <message>
+        <source>encoder pulses per turn</source>
+        <translation>số xung encoder mỗi vòng</translation>
+    </message>
+    <message>
+        <source>quadrature edges</source>
+        <translation>số cạnh xung đếm (x4)</translation>
+    </message>
+    <message>
+        <source>screw lead (mm)</source>
+        <translation>bước vít me (mm)</translation>
+    </message>
+    <message>
+        <source>X travel (mm)</source>
+        <translation>hành trình X (mm)</translation>
+    </message>
+    <message>
+        <source>Y travel (mm)</source>
+        <translation>hành trình Y (mm)</translation>
+    </message>
+    <message>
+        <source>Z travel (mm)</source>
+        <translation>hành trình Z (mm)</translation>
+    </message>
+    <message>
+        <source>home back-off (mm)</source>
+        <translation>lùi sau khi về gốc (mm)</translation>
+    </message>
+    <message>
+        <source>work offset X (mm)</source>
+        <translation>gốc phôi X (mm)</translation>
+    </message>
+    <message>
+        <source>work offset Y (mm)</source>
+        <translation>gốc phôi Y (mm)</translation>
+    </message>
+    <message>
+        <source>work offset Z (mm)</source>
+        <translation>gốc phôi Z (mm)</translation>
+    </message>
+    <message>
+        <source>rapid feed (mm/min)</source>
+        <translation>tốc độ chạy dao nhanh (mm/phút)</translation>
+    </message>
+    <message>
+        <source>maximum feed (mm/min)</source>
+        <translation>tốc độ chạy dao tối đa (mm/phút)</translation>
+    </message>
+    <message>
+        <source>acceleration (mm/s²)</source>
+        <translation>gia tốc (mm/s²)</translation>
+    </message>
+    <message>
+        <source>jerk (mm/s³)</source>
+        <translation>độ giật (mm/s³)</translation>
+    </message>
+    <message>
+        <source>junction deviation (mm)</source>
+        <translation>sai lệch tại điểm nối (mm)</translation>
+    </message>
+    <message>
+        <source>arc tolerance (mm)</source>
+        <translation>dung sai cung tròn (mm)</translation>
+    </message>
+    <message>
+        <source>homing feed (mm/min)</source>
+        <translation>tốc độ về gốc (mm/phút)</translation>
+    </message>
+    <message>
+        <source>Kp (proportional)</source>
+        <translation>Kp (tỉ lệ)</translation>
+    </message>
+    <message>
+        <source>Ki (integral)</source>
+        <translation>Ki (tích phân)</translation>
+    </message>
+    <message>
+        <source>Kd (derivative)</source>
+        <translation>Kd (vi phân)</translation>
+    </message>
+    <message>
+        <source>control loop rate (Hz)</source>
+        <translation>tần số vòng điều khiển (Hz)</translation>
+    </message>
+    <message>
+        <source>following error limit (mm)</source>
+        <translation>giới hạn sai lệch bám (mm)</translation>
+    </message>
+    <message>
+        <source>heartbeat period (s)</source>
+        <translation>chu kỳ nhịp tim (s)</translation>
+    </message>
+    <message>
+        <source>degraded after (s)</source>
+        <translation>báo chập chờn sau (s)</translation>
+    </message>
+    <message>
+        <source>lost after (s)</source>
+        <translation>báo mất kết nối sau (s)</translation>
+    </message>
+    <message>
+        <source>baud rate</source>
+        <translation>tốc độ baud</translation>
+    </message>
+    <message>
+        <source>motor supply voltage</source>
+        <translation>điện áp cấp cho động cơ</translation>
+    </message>
+    <message>
+        <source>voltage lost in the L298N</source>
+        <translation>điện áp sụt trên L298N</translation>
+    </message>
+    <message>
+        <source>output shaft rpm unloaded at supply_v</source>
+        <translation>tốc độ trục ra khi không tải ở điện áp nguồn</translation>
+    </message>
+    <message>
+        <source>motor turns per output turn</source>
+        <translation>số vòng động cơ cho một vòng trục ra</translation>
+    </message>
+    <message>
+        <source>pulses per motor turn per channel</source>
+        <translation>số xung mỗi vòng động cơ trên một kênh</translation>
+    </message>
+    <message>
+        <source>edges counted per pulse</source>
+        <translation>số cạnh được đếm trên một xung</translation>
+    </message>
+    <message>
+        <source>lead screw travel per output turn</source>
+        <translation>quãng chạy của vít me cho một vòng trục ra</translation>
+    </message>
+    <message>
+        <source>back-off from each switch after homing</source>
+        <translation>khoảng lùi khỏi mỗi công tắc hành trình sau khi về gốc</translation>
+    </message>
+    <message>
+        <source>default work offset X</source>
+        <translation>gốc phôi X mặc định</translation>
+    </message>
+    <message>
+        <source>default work offset Y</source>
+        <translation>gốc phôi Y mặc định</translation>
+    </message>
+    <message>
+        <source>default work offset Z</source>
+        <translation>gốc phôi Z mặc định</translation>
+    </message>
+    <message>
+        <source>G00 feed</source>
+        <translation>tốc độ G00</translation>
+    </message>
+    <message>
+        <source>cap on programmed feeds</source>
+        <translation>mức trần cho tốc độ chạy dao trong chương trình</translation>
+    </message>
+    <message>
+        <source>chord error when arcs become lines</source>
+        <translation>sai số dây cung khi chia cung tròn thành đoạn thẳng</translation>
+    </message>
+</context>
+<context>
+    <name>Summary</name>
+    <message numerus="yes">
+        <source>%n line(s)</source>
+        <translation>
+            <numerusform>%n dòng</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n machine line(s)</source>
+        <translation>
+            <numerusform>%n dòng lệnh máy</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n move(s)</source>
+        <translation>
+            <numerusform>%n đoạn di chuyển</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 → %2, %3</source>
+        <translation>%1 → %2, %3</translation>
+    </message>
+    <message>
+        <source>cut %1 mm, rapid %2 mm, estimated %3</source>
+        <translation>cắt %1 mm, chạy nhanh %2 mm, ước tính %3</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n error(s)</source>
+        <translation>
+            <numerusform>%n lỗi</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n warning(s)</source>
+        <translation>
+            <numerusform>%n cảnh báo</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
+    </message>
+</context>
+<context>
+    <name>ToolTableDialog</name>
+    <message>
+        <source>Tool table</source>
+        <translation>Bảng dao</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>Dao</translation>
+    </message>
+    <message>
+        <source>Diameter (mm)</source>
+        <translation>Đường kính (mm)</translation>
+    </message>
+    <message>
+        <source>Length (mm)</source>
+        <translation>Chiều dài (mm)</translation>
+    </message>
+    <message>
+        <source>Comment</source>
+        <translation>Ghi chú</translation>
+    </message>
+    <message>
+        <source>Add tool</source>
+        <translation>Thêm dao</translation>
+    </message>
+    <message>
+        <source>Remove tool</source>
+        <translation>Xóa dao</translation>
+    </message>
+    <message>
+        <source>tool number</source>
+        <translation>số dao</translation>
+    </message>
+    <message>
+        <source>diameter</source>
+        <translation>đường kính</translation>
+    </message>
+    <message>
+        <source>length</source>
+        <translation>chiều dài</translation>
+    </message>
+    <message>
+        <source>row %1: %2 &apos;%3&apos; is not a number</source>
+        <translation>dòng %1: %2 &apos;%3&apos; không phải là số</translation>
+    </message>
+    <message>
+        <source>row %1: %2</source>
+        <translation>dòng %1: %2</translation>
+    </message>
+    <message>
+        <source>row %1: tool %2 is listed twice</source>
+        <translation>dòng %1: dao %2 có hai lần trong bảng</translation>
+    </message>
+    <message>
+        <source>Not saved: %1</source>
+        <translation>Chưa lưu: %1</translation>
+    </message>
+    <message>
+        <source>Cannot write the tool table: %1</source>
+        <translation>Không ghi được bảng dao: %1</translation>
+    </message>
+    <message>
+        <source>Tool table not saved</source>
+        <translation>Chưa lưu bảng dao</translation>
+    </message>
+    <message>
+        <source>Tool table saved: it applies to the next program opened</source>
+        <translation>Đã lưu bảng dao: áp dụng cho chương trình mở tiếp theo</translation>
+    </message>
+</context>
+</TS>
