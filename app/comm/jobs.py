@@ -25,12 +25,17 @@ from app.comm.listener import JOB_STATES, RECOVERY_STATES, SENDING_STATES, Sessi
 from app.comm.modal import restart_preamble
 from app.comm.stops import stop_event
 from app.comm.stream import Stream, sd_crc32
-from app.i18n import msg
+from app.i18n import N_, msg
 
 S = SessionState
 PROGRESS_EVERY_S = 0.1
 UNKNOWN_BOOT = "0"
 STOP_ALARMS = frozenset({"LIMIT", "SOFT_LIMIT", "FOLLOWING_ERROR"})  # COVER_OPEN holds: RESUME goes on
+
+
+_REFUSED, _REFUSED_BARE = N_("line refused: {code} {text}"), N_("line refused: {code}")
+_LINE_REFUSED = N_("line {line} refused: {code} {text}")
+_LINE_REFUSED_BARE = N_("line {line} refused: {code}")
 
 
 def _refused_seq(text: str, default: int) -> int:
@@ -54,7 +59,9 @@ class JobControl:
         if not self._can_start(lines, "job"):
             return False
         if not 0 <= start < len(lines):
-            return self._refuse("BAD_START", f"line {start} is not in the program (0..{len(lines) - 1})")
+            return self._refuse("BAD_START", msg("line {start} is not in the program (0..{last})",
+                                                 start=start,
+                                                 last=len(lines) - 1))
         self.lines = lines
         free = self.status.free if self.status else 1
         pre = restart_preamble(lines, start)
@@ -173,7 +180,7 @@ class JobControl:
         if self.state is not S.UPLOADING:
             return
         stored = result.ok and self.stream.window.all_acked
-        reason = "stored" if stored else f"{result.code} {result.info}".strip() or "upload failed"
+        reason = msg("stored") if stored else f"{result.code} {result.info}".strip() or msg("upload failed")
         self._finish_stream(stored, reason)
 
     def _resumed(self, result: CommandResult, seq: int) -> None:
@@ -243,12 +250,13 @@ class JobControl:
                 self._finish_stream(True, msg("completed"))
 
     def _line_refused(self, frame: fr.Error) -> None:
-        reason = f"line refused: {frame.code} {frame.text}".strip()
+        said = {"code": frame.code, "text": frame.text}
+        reason = msg(_REFUSED if frame.text else _REFUSED_BARE, **said)
         self._error("LINE_REFUSED", reason)
         if self.stream is not None and self.state in JOB_STATES | SENDING_STATES:
             seq = _refused_seq(frame.text, self.status.done + 1 if self.status else 0)
             line = self.stream.program_index(seq)
-            reason = f"line {line} refused: {frame.code} {frame.text}".strip()
+            reason = msg(_LINE_REFUSED if frame.text else _LINE_REFUSED_BARE, line=line, **said)
             self._finish_stream(False, reason)
 
     def _job_alarm(self, code: str, text: str) -> None:

@@ -137,8 +137,9 @@ def _spindle_speed(ops: Ops, profile: MachineProfile, lines: list[str], report: 
     for row in rows[: report.limit].tolist():
         line = int(ops.main_lines()[row])
         report.warning(line, _column(lines, line, "S"),
-                       f"S{ops.value[row]:g} is beyond the spindle's maximum ({top:.0f} rpm): it runs at "
-                       f"{top:.0f} rpm", key)
+                       msg("S{speed:g} is beyond the spindle's maximum ({top:.0f} rpm): it runs at "
+                           "{top:.0f} rpm", speed=float(ops.value[row]), top=float(top)), key)
+
     report.overflow("warning", key, len(rows) - report.limit)
 
 

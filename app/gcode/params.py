@@ -17,6 +17,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+from app.i18n import msg
+
 FIRST, LAST = 1, 5602  # RS274NGC_MAX_PARAMETERS
 
 
@@ -27,7 +29,9 @@ class ParamError(ValueError):
 def check_number(number: int) -> int:
     """``number`` if it names a numbered parameter, else ``ParamError``."""
     if not FIRST <= number <= LAST:
-        raise ParamError(f"parameter #{number} does not exist (#{FIRST}..#{LAST})")
+        raise ParamError(msg("parameter #{number} does not exist (#{first}..#{last})", number=number,
+                             first=FIRST, last=LAST))
+
     return number
 
 

@@ -13,6 +13,7 @@ from __future__ import annotations
 from PySide6.QtCore import QObject
 
 from app.gcode.checks import preflight
+from app.i18n import localize
 
 OFFSET_NAMES = ("OFFSET_X", "OFFSET_Y", "OFFSET_Z")
 
@@ -70,7 +71,7 @@ class Preflight(QObject):
         first = self.errors[0]
         more = len(self.errors) - 1
         text = self.tr("Start is disabled: line %1: %2").replace("%1", str(first.line)).replace(
-            "%2", first.message)
+            "%2", localize(first.message))
         if more:
             text += " " + self.tr("(and %n more axis/direction(s))", "", more)
         advice = self.tr("Move the work zero or fix the program; in check mode it may be overridden.")

@@ -15,6 +15,7 @@ from PySide6.QtCore import Qt, Signal
 from PySide6.QtWidgets import QMessageBox, QWidget
 
 from app.gcode import tools
+from app.ui.numbers import decimal
 
 
 def tool_diameter(number: int | None, config_dir: Path | None = None) -> float | None:
@@ -65,7 +66,8 @@ class StopPrompt(QMessageBox):
                 "%1", str(event.tool))
         else:
             tool = self.tr("Fit tool %1 (diameter %2 mm).").replace("%1", str(event.tool)).replace(
-                "%2", f"{diameter:.3f}")
+                "%2", decimal(diameter, 3))
+
         return tool + " " + self.tr("Continue restarts the spindle, lowers Z and goes on.")
 
     def _clicked(self, button) -> None:

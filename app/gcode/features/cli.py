@@ -12,6 +12,7 @@ import argparse
 import sys
 from pathlib import Path
 
+from app.i18n import localize, msg
 from app.profile import MachineProfile
 
 from . import kinds
@@ -97,7 +98,8 @@ def build(args):
         try:
             text = Path(args.contour).read_text(encoding="utf-8")
         except (OSError, UnicodeDecodeError) as exc:
-            raise FeatureError("contour", f"cannot read {args.contour}: {exc}") from None
+            raise FeatureError("contour", msg("cannot read {path}: {error}", path=str(args.contour),
+                                              error=str(exc))) from None
         return kinds.Profile(parse_contour(text, args.contour), args.side, cut, args.stock)
     if args.kind == "holes-circle":
         return kinds.holes_circle(args.x, args.y, args.diameter, args.count, cut, args.start_angle,
@@ -114,7 +116,8 @@ def main(argv: list[str], profile: MachineProfile | None = None) -> int:
         moves, title = program_moves([feature], profile), f"cnc-gcode feature {' '.join(argv)}"
         text = write_fanuc(moves, args.macro, title) if args.macro else write_plain(moves, title)
     except FeatureError as exc:
-        print(f"cnc-gcode feature: --{exc.field.replace('_', '-')}: {exc.rule}", file=sys.stderr)
+        print(f"cnc-gcode feature: --{exc.field.replace('_', '-')}: {localize(exc.rule)}", file=sys.stderr)
+
         return 2
     sys.stdout.write(text)
     return 0

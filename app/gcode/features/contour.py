@@ -15,6 +15,8 @@ from dataclasses import dataclass
 
 from shapely.geometry import LinearRing, Polygon
 
+from app.i18n import msg
+
 from ..lexer import lex_line
 from .errors import FeatureError
 
@@ -75,13 +77,15 @@ class Contour:
 
 
 def _fail(name: str, line: int, column: int, what: str) -> FeatureError:
-    return FeatureError("contour", f"{name}, line {line}, column {column}: {what}")
+    return FeatureError("contour", msg("{name}, line {line}, column {column}: {what}", name=name, line=line,
+                                       column=column, what=what))
 
 
 def _arc_center(start, end, radius: float, cw: bool, where) -> tuple[float, float]:
     chord = math.dist(start, end)
     if chord < 1e-9 or chord > 2 * abs(radius) + 1e-6:
-        raise where(f"an arc of radius {abs(radius):g} cannot reach from {start} to {end}")
+        raise where(msg("an arc of radius {radius:g} cannot reach from {start} to {end}", radius=abs(radius),
+                        start=str(start), end=str(end)))
     mx, my = (start[0] + end[0]) / 2, (start[1] + end[1]) / 2
     h = math.sqrt(max(0.0, radius * radius - chord * chord / 4))
     ux, uy = (end[0] - start[0]) / chord, (end[1] - start[1]) / chord
@@ -103,9 +107,9 @@ def _segment(words: dict, state: dict, line: int, name: str, columns: dict) -> S
     if "I" in words or "J" in words:
         center = (start[0] + words.get("I", 0.0), start[1] + words.get("J", 0.0))
         if abs(math.dist(center, start) - math.dist(center, end)) > 0.002:
-            raise where("the arc's end is not on the circle of its I J centre")
+            raise where(msg("the arc's end is not on the circle of its I J centre"))
         return Segment(start, end, center, cw, line)
-    raise where(f"G0{mode} needs R or I J")
+    raise where(msg("G0{mode} needs R or I J", mode=mode))
 
 
 def parse_contour(text: str, name: str = "<contour>") -> Contour:
@@ -123,18 +127,20 @@ def parse_contour(text: str, name: str = "<contour>") -> Contour:
         for w in lexed.words:
             if w.letter == "G":
                 if w.value not in (0, 1, 2, 3):
-                    raise _fail(name, line_no, w.column, f"G{w.value:g}: a contour has only G00-G03")
+                    raise _fail(name, line_no, w.column, msg("G{code:g}: a contour has only G00-G03",
+                                                             code=float(w.value)))
                 state["g"] = int(w.value)
             elif w.letter in "XYRIJ":
                 words[w.letter], columns[w.letter] = w.value, w.column
             elif w.letter not in "NF":
-                raise _fail(name, line_no, w.column, f"{w.letter}: a contour has only G, X, Y, R, I, J")
+                raise _fail(name, line_no, w.column, msg("{letter}: a contour has only G, X, Y, R, I, J",
+                                                         letter=w.letter))
             columns.setdefault("G", w.column)
         if state["g"] is None:
-            raise _fail(name, line_no, 1, "expected G00/G01/G02/G03 first")
+            raise _fail(name, line_no, 1, msg("expected G00/G01/G02/G03 first"))
         if state["pos"] is None:
             if "X" not in words or "Y" not in words:
-                raise _fail(name, line_no, 1, "the first line must give the start point, X and Y")
+                raise _fail(name, line_no, 1, msg("the first line must give the start point, X and Y"))
             state["pos"], first_line = (words["X"], words["Y"]), line_no
             continue
         seg = _segment(words, state, line_no, name, columns)
@@ -147,13 +153,15 @@ def parse_contour(text: str, name: str = "<contour>") -> Contour:
 def _closed(contour: Contour, first_line: int) -> Contour:
     segs = contour.segments
     if len(segs) < 2:
-        raise FeatureError("contour", f"{contour.name}: a contour needs at least two segments")
+        raise FeatureError("contour", msg("{name}: a contour needs at least two segments", name=contour.name))
     gap = math.dist(segs[0].start, segs[-1].end)
     if gap > 0.001:
-        raise FeatureError("contour", f"{contour.name}, line {segs[-1].line}: the contour is not closed: "
-                           f"it ends at ({segs[-1].end[0]:g}, {segs[-1].end[1]:g}), {gap:.3f} mm from its "
-                           f"start on line {first_line}")
+        raise FeatureError("contour", msg("{name}, line {line}: the contour is not closed: it ends at "
+                                          "({x:g}, {y:g}), {gap:.3f} mm from its start on line {first}",
+                                          name=contour.name, line=segs[-1].line, x=float(segs[-1].end[0]),
+                                          y=float(segs[-1].end[1]), gap=float(gap), first=first_line))
     ring = LinearRing(contour.polygon().exterior.coords)
     if not ring.is_simple or not contour.polygon().is_valid:
-        raise FeatureError("contour", f"{contour.name}: the contour crosses itself")
+        raise FeatureError("contour", msg("{name}: the contour crosses itself", name=contour.name))
+
     return contour

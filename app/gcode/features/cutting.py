@@ -12,6 +12,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from app.i18n import msg
 from app.profile import MachineProfile
 
 from .errors import not_negative, positive, require
@@ -39,20 +40,24 @@ class Cutting:
     def __post_init__(self) -> None:
         positive(self.tool_diameter, "tool_diameter")
         require(self.tool >= 0 and float(self.tool).is_integer(), "tool",
-                f"must be a whole number >= 0 (got {self.tool})")
-        require(self.depth > 0, "depth", f"must be > 0: the depth below the top (got {self.depth:g})")
+                msg("must be a whole number >= 0 (got {tool})", tool=self.tool))
+        require(self.depth > 0, "depth", msg("must be > 0: the depth below the top (got {depth:g})",
+                                             depth=float(self.depth)))
         positive(self.stepdown, "stepdown")
-        require(0 < self.stepover <= 100, "stepover", f"must be > 0 and <= 100 % (got {self.stepover:g})")
+        require(0 < self.stepover <= 100, "stepover",
+                msg("must be > 0 and <= 100 % (got {stepover:g})", stepover=float(self.stepover)))
         not_negative(self.finish_xy, "finish_xy")
         not_negative(self.finish_z, "finish_z")
         require(self.finish_z < self.depth, "finish_z",
-                f"must be less than the depth {self.depth:g} (got {self.finish_z:g})")
+                msg("must be less than the depth {depth:g} (got {finish_z:g})", depth=float(self.depth),
+                    finish_z=float(self.finish_z)))
         positive(self.clearance, "clearance")
         positive(self.feed, "feed")
         positive(self.plunge_feed, "plunge_feed")
         positive(self.rpm, "rpm")
         for name in ("tool_diameter", "depth", "top", "stepdown", "clearance", "feed"):
-            require(math.isfinite(getattr(self, name)), name, "must be a finite number")
+            require(math.isfinite(getattr(self, name)), name, msg("must be a finite number"))
+
 
     @property
     def radius(self) -> float:

@@ -15,6 +15,8 @@ from typing import ClassVar
 from shapely import affinity
 from shapely.geometry import LineString, Point, Polygon, box
 
+from app.i18n import msg
+
 from .contour import CHORD_TOL, Contour
 from .cutting import Cutting
 from .errors import FeatureError, positive, require
@@ -23,7 +25,8 @@ from .rings import quad_segs
 
 def _narrower(cut: Cutting, width: float, what: str) -> None:
     require(cut.tool_diameter < width, "tool_diameter",
-            f"the tool ({cut.tool_diameter:g} mm) must be narrower than the {what} ({width:g} mm)")
+            msg("the tool ({tool:g} mm) must be narrower than the {what} ({width:g} mm)",
+                tool=float(cut.tool_diameter), what=what, width=float(width)))
 
 
 @dataclass(frozen=True)
@@ -59,9 +62,9 @@ class PocketRect:
         positive(self.width, "width")
         positive(self.height, "height")
         require(0 <= self.corner_radius <= min(self.width, self.height) / 2, "corner_radius",
-                f"must be between 0 and half the smaller side, {min(self.width, self.height) / 2:g} "
-                f"(got {self.corner_radius:g})")
-        _narrower(self.cut, min(self.width, self.height), "pocket")
+                msg("must be between 0 and half the smaller side, {half:g} (got {radius:g})",
+                    half=float(min(self.width, self.height) / 2), radius=float(self.corner_radius)))
+        _narrower(self.cut, min(self.width, self.height), msg("pocket"))
 
     def region(self) -> Polygon:
         shape = box(0, 0, self.width, self.height)
@@ -88,7 +91,7 @@ class PocketCircle:
 
     def __post_init__(self) -> None:
         positive(self.diameter, "diameter")
-        _narrower(self.cut, self.diameter, "pocket")
+        _narrower(self.cut, self.diameter, msg("pocket"))
 
     def region(self) -> Polygon:
         r = self.diameter / 2
@@ -113,9 +116,10 @@ class Slot:
     def __post_init__(self) -> None:
         positive(self.width, "width")
         require(math.dist((self.x1, self.y1), (self.x2, self.y2)) > 0, "x2",
-                "the slot's ends must differ (use pocket-circle for a round hole)")
+                msg("the slot's ends must differ (use pocket-circle for a round hole)"))
         require(self.cut.tool_diameter <= self.width, "tool_diameter",
-                f"the tool ({self.cut.tool_diameter:g} mm) is wider than the slot ({self.width:g} mm)")
+                msg("the tool ({tool:g} mm) is wider than the slot ({width:g} mm)",
+                    tool=float(self.cut.tool_diameter), width=float(self.width)))
 
     def region(self) -> Polygon:
         r = self.width / 2
@@ -145,12 +149,15 @@ class Profile:
     stock: float = 0.0
 
     def __post_init__(self) -> None:
-        require(self.side in ("inside", "outside"), "side", f"must be inside or outside (got {self.side!r})")
+        require(self.side in ("inside", "outside"), "side",
+                msg("must be inside or outside (got {side!r})", side=self.side))
         if self.side == "outside":
-            require(self.stock >= 0, "stock", f"must be >= 0 (got {self.stock:g})")
+            require(self.stock >= 0, "stock", msg("must be >= 0 (got {value:g})", value=float(self.stock)))
         elif self.region().buffer(-self.cut.radius).is_empty:
-            raise FeatureError("tool_diameter", f"the tool ({self.cut.tool_diameter:g} mm) does not fit "
-                               f"inside the contour {self.contour.name}")
+            said = msg("the tool ({tool:g} mm) does not fit inside the contour {name}",
+                       tool=float(self.cut.tool_diameter), name=self.contour.name)
+            raise FeatureError("tool_diameter", said)
+
 
     def region(self) -> Polygon:
         return self.contour.polygon(CHORD_TOL)
@@ -180,15 +187,16 @@ class Holes:
     dwell: float = 0.0
 
     def __post_init__(self) -> None:
-        require(len(self.centres) >= 1, "count", "must be at least 1")
-        require(self.peck >= 0, "peck", f"must be >= 0 (got {self.peck:g})")
-        require(self.dwell >= 0, "dwell", f"must be >= 0 (got {self.dwell:g})")
+        require(len(self.centres) >= 1, "count", msg("must be at least 1"))
+        require(self.peck >= 0, "peck", msg("must be >= 0 (got {value:g})", value=float(self.peck)))
+        require(self.dwell >= 0, "dwell", msg("must be >= 0 (got {value:g})", value=float(self.dwell)))
+
 
 
 def holes_circle(x: float, y: float, diameter: float, count: int, cut: Cutting,
                  start_angle: float = 0.0, peck: float = 0.0, dwell: float = 0.0) -> Holes:
     """``count`` holes evenly on a circle of ``diameter`` about (x, y)."""
-    require(count >= 1, "count", f"must be at least 1 (got {count})")
+    require(count >= 1, "count", msg("must be at least 1 (got {count})", count=count))
     positive(diameter, "diameter")
     r = diameter / 2
     angles = [math.radians(start_angle + 360.0 * k / count) for k in range(count)]
@@ -198,8 +206,8 @@ def holes_circle(x: float, y: float, diameter: float, count: int, cut: Cutting,
 def holes_row(x: float, y: float, count: int, pitch: float, cut: Cutting,
               angle: float = 0.0, peck: float = 0.0, dwell: float = 0.0) -> Holes:
     """``count`` holes ``pitch`` apart from (x, y) along ``angle``."""
-    require(count >= 1, "count", f"must be at least 1 (got {count})")
-    require(pitch > 0 or count == 1, "pitch", f"must be > 0 (got {pitch:g})")
+    require(count >= 1, "count", msg("must be at least 1 (got {count})", count=count))
+    require(pitch > 0 or count == 1, "pitch", msg("must be > 0 (got {value:g})", value=float(pitch)))
     a = math.radians(angle)
     return Holes(tuple((x + k * pitch * math.cos(a), y + k * pitch * math.sin(a)) for k in range(count)),
                  cut, peck, dwell)

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from app.i18n import N_, msg
 from app.profile import MachineProfile
 
 from .cutting import Cutting
@@ -13,6 +14,8 @@ from .moves import ARC, Move
 FIELDS = {("X", "+"): "x", ("X", "-"): "x", ("Y", "+"): "y", ("Y", "-"): "y",
           ("Z", "+"): "clearance", ("Z", "-"): "depth"}
 
+
+_BEYOND = N_("{axis}{sign} beyond travel ({value:.3f} {rel} {limit:g})")
 
 def limits(profile: MachineProfile) -> np.ndarray:
     """(3, 2) travel limits in work coordinates (the default work offset applied)."""
@@ -41,6 +44,9 @@ def check_travel(moves: list[Move], cut: Cutting, profile: MachineProfile) -> No
     for axis, (lo, hi) in enumerate(limits(profile).tolist()):
         name = "XYZ"[axis]
         if high[axis] > hi + 1e-6:
-            raise FeatureError(FIELDS[(name, "+")], f"{name}+ beyond travel ({high[axis]:.3f} > {hi:g})")
+            raise FeatureError(FIELDS[(name, "+")], msg(_BEYOND, axis=name, sign="+", value=float(high[axis]),
+                                                        rel=">", limit=float(hi)))
         if low[axis] < lo - 1e-6:
-            raise FeatureError(FIELDS[(name, "-")], f"{name}- beyond travel ({low[axis]:.3f} < {lo:g})")
+            raise FeatureError(FIELDS[(name, "-")], msg(_BEYOND, axis=name, sign="-", value=float(low[axis]),
+                                                        rel="<", limit=float(lo)))
+

@@ -13,6 +13,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+from app.i18n import msg
+
 from .batch import row_maker, simple_shape
 from .errors import MacroError
 from .expr import Reader, compile_code, compile_codes, constant
@@ -89,10 +91,10 @@ class Block:
 def _integer(reader: Reader, what: str) -> int:
     at = reader.pos
     if not reader.peek().isdigit():
-        raise reader.error(f"{what} needs a whole number")
+        raise reader.error(msg("{what} needs a whole number", what=what))
     v = reader.number()
     if v != int(v):
-        raise reader.error(f"{what} needs a whole number", at)
+        raise reader.error(msg("{what} needs a whole number", what=what), at)
     return int(v)
 
 
@@ -101,7 +103,7 @@ def _oname(reader: Reader) -> str:
     if reader.peek() == "<":
         reader.pos += 1
         return reader.name()
-    return str(_integer(reader, "an o-word"))
+    return str(_integer(reader, msg("an o-word")))
 
 
 def _oword(reader: Reader, block: Block) -> Block:
@@ -114,28 +116,29 @@ def _oword(reader: Reader, block: Block) -> Block:
         if not rest and block.oname.isdigit():  # a Fanuc program number line
             block.kind, block.number = PROGRAM, int(block.oname)
             return block
-        raise reader.error(f"unknown o-word statement {rest.upper()!r}" if rest
-                           else "o-word without a keyword")
+        raise reader.error(msg("unknown o-word statement {rest!r}", rest=rest.upper()) if rest
+                           else msg("o-word without a keyword"))
     reader.pos += len(block.keyword)
     while reader.peek() == "[":
         block.args.append(reader.value())
     if block.keyword in WITH_VALUE and len(block.args) != 1:
-        raise reader.error(f"'{block.keyword}' needs one [value]")
+        raise reader.error(msg("'{keyword}' needs one [value]", keyword=block.keyword))
     if block.keyword in MAY_VALUE and len(block.args) > 1:
-        raise reader.error(f"'{block.keyword}' takes at most one [value]")
+        raise reader.error(msg("'{keyword}' takes at most one [value]", keyword=block.keyword))
     if block.keyword not in WITH_VALUE | MAY_VALUE | {"call"} and block.args:
-        raise reader.error(f"'{block.keyword}' takes no value")
+        raise reader.error(msg("'{keyword}' takes no value", keyword=block.keyword))
     if block.keyword == "call" and len(block.args) > 30:
-        raise reader.error("a call takes at most 30 arguments")
+        raise reader.error(msg("a call takes at most 30 arguments"))
     if not reader.at_end():
-        raise reader.error(f"unexpected {reader.text[reader.pos:].upper()!r} after the o-word statement")
+        raise reader.error(msg("unexpected {rest!r} after the o-word statement",
+                               rest=reader.text[reader.pos:].upper()))
     return block
 
 
 def _assignment(reader: Reader) -> tuple:
     column = reader.sq.column(reader.pos)
     target = reader.target()
-    reader.expect("=", "after the parameter to set")
+    reader.expect("=", msg("after the parameter to set"))
     value = reader.expression() if reader.fanuc else reader.value()
     return target, value, column
 
@@ -151,7 +154,7 @@ def _words(reader: Reader, block: Block) -> Block:
             bare = reader.peek() == "#"
             block.words.append(Word(c.upper(), column, reader.value(), bare))
         else:
-            raise reader.error(f"unexpected character {c!r}")
+            raise reader.error(msg("unexpected character {char!r}", char=c))
     return block
 
 
@@ -170,10 +173,10 @@ def _fanuc(reader: Reader, block: Block) -> Block | None:
             block.kind = IF_THEN
             _words(reader, block)
             if block.words or not block.sets:
-                raise reader.error("IF [..] THEN takes assignments only (#i = value)")
+                raise reader.error(msg("IF [..] THEN takes assignments only (#i = value)"))
             return block
         else:
-            raise reader.error("IF [..] needs GOTO n or THEN #i = value")
+            raise reader.error(msg("IF [..] needs GOTO n or THEN #i = value"))
     elif text.startswith("goto", pos):
         reader.pos += 4
         block.kind, block.args = GOTO, [reader.value()]
@@ -192,7 +195,8 @@ def _fanuc(reader: Reader, block: Block) -> Block | None:
     else:
         return None
     if not reader.at_end():
-        raise reader.error(f"unexpected {reader.text[reader.pos:].upper()!r} at the end of the statement")
+        raise reader.error(msg("unexpected {rest!r} at the end of the statement",
+                               rest=reader.text[reader.pos:].upper()))
     return block
 
 
@@ -203,7 +207,8 @@ def compile_line(line: str, line_no: int, fanuc: bool) -> Block:
     try:
         return block.finish()
     except (SyntaxError, RecursionError, MemoryError):  # Python's own limits on one expression
-        raise MacroError("the line's expressions are too complex (too many operations)", line_no) from None
+        raise MacroError(msg("the line's expressions are too complex (too many operations)"),
+                         line_no) from None
 
 
 def _read_line(line: str, line_no: int, fanuc: bool) -> Block:
@@ -215,7 +220,8 @@ def _read_line(line: str, line_no: int, fanuc: bool) -> Block:
         return block
     if text[0] == "%":
         if len(text) > 1:
-            raise MacroError("unexpected text after '%'", line_no, sq.column(1))
+            raise MacroError(msg("unexpected text after '%'"), line_no, sq.column(1))
+
         block.kind, block.skip = SKIP, "%"
         return block
     if text[0] == "/":

@@ -11,6 +11,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from app.i18n import msg
+
 from .errors import MacroError
 from .structure import Unit
 
@@ -25,9 +27,10 @@ def read_lines(path: Path) -> list[str]:
     try:
         text = path.read_bytes().decode("utf-8")
     except OSError as exc:
-        raise MacroError(f"cannot read {path}: {exc.strerror or exc}") from None
+        raise MacroError(msg("cannot read {path}: {error}", path=str(path),
+                             error=str(exc.strerror or exc))) from None
     except UnicodeDecodeError:
-        raise MacroError(f"{path} is not a UTF-8 text file") from None
+        raise MacroError(msg("{path} is not a UTF-8 text file", path=str(path))) from None
     return [line[:-1] if line.endswith("\r") else line for line in text.split("\n")]
 
 
@@ -52,20 +55,23 @@ class Library:
 
     def _find_file(self, names: list[str], what: str) -> int:
         if self.folder is None:
-            raise MacroError(f"{what} is not defined (a program without a folder cannot use other files)")
+            raise MacroError(msg("{what} is not defined (a program without a folder cannot use other files)",
+                                 what=what))
         for name in names:
             if (self.folder / name).is_file():
                 return self._load(self.folder / name)
-        raise MacroError(f"{what} is not defined in this file nor in {names[0]} beside it")
+        raise MacroError(msg("{what} is not defined in this file nor in {file} beside it", what=what,
+                             file=names[0]))
 
     def subroutine(self, name: str, caller: int) -> tuple[int, int]:
         """(file id, index of the ``sub`` block) of the LinuxCNC subroutine ``name``."""
         for file_id in (caller, 0):
             if name in self.units[file_id].subs:
                 return file_id, self.units[file_id].subs[name]
-        file_id = self._find_file([f"{name}.ngc"], f"subroutine o<{name}>")
+        file_id = self._find_file([f"{name}.ngc"], msg("subroutine o<{name}>", name=name))
         if name not in self.units[file_id].subs:
-            raise MacroError(f"{self.units[file_id].name} does not define o<{name}> sub")
+            raise MacroError(msg("{file} does not define o<{name}> sub", file=self.units[file_id].name,
+                                 name=name))
         return file_id, self.units[file_id].subs[name]
 
     def program(self, number: int, caller: int) -> tuple[int, int]:
@@ -75,5 +81,6 @@ class Library:
                 return file_id, self.units[file_id].programs[number]
         names = [f"O{number:04d}.nc", f"o{number:04d}.nc", f"{number:04d}.nc",
                  f"O{number}.nc", f"o{number}.nc", f"{number}.nc"]
-        file_id = self._find_file(list(dict.fromkeys(names)), f"subprogram O{number:04d}")
+        file_id = self._find_file(list(dict.fromkeys(names)), msg("subprogram O{number:04d}", number=number))
+
         return file_id, self.units[file_id].programs.get(number, 0)

@@ -21,6 +21,8 @@ from __future__ import annotations
 
 import math
 
+from app.i18n import msg
+
 from .errors import MacroError
 from .text import Squeezed
 
@@ -46,22 +48,23 @@ def _eq(a, b) -> float:
 
 def _div(a, b, line, col):
     if b == 0.0:
-        raise MacroError("division by zero", line, col)
+        raise MacroError(msg("division by zero"), line, col)
     return a / b
 
 
 def _pow(a, b, line, col):
     if a < 0 and b != int(b):
-        raise MacroError("negative number raised to a non-integer power", line, col)
+        raise MacroError(msg("negative number raised to a non-integer power"), line, col)
     try:
         return float(a ** b)
     except (OverflowError, ZeroDivisionError):
-        raise MacroError(f"{a:g} ** {b:g} cannot be computed", line, col) from None
+        raise MacroError(msg("{a:g} ** {b:g} cannot be computed", a=float(a), b=float(b)), line,
+                         col) from None
 
 
 def _mod(a, b, line, col):
     if b == 0.0:
-        raise MacroError("MOD by zero", line, col)
+        raise MacroError(msg("MOD by zero"), line, col)
     r = math.fmod(a, b)
     return r + abs(b) if r < 0 else r
 
@@ -69,7 +72,8 @@ def _mod(a, b, line, col):
 def _checked(name, test, fn, what):
     def apply(x, line, col):
         if not test(x):
-            raise MacroError(f"{name.upper()} of {x:g}: {what}", line, col)
+            raise MacroError(msg("{name} of {x:g}: {what}", name=name.upper(), x=float(x), what=what), line,
+                             col)
         return fn(x)
     return apply
 
@@ -80,10 +84,10 @@ def _round(x, line, col):
 
 def _index(v, line, col) -> int:
     if v is None:
-        raise MacroError("parameter number is vacant", line, col)
+        raise MacroError(msg("parameter number is vacant"), line, col)
     n = round(v)
     if abs(v - n) > 1e-4:
-        raise MacroError(f"parameter number {v:g} is not a whole number", line, col)
+        raise MacroError(msg("parameter number {v:g} is not a whole number", v=float(v)), line, col)
     return int(n)
 
 
@@ -92,10 +96,10 @@ def _atan2(y, x):
 
 
 def _unset(name, line, col):
-    raise MacroError(f"named parameter #<{name}> is not set", line, col)
+    raise MacroError(msg("named parameter #<{name}> is not set", name=name), line, col)
 
 
-_RANGE = "out of the range -1..1"
+_RANGE = msg("out of the range -1..1")
 FUNCTIONS = {
     "sin": lambda x, line, col: math.sin(math.radians(x)),
     "cos": lambda x, line, col: math.cos(math.radians(x)),
@@ -104,9 +108,9 @@ FUNCTIONS = {
     "acos": _checked("acos", lambda x: -1.0 <= x <= 1.0, lambda x: math.degrees(math.acos(x)), _RANGE),
     "atan": lambda x, line, col: math.degrees(math.atan(x)),
     "abs": lambda x, line, col: abs(x),
-    "sqrt": _checked("sqrt", lambda x: x >= 0.0, math.sqrt, "square root of a negative number"),
-    "exp": _checked("exp", lambda x: x < 709.0, math.exp, "too large"),
-    "ln": _checked("ln", lambda x: x > 0.0, math.log, "logarithm of zero or a negative number"),
+    "sqrt": _checked("sqrt", lambda x: x >= 0.0, math.sqrt, msg("square root of a negative number")),
+    "exp": _checked("exp", lambda x: x < 709.0, math.exp, msg("too large")),
+    "ln": _checked("ln", lambda x: x > 0.0, math.log, msg("logarithm of zero or a negative number")),
     "round": _round,
     "fix": lambda x, line, col: float(math.floor(x)),
     "fup": lambda x, line, col: float(math.ceil(x)),
@@ -164,8 +168,9 @@ class Reader:
 
     def expect(self, char: str, what: str) -> None:
         if self.peek() != char:
-            found = repr(self.peek()) if self.peek() else "the end of the line"
-            raise self.error(f"expected '{char}' {what}, found {found}")
+            found = repr(self.peek()) if self.peek() else msg("the end of the line")
+            raise self.error(msg("expected '{char}' {what}, found {found}", char=char, what=what,
+                                 found=found))
         self.pos += 1
 
     def at_end(self) -> bool:
@@ -193,7 +198,7 @@ class Reader:
             self.pos += 1
         token = self.text[start:self.pos]
         if token.count(".") > 1 or not any(c.isdigit() for c in token):
-            raise self.error("a number was expected here", start)
+            raise self.error(msg("a number was expected here"), start)
         return float(token)
 
     def value(self) -> str:
@@ -206,12 +211,12 @@ class Reader:
 
     def _value(self) -> str:
         if self.depth > MAX_DEPTH:
-            raise self.error(f"expression nested more than {MAX_DEPTH} deep")
+            raise self.error(msg("expression nested more than {depth} deep", depth=MAX_DEPTH))
         c = self.peek()
         if c == "[":
             self.pos += 1
             code = self.expression()
-            self.expect("]", "to close the expression")
+            self.expect("]", msg("to close the expression"))
             return code
         if c == "#":
             return self.parameter()
@@ -223,49 +228,51 @@ class Reader:
             return self.function()
         if c.isdigit() or c == ".":
             return repr(self.number())
-        raise self.error("a value was expected here" if c else "a value was expected at the end of the line")
+        raise self.error(msg("a value was expected here") if c
+                         else msg("a value was expected at the end of the line"))
 
     def function(self) -> str:
         start = self.pos
         name = next((f for f in _NAMES if self.text.startswith(f, start)), None)
         if name is None:
-            raise self.error(f"unknown function or word {self.letters().upper()!r}", start)
+            raise self.error(msg("unknown function or word {word!r}", word=self.letters().upper()), start)
         self.pos += len(name)
         if name == "exists":
             return self.exists()
-        self.expect("[", f"after {name.upper()}")
+        self.expect("[", msg("after {name}", name=name.upper()))
         arg = self.expression()
         if name == "atan" and self.fanuc and self.peek() == ",":
             self.pos += 1
             return self.atan2(arg, self.expression())
-        self.expect("]", f"to close {name.upper()}[")
+        self.expect("]", msg("to close {name}[", name=name.upper()))
         if name == "atan" and (self.peek() == "/" or not self.fanuc):
-            self.expect("/", "after ATAN[a] (the form is ATAN[a]/[b])")
-            self.expect("[", "after ATAN[a]/ (the form is ATAN[a]/[b])")
+            self.expect("/", msg("after ATAN[a] (the form is ATAN[a]/[b])"))
+            self.expect("[", msg("after ATAN[a]/ (the form is ATAN[a]/[b])"))
             return self.atan2(arg, self.expression())
         if self.fanuc and name in ("fix", "fup"):
             name += "_fanuc"  # Fanuc: FIX toward zero, FUP away from zero (LinuxCNC: floor, ceil)
         return _fold(f"_f_{name}({self.z(arg)}, {self.where(start)})")
 
     def atan2(self, y: str, x: str) -> str:
-        self.expect("]", "to close ATAN")
+        self.expect("]", msg("to close ATAN"))
         return _fold(f"_atan2({self.z(y)}, {self.z(x)})")
 
     def exists(self) -> str:
-        self.expect("[", "after EXISTS")
-        self.expect("#", "in EXISTS[#<name>]")
-        self.expect("<", "in EXISTS[#<name>]")
+        self.expect("[", msg("after EXISTS"))
+        self.expect("#", msg("in EXISTS[#<name>]"))
+        self.expect("<", msg("in EXISTS[#<name>]"))
         name = self.name()
-        self.expect("]", "to close EXISTS[")
+        self.expect("]", msg("to close EXISTS["))
         return f"(1.0 if S.exists({name!r}) else 0.0)"
 
     def name(self) -> str:
         end = self.text.find(">", self.pos)
         if end < 0:
-            raise self.error("'#<' name is not closed with '>'")
+            raise self.error(msg("'#<' name is not closed with '>'"))
         name, self.pos = self.text[self.pos:end], end + 1
         if not name:
-            raise self.error("empty parameter name", end)
+            raise self.error(msg("empty parameter name"), end)
+
         return name
 
     def parameter(self) -> str:

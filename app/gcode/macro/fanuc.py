@@ -11,6 +11,8 @@ program it does not start (the main program stops; a subprogram returns).
 
 from __future__ import annotations
 
+from app.i18n import msg
+
 from .calls import FANUC_ARGUMENTS
 from .errors import MacroError
 from .frame import Frame
@@ -20,11 +22,13 @@ def call(w, f: Frame, b, letter: str, code: float, column: int, by_letter: dict)
     """Run ``M98``/``G65`` (a call) or ``M99`` (a return); ``by_letter``: the other words."""
     if letter == "M" and code == 99.0:
         if len(w.frames) == 1:
-            raise MacroError("M99 outside a subprogram (the main program ends with M30)")
+            raise MacroError(msg("M99 outside a subprogram (the main program ends with M30)"))
         leave(w, f, by_letter.get("P"))
         return
     if "P" not in by_letter:
-        raise MacroError(f"{letter}{code:g} needs P (the program number)", b.line, column)
+        raise MacroError(msg("{letter}{code:g} needs P (the program number)", letter=letter,
+                             code=float(code)),
+                         b.line, column)
     number, count = int(by_letter["P"]), int(by_letter.get("L", 1))
     if letter == "M" and "L" not in by_letter and number > 9999:
         number, count = number % 10000, number // 10000  # packed M98 Pkkknnnn
@@ -37,7 +41,9 @@ def call(w, f: Frame, b, letter: str, code: float, column: int, by_letter: dict)
         locals_ = {FANUC_ARGUMENTS[k]: v for k, v in by_letter.items() if k in FANUC_ARGUMENTS}
         extra = sorted(set(by_letter) - set(FANUC_ARGUMENTS) - {"G", "P", "L"})
         if extra:
-            raise MacroError(f"G65 cannot pass {', '.join(extra)} (argument specification I)", b.line)
+            said = msg("G65 cannot pass {words} (argument specification I)", words=", ".join(extra))
+            raise MacroError(said, b.line)
+
     unit = w.library.units[file_id]
     program = unit.program_of[start] if unit.program_of else 0
     w._push(Frame(unit, start, locals_, f"O{number:04d}", file_id, program, count, b.line))
@@ -59,13 +65,14 @@ def leave(w, f: Frame, label) -> None:
 def _label(f: Frame, n: int) -> int:
     target = f.unit.labels.get((f.program, n))
     if target is None:
-        raise MacroError(f"GOTO {n}: no block N{n} in this program")
+        raise MacroError(msg("GOTO {n}: no block N{n} in this program", n=n))
     return target
 
 
 def _jump(w, f: Frame, value) -> None:
     if value is None:
-        raise MacroError("GOTO to a vacant label")
+        raise MacroError(msg("GOTO to a vacant label"))
+
     target = _label(f, int(round(value)))
     if target <= f.pc:
         w.loop_back(f, target)

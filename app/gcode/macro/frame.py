@@ -11,6 +11,7 @@ unset parameter as vacant (``None``).
 from __future__ import annotations
 
 from app.gcode.params import LAST, ParamError, Params
+from app.i18n import msg
 
 from .errors import MacroError
 from .expr import FANUC_LOCALS, LINUXCNC_LOCALS, MACHINE_PARAMETERS
@@ -56,7 +57,7 @@ class Scope:
             try:
                 v = self.params.get(n)
             except ParamError as exc:
-                raise MacroError(str(exc)) from None
+                raise MacroError(exc.args[0]) from None
         if v is None and not self.fanuc:
             return 0.0
         return v
@@ -92,8 +93,10 @@ class Scope:
                 self.frame.locals[target] = float(value)
             return
         if target == 0:
-            raise MacroError("#0 cannot be set (it is always vacant)" if self.fanuc else "#0 does not exist")
+            raise MacroError(msg("#0 cannot be set (it is always vacant)") if self.fanuc
+                             else msg("#0 does not exist"))
         try:
             self.params.set(target, value)
         except ParamError as exc:
-            raise MacroError(str(exc)) from None
+            raise MacroError(exc.args[0]) from None
+

@@ -10,6 +10,8 @@ use the jump tables of ``structure.Unit``; every jump back counts toward the loo
 
 from __future__ import annotations
 
+from app.i18n import msg
+
 from .errors import MacroError
 from .frame import Frame
 
@@ -36,7 +38,8 @@ def _return(w, f: Frame, b) -> None:
     else:
         params.set_named("_value_returned", 0.0)
     if len(w.frames) == 1:
-        raise MacroError(f"o{b.oname} {b.keyword} reached outside a call")
+        raise MacroError(msg("o{name} {keyword} reached outside a call", name=b.oname, keyword=b.keyword))
+
     w._pop()
 
 

@@ -13,6 +13,8 @@ Unbalanced structures are errors naming the line and column.
 
 from __future__ import annotations
 
+from app.i18n import msg
+
 from .block import DO, END, OWORD, PROGRAM, SKIP, WHILE, Block, compile_line
 from .errors import MacroError
 
@@ -62,7 +64,7 @@ class Unit:
             if b.kind == PROGRAM:
                 start = i
                 if b.number in self.programs:
-                    self.fail(f"program O{b.number} is defined twice", b)
+                    self.fail(msg("program O{number} is defined twice", number=b.number), b)
                 self.programs.setdefault(b.number, i)
             self.program_of.append(start)
             if b.label is not None:
@@ -77,14 +79,15 @@ class Unit:
                 open_loops, program = [], self.program_of[i]
             if b.kind in (WHILE, DO):
                 if not 1 <= b.number <= 3:
-                    self.fail(f"DO {b.number}: the loop number must be 1, 2 or 3", b)
+                    self.fail(msg("DO {number}: the loop number must be 1, 2 or 3", number=b.number), b)
                 if any(n == b.number for n, _ in open_loops):
-                    self.fail(f"DO {b.number} inside another loop DO {b.number}", b)
+                    self.fail(msg("DO {number} inside another loop DO {number}", number=b.number), b)
                 open_loops.append((b.number, i))
             elif b.kind == END:
                 if not open_loops or open_loops[-1][0] != b.number:
-                    expected = f" (the open loop is DO {open_loops[-1][0]})" if open_loops else ""
-                    self.fail(f"END {b.number} without its DO {b.number}{expected}", b)
+                    self.fail(msg("END {number} without its DO {number} (the open loop is DO {open})",
+                                  number=b.number, open=open_loops[-1][0]) if open_loops
+                              else msg("END {number} without its DO {number}", number=b.number), b)
                     continue
                 _, head = open_loops.pop()
                 self.jump[head], self.back[i] = i + 1, head
@@ -92,7 +95,7 @@ class Unit:
 
     def _unclosed_do(self, open_loops) -> None:
         for number, i in open_loops:
-            self.fail(f"DO {number} has no END {number}", self.blocks[i])
+            self.fail(msg("DO {number} has no END {number}", number=number), self.blocks[i])
 
     # --- LinuxCNC o-words --------------------------------------------------------------
     def _owords(self) -> None:
@@ -104,23 +107,25 @@ class Unit:
             if handler is not None:
                 handler(stack, i, b)
         for keyword, _, i, _ in stack:
-            self.fail(f"'{keyword}' is never closed", self.blocks[i])
+            self.fail(msg("'{keyword}' is never closed", keyword=keyword), self.blocks[i])
 
     def _open(self, stack, i, b) -> None:
         stack.append((b.keyword, b.oname, i, [i]))
 
     def _close(self, stack, i, b, opener: str, closer: str) -> tuple | None:
         if not stack or stack[-1][0] != opener or stack[-1][1] != b.oname:
-            top = f" (open: o{stack[-1][1]} {stack[-1][0]})" if stack else ""
-            self.fail(f"o{b.oname} {closer} without o{b.oname} {opener}{top}", b)
+            said = dict(name=b.oname, closer=closer, opener=opener)
+            self.fail(msg("o{name} {closer} without o{name} {opener} (open: o{top} {keyword})",
+                          top=stack[-1][1], keyword=stack[-1][0], **said) if stack
+                      else msg("o{name} {closer} without o{name} {opener}", **said), b)
             return None
         return stack.pop()
 
     def _o_sub(self, stack, i, b) -> None:
         if any(k == "sub" for k, *_ in stack):
-            self.fail(f"o{b.oname} sub inside another sub", b)
+            self.fail(msg("o{name} sub inside another sub", name=b.oname), b)
         if b.oname in self.subs:
-            self.fail(f"o{b.oname} sub is defined twice", b)
+            self.fail(msg("o{name} sub is defined twice", name=b.oname), b)
         self.subs.setdefault(b.oname, i)
         self._open(stack, i, b)
 
@@ -134,7 +139,8 @@ class Unit:
 
     def _o_elseif(self, stack, i, b) -> None:
         if not stack or stack[-1][0] != "if" or stack[-1][1] != b.oname:
-            self.fail(f"o{b.oname} {b.keyword} without o{b.oname} if", b)
+            self.fail(msg("o{name} {keyword} without o{name} if", name=b.oname, keyword=b.keyword), b)
+
             return
         stack[-1][3].append(i)
 
@@ -182,10 +188,11 @@ class Unit:
     def _loop_exit(self, stack, i, b) -> None:
         loop = next((s for s in reversed(stack) if s[0] in LOOP_HEADS and s[1] == b.oname), None)
         if loop is None:
-            self.fail(f"o{b.oname} {b.keyword} outside a loop o{b.oname}", b)
+            self.fail(msg("o{name} {keyword} outside a loop o{name}", name=b.oname, keyword=b.keyword), b)
             return
         self.back[i] = loop[2]  # resolved by the walker: the loop head's exit or test
 
     def _o_return(self, stack, i, b) -> None:
         if not any(k == "sub" and n == b.oname for k, n, *_ in stack):
-            self.fail(f"o{b.oname} return outside o{b.oname} sub", b)
+            self.fail(msg("o{name} return outside o{name} sub", name=b.oname), b)
+

@@ -10,6 +10,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from app.i18n import msg
+
 from .errors import MacroError
 
 
@@ -37,7 +39,8 @@ def squeeze(line: str, line_no: int) -> Squeezed:
         if c == "(":
             end = line.find(")", i + 1)
             if end < 0:
-                raise MacroError("comment '(' is not closed on this line", line_no, i + 1)
+                raise MacroError(msg("comment '(' is not closed on this line"), line_no, i + 1)
+
             i = end + 1
             continue
         if c == ";":

@@ -21,6 +21,7 @@ from app.gcode.diagnostics import ERROR, WARNING, Report
 from app.gcode.interp import finish_program, interpret_line
 from app.gcode.lexer import Word
 from app.gcode.ops import OpBuffer
+from app.i18n import msg
 
 from . import block as bk
 from .batch import MAX_ROWS, Batch
@@ -83,7 +84,7 @@ class Walker:
     # --- frames ------------------------------------------------------------------------
     def _push(self, frame: Frame) -> None:
         if len(self.frames) >= DEPTH_LIMIT + 1:
-            raise MacroError(f"calls nested deeper than {DEPTH_LIMIT} levels")
+            raise MacroError(msg("calls nested deeper than {depth} levels", depth=DEPTH_LIMIT))
         if self.frames:
             frame.iteration = frame.iteration or self.frames[-1].iteration  # the caller's loop pass
         self.frames.append(frame)
@@ -165,7 +166,9 @@ class Walker:
                 b = blocks[f.pc]
                 ran += 1
                 if ran > left:
-                    raise MacroError(f"the program runs more than {BLOCK_LIMIT:,} blocks", b.line)
+                    raise MacroError(msg("the program runs more than {limit:,} blocks", limit=BLOCK_LIMIT),
+                                     b.line)
+
                 b.run(self, f, b)
         except MacroError as exc:
             raise exc.at(b.line if b is not None else 0, f.unit.name if f.file_id else "") from None
@@ -178,13 +181,13 @@ class Walker:
         elif self.fanuc:
             fanuc.leave(self, f, None)
         else:
-            raise MacroError("the file ended inside a subroutine", len(f.unit.blocks))
+            raise MacroError(msg("the file ended inside a subroutine"), len(f.unit.blocks))
 
     def loop_back(self, f: Frame, head: int) -> None:
         count = f.counts.get(head, 0) + 1
         if count > LOOP_LIMIT:
-            raise MacroError(f"a loop ran more than {LOOP_LIMIT:,} times (it starts at line "
-                             f"{f.unit.blocks[head].line})")
+            raise MacroError(msg("a loop ran more than {limit:,} times (it starts at line {line})",
+                                 limit=LOOP_LIMIT, line=f.unit.blocks[head].line))
         f.counts[head] = count
         f.iteration = count + 1  # passes are counted from 1
 
@@ -286,7 +289,7 @@ class Walker:
             self.state = self.batch.flush(self.state, self.ops, self.trace)
             self.fast_ok = self.state.fast_path_ok()
             if len(self.trace.file) > MOVE_LIMIT:
-                raise MacroError(f"the expansion makes more than {MOVE_LIMIT:,} moves")
+                raise MacroError(msg("the expansion makes more than {limit:,} moves", limit=MOVE_LIMIT))
 
     def emit(self, f: Frame, b: bk.Block, words: list[Word]) -> None:
         self.flush()
@@ -313,7 +316,7 @@ class Walker:
             t.context.extend([self._names[f.name]] * n)
             t.iteration.extend([f.iteration] * n)
             if len(t.file) > MOVE_LIMIT:
-                raise MacroError(f"the expansion makes more than {MOVE_LIMIT:,} moves", line)
+                raise MacroError(msg("the expansion makes more than {limit:,} moves", limit=MOVE_LIMIT), line)
 
     def _after_end(self, f: Frame) -> None:
         """One warning for the first block after M2/M30 (Fanuc: before the next program;
@@ -329,7 +332,8 @@ class Walker:
             i += 1
             if b.kind != bk.SKIP or i - 1 in f.unit.bad:
                 ended = self.state.ended
-                self.report.warning(b.line, 0, f"ignored: the program ended at line {ended} (M2/M30)")
+                self.report.warning(b.line, 0, msg("ignored: the program ended at line {line} (M2/M30)",
+                                                   line=ended))
                 return
 
     def skip(self, f: Frame, b: bk.Block) -> None:
@@ -337,7 +341,8 @@ class Walker:
             self.frames.clear()  # its error is reported already; the walk stops as rs274ngc does
             return
         if b.skip == "block delete":
-            self.reports[f.file_id].warning(b.line, 0, "block delete '/': line skipped", "block delete")
+            self.reports[f.file_id].warning(b.line, 0, msg("block delete '/': line skipped"), "block delete")
+
         f.pc += 1
 
     def _call_word(self, words: list[Word]) -> Word | None:

@@ -9,6 +9,7 @@ import contextlib
 import sys
 from pathlib import Path
 
+from app.i18n import localize, msg
 from app.profile import MachineProfile
 
 from .convert import ImportOptions, to_gcode
@@ -33,10 +34,12 @@ def main(argv: list[str], profile: MachineProfile | None = None) -> int:
                                 profile.max_spindle_rpm())
         text, placement = to_gcode(points, options, profile)
     except OSError as exc:
-        print(f"cnc-gcode import: cannot read {args.file}: {exc.strerror or exc}", file=sys.stderr)
+        said = msg("cannot read {path}: {error}", path=str(args.file), error=str(exc.strerror or exc))
+        print(f"cnc-gcode import: {localize(said)}", file=sys.stderr)
         return 1
     except PointListError as exc:
-        print(f"cnc-gcode import: {exc}", file=sys.stderr)
+        print(f"cnc-gcode import: {exc.localized()}", file=sys.stderr)
+
         return 1
     print(placement.describe(points, options), file=sys.stderr)
     with contextlib.suppress(BrokenPipeError):

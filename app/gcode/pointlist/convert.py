@@ -12,6 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from app.i18n import msg
 from app.profile import MachineProfile
 
 from .formats import PointList, PointListError
@@ -58,7 +59,8 @@ def _work_travel(profile: MachineProfile) -> np.ndarray:
 def place(points: PointList, options: ImportOptions, profile: MachineProfile) -> Placement:
     """The scale and offset that ``options`` ask for."""
     if not options.scale > 0:
-        raise PointListError(points.name, 0, 0, f"the scale must be > 0 (got {options.scale:g})")
+        raise PointListError(points.name, 0, 0, msg("the scale must be > 0 (got {scale:g})",
+                                                    scale=float(options.scale)))
     low = np.min([p.min(axis=0) for p in points.paths], axis=0)
     high = np.max([p.max(axis=0) for p in points.paths], axis=0)
     scale, offset = options.scale, np.zeros(2)
@@ -91,8 +93,11 @@ def to_gcode(points: PointList, options: ImportOptions, profile: MachineProfile 
     would be cut above the clearance height."""
     placement = place(points, options, profile or MachineProfile())
     if placement.high[2] >= options.clearance:
-        raise PointListError(points.name, 0, 0, f"points reach Z {placement.high[2]:g}, at or above the "
-                             f"clearance height {options.clearance:g}: give a cut Z or a higher clearance")
+        said = msg("points reach Z {z:g}, at or above the clearance height {clearance:g}: give a cut Z or a "
+                   "higher clearance", z=float(placement.high[2]), clearance=float(options.clearance))
+        raise PointListError(points.name, 0, 0, said)
+
+
     parts = [f"({placement.describe(points, options)})\n", "G21 G90 G17\n", f"M03 S{options.rpm:g}\n"]
     parts += [_path_gcode(path, options, placement, k) for k, path in enumerate(points.paths)]
     parts.append("M05\nM30\n")

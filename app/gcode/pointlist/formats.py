@@ -17,6 +17,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from app.i18n import localize, msg
+
 from .lines import LineTable, table
 
 FABRICATION_MARK = b"Fabrication Task"
@@ -24,12 +26,20 @@ SCAN_SECTION = "== Scan Path Information =="
 
 
 class PointListError(ValueError):
-    """A malformed point list: ``name``, 1-based ``line`` and ``column``, ``message``."""
+    """A malformed point list: ``name``, 1-based ``line`` and ``column``, ``message``
+    (a core message); ``localized()`` says it in the operator's language."""
 
     def __init__(self, name: str, line: int, column: int, message: str) -> None:
-        where = f"{name}, line {line}" + (f", column {column}" if column else "")
-        super().__init__(f"{where}: {message}")
+        if column:
+            said = msg("{name}, line {line}, column {column}: {what}", name=name, line=line, column=column,
+                       what=message)
+        else:
+            said = msg("{name}, line {line}: {what}", name=name, line=line, what=message)
+        super().__init__(said)
         self.name, self.line, self.column, self.message = name, line, column, message
+
+    def localized(self) -> str:
+        return localize(self.args[0])
 
 
 @dataclass
@@ -68,14 +78,16 @@ def _bad_point(t: LineTable, k: int, name: str) -> PointListError:
         try:
             value = float(token)
         except ValueError:
-            return PointListError(name, k + 1, column, f"expected a number ({'xyz'[n]}), got {token!r}")
+            return PointListError(name, k + 1, column, msg("expected a number ({axis}), got {token!r}",
+                                                           axis="xyz"[n], token=token))
         if not np.isfinite(value):
-            return PointListError(name, k + 1, column, f"expected a finite number ({'xyz'[n]}), "
-                                  f"got {token!r}")
+            return PointListError(name, k + 1, column, msg("expected a finite number ({axis}), got {token!r}",
+                                                           axis="xyz"[n], token=token))
     if len(tokens) != 3:
-        return PointListError(name, k + 1, 0, f"expected three numbers 'x y z', got {len(tokens)} "
-                              f"({t.text(k).strip()!r})")
-    return PointListError(name, k + 1, 0, f"expected three numbers 'x y z', got {t.text(k).strip()!r}")
+        return PointListError(name, k + 1, 0, msg("expected three numbers 'x y z', got {count} ({text!r})",
+                                                  count=len(tokens), text=t.text(k).strip()))
+    return PointListError(name, k + 1, 0, msg("expected three numbers 'x y z', got {text!r}",
+                                              text=t.text(k).strip()))
 
 
 def _block(t: LineTable, first: int, stop: int, name: str) -> np.ndarray:
@@ -92,7 +104,7 @@ def read_plain(raw: bytes, name: str) -> PointList:
     t = table(raw)
     used = t.tokens > 0
     if not used.any():
-        raise PointListError(name, 1, 0, "expected points 'x y z', found none")
+        raise PointListError(name, 1, 0, msg("expected points 'x y z', found none"))
     edges = np.diff(np.concatenate(([0], used.astype(np.int8), [0])))
     starts, stops = np.flatnonzero(edges == 1), np.flatnonzero(edges == -1)
     paths = [_block(t, a, b, name) for a, b in zip(starts.tolist(), stops.tolist(), strict=True)]
@@ -103,15 +115,17 @@ def _field(t: LineTable, k: int, key: str, name: str) -> str:
     text = t.text(k)
     left, sep, right = text.partition(":")
     if not sep or left.strip().lower() != key.lower():
-        raise PointListError(name, k + 1, 1, f"expected '{key} : ...', got {text.strip()!r}")
+        raise PointListError(name, k + 1, 1, msg("expected '{key} : ...', got {text!r}", key=key,
+                                                 text=text.strip()))
     return right.strip()
 
 
 def _count(t: LineTable, k: int, key: str, name: str) -> int:
     value = _field(t, k, key, name)
     if not value.isdigit():
-        raise PointListError(name, k + 1, t.text(k).find(":") + 3, f"expected a whole number after "
-                             f"'{key} :', got {value!r}")
+        raise PointListError(name, k + 1, t.text(k).find(":") + 3,
+                             msg("expected a whole number after '{key} :', got {value!r}", key=key,
+                                 value=value))
     return int(value)
 
 
@@ -126,16 +140,18 @@ def read_fabrication(raw: bytes, name: str) -> PointList:
             header[key.strip()] = value.strip()
         i += 1
     if i == len(lines):
-        raise PointListError(name, len(t.start), 0, f"expected the line '{SCAN_SECTION}', not found")
+        raise PointListError(name, len(t.start), 0, msg("expected the line '{line}', not found",
+                                                        line=SCAN_SECTION))
     if i + 1 >= len(lines):
-        raise PointListError(name, lines[i] + 1, 0, "expected 'Number of Total Paths : N' after it")
+        raise PointListError(name, lines[i] + 1, 0, msg("expected 'Number of Total Paths : N' after it"))
     total = _count(t, lines[i + 1], "Number of Total Paths", name)
     k = lines[i + 1] + 1
     paths = []
     for p in range(total):
-        k = _next_used(t, k, name, f"'Path Number : {p}' (path {p + 1} of {total})")
+        k = _next_used(t, k, name, msg("'Path Number : {p}' (path {n} of {total})", p=p, n=p + 1,
+                                       total=total))
         _field(t, k, "Path Number", name)
-        k = _next_used(t, k + 1, name, "'Number of Total Points : n'")
+        k = _next_used(t, k + 1, name, msg("'Number of Total Points : n'"))
         n = _count(t, k, "Number of Total Points", name)
         first = k + 1
         short = np.flatnonzero(~(t.numeric[first:first + n] & (t.tokens[first:first + n] == 3)))
@@ -147,8 +163,9 @@ def read_fabrication(raw: bytes, name: str) -> PointList:
     rest = np.flatnonzero(t.tokens[k:] > 0)
     if len(rest):
         at = k + int(rest[0])
-        raise PointListError(name, at + 1, 0, f"expected the end of the file after {total} paths, got "
-                             f"{t.text(at).strip()!r}")
+        raise PointListError(name, at + 1, 0,
+                             msg("expected the end of the file after {total} paths, got {text!r}",
+                                                  total=total, text=t.text(at).strip()))
     return PointList(name, "fabrication", paths, header)
 
 
@@ -157,16 +174,18 @@ def _short_path(t: LineTable, first: int, n: int, found: int, number: str, name:
     at = first + found
     if at < len(t.start) and ":" not in t.text(at):
         raise _bad_point(t, at, name)
-    where = "the end of the file" if at >= len(t.start) else repr(t.text(at).strip())
+    where = msg("the end of the file") if at >= len(t.start) else repr(t.text(at).strip())
     raise PointListError(name, min(at, len(t.start) - 1) + 1, 0,
-                         f"path {number} announced {n} points, found {found} before {where} "
-                         "(expected 'x y z')")
+                         msg("path {number} announced {n} points, found {found} before {where} "
+                             "(expected 'x y z')", number=number, n=n, found=found, where=where))
 
 
 def _next_used(t: LineTable, k: int, name: str, expected: str) -> int:
     rest = np.flatnonzero(t.tokens[k:] > 0)
     if not len(rest):
-        raise PointListError(name, len(t.start), 0, f"expected {expected}, found the end of the file")
+        raise PointListError(name, len(t.start), 0, msg("expected {expected}, found the end of the file",
+                                                        expected=expected))
+
     return k + int(rest[0])
 
 

@@ -34,6 +34,7 @@ from PySide6.QtWidgets import (
 from app.gcode import load_text
 from app.gcode.features import FeatureError, program_moves, write_plain
 from app.gcode.features.fanuc import write_fanuc
+from app.i18n import localize
 from app.profile import MachineProfile
 from app.ui.preview.widget import PreviewWidget
 
@@ -269,11 +270,13 @@ class FeatureDialog(QDialog):
         title = _tr(spec.KIND_TITLES[self.job[row]["kind"]])
         if row == self.list.currentRow():
             form = self.current_form()
-            if form.show_error(exc.field, exc.rule) or self.cutting.show_error(exc.field, exc.rule):
+            rule = localize(exc.rule)
+            if form.show_error(exc.field, rule) or self.cutting.show_error(exc.field, rule):
                 self.problem.setText(self.tr("Fix the marked field to see the job."))
                 return
         self.problem.setText(self.tr("Feature %1 (%2): %3").replace("%1", str(row + 1))
-                             .replace("%2", title).replace("%3", str(exc)))
+                             .replace("%2", title).replace("%3", exc.localized()))
+
 
     # -- output -----------------------------------------------------------------------
 

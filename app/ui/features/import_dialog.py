@@ -125,7 +125,7 @@ class PointImportDialog(QDialog):
                 self.problem_text = self.tr("%1 cannot be read: %2").replace("%1", self.path.name) \
                     .replace("%2", exc.strerror or str(exc))
             except PointListError as exc:
-                self.problem_text = str(exc)
+                self.problem_text = exc.localized()
         return self.problem_text
 
     def options(self) -> ImportOptions:
@@ -152,7 +152,7 @@ class PointImportDialog(QDialog):
         try:
             text, placement = to_gcode(self.points, options, self.profile)
         except PointListError as exc:
-            self._emit((request, "", None, None, str(exc)))
+            self._emit((request, "", None, None, exc.localized()))
             return
         toolpath = load_text(text, self.path.name).toolpath
         tolerance = screen_tolerance(toolpath, view_size, self.profile.motion.arc_tolerance_mm)

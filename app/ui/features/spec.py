@@ -25,6 +25,7 @@ from app.gcode.features import (
     holes_row,
     parse_contour,
 )
+from app.i18n import msg
 from app.profile import MachineProfile
 
 
@@ -146,9 +147,11 @@ def build(kind: str, values: dict):
     if kind == "holes-row":
         return holes_row(v["x"], v["y"], int(v["count"]), v["pitch"], cut, v["angle"], v["peck"], v["dwell"])
     if not v["contour"]:
-        raise FeatureError("contour", "choose a contour file (G00/G01/G02/G03 lines)")
+        raise FeatureError("contour", msg("choose a contour file (G00/G01/G02/G03 lines)"))
     try:
         text = Path(v["contour"]).read_text(encoding="utf-8")
     except (OSError, UnicodeDecodeError) as exc:
-        raise FeatureError("contour", f"cannot read {v['contour']}: {exc}") from None
+        raise FeatureError("contour", msg("cannot read {path}: {error}", path=str(v["contour"]),
+                                          error=str(exc))) from None
+
     return Profile(parse_contour(text, Path(v["contour"]).name), v["side"], cut, v["stock"])
