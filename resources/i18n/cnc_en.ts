@@ -2,6 +2,16 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="en">
 <context>
+    <name>FeatureDialog</name>
+    <message numerus="yes">
+        <source>Estimated time: %1 min %2 s, %n line(s)</source>
+        <translation>
+            <numerusform>Estimated time: %1 min %2 s, %n line</numerusform>
+            <numerusform>Estimated time: %1 min %2 s, %n lines</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>LoaderTexts</name>
     <message numerus="yes">
         <source>%1 does not look like G-code: nothing in it can be run (%n error(s); first, line %2: %3).</source>
@@ -36,6 +46,16 @@
     </message>
 </context>
 <context>
+    <name>Preflight</name>
+    <message numerus="yes">
+        <source>(and %n more axis/direction(s))</source>
+        <translation>
+            <numerusform>(and %n more axis/direction)</numerusform>
+            <numerusform>(and %n more axes/directions)</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>ProgramPanel</name>
     <message numerus="yes">
         <source>… and %n more</source>
@@ -66,6 +86,23 @@
         <translation>
             <numerusform>saved as %1: %n line, verified by the card&apos;s CRC32</numerusform>
             <numerusform>saved as %1: %n lines, verified by the card&apos;s CRC32</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>SourceModel</name>
+    <message numerus="yes">
+        <source>%n move(s)</source>
+        <translation>
+            <numerusform>%n move</numerusform>
+            <numerusform>%n moves</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>… and %n more</source>
+        <translation>
+            <numerusform>… and %n more</numerusform>
+            <numerusform>… and %n more</numerusform>
         </translation>
     </message>
 </context>

@@ -68,10 +68,317 @@
     </message>
 </context>
 <context>
+    <name>CoverBanner</name>
+    <message>
+        <source>COVER OPEN - close to continue: no motion, spindle stopped. Resume restarts the spindle, then the job.</source>
+        <translation>NẮP CHE ĐANG MỞ - đóng nắp để tiếp tục: không chuyển động, trục chính đã dừng. Tiếp tục sẽ bật lại trục chính rồi chạy tiếp chương trình.</translation>
+    </message>
+    <message>
+        <source>Cover</source>
+        <translation>Nắp che</translation>
+    </message>
+    <message>
+        <source>COVER OPEN - close to continue</source>
+        <translation>NẮP CHE ĐANG MỞ - đóng nắp để tiếp tục</translation>
+    </message>
+    <message>
+        <source>Cover closed: press Resume to go on</source>
+        <translation>Nắp che đã đóng: nhấn Tiếp tục để chạy tiếp</translation>
+    </message>
+</context>
+<context>
     <name>DiagnosticsView</name>
     <message>
         <source>%1 error mm</source>
         <translation>lệch %1 mm</translation>
+    </message>
+</context>
+<context>
+    <name>FeatureDialog</name>
+    <message>
+        <source>Machining features</source>
+        <translation>Gia công theo đặc trưng hình học</translation>
+    </message>
+    <message>
+        <source>Job (in order)</source>
+        <translation>Chương trình (theo thứ tự)</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Thêm</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Xóa</translation>
+    </message>
+    <message>
+        <source>Up</source>
+        <translation>Lên</translation>
+    </message>
+    <message>
+        <source>Down</source>
+        <translation>Xuống</translation>
+    </message>
+    <message>
+        <source>Contour file</source>
+        <translation>File biên dạng</translation>
+    </message>
+    <message>
+        <source>Open a contour</source>
+        <translation>Mở biên dạng</translation>
+    </message>
+    <message>
+        <source>Side</source>
+        <translation>Phía</translation>
+    </message>
+    <message>
+        <source>outside (island)</source>
+        <translation>bên ngoài (đảo)</translation>
+    </message>
+    <message>
+        <source>inside (pocket)</source>
+        <translation>bên trong (hốc)</translation>
+    </message>
+    <message>
+        <source>Climb milling (else conventional)</source>
+        <translation>Phay thuận (nếu không: phay nghịch)</translation>
+    </message>
+    <message>
+        <source>Geometry</source>
+        <translation>Hình học</translation>
+    </message>
+    <message>
+        <source>Tool and cutting</source>
+        <translation>Dao và chế độ cắt</translation>
+    </message>
+    <message>
+        <source>Open as program</source>
+        <translation>Mở như chương trình</translation>
+    </message>
+    <message>
+        <source>plain G-code</source>
+        <translation>G-code thường</translation>
+    </message>
+    <message>
+        <source>Fanuc 21 macro</source>
+        <translation>Macro Fanuc 21</translation>
+    </message>
+    <message>
+        <source>Fanuc 31 macro</source>
+        <translation>Macro Fanuc 31</translation>
+    </message>
+    <message>
+        <source>Save as…</source>
+        <translation>Lưu thành…</translation>
+    </message>
+    <message>
+        <source>Save in</source>
+        <translation>Lưu dạng</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Đóng</translation>
+    </message>
+    <message>
+        <source>machining features</source>
+        <translation>gia công theo đặc trưng hình học</translation>
+    </message>
+    <message numerus="yes">
+        <source>Estimated time: %1 min %2 s, %n line(s)</source>
+        <translation>
+            <numerusform>Thời gian ước tính: %1 phút %2 giây, %n dòng</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Fix the marked field to see the job.</source>
+        <translation>Sửa ô được đánh dấu để xem chương trình.</translation>
+    </message>
+    <message>
+        <source>Feature %1 (%2): %3</source>
+        <translation>Đặc trưng %1 (%2): %3</translation>
+    </message>
+    <message>
+        <source>Save the program</source>
+        <translation>Lưu chương trình</translation>
+    </message>
+    <message>
+        <source>G-code (*.nc *.ngc *.gcode)</source>
+        <translation>G-code (*.nc *.ngc *.gcode)</translation>
+    </message>
+</context>
+<context>
+    <name>FeatureForm</name>
+    <message>
+        <source>X</source>
+        <translation>X</translation>
+    </message>
+    <message>
+        <source>Y</source>
+        <translation>Y</translation>
+    </message>
+    <message>
+        <source>Rectangular pocket</source>
+        <translation>Hốc chữ nhật</translation>
+    </message>
+    <message>
+        <source>Round pocket</source>
+        <translation>Hốc tròn</translation>
+    </message>
+    <message>
+        <source>Slot</source>
+        <translation>Rãnh</translation>
+    </message>
+    <message>
+        <source>Face</source>
+        <translation>Phay mặt</translation>
+    </message>
+    <message>
+        <source>Profile (island or pocket from a contour)</source>
+        <translation>Biên dạng (đảo hoặc hốc từ file biên dạng)</translation>
+    </message>
+    <message>
+        <source>Holes on a circle</source>
+        <translation>Lỗ trên vòng tròn</translation>
+    </message>
+    <message>
+        <source>Holes in a row</source>
+        <translation>Lỗ theo hàng</translation>
+    </message>
+    <message>
+        <source>Peck depth (0: none)</source>
+        <translation>Chiều sâu mỗi lần khoan (0: không)</translation>
+    </message>
+    <message>
+        <source>Dwell at the bottom</source>
+        <translation>Dừng ở đáy lỗ</translation>
+    </message>
+    <message>
+        <source>X (lower left)</source>
+        <translation>X (góc dưới trái)</translation>
+    </message>
+    <message>
+        <source>Y (lower left)</source>
+        <translation>Y (góc dưới trái)</translation>
+    </message>
+    <message>
+        <source>Width</source>
+        <translation>Chiều rộng</translation>
+    </message>
+    <message>
+        <source>Height</source>
+        <translation>Chiều cao</translation>
+    </message>
+    <message>
+        <source>Corner radius</source>
+        <translation>Bán kính góc</translation>
+    </message>
+    <message>
+        <source>Angle about X+</source>
+        <translation>Góc so với X+</translation>
+    </message>
+    <message>
+        <source>X (centre)</source>
+        <translation>X (tâm)</translation>
+    </message>
+    <message>
+        <source>Y (centre)</source>
+        <translation>Y (tâm)</translation>
+    </message>
+    <message>
+        <source>Diameter</source>
+        <translation>Đường kính</translation>
+    </message>
+    <message>
+        <source>X start</source>
+        <translation>X đầu</translation>
+    </message>
+    <message>
+        <source>Y start</source>
+        <translation>Y đầu</translation>
+    </message>
+    <message>
+        <source>X end</source>
+        <translation>X cuối</translation>
+    </message>
+    <message>
+        <source>Y end</source>
+        <translation>Y cuối</translation>
+    </message>
+    <message>
+        <source>Stock around an island (M)</source>
+        <translation>Lượng phôi quanh đảo (M)</translation>
+    </message>
+    <message>
+        <source>Circle diameter</source>
+        <translation>Đường kính vòng tròn</translation>
+    </message>
+    <message>
+        <source>Holes</source>
+        <translation>Số lỗ</translation>
+    </message>
+    <message>
+        <source>Start angle</source>
+        <translation>Góc bắt đầu</translation>
+    </message>
+    <message>
+        <source>X (first hole)</source>
+        <translation>X (lỗ đầu tiên)</translation>
+    </message>
+    <message>
+        <source>Y (first hole)</source>
+        <translation>Y (lỗ đầu tiên)</translation>
+    </message>
+    <message>
+        <source>Pitch</source>
+        <translation>Bước lỗ</translation>
+    </message>
+    <message>
+        <source>Tool number</source>
+        <translation>Số hiệu dao</translation>
+    </message>
+    <message>
+        <source>Tool diameter (D)</source>
+        <translation>Đường kính dao (D)</translation>
+    </message>
+    <message>
+        <source>Stock top (Z)</source>
+        <translation>Mặt trên phôi (Z)</translation>
+    </message>
+    <message>
+        <source>Depth below the top (H)</source>
+        <translation>Chiều sâu từ mặt trên (H)</translation>
+    </message>
+    <message>
+        <source>Depth per layer (C)</source>
+        <translation>Chiều sâu mỗi lớp (C)</translation>
+    </message>
+    <message>
+        <source>Stepover (B)</source>
+        <translation>Bước ngang (B)</translation>
+    </message>
+    <message>
+        <source>Finishing allowance XY (U)</source>
+        <translation>Lượng dư tinh XY (U)</translation>
+    </message>
+    <message>
+        <source>Finishing allowance Z (W)</source>
+        <translation>Lượng dư tinh Z (W)</translation>
+    </message>
+    <message>
+        <source>Clearance (R)</source>
+        <translation>Độ cao an toàn (R)</translation>
+    </message>
+    <message>
+        <source>Feed (F)</source>
+        <translation>Tốc độ chạy dao (F)</translation>
+    </message>
+    <message>
+        <source>Plunge feed</source>
+        <translation>Tốc độ ăn dao xuống</translation>
+    </message>
+    <message>
+        <source>Spindle speed (S)</source>
+        <translation>Tốc độ trục chính (S)</translation>
     </message>
 </context>
 <context>
@@ -400,6 +707,18 @@
         <translation>Đặt gốc phôi (tại đây)</translation>
     </message>
     <message>
+        <source>Optional stop (M01 holds the job)</source>
+        <translation>Dừng tùy chọn (M01 dừng chương trình)</translation>
+    </message>
+    <message>
+        <source>Override travel check (check mode only)</source>
+        <translation>Bỏ qua kiểm tra hành trình (chỉ khi chạy thử)</translation>
+    </message>
+    <message>
+        <source>run a program that leaves the travel as a dry run</source>
+        <translation>chạy thử một chương trình vượt hành trình</translation>
+    </message>
+    <message>
         <source>measured —</source>
         <translation>đo được —</translation>
     </message>
@@ -555,8 +874,8 @@
 <context>
     <name>Menus</name>
     <message>
-        <source>G-code (*.ngc *.nc *.gcode *.gc *.tap *.cnc *.txt);;All files (*)</source>
-        <translation>G-code (*.ngc *.nc *.gcode *.gc *.tap *.cnc *.txt);;Mọi file (*)</translation>
+        <source>G-code (*.ngc *.nc *.gcode *.gc *.tap *.cnc *.txt);;Point lists (*.xyz *.txt *.csv *.dat);;All files (*)</source>
+        <translation>G-code (*.ngc *.nc *.gcode *.gc *.tap *.cnc *.txt);;Danh sách điểm (*.xyz *.txt *.csv *.dat);;Mọi file (*)</translation>
     </message>
     <message>
         <source>&amp;File</source>
@@ -581,6 +900,14 @@
     <message>
         <source>Open &amp;recent</source>
         <translation>Mở &amp;gần đây</translation>
+    </message>
+    <message>
+        <source>New from &amp;features…</source>
+        <translation>Tạo mới từ &amp;đặc trưng hình học…</translation>
+    </message>
+    <message>
+        <source>pockets, slots, islands, hole patterns</source>
+        <translation>hốc, rãnh, đảo, mẫu lỗ</translation>
     </message>
     <message>
         <source>&amp;Reload</source>
@@ -778,6 +1105,10 @@ Nếu mất kết nối, máy giữ nguyên vị trí; kết nối lại và ch�
         <translation>Chương trình có lỗi</translation>
     </message>
     <message>
+        <source>Program leaves the travel</source>
+        <translation>Chương trình vượt hành trình</translation>
+    </message>
+    <message>
         <source>Not homed</source>
         <translation>Chưa về gốc</translation>
     </message>
@@ -823,6 +1154,53 @@ Nếu mất kết nối, máy giữ nguyên vị trí; kết nối lại và ch�
     </message>
 </context>
 <context>
+    <name>PointImportDialog</name>
+    <message>
+        <source>Import points: %1</source>
+        <translation>Nhập điểm: %1</translation>
+    </message>
+    <message>
+        <source>Fit X and Y into the travel (keeps the aspect)</source>
+        <translation>Co giãn X và Y vừa hành trình (giữ tỉ lệ)</translation>
+    </message>
+    <message>
+        <source>Cut every point at one Z</source>
+        <translation>Cắt mọi điểm ở cùng một Z</translation>
+    </message>
+    <message>
+        <source>Scale (after fitting)</source>
+        <translation>Tỉ lệ (sau khi co giãn)</translation>
+    </message>
+    <message>
+        <source>Cut Z</source>
+        <translation>Z cắt</translation>
+    </message>
+    <message>
+        <source>Feed</source>
+        <translation>Tốc độ chạy dao</translation>
+    </message>
+    <message>
+        <source>Clearance height</source>
+        <translation>Độ cao an toàn</translation>
+    </message>
+    <message>
+        <source>Convert and open</source>
+        <translation>Chuyển đổi và mở</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Hủy</translation>
+    </message>
+    <message>
+        <source>%1 cannot be read: %2</source>
+        <translation>Không đọc được %1: %2</translation>
+    </message>
+    <message>
+        <source>Converting…</source>
+        <translation>Đang chuyển đổi…</translation>
+    </message>
+</context>
+<context>
     <name>Ports</name>
     <message>
         <source>Built-in simulator (sim://)</source>
@@ -838,6 +1216,27 @@ Nếu mất kết nối, máy giữ nguyên vị trí; kết nối lại và ch�
     <message>
         <source>position</source>
         <translation>vị trí</translation>
+    </message>
+</context>
+<context>
+    <name>Preflight</name>
+    <message>
+        <source>Program leaves the travel</source>
+        <translation>Chương trình vượt hành trình</translation>
+    </message>
+    <message>
+        <source>Start is disabled: line %1: %2</source>
+        <translation>Không cho phép chạy: dòng %1: %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>(and %n more axis/direction(s))</source>
+        <translation>
+            <numerusform>(và %n trục/chiều khác)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Move the work zero or fix the program; in check mode it may be overridden.</source>
+        <translation>Hãy dời gốc phôi hoặc sửa chương trình; khi chạy thử có thể bỏ qua kiểm tra này.</translation>
     </message>
 </context>
 <context>
@@ -912,12 +1311,35 @@ Nếu mất kết nối, máy giữ nguyên vị trí; kết nối lại và ch�
         <translation>Sự cố (%1)</translation>
     </message>
     <message>
+        <source>Start here</source>
+        <translation>Chạy từ đây</translation>
+    </message>
+    <message>
         <source>error</source>
         <translation>lỗi</translation>
     </message>
     <message>
         <source>warning</source>
         <translation>cảnh báo</translation>
+    </message>
+    <message>
+        <source>in subprogram %1</source>
+        <translation>trong chương trình con %1</translation>
+    </message>
+    <message>
+        <source>loop pass %1</source>
+        <translation>vòng lặp lần %1</translation>
+    </message>
+</context>
+<context>
+    <name>ProgramStops</name>
+    <message>
+        <source>Program stop at %1: waiting for the operator</source>
+        <translation>Dừng chương trình ở %1: chờ người vận hành</translation>
+    </message>
+    <message>
+        <source>Settings not saved</source>
+        <translation>Chưa lưu cài đặt</translation>
     </message>
 </context>
 <context>
@@ -1152,6 +1574,10 @@ Nếu mất kết nối, máy giữ nguyên vị trí; kết nối lại và ch�
         <translation>Chương trình chưa chạy hết: %1</translation>
     </message>
     <message>
+        <source> (at source line %1; %2 device lines ran, see the console)</source>
+        <translation> (tại dòng %1 của chương trình; đã chạy %2 dòng lệnh máy, xem bảng điều khiển lệnh)</translation>
+    </message>
+    <message>
         <source>Machine refused</source>
         <translation>Máy từ chối lệnh</translation>
     </message>
@@ -1181,6 +1607,10 @@ Nếu mất kết nối, máy giữ nguyên vị trí; kết nối lại và ch�
     <message>
         <source>Travel &amp;&amp; offset</source>
         <translation>Hành trình &amp;&amp; gốc phôi</translation>
+    </message>
+    <message>
+        <source>Program stops &amp;&amp; end</source>
+        <translation>Dừng chương trình &amp;&amp; kết thúc</translation>
     </message>
     <message>
         <source>Settings</source>
@@ -1384,6 +1814,123 @@ Nếu mất kết nối, máy giữ nguyên vị trí; kết nối lại và ch�
     <message>
         <source>chord error when arcs become lines</source>
         <translation>sai số dây cung khi chia cung tròn thành đoạn thẳng</translation>
+    </message>
+</context>
+<context>
+    <name>SourceModel</name>
+    <message numerus="yes">
+        <source>%n move(s)</source>
+        <translation>
+            <numerusform>%n đoạn dịch chuyển</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>… and %n more</source>
+        <translation>
+            <numerusform>… và %n dòng nữa</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Machine lines made by line %1:</source>
+        <translation>Các dòng lệnh máy sinh ra từ dòng %1:</translation>
+    </message>
+</context>
+<context>
+    <name>StartHere</name>
+    <message>
+        <source>Start here</source>
+        <translation>Chạy từ đây</translation>
+    </message>
+    <message>
+        <source>Nothing runs from line %1 on.</source>
+        <translation>Từ dòng %1 trở đi không còn gì để chạy.</translation>
+    </message>
+    <message>
+        <source>(nothing to restore)</source>
+        <translation>(không có gì cần khôi phục)</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Chạy</translation>
+    </message>
+    <message>
+        <source>Start the job at line %1 (device line %2 of %3)?</source>
+        <translation>Chạy chương trình từ dòng %1 (dòng lệnh máy %2 trên %3)?</translation>
+    </message>
+    <message>
+        <source>Units mm, absolute distances, XY plane (the machine&apos;s dialect).</source>
+        <translation>Đơn vị mm, tọa độ tuyệt đối, mặt phẳng XY (quy ước của máy).</translation>
+    </message>
+    <message>
+        <source>Feed F%1.</source>
+        <translation>Tốc độ chạy dao F%1.</translation>
+    </message>
+    <message>
+        <source>No feed yet.</source>
+        <translation>Chưa có tốc độ chạy dao.</translation>
+    </message>
+    <message>
+        <source>Spindle on at S%1, up to speed before moving.</source>
+        <translation>Bật trục chính ở S%1, đạt tốc độ rồi mới di chuyển.</translation>
+    </message>
+    <message>
+        <source>Spindle off.</source>
+        <translation>Tắt trục chính.</translation>
+    </message>
+    <message>
+        <source>Retract to Z%1, rapid to X%2 Y%3, feed down to Z%4.</source>
+        <translation>Rút dao lên Z%1, chạy nhanh tới X%2 Y%3, ăn dao xuống Z%4.</translation>
+    </message>
+</context>
+<context>
+    <name>StopPrompt</name>
+    <message>
+        <source>Continue</source>
+        <translation>Tiếp tục</translation>
+    </message>
+    <message>
+        <source>Stop job</source>
+        <translation>Dừng chương trình</translation>
+    </message>
+    <message>
+        <source>Tool change</source>
+        <translation>Thay dao</translation>
+    </message>
+    <message>
+        <source>Program stop</source>
+        <translation>Dừng chương trình</translation>
+    </message>
+    <message>
+        <source>Tool change at line %1 (%2): the spindle is off and Z is up.</source>
+        <translation>Thay dao ở dòng %1 (%2): trục chính đã tắt và Z đã nâng lên.</translation>
+    </message>
+    <message>
+        <source>Optional stop</source>
+        <translation>Dừng tùy chọn</translation>
+    </message>
+    <message>
+        <source>%1 at line %2 (%3): the machine holds.</source>
+        <translation>%1 ở dòng %2 (%3): máy đang dừng chờ.</translation>
+    </message>
+    <message>
+        <source>Continue goes on with the next line.</source>
+        <translation>Tiếp tục sẽ chạy dòng kế tiếp.</translation>
+    </message>
+    <message>
+        <source>Fit the next tool (the program names none).</source>
+        <translation>Lắp dao tiếp theo (chương trình không ghi số dao).</translation>
+    </message>
+    <message>
+        <source>Fit tool %1 (diameter unknown: not in the tool table).</source>
+        <translation>Lắp dao %1 (chưa biết đường kính: không có trong bảng dao).</translation>
+    </message>
+    <message>
+        <source>Fit tool %1 (diameter %2 mm).</source>
+        <translation>Lắp dao %1 (đường kính %2 mm).</translation>
+    </message>
+    <message>
+        <source>Continue restarts the spindle, lowers Z and goes on.</source>
+        <translation>Tiếp tục sẽ bật lại trục chính, hạ Z rồi chạy tiếp.</translation>
     </message>
 </context>
 <context>
