@@ -87,6 +87,13 @@ class _CommaDecimal(float):
         return float.__format__(self, spec).translate(_SWAP_SEPARATORS)
 
 
+class _CommaInt(int):
+    """A whole number whose thousands are separated by a point (``{n:,}``: 1.000.000)."""
+
+    def __format__(self, spec: str) -> str:
+        return int.__format__(self, spec).translate(_SWAP_SEPARATORS)
+
+
 _SWAP_SEPARATORS = str.maketrans(".,", ",.")
 COMMA_DECIMAL = frozenset({"vi"})  # languages that write 1,5 for one and a half
 
@@ -96,6 +103,9 @@ def _value(value):
         return localize(value)
     if isinstance(value, float) and language() in COMMA_DECIMAL:
         return _CommaDecimal(value)
+    if isinstance(value, int) and not isinstance(value, bool) and language() in COMMA_DECIMAL:
+        return _CommaInt(value)
+
     return value
 
 

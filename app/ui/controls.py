@@ -67,6 +67,10 @@ class MachineControls(QWidget):
             self.buttons[key].setToolTip(QCoreApplication.translate("MachineControls", tip) if tip else "")
         self.job_box.setTitle(self.tr("Job"))
         self.check_mode.setText(self.tr("Check mode (dry run, no motion)"))
+        self.optional_stop.setText(self.tr("Optional stop (M01 holds the job)"))
+        self.override_travel.setText(self.tr("Override travel check (check mode only)"))
+        self.override_travel.setToolTip(self.tr("run a program that leaves the travel as a dry run"))
+
         self.spindle_box.setTitle(self.tr("Spindle"))
         self.rpm.setSuffix(self.tr(" rpm"))
         self.zero_box.setTitle(self.tr("Work zero (here)"))
@@ -104,11 +108,10 @@ class MachineControls(QWidget):
         self.check_mode = QCheckBox()
         self.check_mode.toggled.connect(self.check_mode_toggled.emit)
         grid.addWidget(self.check_mode, 3, 0, 1, 2)
-        self.optional_stop = QCheckBox(self.tr("Optional stop (M01 holds the job)"))
+        self.optional_stop = QCheckBox()
         self.optional_stop.setChecked(True)
         grid.addWidget(self.optional_stop, 4, 0, 1, 2)
-        self.override_travel = QCheckBox(self.tr("Override travel check (check mode only)"))
-        self.override_travel.setToolTip(self.tr("run a program that leaves the travel as a dry run"))
+        self.override_travel = QCheckBox()
         grid.addWidget(self.override_travel, 5, 0, 1, 2)
         return box
 

@@ -3,7 +3,7 @@ machine reports its cover open (flag ``C``), and the same words in the status ba
 
 from __future__ import annotations
 
-from PySide6.QtCore import QObject, Qt
+from PySide6.QtCore import QEvent, QObject, Qt
 from PySide6.QtWidgets import QLabel, QToolBar
 
 COVER_FLAG = "C"
@@ -13,20 +13,31 @@ class CoverBanner(QObject):
     def __init__(self, window) -> None:
         super().__init__(window)
         self.w = window
-        self.label = QLabel(self.tr("COVER OPEN - close to continue: no motion, spindle stopped. "
-                                    "Resume restarts the spindle, then the job."))
+        self.label = QLabel()
+        self.label.installEventFilter(self)  # LanguageChange reaches widgets, not this QObject
         self.label.setAlignment(Qt.AlignmentFlag.AlignCenter)
         self.label.setStyleSheet("QLabel { background: #b00020; color: white; font-weight: bold;"
                                  " padding: 6px; }")
         window.addToolBarBreak()
-        self.bar = QToolBar(self.tr("Cover"), window)
+        self.bar = QToolBar(window)
         self.bar.setObjectName("cover_toolbar")
         self.bar.setMovable(False)
         self.bar.addWidget(self.label)
         window.addToolBar(self.bar)
         self.bar.setVisible(False)
         self.open = False
+        self.retranslate_ui()
         window.link.worker.status_changed.connect(self.on_status)
+
+    def retranslate_ui(self) -> None:
+        self.label.setText(self.tr("COVER OPEN - close to continue: no motion, spindle stopped. "
+                                   "Resume restarts the spindle, then the job."))
+        self.bar.setWindowTitle(self.tr("Cover"))
+
+    def eventFilter(self, watched, event) -> bool:  # noqa: N802 (Qt override)
+        if watched is self.label and event.type() == QEvent.Type.LanguageChange:
+            self.retranslate_ui()
+        return super().eventFilter(watched, event)
 
     def on_status(self, event) -> None:
         is_open = COVER_FLAG in event.flags

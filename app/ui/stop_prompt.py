@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from PySide6.QtCore import Qt, Signal
+from PySide6.QtCore import QEvent, Qt, Signal
 from PySide6.QtWidgets import QMessageBox, QWidget
 
 from app.gcode import tools
@@ -34,11 +34,22 @@ class StopPrompt(QMessageBox):
     def __init__(self, parent: QWidget | None = None) -> None:
         super().__init__(parent)
         self.setIcon(QMessageBox.Icon.Question)
-        self.continue_button = self.addButton(self.tr("Continue"), QMessageBox.ButtonRole.AcceptRole)
-        self.stop_button = self.addButton(self.tr("Stop job"), QMessageBox.ButtonRole.RejectRole)
+        self.continue_button = self.addButton("", QMessageBox.ButtonRole.AcceptRole)
+        self.stop_button = self.addButton("", QMessageBox.ButtonRole.RejectRole)
         self.setDefaultButton(self.continue_button)
         self.buttonClicked.connect(self._clicked)
         self.index: int | None = None
+        self.retranslate_ui()
+
+    def retranslate_ui(self) -> None:
+        """The buttons in the current language (the text is set anew at each stop)."""
+        self.continue_button.setText(self.tr("Continue"))
+        self.stop_button.setText(self.tr("Stop job"))
+
+    def changeEvent(self, event) -> None:  # noqa: N802 (Qt override)
+        if event.type() == QEvent.Type.LanguageChange:
+            self.retranslate_ui()
+        super().changeEvent(event)
 
     def show_stop(self, event, source_line: int, diameter: float | None) -> None:
         """Show the prompt for ``event`` (a ``ProgramStopEvent``) at ``source_line``."""

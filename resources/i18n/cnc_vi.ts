@@ -1760,6 +1760,18 @@ Nếu mất kết nối, máy giữ nguyên vị trí; kết nối lại và ch�
         <translation>tốc độ baud</translation>
     </message>
     <message>
+        <source>optional stop M01 (1 holds, 0 skips)</source>
+        <translation>dừng tùy chọn M01 (1 dừng, 0 bỏ qua)</translation>
+    </message>
+    <message>
+        <source>stop the spindle at M00/M01</source>
+        <translation>tắt trục chính khi gặp M00/M01</translation>
+    </message>
+    <message>
+        <source>after the job</source>
+        <translation>sau khi chạy xong</translation>
+    </message>
+    <message>
         <source>motor supply voltage</source>
         <translation>điện áp cấp cho động cơ</translation>
     </message>
@@ -1814,6 +1826,18 @@ Nếu mất kết nối, máy giữ nguyên vị trí; kết nối lại và ch�
     <message>
         <source>chord error when arcs become lines</source>
         <translation>sai số dây cung khi chia cung tròn thành đoạn thẳng</translation>
+    </message>
+    <message>
+        <source>M01 holds the job (1) or is skipped (0)</source>
+        <translation>M01 dừng chương trình (1) hoặc bị bỏ qua (0)</translation>
+    </message>
+    <message>
+        <source>M00/M01 also stop the spindle (1)</source>
+        <translation>M00/M01 tắt luôn trục chính (1)</translation>
+    </message>
+    <message>
+        <source>after the job: 0 stay, 1 lift Z, 2 work zero X0 Y0, 3 home</source>
+        <translation>sau khi chạy xong: 0 đứng yên, 1 nâng Z, 2 về X0 Y0 của gốc phôi, 3 về gốc máy</translation>
     </message>
 </context>
 <context>

@@ -37,6 +37,9 @@ LABELS = {
     "degraded_s": QT_TRANSLATE_NOOP("SettingsFields", "degraded after (s)"),
     "lost_s": QT_TRANSLATE_NOOP("SettingsFields", "lost after (s)"),
     "baud": QT_TRANSLATE_NOOP("SettingsFields", "baud rate"),
+    "optional_stop": QT_TRANSLATE_NOOP("SettingsFields", "optional stop M01 (1 holds, 0 skips)"),
+    "stop_spindle": QT_TRANSLATE_NOOP("SettingsFields", "stop the spindle at M00/M01"),
+    "after_job": QT_TRANSLATE_NOOP("SettingsFields", "after the job"),
 }
 DOCS = (  # the profile's own field docs (app/profile.py), listed so they are translated
     QT_TRANSLATE_NOOP("SettingsFields", "motor supply voltage"),
@@ -53,7 +56,11 @@ DOCS = (  # the profile's own field docs (app/profile.py), listed so they are tr
     QT_TRANSLATE_NOOP("SettingsFields", "G00 feed"),
     QT_TRANSLATE_NOOP("SettingsFields", "cap on programmed feeds"),
     QT_TRANSLATE_NOOP("SettingsFields", "chord error when arcs become lines"),
+    QT_TRANSLATE_NOOP("SettingsFields", "M01 holds the job (1) or is skipped (0)"),
+    QT_TRANSLATE_NOOP("SettingsFields", "M00/M01 also stop the spindle (1)"),
+    QT_TRANSLATE_NOOP("SettingsFields", "after the job: 0 stay, 1 lift Z, 2 work zero X0 Y0, 3 home"),
 )
+
 
 
 def field_label(name: str) -> str:
