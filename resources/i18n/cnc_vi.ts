@@ -141,7 +141,7 @@
     </message>
     <message>
         <source>Climb milling (else conventional)</source>
-        <translation>Phay thuận (nếu không: phay nghịch)</translation>
+        <translation>Phay thuận (tắt: phay nghịch)</translation>
     </message>
     <message>
         <source>Geometry</source>
@@ -178,10 +178,6 @@
     <message>
         <source>Close</source>
         <translation>Đóng</translation>
-    </message>
-    <message>
-        <source>machining features</source>
-        <translation>gia công theo đặc trưng hình học</translation>
     </message>
     <message numerus="yes">
         <source>Estimated time: %1 min %2 s, %n line(s)</source>
@@ -379,6 +375,18 @@
     <message>
         <source>Spindle speed (S)</source>
         <translation>Tốc độ trục chính (S)</translation>
+    </message>
+    <message>
+        <source>mm/min</source>
+        <translation>mm/phút</translation>
+    </message>
+    <message>
+        <source>rpm</source>
+        <translation>vòng/phút</translation>
+    </message>
+    <message>
+        <source>Browse…</source>
+        <translation>Chọn…</translation>
     </message>
 </context>
 <context>
@@ -1166,6 +1174,10 @@ Nếu mất kết nối, máy giữ nguyên vị trí; kết nối lại và ch�
     <message>
         <source>Cut every point at one Z</source>
         <translation>Cắt mọi điểm ở cùng một Z</translation>
+    </message>
+    <message>
+        <source> mm/min</source>
+        <translation> mm/phút</translation>
     </message>
     <message>
         <source>Scale (after fitting)</source>

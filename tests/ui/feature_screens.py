@@ -1,7 +1,8 @@
 """A screenshot of the feature dialog on the CAPP paper's worked example (the island
 profile of its figure 4, parameters of its program N5-N6), for the README:
-``QT_QPA_PLATFORM=offscreen python -m tests.ui.feature_screens`` writes
-docs/screenshots/features-island.png; the tests call ``island_shot(dialog, tmp_path)``."""
+``QT_QPA_PLATFORM=offscreen python -m tests.ui.feature_screens [OUT [LANG]]`` writes
+docs/screenshots/features-island.png (``docs/screenshots/vi vi``: the Vietnamese one);
+the tests call ``island_shot(dialog, tmp_path)``."""
 
 from __future__ import annotations
 
@@ -41,14 +42,17 @@ def island_shot(dialog, out: Path) -> Path:
     return path
 
 
-def main(out: str = "docs/screenshots") -> int:
+def main(out: str = "docs/screenshots", language: str = "en") -> int:
     import tempfile
 
     from app.profile import MachineProfile
     from app.ui.features.dialog import FeatureDialog
+    from app.ui.language import apply_language
     from app.ui.main import make_app
 
     app = make_app()
+    apply_language(language)
+
     with tempfile.TemporaryDirectory() as folder:
         dialog = FeatureDialog(MachineProfile(), lambda path: None, Path(folder))
         dialog.show()

@@ -28,7 +28,7 @@ def test_each_source_line_shows_the_moves_it_produced(qtbot):
     model = panel.source_model
     assert model.columnCount() == 2
     call = model.index(7, 1)  # line 8: the call inside the loop
-    assert model.data(call) == "9 move(s)"
+    assert model.data(call) == "9 moves"  # English plural forms from cnc_en.ts
     assert model.data(model.index(0, 1)) is None  # the sub's own lines run only through the call
     tip = model.data(call, Qt.ItemDataRole.ToolTipRole)
     assert "line 8" in tip and "G00 X0 Y0" in tip and "G00 X20" in tip

@@ -49,6 +49,8 @@ def _tr(text: str) -> str:
     return QCoreApplication.translate("FeatureForm", text)
 
 
+PROGRAM_TITLE = "machining features"  # the program's comment: file content stays ASCII English, as G-code
+
 class FeatureDialog(QDialog):
     """The feature job editor (see the module docstring). ``open_program(path)`` is
     called with the saved program when the operator picks "Open as program"."""
@@ -228,7 +230,7 @@ class FeatureDialog(QDialog):
         if bad is None:
             try:
                 moves = program_moves(features, self.profile)
-                text = write_plain(moves, self.tr("machining features"))
+                text = write_plain(moves, PROGRAM_TITLE)
             except FeatureError as exc:  # the travel: which feature cannot be known from the text
                 bad = (self.list.currentRow(), exc)
         self._show_errors(bad)
@@ -302,6 +304,6 @@ class FeatureDialog(QDialog):
     def save_to(self, path: Path) -> None:
         """Write the job to ``path`` in the chosen dialect (plain or a Fanuc macro program)."""
         dialect = self.dialect.currentData()
-        title = self.tr("machining features")
+        title = PROGRAM_TITLE
         text = self.text if dialect == "plain" else write_fanuc(self.moves, dialect, title)
         path.write_text(text, encoding="utf-8")

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from PySide6.QtCore import QCoreApplication, Signal
+from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, Signal
 from PySide6.QtWidgets import (
     QCheckBox,
     QComboBox,
@@ -25,8 +25,12 @@ from .spec import Field
 ERROR_STYLE = "color: #d03030;"
 
 
+UNITS = (QT_TRANSLATE_NOOP("FeatureForm", "mm/min"), QT_TRANSLATE_NOOP("FeatureForm", "rpm"))  # others: as is
+
+
 def _tr(text: str) -> str:
     return QCoreApplication.translate("FeatureForm", text)
+
 
 
 class FieldForm(QWidget):
@@ -62,7 +66,7 @@ class FieldForm(QWidget):
         spin.setRange(field.low, field.high)
         spin.setValue(field.default)
         if field.unit:
-            spin.setSuffix(f" {field.unit}")
+            spin.setSuffix(f" {_tr(field.unit)}")
         spin.setKeyboardTracking(False)
         spin.valueChanged.connect(self.changed)
         self._row(field.name, _tr(field.label), spin, spin.value, spin.setValue)
@@ -89,7 +93,7 @@ class FieldForm(QWidget):
         edit = QLineEdit()
         edit.setObjectName(name)
         edit.editingFinished.connect(self.changed)
-        browse = QPushButton(_tr("Browse…"))
+        browse = QPushButton(QCoreApplication.translate("FeatureForm", "Browse…"))
         holder = QWidget()
         layout = QHBoxLayout(holder)
         layout.setContentsMargins(0, 0, 0, 0)

@@ -83,7 +83,7 @@ class PointImportDialog(QDialog):
         self.use_cut_z.setChecked(True)
         self.cut_z = _spin(-0.2, -100, 100, " mm")
         feed = min(300.0, self.profile.motion.max_feed_mm_min)
-        self.feed = _spin(feed, 1, self.profile.motion.max_feed_mm_min, " mm/min", 0)
+        self.feed = _spin(feed, 1, self.profile.motion.max_feed_mm_min, self.tr(" mm/min"), 0)
         self.clearance = _spin(5.0, 0.1, 100, " mm")
         form.addRow(self.fit)
         form.addRow(self.tr("Scale (after fitting)"), self.scale)
