@@ -53,6 +53,7 @@ class Phase:
 class PaperForm:
     """One profile feature as the paper programs it (see the module docstring)."""
 
+    name: str  # the contour's file
     path: tuple[Segment, ...]  # the contour from point 3 round to point 3
     t: tuple[float, float]  # direction of the contour at point 3
     n: tuple[float, float]  # unit normal towards the tool's side
@@ -170,11 +171,22 @@ def form_moves(form: PaperForm) -> list[Move]:
     text = reference(form, notes)
     program = load_text(text, "profile", tools={form.register: Tool(form.register, form.cut.tool_diameter)})
     if program.errors:
-        e = program.errors[0]
-        raise FeatureError("contour", f"cutter compensation refuses the ring program at line {e.line} "
-                           f"({text.splitlines()[e.line - 1]}): {e.message}")
+        raise _refused(form, text.splitlines(), program.errors[0])
     rows = [r for r in program.moves if r["kind"] in ("rapid", "feed", "arc")]
     return [_move(r, notes[r["line"] - 1], form) for r in rows]
+
+
+def _refused(form: PaperForm, lines: list[str], error) -> FeatureError:
+    """The loader's refusal, naming the contour's line (or the lead) and the offset."""
+    settings = [ln for ln in lines[:error.line] if ln.startswith("G10 L12")]
+    offset = settings[-1].split(" R")[-1] if settings else "?"
+    bad, contour = lines[error.line - 1], contour_lines(form)
+    if bad in contour:
+        where = f"{form.name}, line {form.path[contour.index(bad)].line}"
+    else:
+        where = f"{form.name}: the lead onto the first segment ({bad})"
+    return FeatureError("contour", f"{where}: cutter compensation at offset H = {offset} mm refuses it: "
+                        f"{error.message}")
 
 
 def oriented(segments, ccw: bool) -> list[Segment]:

@@ -65,8 +65,8 @@ def _form(feature, phases, lead: float, inside: bool) -> PaperForm:
     ccw = inside == cut.climb
     path, t = split_first(oriented(feature.contour.segments, ccw))
     open_at = 0.0 if inside else feature.removed_stock + cut.radius + 1.0
-    return PaperForm(tuple(path), t, _normal(t, cut.climb), cut.climb, max(cut.tool, 1), lead, open_at,
-                     tuple(phases), cut)
+    return PaperForm(feature.contour.name, tuple(path), t, _normal(t, cut.climb), cut.climb, max(cut.tool, 1),
+                     lead, open_at, tuple(phases), cut)
 
 
 def profile_moves(feature, inside: bool) -> list[Move]:
@@ -85,7 +85,7 @@ def profile_moves(feature, inside: bool) -> list[Move]:
         try:
             moves = form_moves(form)
         except FeatureError as exc:
-            refused = exc
+            refused = refused or exc  # the first: at the largest lead
         else:
             if _fits(form, moves, shape, inside):
                 return moves
