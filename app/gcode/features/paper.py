@@ -8,8 +8,11 @@ arcs tangentially onto point 3 (centre point 4), laps the contour, arcs off to p
 and leaves with G40 back to point 1 (equations 2-6, on the tool's side of the first
 segment). The lead arc of the programmed path has radius ``R + H`` so the tool centre
 arcs with the finishing clearance ``R`` (rs274 refuses a lead arc not larger than the
-offset). A phase is a list of depth levels and the ring offsets cut on every level;
-the tool goes down at the descent point beyond point 1 of the first ring.
+offset). Point 1 is the paper's (``2(R + H)`` out on the normal at point 3) or, where
+rs274 cannot join that entry line to a small lead arc, straight out from point 2 (the
+entry then meets the arc tangentially). A phase is a list of depth levels and the ring
+offsets cut on every level; the tool goes down at the descent point beyond point 1 of
+the first ring.
 
 ``reference(form)`` is that program unrolled (numbers only); ``form_moves(form)``
 reads it back through the project's loader, so the moves are exactly what the
@@ -27,6 +30,8 @@ from .cutting import Cutting
 from .entry import GAP
 from .errors import FeatureError
 from .moves import ARC, FEED, RAPID, Move
+
+BEYOND = 0.1  # mm from point 1 of the first ring to the descent point
 
 
 def fmt(value: float) -> str:
@@ -61,6 +66,7 @@ class PaperForm:
     register: int
     lead: float  # R: the tool centre's lead arc radius
     open_at: float  # the descent point is at least this far from point 3
+    shift: float  # point 1 is point 3 + (shift·t + 2n)·(R + H): 0 the paper's, -1 over point 2
     phases: tuple[Phase, ...]
     cut: Cutting
 
@@ -74,9 +80,9 @@ class PaperForm:
         return x + a * tx + b * nx, y + a * ty + b * ny
 
     def descent(self, phase: Phase) -> tuple[float, float]:
-        """Where the tool goes down for ``phase``: 1 mm beyond point 1 of its first
-        ring, and beyond ``open_at``."""
-        return self.at(0.0, max(2 * (self.lead + phase.far) + 1.0, self.open_at))
+        """Where the tool goes down for ``phase``: ``BEYOND`` past point 1 of its first
+        ring (a ring starts with a move to its point 1), and beyond ``open_at``."""
+        return self.at(0.0, max(2 * (self.lead + phase.far) + BEYOND, self.open_at))
 
     def lead_arc(self) -> str:
         return "G03" if self.left else "G02"
@@ -107,14 +113,14 @@ def _ring(form: PaperForm, h: float) -> list[str]:
     tx, ty = form.t
     nx, ny = form.n
     return [f"G10 L12 P{form.register} R{fmt(h)}",
-            f"G01 {_xy(form.at(0, 2 * rho))} F{fmt(cut.feed)}",
+            f"G01 {_xy(form.at(form.shift * rho, 2 * rho))} F{fmt(cut.feed)}",
             f"{form.comp()} D{form.register}",
             f"G01 {_xy(form.at(-rho, rho))}",
             f"{form.lead_arc()} {_xy(form.p3)} I{fmt(rho * tx)} J{fmt(rho * ty)}",
             *contour_lines(form),
             f"{form.lead_arc()} {_xy(form.at(rho, rho))} I{fmt(rho * nx)} J{fmt(rho * ny)}",
             "G40",
-            f"G01 {_xy(form.at(0, 2 * rho))}"]
+            f"G01 {_xy(form.at(form.shift * rho, 2 * rho))}"]
 
 
 def phase_start(form: PaperForm, phase: Phase, at_safe: bool) -> list[str]:

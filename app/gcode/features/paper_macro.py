@@ -43,14 +43,14 @@ def ring_program(form: PaperForm, number: int, contour: int, h: str, rho: str) -
     return [f"O{number} (one ring: register {reg} = H {h}, lead-in on the first segment)",
             f"{rho} = [{fmt(form.lead)} + {h}]",
             f"G10 L12 P{reg} R{h}",
-            f"G01 {_point(form, 0, 2, rho)} F{fmt(form.cut.feed)}",
+            f"G01 {_point(form, form.shift, 2, rho)} F{fmt(form.cut.feed)}",
             f"{form.comp()} D{reg}",
             f"G01 {_point(form, -1, 1, rho)}",
             f"{arc} X{fmt(form.p3[0])} Y{fmt(form.p3[1])} I[{fmt(tx)}*{rho}] J[{fmt(ty)}*{rho}]",
             f"M98 P{contour}",
             f"{arc} {_point(form, 1, 1, rho)} I[{fmt(nx)}*{rho}] J[{fmt(ny)}*{rho}]",
             "G40",
-            f"G01 {_point(form, 0, 2, rho)}",
+            f"G01 {_point(form, form.shift, 2, rho)}",
             "M99"]
 
 

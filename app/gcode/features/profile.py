@@ -3,10 +3,11 @@
 An island (outside): roughing phases at the paper's ring offsets H_i on every level
 down to the floor + W (and the floor when W > 0), then the finish at D/2 on every
 level. A pocket of the contour (inside): the finish at D/2 only (its area is roughed by
-``clearing.Pocket``). The lead radius starts at the clearance R and is halved until
+``clearing.Pocket``). The lead radius starts at the clearance R and is halved (each
+with the paper's point 1, then with point 1 over point 2: ``PaperForm.shift``) until
 the compensated moves keep the tool out of the island (or inside the pocket) and the
 descent point is over open or roughed area; none fitting down to 0.05 mm is a
-``FeatureError``, as is a ring the compensation refuses.
+``FeatureError`` (the compensation's own refusal when it refused every lead).
 """
 
 from __future__ import annotations
@@ -60,13 +61,13 @@ def _fits(form: PaperForm, moves: list[Move], shape, inside: bool) -> bool:
     return not bool(shapely.contains_xy(banned, pts[:, 0], pts[:, 1]).any())
 
 
-def _form(feature, phases, lead: float, inside: bool) -> PaperForm:
+def _form(feature, phases, lead: float, shift: float, inside: bool) -> PaperForm:
     cut = feature.cut
     ccw = inside == cut.climb
     path, t = split_first(oriented(feature.contour.segments, ccw))
     open_at = 0.0 if inside else feature.removed_stock + cut.radius + 1.0
     return PaperForm(feature.contour.name, tuple(path), t, _normal(t, cut.climb), cut.climb, max(cut.tool, 1),
-                     lead, open_at, tuple(phases), cut)
+                     lead, open_at, shift, tuple(phases), cut)
 
 
 def profile_moves(feature, inside: bool) -> list[Move]:
@@ -79,18 +80,20 @@ def profile_moves(feature, inside: bool) -> list[Move]:
         levels = cut.layers(cut.floor + cut.finish_z) + ([cut.floor] if cut.finish_z > 0 else [])
         phases.insert(0, Phase(tuple(levels), tuple(ring_offsets(cut, feature.removed_stock)), "layer"))
     shape = feature.region()
-    lead, refused = cut.clearance, None
+    lead, refused, loaded = cut.clearance, None, False
     while lead >= MIN_LEAD:
-        form = _form(feature, phases, lead, inside)
-        try:
-            moves = form_moves(form)
-        except FeatureError as exc:
-            refused = refused or exc  # the first: at the largest lead
-        else:
-            if _fits(form, moves, shape, inside):
-                return moves
+        for shift in (0.0, -1.0):
+            form = _form(feature, phases, lead, shift, inside)
+            try:
+                moves = form_moves(form)
+            except FeatureError as exc:
+                refused = refused or exc  # the first: at the largest lead
+            else:
+                if _fits(form, moves, shape, inside):
+                    return moves
+                loaded = True
         lead /= 2
-    if refused is not None:
+    if refused is not None and not loaded:  # refused whatever the lead: the rings themselves
         raise refused
     raise FeatureError("clearance", f"no tangent lead of radius {MIN_LEAD:g} to {cut.clearance:g} mm onto "
                        f"the first segment of {feature.contour.name} keeps the tool clear of the contour")

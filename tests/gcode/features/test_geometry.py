@@ -214,3 +214,21 @@ def test_a_ring_the_compensation_refuses_is_reported_with_its_line():
     assert caught.value.field == "contour"
     assert "Tool radius not less than arc radius with comp" in str(caught.value)
     assert "dent.nc, line 4: cutter compensation at offset H = 9 mm refuses it" in str(caught.value)
+
+
+NARROW = "G00 X20 Y20\nG01 X60 Y20\nG01 X60 Y30\nG01 X20 Y30\nG01 X20 Y20\n"
+NARROW_SHORT_FIRST = "G00 X60 Y20\nG01 X60 Y30\nG01 X20 Y30\nG01 X20 Y20\nG01 X60 Y20\n"
+
+
+@pytest.mark.parametrize("text", [NARROW, NARROW_SHORT_FIRST], ids=["long-side-first", "short-side-first"])
+def test_a_narrow_contour_pocket_gets_a_smaller_lead_that_fits(text):
+    """10 mm wide, a 6 mm tool: the lead shrinks (and point 1 moves over point 2 where rs274
+    cannot join the paper's entry line to a small arc) until the finish stays in the pocket."""
+    feature = Profile(parse_contour(text, "narrow"), "inside", CUT)
+    moves = toolpath(feature)
+    forms = {m.block for m in moves if m.block is not None}
+    assert len(forms) == 1 and forms.pop().lead < CUT.clearance
+    region, r = feature.region(), CUT.radius
+    assert gouges(moves, region.buffer(-r + 0.01), CUT.top) == 0
+    assert wall_error(moves, _boundary(region.buffer(-r).buffer(r)), CUT.floor, r) <= 0.02
+    assert into_stock(moves, region, r, CUT.top) == []

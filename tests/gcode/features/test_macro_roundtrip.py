@@ -133,3 +133,12 @@ def test_profiles_both_ways_with_an_arc_first_and_a_floor_pass(dialect, climb, s
     feature = Profile(parse_contour(SQUARE_ARC_FIRST, "arc-first"), side, cut, stock=8)
     text = _round_trip(program_moves([feature]), dialect)
     assert ("G41 D1" in text) == climb and ("G42 D1" in text) == (not climb)
+
+
+@pytest.mark.parametrize("dialect", ["fanuc21", "fanuc31"])
+def test_a_narrow_pocket_with_a_small_lead(dialect):
+    from .test_geometry import CUT as NARROW_CUT
+    from .test_geometry import NARROW, NARROW_SHORT_FIRST
+
+    for text in (NARROW, NARROW_SHORT_FIRST):
+        _round_trip(program_moves([Profile(parse_contour(text, "narrow"), "inside", NARROW_CUT)]), dialect)
