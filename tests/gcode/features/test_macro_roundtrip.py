@@ -142,3 +142,12 @@ def test_a_narrow_pocket_with_a_small_lead(dialect):
 
     for text in (NARROW, NARROW_SHORT_FIRST):
         _round_trip(program_moves([Profile(parse_contour(text, "narrow"), "inside", NARROW_CUT)]), dialect)
+
+
+@pytest.mark.parametrize("dialect", ["fanuc21", "fanuc31"])
+def test_two_profiles_in_one_job_have_their_own_programs_and_labels(dialect):
+    job = [FEATURES[7], FEATURES[8]]
+    text = _round_trip(program_moves(job), dialect)
+    for number in (1001, 1002, 1003, 1004):
+        assert text.count(f"\nO{number} ") == 1
+    assert "G41 D2" in text and "G41 D1" in text
