@@ -50,7 +50,7 @@ class Phase:
 
     @property
     def far(self) -> float:
-        """Distance from point 3 of the descent point: beyond point 1 of the first ring."""
+        """The first ring's offset H_1 (the descent point lies beyond that ring's point 1)."""
         return self.offsets[0]
 
 
