@@ -1,19 +1,15 @@
-"""Roughing a pocket (rings from the inside out) or the stock around an island
-(rings from the outside in), layer by layer.
+"""Roughing a pocket (rings from the inside out), layer by layer, and the paper's ring
+offsets around an island (its rings are cut by ``profile.py``).
 
 A pocket's ring spacing is the stepover, or less where that would leave floor uncut
 (``rings.covering_trees``). A pocket layer: every leaf of the ring tree is entered by a
 helix at its centre
 (a ramp along it where no helix fits), then each ring is cut, children before their
 parent, linked by a feed to the parent's nearest point (inside the parent: no gouge).
-An island layer: the tool goes down in open air beyond the stock ``M``, feeds onto the
-outermost ring, then steps inwards ring by ring to ``D/2 + U`` (``ring_offsets``: the
-paper's H_i).
+``ring_offsets``: the paper's H_i, from the stock ``M`` inwards to ``D/2 + U``.
 """
 
 from __future__ import annotations
-
-import math
 
 from shapely.geometry import Point, Polygon
 
@@ -71,31 +67,3 @@ def ring_offsets(cut: Cutting, stock: float) -> list[float]:
         offsets.append(h)
         h -= cut.step
     return offsets + [last]
-
-
-class Island:
-    """The rings around an island (outwards to the stock ``M``) and their walk."""
-
-    def __init__(self, island: Polygon, cut: Cutting, stock: float, ccw: bool) -> None:
-        self.cut, self.ccw, self.island = cut, ccw, island
-        self.rings = [rings.offset(island, d)[0] for d in ring_offsets(cut, stock)]
-        self.open_at = stock + cut.radius + 1.0
-
-    def layer(self, path: Path, z_from: float, z: float, note: str) -> None:
-        """Cut every ring at ``z`` from the outside in (``z_from`` unused: the entry is
-        in open air beyond the stock)."""
-        path.note = note
-        for k, shape in enumerate(self.rings):
-            points = rings.ring_points(shape, self.ccw)
-            near = rings.lap_from(points, path.pos[:2])
-            if k == 0:
-                entry.approach(path, self.cut, self.outside_of(near[0]), z)
-            path.feed(near[0][0], near[0][1], f=self.cut.feed)
-            entry.lap(path, near[1:], self.cut)
-
-    def outside_of(self, xy) -> tuple[float, float]:
-        """The point straight out from the island through ``xy`` at the open distance."""
-        nearest = self.island.exterior.interpolate(self.island.exterior.project(Point(xy)))
-        dx, dy = xy[0] - nearest.x, xy[1] - nearest.y
-        norm = math.hypot(dx, dy) or 1.0
-        return (nearest.x + dx / norm * self.open_at, nearest.y + dy / norm * self.open_at)

@@ -17,6 +17,7 @@ from __future__ import annotations
 
 from .folding import Inline, Repeat, fold
 from .moves import ARC, FEED, RAPID, Move
+from .paper_macro import paper_program
 from .plain import line_of, num
 
 DIALECTS = ("fanuc21", "fanuc31")
@@ -90,6 +91,30 @@ def write_fanuc(moves: list[Move], dialect: str, title: str = "") -> str:
     if first is not None and first.kind == RAPID:  # up to the safe height first, as plain.py
         main.append(f"G00 Z{num(first.end[2])}")
         end = (None, None, first.end[2])
+    for run in _runs(moves):
+        if run[0].block is not None:
+            lines, programs = paper_program(run[0].block, dialect, number, 5000 + 100 * (number - FIRST_SUB))
+            main += lines
+            subs += programs
+            end, note, number = run[-1].end, None, number + 2
+            continue
+        end, note, number = _folded(run, dialect, var, main, subs, end, note, number)
+    return "\n".join(main + ["M05", "M30"] + subs + ["%"]) + "\n"
+
+
+def _runs(moves: list[Move]) -> list[list[Move]]:
+    """Consecutive moves of one parametric form (``Move.block``), or of none."""
+    runs: list[list[Move]] = []
+    for m in moves:
+        if runs and runs[-1][0].block is m.block:
+            runs[-1].append(m)
+        else:
+            runs.append([m])
+    return runs
+
+
+def _folded(moves, dialect, var, main, subs, end, note, number):
+    """Append ``moves`` as inline lines and looped layers; the new (end, note, number)."""
     for item in fold(moves):
         if isinstance(item, Inline):
             for m in item.moves:
@@ -105,4 +130,4 @@ def write_fanuc(moves: list[Move], dialect: str, title: str = "") -> str:
         last = item.template[-1]
         end = (last.end[0], last.end[1], None)
         number += 1
-    return "\n".join(main + ["M05", "M30"] + subs + ["%"]) + "\n"
+    return end, note, number

@@ -1,8 +1,9 @@
 """Features -> moves: one pure function per kind, and a program of several features.
 
 Every toolpath starts and ends at the feature's safe height (``top + clearance``).
-Pockets and the island: roughing layers of at most C down to the floor + W (rings at
-D/2 + U), a floor pass at the floor when W > 0, then the walls at D/2 on every layer.
+Pockets: roughing layers of at most C down to the floor + W (rings at D/2 + U), a floor
+pass at the floor when W > 0, then the walls at D/2 on every layer. Profiles (an island,
+or the walls of a contour pocket) are the paper's compensated program (``profile.py``).
 """
 
 from __future__ import annotations
@@ -12,10 +13,11 @@ import math
 from app.profile import MachineProfile
 
 from . import entry, finish, rings
-from .clearing import Island, Pocket
+from .clearing import Pocket
 from .cutting import Cutting
 from .kinds import Face, Holes, PocketCircle, PocketRect, Profile, Slot
 from .moves import RAPID, SPINDLE, TOOL, Move, Path
+from .profile import profile_moves
 from .travel import check_travel
 
 
@@ -68,19 +70,18 @@ def _slot(feature: Slot) -> list[Move]:
 
 
 def _profile(feature: Profile) -> list[Move]:
-    if feature.side == "inside":
-        return _pocket(feature)
+    """The paper's program (``profile.py``): rings and finish by cutter compensation;
+    a pocket of the contour is roughed by ``Pocket`` first."""
     cut = feature.cut
-    ccw = not cut.climb  # climb milling goes clockwise around an island (M3)
-    island = feature.region()
-    area = Island(island, cut, feature.removed_stock, ccw)
-    path = _start(cut, area.outside_of(feature.hint()))
-    _rough(path, area, cut)
-    wall = rings.offset(island, cut.radius)[0]
-    finish.walls(path, wall, feature.hint(), cut, ccw, False, None, "island")
+    inside = feature.side == "inside"
+    if not inside:
+        return profile_moves(feature, inside)
+    region = feature.region()
+    path = _start(cut, rings.centre_of(region))
+    _rough(path, Pocket(region, cut, cut.climb), cut)
     path.note = ""
     entry.retract(path, cut)
-    return path.moves
+    return path.moves + profile_moves(feature, inside)
 
 
 def _face(feature: Face) -> list[Move]:

@@ -2,7 +2,8 @@
 
 Positions in work millimetres, angles in degrees about X+ (counter-clockwise).
 ``region()`` is the area the tool may cut (its edge may touch the boundary);
-``hint()`` where the finishing pass joins the wall. Errors are ``FeatureError`` naming
+``hint()`` where the finishing pass joins the wall (a profile's: the middle of its first
+segment, ``paper.split_first``). Errors are ``FeatureError`` naming
 the field: a tool wider than the pocket or slot, a size <= 0, a hole count < 1.
 """
 
@@ -161,13 +162,6 @@ class Profile:
 
     def region(self) -> Polygon:
         return self.contour.polygon(CHORD_TOL)
-
-    def hint(self):
-        first = self.contour.segments[0]
-        if first.center is None:
-            return ((first.start[0] + first.end[0]) / 2, (first.start[1] + first.end[1]) / 2)
-        pts = first.points()
-        return pts[len(pts) // 2]
 
     @property
     def removed_stock(self) -> float:

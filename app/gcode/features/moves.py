@@ -4,7 +4,8 @@ A ``Move`` is a rapid, a feed line or an XY arc (helical when Z changes) ending 
 ``end``; arcs carry their centre (X, Y) and direction. ``note`` says where the move
 comes from (``"layer 2/5 ring 3"``); writers may print it as a comment. Events that
 are not motion (tool change, spindle) are ``Move`` kinds too, so one list is a whole
-operation.
+operation. Moves that a parametric form makes (the paper's profile rings) carry it as
+``block``, so a macro writer can print that form instead of the moves.
 """
 
 from __future__ import annotations
@@ -26,6 +27,7 @@ class Move:
     cw: bool = False
     value: float = 0.0  # dwell seconds, tool number or spindle rpm
     note: str = ""
+    block: object = None  # the parametric form these moves come from (``paper.PaperForm``)
 
 
 class Path:

@@ -7,8 +7,18 @@ import math
 import pytest
 import shapely
 
-from app.gcode.features import Cutting, Face, PocketCircle, PocketRect, Profile, Slot, parse_contour, toolpath
-from app.gcode.features.clearing import Island
+from app.gcode.features import (
+    Cutting,
+    Face,
+    FeatureError,
+    PocketCircle,
+    PocketRect,
+    Profile,
+    Slot,
+    parse_contour,
+    toolpath,
+)
+from app.gcode.features.clearing import ring_offsets
 from app.gcode.features.moves import ARC, FEED, RAPID
 
 from .toolcheck import coverage, gouges, into_stock, swept, wall_error
@@ -81,7 +91,7 @@ def test_island_of_the_paper():
     cut = Cutting(tool_diameter=12, depth=5, stepdown=1, stepover=75, finish_xy=0.5, clearance=2,
                   feed=150, plunge_feed=80, rpm=1000)
     island = Profile(parse_contour(PAPER, "paper"), "outside", cut, stock=15)
-    assert len(Island(island.region(), cut, 15, False).rings) == 2
+    assert len(ring_offsets(cut, 15)) == 2
     moves = toolpath(island)
     notes = {m.note.split(" z ")[0] for m in moves if m.note.startswith("layer")}
     assert notes == {f"layer {k}/5" for k in range(1, 6)}
@@ -150,10 +160,75 @@ def test_a_wide_stepover_still_cuts_the_whole_floor(stepover):
 
 def test_island_rings_follow_the_papers_h_i():
     """H_i = M - D/2 - (i-1)·B·D/100 while more than D/2 + U, then D/2 + U."""
-    from app.gcode.features.clearing import ring_offsets
-
     paper = Cutting(tool_diameter=12, depth=5, stepover=75, finish_xy=0.5)
     assert ring_offsets(paper, 15) == [9.0, 6.5]
     other = Cutting(tool_diameter=6, depth=5, stepover=50, finish_xy=0.5)
     assert ring_offsets(other, 20) == pytest.approx([17, 14, 11, 8, 5, 3.5])
     assert ring_offsets(other, 2) == [3.5]  # less stock than a ring: one ring at D/2 + U
+
+
+ARC_FIRST = """G00 X60 Y40
+G02 X40 Y60 R20
+G01 X20 Y60
+G01 X20 Y30
+G01 X60 Y30
+G01 X60 Y40
+"""
+
+
+@pytest.mark.parametrize("climb", [True, False], ids=["climb-G41", "conventional-G42"])
+@pytest.mark.parametrize("text", [PAPER, ARC_FIRST], ids=["paper", "arc-first"])
+def test_island_rings_by_cutter_compensation_keep_the_geometry(text, climb):
+    cut = Cutting(tool_diameter=6, depth=2, stepdown=1, stepover=50, finish_xy=0.3, finish_z=0.2, climb=climb)
+    island = Profile(parse_contour(text), "outside", cut, stock=8)
+    moves = toolpath(island)
+    shape, r = island.region(), cut.radius
+    allowed = shapely.geometry.box(-100, -100, 200, 200).difference(shape.buffer(r - 0.01))
+    assert gouges(moves, allowed, cut.top) == 0
+    assert coverage(swept(moves, cut.floor, r), shape.buffer(8).difference(shape)) >= 0.995
+    assert wall_error(moves, _boundary(shape), cut.floor, r) <= 0.02
+    assert into_stock(moves, shape.buffer(8), r, cut.top) == []
+    assert min(m.end[2] for m in moves) == cut.floor
+
+
+def test_the_finish_goes_round_convex_corners_on_true_arcs():
+    """What the compensation computes: an arc of radius D/2 about each convex corner."""
+    cut = Cutting(tool_diameter=12, depth=5, stepdown=1, stepover=75, finish_xy=0.5, clearance=2)
+    moves = toolpath(Profile(parse_contour(PAPER), "outside", cut, stock=15))
+    arcs = [(m, prev) for prev, m in zip(moves, moves[1:], strict=False)
+            if m.kind == ARC and m.note.startswith("island finish")]
+    for corner in [(50.0, 20.0), (45.0, 10.0), (30.0, 7.0), (10.0, 10.0)]:
+        about = [(m, prev) for m, prev in arcs if math.dist(m.center, corner) < 1e-9]
+        assert about, corner
+        for m, prev in about:
+            assert math.dist(m.end[:2], corner) == pytest.approx(6.0, abs=1e-9)
+            assert math.dist(prev.end[:2], corner) == pytest.approx(6.0, abs=1e-9)
+
+
+def test_a_ring_the_compensation_refuses_is_reported_with_its_line():
+    """A concave arc tighter than the ring offset: rs274 (and a Fanuc) refuse the ring."""
+    dent = "G00 X20 Y20\nG01 Y60\nG01 X35\nG03 X45 Y60 R5\nG01 X60\nG01 Y20\nG01 X20\n"
+    cut = Cutting(tool_diameter=12, depth=2, stepover=75, finish_xy=0.5)
+    with pytest.raises(FeatureError) as caught:
+        toolpath(Profile(parse_contour(dent, "dent.nc"), "outside", cut, stock=15))
+    assert caught.value.field == "contour"
+    assert "Tool radius not less than arc radius with comp" in str(caught.value)
+    assert "dent.nc, line 4: cutter compensation at offset H = 9 mm refuses it" in str(caught.value)
+
+
+NARROW = "G00 X20 Y20\nG01 X60 Y20\nG01 X60 Y30\nG01 X20 Y30\nG01 X20 Y20\n"
+NARROW_SHORT_FIRST = "G00 X60 Y20\nG01 X60 Y30\nG01 X20 Y30\nG01 X20 Y20\nG01 X60 Y20\n"
+
+
+@pytest.mark.parametrize("text", [NARROW, NARROW_SHORT_FIRST], ids=["long-side-first", "short-side-first"])
+def test_a_narrow_contour_pocket_gets_a_smaller_lead_that_fits(text):
+    """10 mm wide, a 6 mm tool: the lead shrinks (and point 1 moves over point 2 where rs274
+    cannot join the paper's entry line to a small arc) until the finish stays in the pocket."""
+    feature = Profile(parse_contour(text, "narrow"), "inside", CUT)
+    moves = toolpath(feature)
+    forms = {m.block for m in moves if m.block is not None}
+    assert len(forms) == 1 and forms.pop().lead < CUT.clearance
+    region, r = feature.region(), CUT.radius
+    assert gouges(moves, region.buffer(-r + 0.01), CUT.top) == 0
+    assert wall_error(moves, _boundary(region.buffer(-r).buffer(r)), CUT.floor, r) <= 0.02
+    assert into_stock(moves, region, r, CUT.top) == []

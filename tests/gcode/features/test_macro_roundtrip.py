@@ -1,5 +1,9 @@
 """The Fanuc 21 / 31 programs expand, through the loader, to the same moves as the
-plain program (0.001 mm), through the expander of issue 9 (``app.gcode.macro``)."""
+plain program (0.001 mm), through the expander of issue 9 (``app.gcode.macro``).
+
+A profile's macro program sets radius registers (``G10 L12``) and compensates with
+``G41 D``/``G42 D``: it is loaded with a tool table holding that register, as the
+control that runs it has one."""
 
 from __future__ import annotations
 
@@ -20,7 +24,10 @@ from app.gcode.features import (
     write_plain,
 )
 from app.gcode.features.fanuc import write_fanuc
+from app.gcode.features.generate import toolpath
+from app.gcode.tools import Tool
 
+from .test_geometry import PAPER
 from .test_program import PAPER_MOVED
 
 CUT = Cutting(tool_diameter=6, depth=3, stepdown=1, finish_xy=0.2, finish_z=0.2)
@@ -37,6 +44,9 @@ FEATURES = [
     Profile(parse_contour(PAPER_MOVED, "paper"), "outside", ISLAND, stock=15),
     Profile(parse_contour(PAPER_MOVED, "paper"), "inside", CUT),
 ]
+
+
+TOOLS = {1: Tool(1, 6), 2: Tool(2, 12)}
 
 
 def _same(plain: list[dict], macro: list[dict]) -> None:
@@ -56,7 +66,7 @@ def test_macro_program_expands_to_the_plain_moves(feature, dialect):
     moves = program_moves([feature])
     plain = load_text(write_plain(moves), "plain.nc")
     text = write_fanuc(moves, dialect)
-    macro = load_text(text, "macro.nc")
+    macro = load_text(text, "macro.nc", tools=TOOLS)
     assert plain.errors == [] and macro.errors == []
     _same(plain.moves, macro.moves)
 
@@ -74,7 +84,70 @@ def test_a_job_of_several_features_with_a_tool_change():
     moves = program_moves(job)
     plain = load_text(write_plain(moves))
     for dialect in ("fanuc21", "fanuc31"):
-        macro = load_text(write_fanuc(moves, dialect))
+        macro = load_text(write_fanuc(moves, dialect), tools=TOOLS)
         assert macro.errors == []
         _same(plain.moves, macro.moves)
         assert len(macro.pauses) == len(plain.pauses) == 2  # T2 for the island, T1 again for the face
+
+
+def _round_trip(moves, dialect: str, tools=None) -> str:
+    plain = load_text(write_plain(moves), "plain.nc")
+    text = write_fanuc(moves, dialect)
+    macro = load_text(text, "macro.nc", tools=tools or TOOLS)
+    assert plain.errors == [] and macro.errors == []
+    _same(plain.moves, macro.moves)
+    return text
+
+
+@pytest.mark.parametrize("dialect", ["fanuc21", "fanuc31"])
+def test_the_papers_worked_example_as_the_paper_programs_it(dialect):
+    """The issue's contour where the paper has it (N5 G104 Z-5 K5 H12 D12 E0 T02, N6 G105 P7
+    Q15 B75 C1 R2 M15 U0.5 W0 S1000 F150): the contour once, rings by the radius register."""
+    island = Profile(parse_contour(PAPER, "paper"), "outside", ISLAND, stock=15)
+    text = _round_trip(toolpath(island), dialect)
+    assert text.count("G03 X40 Y35") == 1  # the contour is written once
+    assert "G10 L12 P2 R" in text and "G41 D2" in text and "G40" in text and "M98 P1001" in text
+    if dialect == "fanuc31":
+        assert "G65 P1002 H#103" in text and "G65 P1002 H6.5" in text and "G65 P1002 H6\n" in text
+        assert "WHILE [#102 LE 5] DO 1" in text and "M98 P1002" not in text
+    else:
+        assert "WHILE" not in text and "G65" not in text and "IF [#102 GT 5] GOTO" in text
+        assert "#105 = 9" in text and "#105 = 6.5" in text and "#105 = 6\n" in text
+
+
+SQUARE_ARC_FIRST = """G00 X60 Y40
+G02 X40 Y60 R20
+G01 X20 Y60
+G01 X20 Y30
+G01 X60 Y30
+G01 X60 Y40
+"""
+
+
+@pytest.mark.parametrize("dialect", ["fanuc21", "fanuc31"])
+@pytest.mark.parametrize("climb", [True, False], ids=["climb-G41", "conventional-G42"])
+@pytest.mark.parametrize("side", ["outside", "inside"])
+def test_profiles_both_ways_with_an_arc_first_and_a_floor_pass(dialect, climb, side):
+    cut = Cutting(tool_diameter=6, depth=2.5, stepdown=1, stepover=50, finish_xy=0.3, finish_z=0.2,
+                  climb=climb, tool=1)
+    feature = Profile(parse_contour(SQUARE_ARC_FIRST, "arc-first"), side, cut, stock=8)
+    text = _round_trip(program_moves([feature]), dialect)
+    assert ("G41 D1" in text) == climb and ("G42 D1" in text) == (not climb)
+
+
+@pytest.mark.parametrize("dialect", ["fanuc21", "fanuc31"])
+def test_a_narrow_pocket_with_a_small_lead(dialect):
+    from .test_geometry import CUT as NARROW_CUT
+    from .test_geometry import NARROW, NARROW_SHORT_FIRST
+
+    for text in (NARROW, NARROW_SHORT_FIRST):
+        _round_trip(program_moves([Profile(parse_contour(text, "narrow"), "inside", NARROW_CUT)]), dialect)
+
+
+@pytest.mark.parametrize("dialect", ["fanuc21", "fanuc31"])
+def test_two_profiles_in_one_job_have_their_own_programs_and_labels(dialect):
+    job = [FEATURES[7], FEATURES[8]]
+    text = _round_trip(program_moves(job), dialect)
+    for number in (1001, 1002, 1003, 1004):
+        assert text.count(f"\nO{number} ") == 1
+    assert "G41 D2" in text and "G41 D1" in text

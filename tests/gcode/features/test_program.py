@@ -148,3 +148,20 @@ def test_cli_macro_dialects(dialect, capsys):
     out = capsys.readouterr().out
     assert out.startswith("%\nO0001") and "O1001" in out and "M99" in out
     assert ("WHILE" in out) == (dialect == "fanuc31")
+
+
+@pytest.mark.parametrize("dialect", ["fanuc21", "fanuc31"])
+def test_cli_profile_in_the_papers_macro_form(dialect, tmp_path, capsys):
+    from app.gcode.tools import Tool
+
+    contour = tmp_path / "island.nc"
+    contour.write_text(PAPER_MOVED)
+    args = ["feature", "profile", "--contour", str(contour), "--side", "outside", "--stock", "15",
+            "--tool", "2", "--tool-diameter", "12", "--depth", "5", "--stepover", "75", "--finish-xy", "0.5",
+            "--macro", dialect]
+    assert main(args) == 0
+    out = capsys.readouterr().out
+    assert "G10 L12 P2 R" in out and "G41 D2" in out
+    assert load_text(out, tools={2: Tool(2, 12)}).errors == []
+    refused = load_text(out).errors  # no register 2 in an empty tool table: refused as rs274 refuses it
+    assert refused and "Requested tool 2 not found" in refused[0].message
