@@ -105,6 +105,7 @@ def _job(mcu, cmd: Command) -> str:
     mcu.reset_parser()
     mcu.job.start(int(count))
     mcu.lines.clear()
+    mcu.send_status()  # before the O: no status of the last job may follow it
     return count
 
 

@@ -22,6 +22,7 @@ from app.comm.frame import Ack as AckFrame
 from app.comm.frame import Alarm, Command, Data, Error, Finished, Frame, Log, Nak, Ok, Status
 from app.profile import MachineProfile
 from backend_sim import cnc_commands
+from backend_sim.answer_cache import AnswerCache
 from backend_sim.exec_log import ExecLog
 from backend_sim.flash import Flash
 from backend_sim.job_stream import JobStream, Verdict
@@ -58,6 +59,7 @@ class CncMcu:
         self.offset = self.flash.load_offset()
         self.lost_ms = round(profile.link.lost_s * 1000)
         self.cover_open = False
+        self.answers = AnswerCache()
         self.boot()
 
     # ------------------------------------------------------------------ life cycle
@@ -167,9 +169,19 @@ class CncMcu:
         self.last_frame_ms = self.clock.now_ms
         self.uart_lost = False
         if isinstance(frame, Command):
-            cnc_commands.dispatch(self, frame)
+            self._on_command(frame)
         elif isinstance(frame, Data):
             self._on_data(frame)
+
+    def _on_command(self, cmd: Command) -> None:
+        """Carry out ``cmd`` once; a repeated id gets the answers it already had (or,
+        still running, the answer when it comes)."""
+        if self.answers.remembers(cmd):
+            for raw in self.answers.frames:
+                self.tx.write(raw, self.clock.now)
+            return
+        self.answers.start(cmd)
+        cnc_commands.dispatch(self, cmd)
 
     def _on_data(self, frame: Data) -> None:
         if not self.job.open:
@@ -303,7 +315,9 @@ class CncMcu:
         self.next_status = self.clock.now_ms + STATUS_PERIOD_MS
 
     def send(self, frame: Frame) -> None:
-        self.tx.write(encode_fit(frame), self.clock.now)
+        raw = encode_fit(frame)
+        self.answers.record(frame, raw)
+        self.tx.write(raw, self.clock.now)
 
     def set_cover(self, is_open: bool) -> None:
         self.catch_up()

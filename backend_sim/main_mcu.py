@@ -4,8 +4,10 @@ Contract:
 - host frames: ``D`` and the commands that are not its own go down the UART; its own
   commands are ``PING``/``STATUS`` (answered with the last ``S`` of the CNC MCU, with
   the flags it owns: ``L``, ``U``, ``S``) and ``SD ...`` (``main_sd``). A repeated
-  command id (the same as the last) is not executed again: its first answer is sent
-  again. A bad host frame is answered ``N expected`` once per bad stretch, with
+  command id (the same as the last; ``PING``/``STATUS`` are never remembered) is not
+  executed again: its answers are sent again, or, for a forwarded command not yet
+  answered, it is forwarded again (the CNC MCU answers a repeated id from its cache).
+  A bad host frame is answered ``N expected`` once per bad stretch, with
   ``expected`` mirrored from the stream (an ``N`` of the CNC MCU for the same seq in
   the same stretch is not passed on twice).
 - real-time bytes go down ahead of every queue (``Wire.write_urgent``).
@@ -38,6 +40,7 @@ from app.comm.frame import (
     Status,
 )
 from backend_sim import main_sd
+from backend_sim.answer_cache import AnswerCache
 from backend_sim.outgoing import encode_fit
 from backend_sim.sd_card import SdCard
 from backend_sim.wire import Wire, to_ms
@@ -80,8 +83,7 @@ class MainMcu:
         self.next_housekeeping = now + HOUSEKEEPING_S
         self.status: Status | None = None
         self.last_relayed: Status | None = None
-        self.last_id: int | None = None
-        self.last_answer: list[bytes] = []
+        self.answers = AnswerCache()
         self.expected = 0
         self.nak_sent: int | None = None
         self.upload = None
@@ -189,16 +191,28 @@ class MainMcu:
         return None
 
     def _host_command(self, cmd: Command) -> None:
-        if cmd.id == self.last_id:
-            for raw in self.last_answer:
-                self.host_tx.write(raw, self.clock.now)
-            return
-        self.last_id, self.last_answer = cmd.id, []
         handler = _OWN.get(cmd.verb)
+        if self.answers.remembers(cmd):
+            return self._repeat(cmd, own=handler is not None)
+        self.answers.start(cmd)
         if handler is not None:
             handler(self, cmd)
         else:
             self._forward(cmd)
+        return None
+
+    def _repeat(self, cmd: Command, own: bool) -> None:
+        """A retry: the answers again, or a forwarded command not yet answered forwarded
+        again (its first copy may have been lost on the UART; the CNC MCU deduplicates)."""
+        for raw in self.answers.frames:
+            self.host_tx.write(raw, self.clock.now)
+        if not self.answers.answered and not own:
+            self.to_cnc(cmd)
+
+    @property
+    def last_id(self) -> int | None:
+        """The remembered host command id (answers to it are kept for a retry)."""
+        return self.answers.id
 
     def _forward(self, cmd: Command) -> None:
         hook = _BEFORE_FORWARD.get(cmd.verb)
@@ -224,12 +238,12 @@ class MainMcu:
         return True
 
     def _ping(self, cmd: Command) -> None:
-        self.answer(self.merged_status())
+        self.host_tx.write(encode_fit(self.merged_status()), self.clock.now)
 
     def answer(self, frame: Frame) -> None:
         """Send an answer to the last host command, and keep it for a repeated id."""
         raw = encode_fit(frame)
-        self.last_answer.append(raw)
+        self.answers.frames.append(raw)
         self.host_tx.write(raw, self.clock.now)
 
     def to_host(self, frame: Frame) -> None:
