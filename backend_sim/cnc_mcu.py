@@ -185,6 +185,8 @@ class CncMcu:
 
     def _on_data(self, frame: Data) -> None:
         if not self.job.open:
+            if frame.seq >= self.job.expected:  # below: a late copy of a line it took
+                self.send(Error(None, "BAD_SEQ", f"{frame.seq} no job open"))
             return
         verdict = self.job.offer(frame.seq)
         if verdict is Verdict.REACK:

@@ -16,6 +16,8 @@ Each returns True if accepted; a refusal is reported with ``on_error`` and False
 
 from __future__ import annotations
 
+import math
+
 from app.comm import frame as fr
 from app.comm.events import CommandResult, ResumeOffer, StatusEvent
 from app.comm.listener import JOB_STATES, RECOVERY_STATES, SENDING_STATES, SessionState
@@ -32,6 +34,12 @@ def _refused_seq(text: str, default: int) -> int:
     """The seq an ``E -`` names as the first word of its text (the machine's), else ``default``."""
     first = text.split(" ", 1)[0]
     return int(first) if first.isdigit() else default
+
+
+def plain_number(value: float) -> str:
+    """``value`` in the protocol's number grammar (no exponent), to 0.0001."""
+    text = f"{value:.4f}".rstrip("0").rstrip(".")
+    return "0" if text in ("-0", "-") else text
 
 
 def device_lines(program) -> list[str]:
@@ -77,7 +85,11 @@ class JobControl:
         return self.submit("HOME", mode)
 
     def jog(self, axis: str, distance_mm: float, feed_mm_min: float) -> int:
-        return self.submit("JOG", axis.upper(), f"{distance_mm:g}", f"{feed_mm_min:g}")
+        """``JOG``; ValueError for a non-finite distance or feed (never sent as ``inf``)."""
+        for what, value in (("distance", distance_mm), ("feed", feed_mm_min)):
+            if not math.isfinite(value):
+                raise ValueError(f"jog {what} {value} is not a finite number")
+        return self.submit("JOG", axis.upper(), plain_number(distance_mm), plain_number(feed_mm_min))
 
     def pause(self) -> bool:
         """Feed hold now (real-time ``!``, repeated until the status shows HOLD)."""
@@ -232,8 +244,11 @@ class JobControl:
 
     def _line_refused(self, frame: fr.Error) -> None:
         reason = f"line refused: {frame.code} {frame.text}".strip()
+        if self.stream is None or self.state is S.STOPPING:  # a frame still in flight
+            self._log("warning", f"{reason} (no job running)")
+            return
         self._error("LINE_REFUSED", reason)
-        if self.stream is not None and self.state in JOB_STATES | SENDING_STATES:
+        if self.state in JOB_STATES | SENDING_STATES:
             seq = _refused_seq(frame.text, self.status.done + 1 if self.status else 0)
             line = self.stream.program_index(seq)
             reason = f"line {line} refused: {frame.code} {frame.text}".strip()
