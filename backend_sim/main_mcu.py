@@ -72,6 +72,7 @@ class MainMcu:
         """Power-up or MRESET: links unknown, no upload, no SD job, nothing cached."""
         if getattr(self, "upload", None) is not None:
             self.upload.abort()
+            self.sd.remove_partials()
         now = self.clock.now
         self.host_rx = Deframer(realtime=True)
         self.uart_rx = Deframer(realtime=False)
@@ -131,6 +132,7 @@ class MainMcu:
             self.host_link = LinkState.LOST
             self.notice = "HOST LOST"
             self.to_host(Alarm("HOST_LOST", f"no valid host frame for {self.lost_s:g} s"))
+            main_sd.abandon_upload(self, "host lost")
             if self.sd_job is None and self.status is not None and self.status.state == "RUN":
                 self.uart_tx.write_urgent(FEED_HOLD, now)
         if self.uart_link is LinkState.OK and now - self.last_uart >= self.lost_s:
@@ -162,8 +164,10 @@ class MainMcu:
 
     def _realtime(self, byte: bytes) -> None:
         self.uart_tx.write_urgent(byte, self.clock.now)
-        if byte == STOP_FLUSH and self.sd_job is not None:
-            main_sd.stop_job(self, "stopped by host")
+        if byte == STOP_FLUSH:
+            main_sd.abandon_upload(self, "stopped by host")
+            if self.sd_job is not None:
+                main_sd.stop_job(self, "stopped by host")
 
     def _host_bad(self) -> None:
         if self.upload is not None:
@@ -233,8 +237,13 @@ class MainMcu:
         return True
 
     def _before_stop(self, cmd: Command) -> bool:
+        main_sd.abandon_upload(self, "stopped by host")
         if self.sd_job is not None:
             main_sd.stop_job(self, "stopped by host")
+        return True
+
+    def _before_reset(self, cmd: Command) -> bool:
+        main_sd.abandon_upload(self, "reset")
         return True
 
     def _ping(self, cmd: Command) -> None:
@@ -377,4 +386,5 @@ _BEFORE_FORWARD = {
     "JOB": MainMcu._before_job,
     "RESUME": MainMcu._before_resume,
     "STOP": MainMcu._before_stop,
+    "RESET": MainMcu._before_reset,
 }

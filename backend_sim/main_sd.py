@@ -95,6 +95,17 @@ def upload_data(mcu, frame: Data) -> None:
             _finish_upload(mcu)
 
 
+def abandon_upload(mcu, reason: str) -> None:
+    """End an unfinished ``SD PUT`` (host lost, STOP, reset): its partial file is
+    removed, the card's files stay as they were, ``L`` says so when the host listens."""
+    up, mcu.upload = mcu.upload, None
+    if up is None:
+        return
+    up.abort()
+    mcu.notice = f"SD PUT {up.name} abandoned"
+    mcu.to_host(Log(f"SD PUT {up.name} abandoned: {reason}"))
+
+
 def upload_bad_frame(mcu) -> None:
     if mcu.upload.stream.bad_frame() is Verdict.NAK:
         mcu.to_host(Nak(mcu.upload.stream.expected))

@@ -46,6 +46,12 @@ class SdCard:
         self.folder = Path(folder)
         self.folder.mkdir(parents=True, exist_ok=True)
         self.capacity_bytes = capacity_bytes
+        self.remove_partials()
+
+    def remove_partials(self) -> None:
+        """Delete the temporary files of uploads that never finished (a crash, a reset)."""
+        for path in self.folder.glob(".*.part"):
+            path.unlink(missing_ok=True)
 
     def path(self, name: str) -> Path:
         return self.folder / check_name(name)
