@@ -125,6 +125,24 @@ class JobControl:
         self.submit("RESUME", "FROM", seq, then=lambda r: self._resumed(r, seq))
         return True
 
+    def take_over_job(self, program) -> bool:
+        """Resume a job of ``program`` another client left open on this machine (same
+        boot, per the last status): ``RESUME FROM acc+1``, then the rest of its lines."""
+        lines = device_lines(program)
+        if not self._can_start(lines, "job"):
+            return False
+        status = self.status
+        if status is None or status.acc < 0 or status.acc >= len(lines) - 1:
+            return self._refuse("NO_RESUME", "the machine has no open job of these lines to resume")
+        self.lines = lines
+        self.stream = Stream.job(lines, self.rtt, status.free, boot=self.boot or "",
+                                 max_window=self.max_window)
+        self.stream.done = status.done
+        seq = status.acc + 1
+        self._set_state(S.RESUMING)
+        self.submit("RESUME", "FROM", seq, then=lambda r: self._resumed(r, seq))
+        return True
+
     def confirm_restart(self) -> bool:
         """After a machine reset and re-homing: restart the job at done+1 (modal state restored)."""
         if self.state is not S.RESTART_REQUIRED or self.stream is None:
