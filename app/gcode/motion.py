@@ -12,6 +12,7 @@ leave here in millimetres. Raises ``LineError``; changes ``state`` in place.
 from __future__ import annotations
 
 from .arcs import ijk_error, r_center
+from .limits import dwell_problem, turns_problem
 from .ops import ARC_CCW, ARC_CW, DWELL, FEED, PLANE_AXES, PLANE_NAMES, RAPID, OpBuffer
 from .state import State
 from .words import AXES
@@ -40,6 +41,8 @@ def _dwell(state: State, params, line_no: int, ops: OpBuffer) -> None:
     seconds = params["P"].value
     if seconds < 0:
         raise LineError(params["P"].column, "G4 dwell time P must not be negative")
+    if dwell_problem(seconds):
+        raise LineError(params["P"].column, dwell_problem(seconds))
     ops.add(line_no, DWELL, state.pos, value=seconds)
 
 
@@ -91,6 +94,8 @@ def _turns(params, clockwise: bool) -> int:
         p = params["P"].value
         if p != int(p) or p < 1:
             raise LineError(params["P"].column, "arc turns P must be a whole number >= 1")
+        if turns_problem(p):
+            raise LineError(params["P"].column, turns_problem(p))
         turns = int(p)
     return -turns if clockwise else turns
 

@@ -141,6 +141,11 @@ def load_program(path: Path, tolerance: float = 0.01, view_size=None) -> LoadedP
 
 
 def _sniff(path: Path) -> None:
+    from app.gcode.reading import file_problem, looks_utf16
+
+    problem = file_problem(path) if path.exists() else None  # a FIFO or a device is never opened
+    if problem:
+        raise LoadError(problem)
     try:
         with path.open("rb") as file:
             head = file.read(SNIFF_BYTES)
@@ -148,6 +153,8 @@ def _sniff(path: Path) -> None:
         raise LoadError(f"{path} does not exist (moved or deleted?).") from None
     except OSError as exc:
         raise LoadError(f"{path} cannot be opened: {exc.strerror or exc}.") from None
+    if looks_utf16(head):
+        raise LoadError(f"{path.name} is UTF-16 text: save it as UTF-8 (or plain ASCII) text.")
     if b"\0" in head or _mostly_binary(head):
         raise LoadError(f"{path.name} is not a G-code file (it holds binary data, such as an image).")
 
