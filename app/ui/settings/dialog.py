@@ -17,7 +17,7 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from app.profile import MachineProfile, ProfileError, check_value
+from app.profile import MachineProfile, ProfileError, check_value, consistency_problems
 
 TITLES = {
     "pid": "PID gains", "motion": "Feeds && motion", "link": "Link && heartbeat",
@@ -80,7 +80,8 @@ class SettingsDialog(QDialog):
         problems, changes = [], {}
         for (section, key), edit in self.edits.items():
             try:
-                value = check_value(getattr(self.profile, section), key, edit.text().strip(), TITLES[section])
+                value = check_value(getattr(self.profile, section), key, edit.text().strip(), TITLES[section],
+                                    text=True)
                 changes.setdefault(section, {})[key] = value
                 edit.setStyleSheet("")
             except ProfileError as exc:
@@ -89,7 +90,9 @@ class SettingsDialog(QDialog):
         if problems:
             return None, problems
         sections = {name: replace(getattr(self.profile, name), **vals) for name, vals in changes.items()}
-        return replace(self.profile, **sections), []
+        profile = replace(self.profile, **sections)
+        rules = consistency_problems(profile)
+        return (None, rules) if rules else (profile, [])
 
     def accept(self) -> None:
         profile, problems = self.checked_profile()

@@ -2,8 +2,9 @@
 arc tolerance), as JSON in the per-user config folder. No Qt here: the caller passes
 the path (``QStandardPaths.AppConfigLocation`` in the GUI, ``tmp_path`` in tests).
 
-``load_settings(path)`` never raises: a missing file gives the defaults; a corrupt or
-out-of-range file gives the defaults and a message saying what was wrong.
+``load_settings(path)`` never raises: a missing file gives the defaults; a corrupt
+file gives the defaults, a bad value its default, with a message saying what was
+wrong (file, key, rule); ``save_settings`` writes atomically (``app.atomic``).
 """
 
 from __future__ import annotations
@@ -12,7 +13,8 @@ import json
 from dataclasses import dataclass
 from pathlib import Path
 
-from app.profile import MachineProfile, ProfileError, with_overrides
+from app.atomic import write_atomic
+from app.profile import MachineProfile, ProfileError, parse_file, read_overrides
 
 VERSION = 1
 FILE_NAME = "settings.json"
@@ -25,17 +27,21 @@ class Loaded:
 
 
 def load_settings(path: Path) -> Loaded:
+    """The saved profile; never raises. Each bad value is named (file, key, rule) and
+    its default used; a file that is no settings at all gives the defaults. The file is
+    never written here: it stays as it is until the operator saves."""
     try:
         text = path.read_text(encoding="utf-8")
     except FileNotFoundError:
         return Loaded(MachineProfile())
     except (OSError, UnicodeDecodeError) as exc:
-        return Loaded(MachineProfile(), f"{path}: cannot read ({exc}); using the defaults")
+        return Loaded(MachineProfile(), f"{path}: cannot read ({exc}); using the defaults.")
     try:
-        data = _migrate(json.loads(text))
-        return Loaded(with_overrides(MachineProfile(), data["profile"], str(path)))
-    except (json.JSONDecodeError, ProfileError, KeyError, TypeError, ValueError) as exc:
-        return Loaded(MachineProfile(), f"The settings file is damaged ({exc}); using the defaults.")
+        data = _migrate(parse_file(path, text))
+    except (ProfileError, ValueError) as exc:
+        return Loaded(MachineProfile(), f"The settings file {path} is damaged ({exc}); using the defaults.")
+    read = read_overrides(MachineProfile(), data["profile"], str(path))
+    return Loaded(read.profile, "; ".join(read.problems))
 
 
 def _migrate(data) -> dict:
@@ -53,10 +59,8 @@ def _migrate(data) -> dict:
 
 
 def save_settings(path: Path, profile: MachineProfile) -> None:
-    path.parent.mkdir(parents=True, exist_ok=True)
-    tmp = path.with_suffix(".tmp")
-    tmp.write_text(json.dumps({"version": VERSION, "profile": profile.to_dict()}, indent=2), encoding="utf-8")
-    tmp.replace(path)
+    """Write the profile atomically (a crash mid-write keeps the old file)."""
+    write_atomic(path, json.dumps({"version": VERSION, "profile": profile.to_dict()}, indent=2))
 
 
 # Profile fields the machine takes with ``SET <name> <value>`` (per axis for the PID).
