@@ -191,12 +191,28 @@ class CncMcu:
         verdict = self.job.offer(frame.seq)
         if verdict is Verdict.REACK:
             self.send(AckFrame(self.job.expected - 1, self.free_slots()))
-        elif verdict is Verdict.NAK:
-            self.send(Nak(self.job.expected))
+        elif verdict in (Verdict.NAK, Verdict.QUIET):
+            self.job.keep(frame.seq, frame.line, self.free_slots())  # selective repeat
+            if verdict is Verdict.NAK:
+                self.send(Nak(self.job.expected))
         elif verdict is Verdict.QUEUE:
             self._queue_line(frame.seq, frame.line)
+            self._queue_kept()
 
-    def _queue_line(self, seq: int, line: str) -> None:
+    def _queue_kept(self) -> None:
+        """Queue the frames kept above a gap that was just filled (one ``A`` for them
+        all, so its round trip is the resent frame's); ``N`` for the next gap."""
+        kept = self.job.take() if self.job.open else None
+        taken = kept is not None
+        while kept is not None:
+            self._queue_line(*kept, ack=False)
+            kept = self.job.take() if self.job.open else None
+        if taken and self.job.open or taken and self.job.acc == self.job.total - 1:
+            self.send(AckFrame(self.job.acc, self.free_slots()))
+        if self.job.open and self.job.gap_remains():
+            self.send(Nak(self.job.expected))
+
+    def _queue_line(self, seq: int, line: str, ack: bool = True) -> None:
         if seq >= self.job.total:
             return self.refuse_line(seq, "BAD_SEQ", f"beyond JOB {self.job.total}")
         if not self.check_mode and self.mc.free_slots() <= 0:
@@ -219,7 +235,8 @@ class CncMcu:
                 return self.refuse_line(seq, exc.code, exc.text)
             self.lines[seq] = line
         self.job.accepted(seq)
-        self.send(AckFrame(seq, self.free_slots()))
+        if ack:
+            self.send(AckFrame(seq, self.free_slots()))
         if self.check_mode:  # validated and finished at once: the dry run's executed log
             self.exec_log.add(seq, line)
             self._finished_up_to(seq)

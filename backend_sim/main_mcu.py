@@ -16,7 +16,8 @@ Contract:
 - heartbeat: 3 s without a valid host frame while connected -> flag ``L``,
   ``X HOST_LOST``, LED blinks fast, buzzer beeps, a host job feed-holds (an SD job
   carries on). The UART hop likewise (it sends the CNC MCU a ``PING`` after every
-  second without sending anything): ``U``, ``X UART_LOST``. Until the host has sent
+  second without sending anything, and every 0.25 s while nothing has come back for
+  a second): ``U``, ``X UART_LOST``. Until the host has sent
   one valid frame nothing goes up (as USB CDC with no host reading).
 """
 
@@ -57,6 +58,7 @@ class LinkState(enum.Enum):
 
 
 PING_PERIOD_S = 1.0
+SILENT_PING_S = 0.25
 HOUSEKEEPING_S = 0.1
 
 
@@ -81,6 +83,7 @@ class MainMcu:
         self.last_host = now
         self.last_uart = now
         self.next_ping = now + PING_PERIOD_S
+        self.last_own_ping = now
         self.next_housekeeping = now + HOUSEKEEPING_S
         self.status: Status | None = None
         self.last_relayed: Status | None = None
@@ -96,7 +99,7 @@ class MainMcu:
     # ------------------------------------------------------------------ time
 
     def next_due_ms(self) -> int:
-        due = self.next_ping
+        due = min(self.next_ping, self._silent_ping_at())
         if self.host_rx.pending() or self.uart_rx.pending():
             due = min(due, self.next_housekeeping)
         if self.host_link is LinkState.OK:
@@ -118,9 +121,15 @@ class MainMcu:
             self._uart_items(self.uart_rx.poll(now))
         return self._timers(now)
 
+    def _silent_ping_at(self) -> float:
+        """When to ask a CNC MCU that has said nothing for a second (every 0.25 s), even
+        while D frames go down: a CNC MCU waiting out a gap is quiet, not lost."""
+        return max(self.last_uart + PING_PERIOD_S, self.last_own_ping + SILENT_PING_S)
+
     def _timers(self, now: float) -> None:
-        if now >= self.next_ping:
+        if now >= self.next_ping or now >= self._silent_ping_at():
             self.next_ping = now + PING_PERIOD_S
+            self.last_own_ping = now
             self.send_cnc_own("PING", callback=None)
         self._watchdogs(now)
         if self.sd_job is not None:

@@ -251,7 +251,7 @@ class JobControl:
     def _on_finished(self, frame: fr.Finished, now: float) -> None:
         if self.stream is None or self.stream.kind != "job" or self.state not in SENDING_STATES:
             return
-        self.stream.window.on_ack(frame.seq, 0, now)
+        self.stream.window.on_ack(frame.seq, 0, now, timed=False)
         self._lines_finished(frame.seq, now)
 
     def _lines_finished(self, seq: int, now: float) -> None:

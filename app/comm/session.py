@@ -8,7 +8,7 @@ an ``OSError`` from it (pyserial's ``SerialException`` is one) is a link loss, n
 a crash. ``clock()`` gives seconds; inject a fake one for deterministic tests.
 
 Everything observable goes to the ``SessionListener`` as frozen events. Streams
-(``stream.py``) use the go-back-N credit window of ``window.py``; commands
+(``stream.py``) use the selective-repeat credit window of ``window.py``; commands
 (``commands.py``) carry one outstanding id retried with the same id; the link
 monitor (``heartbeat.py``) pings every second (also while a command is outstanding)
 and calls the link degraded after 2 s and lost after 3 s of silence; real-time
