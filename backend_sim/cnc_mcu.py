@@ -33,6 +33,7 @@ from backend_sim.outgoing import encode_fit
 from backend_sim.wire import Wire
 
 STATUS_PERIOD_MS = 50
+CHECK_F_EVERY = 8
 MOTION_CHUNK_MS = 50
 
 
@@ -239,7 +240,7 @@ class CncMcu:
             self.send(AckFrame(seq, self.free_slots()))
         if self.check_mode:  # validated and finished at once: the dry run's executed log
             self.exec_log.add(seq, line)
-            self._finished_up_to(seq)
+            self._finished_up_to(seq, report=seq % CHECK_F_EVERY == CHECK_F_EVERY - 1)
         return None
 
     def refuse_line(self, seq: int, code: str, text: str) -> None:
@@ -268,9 +269,12 @@ class CncMcu:
         self.exec_log.add(event.seq, self.lines.pop(event.seq))
         return event.seq
 
-    def _finished_up_to(self, seq: int) -> None:
+    def _finished_up_to(self, seq: int, report: bool = True) -> None:
+        """Lines up to ``seq`` finished: ``F`` (cumulative; in check mode only every
+        ``CHECK_F_EVERY`` lines and the last, where every line finishes at once)."""
         last = self.job.finished(seq)
-        self.send(Finished(self.job.done))
+        if report or last:
+            self.send(Finished(self.job.done))
         if last and self.job.open:
             self.job.close()
             self.send(Log(f"job done, {self.job.total} lines"))

@@ -2,7 +2,7 @@
 
 ``timeout`` is ``max(30 ms, srtt + 4 rttvar)``, doubled after each expiry up to
 2 s, and back to the computed value once a fresh sample arrives; ``probe_timeout``
-(4 x the fastest round trip, within 30 ms..``timeout``) paces single-frame resends. Only frames sent
+(2 x the fastest round trip, within 15 ms..``timeout``) paces single-frame resends. Only frames sent
 once give samples (Karn's rule), which the caller enforces.
 """
 
@@ -11,6 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 MIN_TIMEOUT = 0.03
+MIN_PROBE_TIMEOUT = 0.015
 MAX_TIMEOUT = 2.0
 INITIAL_TIMEOUT = 0.5
 ALPHA = 1 / 8
@@ -50,12 +51,12 @@ class RttEstimator:
 
     @property
     def probe_timeout(self) -> float:
-        """The wait before resending one frame alone: 4 x the fastest round trip seen
-        (at least ``MIN_TIMEOUT``), never more than ``timeout``. Cheap to get wrong (one
+        """The wait before resending one frame alone: 2 x the fastest round trip seen
+        (at least ``MIN_PROBE_TIMEOUT``), never more than ``timeout``. Cheap to get wrong (one
         frame), costly to get long (the stream waits): noisy links inflate ``srtt``."""
         if self.min_rtt is None:
             return self.timeout
-        return min(self.timeout, max(MIN_TIMEOUT, 4 * self.min_rtt))
+        return min(self.timeout, max(MIN_PROBE_TIMEOUT, 2 * self.min_rtt))
 
     def expired(self) -> None:
         """A timeout fired: double the next one (capped at 2 s)."""

@@ -99,7 +99,7 @@ def test_rtt_timeout_maths():
     rtt.sample(0.02)
     assert rtt.srtt == 0.02 and rtt.rttvar == 0.01
     assert rtt.timeout == pytest.approx(0.06)  # max(30 ms, 0.02 + 4 * 0.01)
-    assert rtt.probe_timeout == pytest.approx(0.06)  # min(timeout, max(30 ms, 4 * 0.02))
+    assert rtt.probe_timeout == pytest.approx(0.04)  # min(timeout, max(15 ms, 2 * 0.02))
     rtt.sample(0.2)
     assert rtt.srtt == pytest.approx(0.0425)
     assert rtt.rttvar == pytest.approx(0.0525)
