@@ -56,6 +56,15 @@ def msg(template: str, **args) -> Message:
     return Message(template, **args)
 
 
+def joined(messages) -> str:
+    """``messages`` as one message, ``"; "`` between them ("" for none), each still
+    translated on its own by ``localize``."""
+    out = ""
+    for message in messages:
+        out = msg("{first}; {then}", first=out, then=message) if out else message
+    return out
+
+
 def set_language(code: str | None) -> None:
     """Show core messages in ``code`` ("vi", "en"); None: follow the environment."""
     global _catalogue

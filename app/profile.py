@@ -3,14 +3,16 @@
 Shared by the G-code core (envelope, feeds, accelerations for time estimates), the
 simulator (motors, encoders, PID) and the GUI (settings). Pure stdlib, no Qt.
 ``load_profile(path)`` reads a TOML or JSON file whose tables override the defaults
-(``[axis] lead_mm = 4``); an unknown key or an out-of-range value raises
-``ProfileError`` naming the file, the key and the allowed range.
+(``[axis] lead_mm = 4``); an unknown key or a bad value raises ``ProfileError``
+naming the file, the key and the rule. ``read_profile(path)`` never raises: each bad
+value is named and its default used (the window and the simulator start anyway).
 """
 
 from __future__ import annotations
 
 import json
 import math
+import re
 import tomllib
 from dataclasses import dataclass, field, fields, replace
 from pathlib import Path
@@ -154,54 +156,146 @@ def _section_dict(section: Any) -> dict[str, float]:
     return {f.name: getattr(section, f.name) for f in fields(section)}
 
 
-def check_value(section: Any, key: str, value: Any, where: str = "") -> float | int:
-    """Return ``value`` converted for ``section.key``, or raise ProfileError with its range."""
+DECIMAL = re.compile(r"[+-]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)")
+
+
+def check_value(section: Any, key: str, value: Any, where: str = "", text: bool = False) -> float | int:
+    """``value`` for ``section.key``, or ProfileError naming the key and the rule broken.
+
+    A file's values must be numbers (not text, not true/false, finite, whole for an
+    integer field, in range); with ``text`` (a dialog's field) a string is read with
+    the strict grammar ``DECIMAL`` (no ``1_0``, ``1e3``, ``inf``)."""
     spec = {f.name: f for f in fields(section)}.get(key)
     prefix = f"{where}: " if where else ""
     if spec is None:
         known = ", ".join(sorted(_names(section)))
-        raise ProfileError(f"{prefix}unknown setting {key!r}; known: {known}")
+        raise ProfileError(msg("{prefix}unknown setting {key!r}; known: {known}", prefix=prefix, key=key,
+                               known=known))
     lo, hi = spec.metadata["range"]
-    kind = int if isinstance(spec.default, int) and not isinstance(spec.default, bool) else float
-    try:
-        number = kind(value)
-    except (TypeError, ValueError):
-        raise ProfileError(msg("{prefix}{key} = {value!r} is not a number", prefix=prefix, key=key,
-                               value=value)) from None
-    if isinstance(number, float) and not math.isfinite(number) or not lo <= number <= hi:
-        raise ProfileError(msg("{prefix}{key} = {value!r} is out of range {lo:g}..{hi:g}", prefix=prefix,
-                               key=key, value=value, lo=float(lo), hi=float(hi)))
-    return number
+    whole = isinstance(spec.default, int) and not isinstance(spec.default, bool)
+    said = {"prefix": prefix, "key": key, "value": value}
+    number = _number(value, text, said)
+    if not math.isfinite(number):
+        raise ProfileError(msg("{prefix}{key} = {value!r} is not a finite number", **said))
+    if whole and not float(number).is_integer():
+        raise ProfileError(msg("{prefix}{key} = {value!r} must be a whole number", **said))
+    if not lo <= number <= hi:
+        raise ProfileError(msg("{prefix}{key} = {value!r} is out of range {lo:g}..{hi:g}", lo=float(lo),
+                               hi=float(hi), **said))
+    return int(number) if whole else float(number)
+
+
+def _number(value: Any, text: bool, said: dict) -> float | int:
+    if isinstance(value, bool):
+        raise ProfileError(msg("{prefix}{key} = {value!r} is true/false, not a number", **said))
+    if isinstance(value, int | float):
+        return value
+    if isinstance(value, str):
+        if text and DECIMAL.fullmatch(value):
+            return float(value)
+        if not text:
+            raise ProfileError(msg("{prefix}{key} = {value!r} is not a number (text in quotes)", **said))
+    raise ProfileError(msg("{prefix}{key} = {value!r} is not a number", **said))
+
+
+def consistency_problems(profile: MachineProfile, where: str = "") -> list[str]:
+    """Rules between fields: the link timers must satisfy heartbeat < degraded < lost."""
+    link = profile.link
+    if link.heartbeat_s < link.degraded_s < link.lost_s:
+        return []
+    prefix = f"{where} [link]: " if where else "[link]: "
+    return [msg("{prefix}heartbeat_s ({heartbeat:g}) < degraded_s ({degraded:g}) < lost_s ({lost:g}) "
+                "must hold", prefix=prefix, heartbeat=link.heartbeat_s, degraded=link.degraded_s,
+                lost=link.lost_s)]
 
 
 def _names(section: Any) -> list[str]:
     return [f.name for f in fields(section)]
 
 
+@dataclass(frozen=True)
+class ProfileRead:
+    """A profile read leniently: every bad value replaced by its default, and why."""
+
+    profile: MachineProfile
+    problems: tuple[str, ...] = ()
+
+
 def with_overrides(base: MachineProfile, data: dict[str, Any], where: str = "") -> MachineProfile:
-    """``base`` with ``{"section": {"key": value}}`` applied, every value range-checked."""
+    """``base`` with ``{"section": {"key": value}}`` applied; ProfileError on the first
+    bad value (``read_overrides`` keeps going)."""
+    read = read_overrides(base, data, where)
+    if read.problems:
+        raise ProfileError(read.problems[0])
+    return read.profile
+
+
+def read_overrides(base: MachineProfile, data: Any, where: str = "") -> ProfileRead:
+    """``base`` with every good value of ``data`` applied; each bad one named (file,
+    key, rule) and left at its value in ``base``; timers that contradict each other
+    are all left at ``base``'s."""
+    if not isinstance(data, dict):
+        return ProfileRead(base, (msg("{where}: not a table of sections (found {kind})", where=where,
+                                      kind=type(data).__name__),))
     sections = {f.name: f for f in fields(base)}
-    changes = {}
+    problems, changes = [], {}
     for name, table in data.items():
         if name not in sections or not isinstance(table, dict):
-            raise ProfileError(f"{where}: unknown section {name!r}; known: {', '.join(sections)}")
-        section = getattr(base, name)
-        values = {k: check_value(section, k, v, f"{where} [{name}]") for k, v in table.items()}
+            known = ", ".join(sections)
+            problems.append(msg("{where}: unknown section {name!r}; known: {known}", where=where, name=name,
+                                known=known) if name not in sections else
+                            msg("{where}: not a table: {name!r}; known: {known}", where=where, name=name,
+                                known=known))
+            continue
+        section, values = getattr(base, name), {}
+        for key, value in table.items():
+            try:
+                values[key] = check_value(section, key, value, f"{where} [{name}]")
+            except ProfileError as exc:
+                problems.append(msg("{problem}; default {default!r} used", problem=exc.args[0],
+                                    default=getattr(section, key, None))
+                                if key in _names(section) else exc.args[0])
         changes[name] = replace(section, **values)
-    return replace(base, **changes)
+    profile = replace(base, **changes)
+    rules = consistency_problems(profile, where)
+    if rules:
+        problems += [msg("{problem}; defaults used", problem=r) for r in rules]
+        profile = replace(profile, link=base.link)
+    return ProfileRead(profile, tuple(problems))
+
+
+def parse_file(path: Path, text: str) -> Any:
+    """The JSON (``.json``) or TOML data of ``text``; ProfileError if it cannot be read."""
+    kind = "JSON" if path.suffix == ".json" else "TOML"
+    try:
+        return json.loads(text) if kind == "JSON" else tomllib.loads(text)
+    except (json.JSONDecodeError, tomllib.TOMLDecodeError) as exc:
+        raise ProfileError(msg("{path}: not valid {kind}: {error}", path=str(path), kind=kind,
+                               error=str(exc))) from None
+    except RecursionError:
+        raise ProfileError(msg("{path}: not valid {kind}: nested too deeply", path=str(path),
+                               kind=kind)) from None
+
+
+def read_profile(path: str | Path) -> ProfileRead:
+    """The default profile with the good values of a TOML or JSON file; never raises."""
+    path = Path(path)
+    try:
+        data = parse_file(path, path.read_text(encoding="utf-8"))
+    except (OSError, UnicodeDecodeError) as exc:
+        problem = msg("{path}: cannot read: {error}", path=str(path), error=str(exc))
+        return ProfileRead(MachineProfile(), (problem,))
+    except ProfileError as exc:
+        return ProfileRead(MachineProfile(), (str(exc),))
+    return read_overrides(MachineProfile(), data, str(path))
 
 
 def load_profile(path: str | Path | None = None) -> MachineProfile:
-    """The default profile, overridden by a TOML or JSON file if ``path`` is given."""
+    """The default profile, overridden by a TOML or JSON file if ``path`` is given;
+    ProfileError naming the first problem (``read_profile`` is the lenient reader)."""
     if path is None:
         return MachineProfile()
-    path = Path(path)
-    try:
-        text = path.read_text(encoding="utf-8")
-        data = json.loads(text) if path.suffix == ".json" else tomllib.loads(text)
-    except (OSError, UnicodeDecodeError) as exc:
-        raise ProfileError(f"{path}: cannot read: {exc}") from None
-    except (json.JSONDecodeError, tomllib.TOMLDecodeError) as exc:
-        kind = "JSON" if path.suffix == ".json" else "TOML"
-        raise ProfileError(f"{path}: not valid {kind}: {exc}") from None
-    return with_overrides(MachineProfile(), data, str(path))
+    read = read_profile(path)
+    if read.problems:
+        raise ProfileError(read.problems[0])
+    return read.profile

@@ -13,7 +13,7 @@ import signal
 import sys
 import threading
 
-from app.profile import ProfileError, load_profile
+from app.profile import read_profile
 
 
 def _positive(text: str) -> float:
@@ -58,13 +58,18 @@ def _apply_faults(sim, args) -> None:
     sim.faults.set_rates(hop, direction, seed=args.seed or 0, **rates)
 
 
+def load_profile_for_sim(path: str):
+    """The profile of ``path``; each bad value is named on stderr and its default used
+    (a bad profile never keeps the simulator from starting)."""
+    read = read_profile(path)
+    for problem in read.problems:
+        print(f"cnc-sim: {problem}", file=sys.stderr)
+    return read.profile
+
+
 def main(argv: list[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
-    try:
-        profile = load_profile(args.profile) if args.profile else None
-    except ProfileError as exc:
-        print(f"cnc-sim: {exc}", file=sys.stderr)
-        return 2
+    profile = load_profile_for_sim(args.profile) if args.profile else None
     from backend_sim.serve import PtyServer, TcpServer
     from backend_sim.simulator import Simulator
 

@@ -9,7 +9,7 @@ UNKNOWN_VERB. ``PING``/``STATUS`` answer with ``S``.
 
 from __future__ import annotations
 
-from app.comm.frame import Command, Error, Ok
+from app.comm.frame import Command, Error, FrameError, Ok, decimal
 from backend_sim.motion import events as ev
 from backend_sim.motion.dialect import DialectError, DialectParser
 from backend_sim.motion.events import MotionError
@@ -63,10 +63,11 @@ def _homed(mcu) -> None:
 
 
 def _number(text: str, what: str) -> float:
+    """The strict number grammar of docs/protocol.md (no ``1_0``, ``1e3``, ``inf``, ``nan``)."""
     try:
-        return float(text)
-    except ValueError:
-        raise Refused("BAD_ARGS", f"{what} {text!r} is not a number") from None
+        return decimal(text, what)
+    except FrameError as exc:
+        raise Refused("BAD_ARGS", str(exc)) from None
 
 
 def _args(cmd: Command, low: int, high: int) -> tuple[str, ...]:
@@ -107,6 +108,7 @@ def _job(mcu, cmd: Command) -> str:
     mcu.reset_parser()
     mcu.job.start(int(count))
     mcu.lines.clear()
+    mcu.send_status()  # before the O: no status of the last job may follow it
     return count
 
 
@@ -192,6 +194,8 @@ def _set(mcu, cmd: Command) -> str:
     name, value = _args(cmd, 2, 2)
     number = _number(value, name)
     if name == "CHECK":
+        if value not in ("0", "1"):
+            raise Refused("BAD_ARGS", f"CHECK {value!r}: 0 or 1")
         if mcu.job.open:
             raise Refused("BUSY", "a job is open")
         mcu.check_mode = bool(number)

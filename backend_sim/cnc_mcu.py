@@ -22,6 +22,7 @@ from app.comm.frame import Ack as AckFrame
 from app.comm.frame import Alarm, Command, Data, Error, Finished, Frame, Log, Nak, Ok, Status
 from app.profile import MachineProfile
 from backend_sim import cnc_commands, program_stops
+from backend_sim.answer_cache import AnswerCache
 from backend_sim.exec_log import ExecLog
 from backend_sim.flash import Flash
 from backend_sim.job_stream import JobStream, Verdict
@@ -32,6 +33,7 @@ from backend_sim.outgoing import encode_fit
 from backend_sim.wire import Wire
 
 STATUS_PERIOD_MS = 50
+CHECK_F_EVERY = 8
 MOTION_CHUNK_MS = 50
 
 
@@ -59,6 +61,7 @@ class CncMcu:
         self.lost_ms = round(profile.link.lost_s * 1000)
         self.cover_open = False
         self.stops = program_stops.StopSettings()
+        self.answers = AnswerCache()
         self.boot()
 
     # ------------------------------------------------------------------ life cycle
@@ -168,22 +171,50 @@ class CncMcu:
         self.last_frame_ms = self.clock.now_ms
         self.uart_lost = False
         if isinstance(frame, Command):
-            cnc_commands.dispatch(self, frame)
+            self._on_command(frame)
         elif isinstance(frame, Data):
             self._on_data(frame)
 
+    def _on_command(self, cmd: Command) -> None:
+        """Carry out ``cmd`` once; a repeated id gets the answers it already had (or,
+        still running, the answer when it comes)."""
+        if self.answers.remembers(cmd):
+            for raw in self.answers.frames:
+                self.tx.write(raw, self.clock.now)
+            return
+        self.answers.start(cmd)
+        cnc_commands.dispatch(self, cmd)
+
     def _on_data(self, frame: Data) -> None:
         if not self.job.open:
+            if frame.seq >= self.job.expected:  # below: a late copy of a line it took
+                self.send(Error(None, "BAD_SEQ", f"{frame.seq} no job open"))
             return
         verdict = self.job.offer(frame.seq)
         if verdict is Verdict.REACK:
             self.send(AckFrame(self.job.expected - 1, self.free_slots()))
-        elif verdict is Verdict.NAK:
-            self.send(Nak(self.job.expected))
+        elif verdict in (Verdict.NAK, Verdict.QUIET):
+            self.job.keep(frame.seq, frame.line, self.free_slots())  # selective repeat
+            if verdict is Verdict.NAK:
+                self.send(Nak(self.job.expected))
         elif verdict is Verdict.QUEUE:
             self._queue_line(frame.seq, frame.line)
+            self._queue_kept()
 
-    def _queue_line(self, seq: int, line: str) -> None:
+    def _queue_kept(self) -> None:
+        """Queue the frames kept above a gap that was just filled (one ``A`` for them
+        all, so its round trip is the resent frame's); ``N`` for the next gap."""
+        kept = self.job.take() if self.job.open else None
+        taken = kept is not None
+        while kept is not None:
+            self._queue_line(*kept, ack=False)
+            kept = self.job.take() if self.job.open else None
+        if taken and self.job.open or taken and self.job.acc == self.job.total - 1:
+            self.send(AckFrame(self.job.acc, self.free_slots()))
+        if self.job.open and self.job.gap_remains():
+            self.send(Nak(self.job.expected))
+
+    def _queue_line(self, seq: int, line: str, ack: bool = True) -> None:
         if seq >= self.job.total:
             return self.refuse_line(seq, "BAD_SEQ", f"beyond JOB {self.job.total}")
         if not self.check_mode and self.mc.free_slots() < program_stops.slots_needed(line):
@@ -208,10 +239,11 @@ class CncMcu:
                 return self.refuse_line(seq, exc.code, exc.text)
             self.lines[seq] = line
         self.job.accepted(seq)
-        self.send(AckFrame(seq, self.free_slots()))
+        if ack:
+            self.send(AckFrame(seq, self.free_slots()))
         if self.check_mode:  # validated and finished at once: the dry run's executed log
             self.exec_log.add(seq, line)
-            self._finished_up_to(seq)
+            self._finished_up_to(seq, report=seq % CHECK_F_EVERY == CHECK_F_EVERY - 1)
         return None
 
     def _queue_stop(self, move, line: str) -> None:
@@ -253,9 +285,12 @@ class CncMcu:
         self.exec_log.add(event.seq, self.lines.pop(event.seq))
         return event.seq
 
-    def _finished_up_to(self, seq: int) -> None:
+    def _finished_up_to(self, seq: int, report: bool = True) -> None:
+        """Lines up to ``seq`` finished: ``F`` (cumulative; in check mode only every
+        ``CHECK_F_EVERY`` lines and the last, where every line finishes at once)."""
         last = self.job.finished(seq)
-        self.send(Finished(self.job.done))
+        if report or last:
+            self.send(Finished(self.job.done))
         if last and self.job.open:
             self.job.close()
             self.send(Log(f"job done, {self.job.total} lines"))
@@ -333,7 +368,9 @@ class CncMcu:
         self.next_status = self.clock.now_ms + STATUS_PERIOD_MS
 
     def send(self, frame: Frame) -> None:
-        self.tx.write(encode_fit(frame), self.clock.now)
+        raw = encode_fit(frame)
+        self.answers.record(frame, raw)
+        self.tx.write(raw, self.clock.now)
 
     def set_cover(self, is_open: bool) -> None:
         self.catch_up()

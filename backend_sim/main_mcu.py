@@ -4,8 +4,10 @@ Contract:
 - host frames: ``D`` and the commands that are not its own go down the UART; its own
   commands are ``PING``/``STATUS`` (answered with the last ``S`` of the CNC MCU, with
   the flags it owns: ``L``, ``U``, ``S``) and ``SD ...`` (``main_sd``). A repeated
-  command id (the same as the last) is not executed again: its first answer is sent
-  again. A bad host frame is answered ``N expected`` once per bad stretch, with
+  command id (the same as the last; ``PING``/``STATUS`` are never remembered) is not
+  executed again: its answers are sent again, or, for a forwarded command not yet
+  answered, it is forwarded again (the CNC MCU answers a repeated id from its cache).
+  A bad host frame is answered ``N expected`` once per bad stretch, with
   ``expected`` mirrored from the stream (an ``N`` of the CNC MCU for the same seq in
   the same stretch is not passed on twice).
 - real-time bytes go down ahead of every queue (``Wire.write_urgent``).
@@ -15,9 +17,10 @@ Contract:
   ``SimClock.link_now``: wall-clock seconds at any speed factor, so a host needs no
   knowledge of the factor) -> flag ``L``, ``X HOST_LOST``, LED blinks fast, buzzer
   beeps, a host job feed-holds (an SD job carries on). The UART hop likewise (it sends
-  the CNC MCU a ``PING`` after every second without sending anything): ``U``,
-  ``X UART_LOST``; both ends of the UART are the machine's, so it runs on machine time.
-  Until the host has sent one valid frame nothing goes up (as USB CDC with no host reading).
+  the CNC MCU a ``PING`` after every second without sending anything, and every 0.25 s
+  while nothing has come back for a second): ``U``, ``X UART_LOST``; both ends of the
+  UART are the machine's, so it runs on machine time. Until the host has sent one
+  valid frame nothing goes up (as USB CDC with no host reading).
 """
 
 from __future__ import annotations
@@ -40,6 +43,7 @@ from app.comm.frame import (
     Status,
 )
 from backend_sim import main_sd
+from backend_sim.answer_cache import AnswerCache
 from backend_sim.outgoing import encode_fit
 from backend_sim.sd_card import SdCard
 from backend_sim.wire import Wire, to_ms
@@ -56,6 +60,7 @@ class LinkState(enum.Enum):
 
 
 PING_PERIOD_S = 1.0
+SILENT_PING_S = 0.25
 HOUSEKEEPING_S = 0.1
 
 
@@ -71,6 +76,7 @@ class MainMcu:
         """Power-up or MRESET: links unknown, no upload, no SD job, nothing cached."""
         if getattr(self, "upload", None) is not None:
             self.upload.abort()
+            self.sd.remove_partials()
         now = self.clock.now
         self.host_rx = Deframer(realtime=True)
         self.uart_rx = Deframer(realtime=False)
@@ -79,11 +85,11 @@ class MainMcu:
         self.last_host = self.clock.link_now
         self.last_uart = now
         self.next_ping = now + PING_PERIOD_S
+        self.last_own_ping = now
         self.next_housekeeping = now + HOUSEKEEPING_S
         self.status: Status | None = None
         self.last_relayed: Status | None = None
-        self.last_id: int | None = None
-        self.last_answer: list[bytes] = []
+        self.answers = AnswerCache()
         self.expected = 0
         self.nak_sent: int | None = None
         self.upload = None
@@ -95,7 +101,7 @@ class MainMcu:
     # ------------------------------------------------------------------ time
 
     def next_due_ms(self) -> int:
-        due = self.next_ping
+        due = min(self.next_ping, self._silent_ping_at())
         if self.host_rx.pending() or self.uart_rx.pending():
             due = min(due, self.next_housekeeping)
         if self.uart_link is LinkState.OK:
@@ -118,9 +124,15 @@ class MainMcu:
             self._uart_items(self.uart_rx.poll(now))
         return self._timers(now)
 
+    def _silent_ping_at(self) -> float:
+        """When to ask a CNC MCU that has said nothing for a second (every 0.25 s), even
+        while D frames go down: a CNC MCU waiting out a gap is quiet, not lost."""
+        return max(self.last_uart + PING_PERIOD_S, self.last_own_ping + SILENT_PING_S)
+
     def _timers(self, now: float) -> None:
-        if now >= self.next_ping:
+        if now >= self.next_ping or now >= self._silent_ping_at():
             self.next_ping = now + PING_PERIOD_S
+            self.last_own_ping = now
             self.send_cnc_own("PING", callback=None)
         self._watchdogs(now)
         if self.sd_job is not None:
@@ -132,6 +144,7 @@ class MainMcu:
             self.host_link = LinkState.LOST
             self.notice = "HOST LOST"
             self.to_host(Alarm("HOST_LOST", f"no valid host frame for {self.lost_s:g} s"))
+            main_sd.abandon_upload(self, "host lost")
             if self.sd_job is None and self.status is not None and self.status.state == "RUN":
                 self.uart_tx.write_urgent(FEED_HOLD, now)
         if self.uart_link is LinkState.OK and now - self.last_uart >= self.lost_s:
@@ -163,8 +176,10 @@ class MainMcu:
 
     def _realtime(self, byte: bytes) -> None:
         self.uart_tx.write_urgent(byte, self.clock.now)
-        if byte == STOP_FLUSH and self.sd_job is not None:
-            main_sd.stop_job(self, "stopped by host")
+        if byte == STOP_FLUSH:
+            main_sd.abandon_upload(self, "stopped by host")
+            if self.sd_job is not None:
+                main_sd.stop_job(self, "stopped by host")
 
     def _host_bad(self) -> None:
         if self.upload is not None:
@@ -192,16 +207,28 @@ class MainMcu:
         return None
 
     def _host_command(self, cmd: Command) -> None:
-        if cmd.id == self.last_id:
-            for raw in self.last_answer:
-                self.host_tx.write(raw, self.clock.now)
-            return
-        self.last_id, self.last_answer = cmd.id, []
         handler = _OWN.get(cmd.verb)
+        if self.answers.remembers(cmd):
+            return self._repeat(cmd, own=handler is not None)
+        self.answers.start(cmd)
         if handler is not None:
             handler(self, cmd)
         else:
             self._forward(cmd)
+        return None
+
+    def _repeat(self, cmd: Command, own: bool) -> None:
+        """A retry: the answers again, or a forwarded command not yet answered forwarded
+        again (its first copy may have been lost on the UART; the CNC MCU deduplicates)."""
+        for raw in self.answers.frames:
+            self.host_tx.write(raw, self.clock.now)
+        if not self.answers.answered and not own:
+            self.to_cnc(cmd)
+
+    @property
+    def last_id(self) -> int | None:
+        """The remembered host command id (answers to it are kept for a retry)."""
+        return self.answers.id
 
     def _forward(self, cmd: Command) -> None:
         hook = _BEFORE_FORWARD.get(cmd.verb)
@@ -222,17 +249,22 @@ class MainMcu:
         return True
 
     def _before_stop(self, cmd: Command) -> bool:
+        main_sd.abandon_upload(self, "stopped by host")
         if self.sd_job is not None:
             main_sd.stop_job(self, "stopped by host")
         return True
 
+    def _before_reset(self, cmd: Command) -> bool:
+        main_sd.abandon_upload(self, "reset")
+        return True
+
     def _ping(self, cmd: Command) -> None:
-        self.answer(self.merged_status())
+        self.host_tx.write(encode_fit(self.merged_status()), self.clock.now)
 
     def answer(self, frame: Frame) -> None:
         """Send an answer to the last host command, and keep it for a repeated id."""
         raw = encode_fit(frame)
-        self.last_answer.append(raw)
+        self.answers.frames.append(raw)
         self.host_tx.write(raw, self.clock.now)
 
     def to_host(self, frame: Frame) -> None:
@@ -369,4 +401,5 @@ _BEFORE_FORWARD = {
     "JOB": MainMcu._before_job,
     "RESUME": MainMcu._before_resume,
     "STOP": MainMcu._before_stop,
+    "RESET": MainMcu._before_reset,
 }

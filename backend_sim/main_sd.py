@@ -86,13 +86,36 @@ def upload_data(mcu, frame: Data) -> None:
     verdict = up.stream.offer(frame.seq)
     if verdict is Verdict.REACK:
         mcu.answer(Ack(up.stream.expected - 1, UPLOAD_FREE_SLOTS))
-    elif verdict is Verdict.NAK:
-        mcu.answer(Nak(up.stream.expected))
+    elif verdict in (Verdict.NAK, Verdict.QUIET):
+        up.stream.keep(frame.seq, frame.line, UPLOAD_FREE_SLOTS)  # selective repeat
+        if verdict is Verdict.NAK:
+            mcu.answer(Nak(up.stream.expected))
     elif verdict is Verdict.QUEUE:
-        up.write(frame.seq, frame.line)
-        mcu.host_tx.write(Ack(frame.seq, UPLOAD_FREE_SLOTS).encode(), mcu.clock.now)
-        if up.complete:
-            _finish_upload(mcu)
+        _store(mcu, up, frame.seq, frame.line)
+        kept = up.stream.take()
+        while kept is not None and mcu.upload is up:
+            _store(mcu, up, *kept)
+            kept = up.stream.take()
+        if mcu.upload is up and up.stream.gap_remains():
+            mcu.answer(Nak(up.stream.expected))
+
+
+def _store(mcu, up, seq: int, line: str) -> None:
+    up.write(seq, line)
+    mcu.host_tx.write(Ack(seq, UPLOAD_FREE_SLOTS).encode(), mcu.clock.now)
+    if up.complete:
+        _finish_upload(mcu)
+
+
+def abandon_upload(mcu, reason: str) -> None:
+    """End an unfinished ``SD PUT`` (host lost, STOP, reset): its partial file is
+    removed, the card's files stay as they were, ``L`` says so when the host listens."""
+    up, mcu.upload = mcu.upload, None
+    if up is None:
+        return
+    up.abort()
+    mcu.notice = f"SD PUT {up.name} abandoned"
+    mcu.to_host(Log(f"SD PUT {up.name} abandoned: {reason}"))
 
 
 def upload_bad_frame(mcu) -> None:

@@ -18,6 +18,7 @@ from pathlib import Path
 from backend_sim.job_stream import JobStream
 
 _NAME = re.compile(r"[A-Za-z0-9_.\-]{1,32}")
+_CRC32 = re.compile(r"[0-9A-Fa-f]{1,8}")
 UPLOAD_FREE_SLOTS = 16
 
 
@@ -45,6 +46,12 @@ class SdCard:
         self.folder = Path(folder)
         self.folder.mkdir(parents=True, exist_ok=True)
         self.capacity_bytes = capacity_bytes
+        self.remove_partials()
+
+    def remove_partials(self) -> None:
+        """Delete the temporary files of uploads that never finished (a crash, a reset)."""
+        for path in self.folder.glob(".*.part"):
+            path.unlink(missing_ok=True)
 
     def path(self, name: str) -> Path:
         return self.folder / check_name(name)
@@ -81,11 +88,9 @@ class SdCard:
             raise SdError("BAD_ARGS", f"line count {lines}: at least 1")
         if self.used_bytes() >= self.capacity_bytes:
             raise SdError("SD_FULL", f"{self.used_bytes()} of {self.capacity_bytes} bytes used")
-        try:
-            crc = int(crc_hex, 16)
-        except ValueError:
-            raise SdError("BAD_ARGS", f"CRC {crc_hex!r} is not hex") from None
-        return SdUpload(self, name, lines, crc)
+        if not _CRC32.fullmatch(crc_hex):
+            raise SdError("BAD_ARGS", f"CRC {crc_hex!r}: 1-8 hex digits")
+        return SdUpload(self, name, lines, int(crc_hex, 16))
 
 
 class SdUpload:

@@ -3,8 +3,9 @@
 docs/protocol.md: ``C <id> <VERB> [args]``; a repeated id (the same as the last one)
 is not executed again. The machine only remembers the *last* id, so the host keeps
 exactly one command outstanding and retries it with the same id until ``O``/``E``
-arrives (every ``RETRY_S``, doubling up to 1 s, so the retries double as the
-heartbeat); other commands wait in a FIFO. ``PING`` and ``STATUS`` are answered by
+arrives (every ``RETRY_S``, doubling up to 1 s); other commands wait in a FIFO. The
+heartbeat ``PING`` goes out every second besides (``PING``/``STATUS`` ids are never
+remembered by the machine). ``PING`` and ``STATUS`` are answered by
 an ``S`` frame. A command unanswered by its verb's deadline ends with ``TIMEOUT``.
 Urgent commands (``STOP``) supersede the outstanding one.
 """
@@ -121,13 +122,15 @@ class CommandQueue:
         if self.outstanding is not None:
             self.outstanding.acknowledged = True
 
-    def heartbeat(self) -> Command | None:
-        """A ``PING`` with a fresh id, if nothing else is being retried (else None)."""
-        if self.waiting or (self.outstanding is not None and not self.outstanding.acknowledged):
-            return None
+    def heartbeat(self, sending: list[Command]) -> list[Command]:
+        """The second's ``PING`` with a fresh id, sent even while a command is outstanding
+        (the machine never remembers a PING's id, so the retry stays a retry); none when
+        ``sending`` already holds a PING or STATUS."""
+        if any(c.verb in STATUS_VERBS for c in sending):
+            return []
         command = Command(self.next_id, "PING")
         self.next_id += 1
-        return command
+        return [command]
 
     def fail_all(self, code: str, info: str) -> list[CommandResult]:
         """End every command (link lost, disconnect): results for each."""

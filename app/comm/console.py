@@ -3,13 +3,24 @@
 Commands (several may follow each other, separated by ``,``; with none, one command
 per line is read from stdin): ``ping``, ``status``, ``home``, ``run FILE``,
 ``sd put FILE [NAME]``, ``sd ls``, ``sd run NAME``, ``sd rm NAME``, ``pause``,
-``resume``, ``stop``, ``check on|off``, or any raw verb (``JOG X 10 300``).
+``resume [FILE | FROM SEQ]``, ``stop``, ``check on|off``, or any raw verb
+(``JOG X 10 300``).
+
+``resume`` does what the window's Resume does: with the job of this console
+interrupted by a link loss, it waits for the link, sends ``RESUME FROM acc+1`` and
+the missing lines, and waits for the job to end as ``run`` does; with no job, it
+leaves a feed hold. ``resume FILE`` takes over a job of FILE that another client left
+interrupted (same boot): ``RESUME FROM acc+1``, then the rest of FILE. ``resume FROM
+SEQ`` sends that verb as it is. Read from stdin, a failed command prints its error
+and the console goes on (so ``resume`` can follow an interrupted ``run``); the exit
+status is then that of the last failure.
 
 Frames are printed as ``> `` (sent) and ``< `` (received); ``-q`` hides the stream
 traffic (D, A, F, S). ``run`` homes if the machine is not homed, streams the file,
 waits for the last ``F``, prints the final status line and exits 0 only if the job
 completed; otherwise it exits 1 with the reason. Exit 2: bad usage or file; 3: the
-port cannot be opened or the link was lost. At a program stop (``M00``/``M01``/``M06``)
+port cannot be opened or the link was lost (no valid frame for 3 s, or the port
+went away). At a program stop (``M00``/``M01``/``M06``)
 ``run`` asks on stdin (Enter continues, ``stop`` ends the job), or answers as
 ``--at-stops continue|stop`` says. ``--from LINE`` runs FILE from that source line,
 the modal state of the lines before it restored first (as the window's "Start here").
@@ -26,6 +37,7 @@ import time
 from pathlib import Path
 
 from app.comm.events import FrameEvent
+from app.comm.heartbeat import LinkState
 from app.comm.listener import SessionListener, SessionState
 from app.comm.modal import device_index_of, restart_preamble
 from app.comm.session import Session
@@ -89,8 +101,10 @@ class Console:
     """Drives one Session over one transport, synchronously, for the commands above."""
 
     def __init__(self, transport, out=None, quiet: bool = False, timeout: float = 3600.0,
-                 at_stops: str = "ask", from_line: int | None = None) -> None:
+                 at_stops: str = "ask", from_line: int | None = None, sleep=time.sleep,
+                 wall=time.monotonic) -> None:
         self.transport, self.out, self.timeout = transport, out or sys.stdout, timeout
+        self.sleep, self.wall = sleep, wall
         self.at_stops = at_stops  # "ask" (stdin), "continue" or "stop"
         self.from_line = from_line  # run FILE starts at this source line (start from a line)
         self.printer = Printer(self.out, quiet)
@@ -109,19 +123,27 @@ class Console:
         if not self.session.attached:
             raise ConsoleError("link lost: the port went away", 3)
 
-    def wait(self, predicate, timeout: float | None = None, what: str = "an answer") -> None:
-        end = time.monotonic() + (self.timeout if timeout is None else timeout)
+    def wait(self, predicate, timeout: float | None = None, what: str = "an answer",
+             through_loss: bool = False) -> None:
+        """Pump until ``predicate()``; ConsoleError(3) on timeout, and on a lost link
+        unless ``through_loss`` (waiting for a job, which a link loss interrupts)."""
+        end = self.wall() + (self.timeout if timeout is None else timeout)
         while not predicate():
-            if time.monotonic() > end:
+            if self.wall() > end:
                 raise ConsoleError(f"timed out waiting for {what}", 3)
             self.pump()
-            time.sleep(PUMP_S)
+            if not through_loss and self.session.link.state is LinkState.LOST:
+                raise ConsoleError(f"link lost while waiting for {what}: no valid frame for "
+                                   f"{self.session.link.lost_s:g} s", 3)
+            self.sleep(PUMP_S)
 
     def command(self, verb: str, *args, timeout: float | None = None):
         cid = self.session.submit(verb, *args)
         found = lambda: [r for r in self.printer.results if r.id == cid]  # noqa: E731
         self.wait(lambda: bool(found()), timeout, f"{verb} to be answered")
         result = found()[0]
+        if result.code == "LINK_LOST":
+            raise ConsoleError(f"link lost while waiting for {verb}: {result.info}", 3)
         if not result.ok:
             raise ConsoleError(f"{verb} refused: {result.code} {result.info}".strip())
         return result
@@ -158,8 +180,38 @@ class Console:
         self.session.pause()
         self.wait(lambda: self.session.status.state in ("HOLD", "IDLE"), 10.0, "the hold")
 
-    def cmd_resume(self) -> None:
-        self.command("RESUME")
+    def cmd_resume(self, *args: str) -> None:
+        if args and args[0].upper() == "FROM":
+            if len(args) != 2 or not args[1].isdigit():
+                raise ConsoleError("usage: resume FROM <seq>", 2)
+            self.command("RESUME", "FROM", args[1])
+        elif args:
+            self._take_over(args[0])
+        elif self.session.stream is not None and self.session.stream.kind == "job":
+            self._resume_own_job()
+        else:
+            self.command("RESUME")
+
+    def _resume_own_job(self) -> None:
+        offered = (SessionState.RESUME_OFFERED, SessionState.RESTART_REQUIRED)
+        self.wait(lambda: self.session.state not in (SessionState.INTERRUPTED,), what="the link to come back",
+                  through_loss=True)
+        if self.session.state is SessionState.RESTART_REQUIRED:
+            raise ConsoleError("the machine was reset: home it and run the job again", 1)
+        jobs = len(self.printer.jobs)
+        if self.session.state in offered and not self.session.resume():
+            raise ConsoleError(f"resume refused: {self.printer.errors[-1].text}")
+        if self.session.state is SessionState.PAUSED:
+            self.session.resume()
+        self._wait_job(jobs)
+
+    def _take_over(self, path: str) -> None:
+        lines = load_lines(path)
+        self.command("STATUS", timeout=5.0)
+        jobs = len(self.printer.jobs)
+        if not self.session.take_over_job(lines):
+            raise ConsoleError(f"resume refused: {self.printer.errors[-1].text}")
+        self._wait_job(jobs)
 
     def cmd_stop(self) -> None:
         self.session.stop()
@@ -182,16 +234,21 @@ class Console:
         jobs = len(self.printer.jobs)
         if not self.session.start_job(lines, start):
             raise ConsoleError(f"job refused: {self.printer.errors[-1].text}")
+        self._wait_job(jobs)
+
+    def _wait_job(self, jobs: int) -> None:
+        """Wait for the job started after ``jobs`` ended ones (answering its program stops);
+        print how it ended."""
         ended = lambda: len(self.printer.jobs) > jobs or self.session.state is SessionState.INTERRUPTED  # noqa: E731
         while not ended():
-            self.wait(lambda: ended() or bool(self.printer.stops), what="the job to end")
+            self.wait(lambda: ended() or bool(self.printer.stops), what="the job to end", through_loss=True)
             if self.printer.stops:
                 self.answer_stop(self.printer.stops.pop(0))
-        self.command("STATUS", timeout=5.0)
-        self.print_status()
         job = self.printer.jobs[-1] if len(self.printer.jobs) > jobs else None
         if job is None:
-            raise ConsoleError("job interrupted: link lost", 3)
+            raise ConsoleError("job interrupted: link lost (type resume when the link is back)", 3)
+        self.command("STATUS", timeout=5.0)
+        self.print_status()
         if not job.completed:
             raise ConsoleError(f"job failed at line {job.done + 1} of {job.total}: {job.reason}")
         print(f"job completed: {job.total} lines", file=self.out)
@@ -296,21 +353,36 @@ def main(argv: list[str] | None = None) -> int:
         return 3
     console = Console(transport, quiet=args.quiet, timeout=args.timeout, at_stops=args.at_stops,
                       from_line=args.from_line)
-    commands = split_commands(args.command) or (shlex.split(line) for line in sys.stdin)
+    given = split_commands(args.command)
     try:
         console.connect()
-        for words in commands:
-            if words:
-                console.do(words)
+        if given:
+            return run_commands(console, given, stop_at_error=True)
+        return run_commands(console, (shlex.split(line) for line in sys.stdin), stop_at_error=False)
     except ConsoleError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return exc.code
-    except (TypeError, IndexError) as exc:
-        print(f"error: bad command: {exc}", file=sys.stderr)
-        return 2
     finally:
         transport.close()
-    return 0
+
+
+def run_commands(console: Console, commands, stop_at_error: bool) -> int:
+    """Run each command; the exit status of the last failure (0 if none)."""
+    status = 0
+    for words in commands:
+        if not words:
+            continue
+        try:
+            console.do(words)
+        except ConsoleError as exc:
+            print(f"error: {exc}", file=sys.stderr)
+            status = exc.code
+        except (TypeError, IndexError, ValueError) as exc:
+            print(f"error: bad command {' '.join(words)!r}: {exc}", file=sys.stderr)
+            status = 2
+        if status and stop_at_error:
+            break
+    return status
 
 
 if __name__ == "__main__":

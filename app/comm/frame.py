@@ -262,6 +262,18 @@ _STATUS = re.compile(
 """A well-formed status body after ``S ``: the hot path; anything else is parsed field by field."""
 
 
+DECIMAL = re.compile(r"[+-]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)")
+"""The one number grammar of command arguments (docs/protocol.md): no exponent, no
+``_``, no ``inf``/``nan``, ASCII digits only."""
+
+
+def decimal(text: str, what: str) -> float:
+    """``text`` as a number of the strict grammar ``DECIMAL``; FrameError names ``what``."""
+    if not DECIMAL.fullmatch(text):
+        raise FrameError(f"{what} {text!r} is not a number")
+    return float(text)
+
+
 def _num(text: str, what: str) -> float:
     if not _NUM.fullmatch(text):
         raise FrameError(f"bad {what} {text!r}")

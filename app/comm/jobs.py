@@ -19,6 +19,8 @@ Each returns True if accepted; a refusal is reported with ``on_error`` and False
 
 from __future__ import annotations
 
+import math
+
 from app.comm import frame as fr
 from app.comm.events import CommandResult, ResumeOffer, StatusEvent
 from app.comm.listener import JOB_STATES, RECOVERY_STATES, SENDING_STATES, SessionState
@@ -42,6 +44,12 @@ def _refused_seq(text: str, default: int) -> int:
     """The seq an ``E -`` names as the first word of its text (the machine's), else ``default``."""
     first = text.split(" ", 1)[0]
     return int(first) if first.isdigit() else default
+
+
+def plain_number(value: float) -> str:
+    """``value`` in the protocol's number grammar (no exponent), to 0.0001."""
+    text = f"{value:.4f}".rstrip("0").rstrip(".")
+    return "0" if text in ("-0", "-") else text
 
 
 def device_lines(program) -> list[str]:
@@ -93,7 +101,11 @@ class JobControl:
         return self.submit("HOME", mode)
 
     def jog(self, axis: str, distance_mm: float, feed_mm_min: float) -> int:
-        return self.submit("JOG", axis.upper(), f"{distance_mm:g}", f"{feed_mm_min:g}")
+        """``JOG``; ValueError for a non-finite distance or feed (never sent as ``inf``)."""
+        for what, value in (("distance", distance_mm), ("feed", feed_mm_min)):
+            if not math.isfinite(value):
+                raise ValueError(f"jog {what} {value} is not a finite number")
+        return self.submit("JOG", axis.upper(), plain_number(distance_mm), plain_number(feed_mm_min))
 
     def pause(self) -> bool:
         """Feed hold now (real-time ``!``, repeated until the status shows HOLD)."""
@@ -125,6 +137,24 @@ class JobControl:
         if self.state is not S.RESUME_OFFERED or self.status is None:
             return self._refuse("NO_RESUME", msg("there is no interrupted job to resume"))
         seq = self.status.acc + 1
+        self._set_state(S.RESUMING)
+        self.submit("RESUME", "FROM", seq, then=lambda r: self._resumed(r, seq))
+        return True
+
+    def take_over_job(self, program) -> bool:
+        """Resume a job of ``program`` another client left open on this machine (same
+        boot, per the last status): ``RESUME FROM acc+1``, then the rest of its lines."""
+        lines = device_lines(program)
+        if not self._can_start(lines, "job"):
+            return False
+        status = self.status
+        if status is None or status.acc < 0 or status.acc >= len(lines) - 1:
+            return self._refuse("NO_RESUME", "the machine has no open job of these lines to resume")
+        self.lines = lines
+        self.stream = Stream.job(lines, self.rtt, status.free, boot=self.boot or "",
+                                 max_window=self.max_window)
+        self.stream.done = status.done
+        seq = status.acc + 1
         self._set_state(S.RESUMING)
         self.submit("RESUME", "FROM", seq, then=lambda r: self._resumed(r, seq))
         return True
@@ -240,7 +270,7 @@ class JobControl:
     def _on_finished(self, frame: fr.Finished, now: float) -> None:
         if self.stream is None or self.stream.kind != "job" or self.state not in SENDING_STATES:
             return
-        self.stream.window.on_ack(frame.seq, 0, now)
+        self.stream.window.on_ack(frame.seq, 0, now, timed=False)
         self._lines_finished(frame.seq, now)
 
     def _lines_finished(self, seq: int, now: float) -> None:
@@ -252,8 +282,11 @@ class JobControl:
     def _line_refused(self, frame: fr.Error) -> None:
         said = {"code": frame.code, "text": frame.text}
         reason = msg(_REFUSED if frame.text else _REFUSED_BARE, **said)
+        if self.stream is None or self.state is S.STOPPING:  # a frame still in flight
+            self._log("warning", msg("{reason} (no job running)", reason=reason))
+            return
         self._error("LINE_REFUSED", reason)
-        if self.stream is not None and self.state in JOB_STATES | SENDING_STATES:
+        if self.state in JOB_STATES | SENDING_STATES:
             seq = _refused_seq(frame.text, self.status.done + 1 if self.status else 0)
             line = self.stream.program_index(seq)
             reason = msg(_LINE_REFUSED if frame.text else _LINE_REFUSED_BARE, line=line, **said)

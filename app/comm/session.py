@@ -8,11 +8,12 @@ an ``OSError`` from it (pyserial's ``SerialException`` is one) is a link loss, n
 a crash. ``clock()`` gives seconds; inject a fake one for deterministic tests.
 
 Everything observable goes to the ``SessionListener`` as frozen events. Streams
-(``stream.py``) use the go-back-N credit window of ``window.py``; commands
+(``stream.py``) use the selective-repeat credit window of ``window.py``; commands
 (``commands.py``) carry one outstanding id retried with the same id; the link
-monitor (``heartbeat.py``) pings every second and calls the link degraded after 2 s
-and lost after 3 s of silence; real-time bytes (``realtime.py``) repeat every 100 ms
-until a status confirms them. Job recovery after a link loss: same boot id ->
+monitor (``heartbeat.py``) pings every second (also while a command is outstanding)
+and calls the link degraded after 2 s and lost after 3 s of silence; real-time
+bytes (``realtime.py``) repeat every 100 ms until a status confirms them. Job
+recovery after a link loss: same boot id ->
 ``RESUME_OFFERED`` (``resume_after_reconnect``); new boot id -> ``RESTART_REQUIRED``
 (home, then ``confirm_restart`` restarts at done+1 behind the modal preamble).
 """
@@ -176,12 +177,11 @@ class Session(JobControl):
         frames, timed_out = self.commands.due(now)
         for result in timed_out:
             self._command_done(result)
-        if not frames and self.link.ping_due(now):
-            ping = self.commands.heartbeat()
-            frames = [ping] if ping else []
+        if self.link.ping_due(now):
+            frames += self.commands.heartbeat(frames)
+            self.link.pinged(now)
         for command in frames:
             self._send(command)
-            self.link.pinged(now)
 
     # ------------------------------------------------------------------ real time
 

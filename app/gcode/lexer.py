@@ -8,7 +8,8 @@ a number (``X1 0.5`` is ``X10.5``); numbers ``1``, ``.5``, ``-0.``, ``+3``; comm
 ``/`` (block delete: the line is skipped); a ``*checksum`` suffix (ignored).
 
 Refused with the line and the 1-based column: ``#`` parameters, ``[`` expressions,
-o-words, an unclosed comment, a letter without a number, any other character.
+o-words, an unclosed comment, a letter without a number, any other character, and a
+number ``limits.word_problem`` refuses (too large, a negative feed or speed, ...).
 ``lex_line`` never raises. The fast path (``bulk.py``) reads the common shapes of
 line in bulk and hands every line it is unsure of to this module.
 """
@@ -20,6 +21,7 @@ from dataclasses import dataclass, field
 from app.i18n import msg
 
 from .diagnostics import Diagnostic
+from .limits import word_problem
 
 _SPACE = " \t\r"
 _DIGITS = "0123456789"
@@ -127,7 +129,11 @@ def lex_line(text: str, line_no: int) -> LexedLine:
                 return _fail(line_no, end, _SPECIAL[text[end]])
             if not _number_ok(token):
                 return _fail(line_no, i, msg("word {letter} has no number", letter=c.upper()))
-            words.append(Word(c.upper(), float(token), i + 1))
+            value = float(token)
+            problem = word_problem(c.upper(), value)
+            if problem:
+                return _fail(line_no, i, problem)
+            words.append(Word(c.upper(), value, i + 1))
             i = end
         else:
             return _fail(line_no, i, msg("unexpected character {char!r}", char=c))

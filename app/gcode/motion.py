@@ -22,6 +22,7 @@ from app.i18n import msg
 from .arcs import ijk_error, r_center
 from .cycles import run_cycle
 from .errors import LineError
+from .limits import dwell_problem, turns_problem
 from .ops import ARC_CCW, ARC_CW, DWELL, FEED, PLANE_AXES, PLANE_NAMES, RAPID, OpBuffer
 from .splines import run_spline
 from .state import State
@@ -47,6 +48,8 @@ def _dwell(state: State, params, line_no: int, ops: OpBuffer) -> None:
     seconds = params["P"].value
     if seconds < 0:
         raise LineError(params["P"].column, msg("G4 dwell time P must not be negative"))
+    if dwell_problem(seconds):
+        raise LineError(params["P"].column, dwell_problem(seconds))
     ops.add(line_no, DWELL, state.pos, value=seconds)
 
 
@@ -132,6 +135,8 @@ def _turns(params, clockwise: bool) -> int:
         p = params["P"].value
         if p != int(p) or p < 1:
             raise LineError(params["P"].column, msg("arc turns P must be a whole number >= 1"))
+        if turns_problem(p):
+            raise LineError(params["P"].column, turns_problem(p))
         turns = int(p)
     return -turns if clockwise else turns
 

@@ -1,7 +1,8 @@
 """Loading a program: text -> interpreted rows -> diagnostics, device lines, Toolpath.
 
 ``load(path)`` and ``load_text(text, name)`` never raise for bad input: unreadable,
-non-UTF-8 or binary files give a ``Program`` with one error; a file with errors loads
+non-regular, oversized, non-UTF-8 or binary files give a ``Program`` with one error
+(``reading.py``); a UTF-8 byte-order mark is skipped, CR-only line ends read as LF; a file with errors loads
 as far as it can (refused lines change nothing), so every error is listed at once.
 Lines are physical lines split at ``\\n`` (a ``\\r`` before it is dropped).
 ``source_lines`` (of a file), ``device_lines``, ``pauses`` and ``moves`` are computed
@@ -23,9 +24,11 @@ from app.profile import MachineProfile
 
 from . import bulk, checks, macro, normalize, runner
 from .diagnostics import ERROR, WARNING, Diagnostic, Report
+from .limits import program_checks
 from .moves import moves_of
 from .offsets import ACTIVE_SYSTEM
 from .ops import OpBuffer, Ops, Source
+from .reading import SourceError, clean_bytes, clean_text, read_source, text_problem
 from .render import render
 from .source import Lines
 from .state import State
@@ -170,6 +173,7 @@ def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfi
     the_plan = normalize.plan(ops, profile.motion.arc_tolerance_mm)
     toolpath = build(ops, the_plan.first, profile)
     checking.join()
+    program_checks(toolpath, profile, report)
     return Program(name, lines, report.finish(), ops, toolpath, profile, the_plan)
 
 
@@ -202,6 +206,7 @@ def load_text(text: str, name: str = "<text>", profile: MachineProfile | None = 
     profile = profile or MachineProfile()
     if "\x00" in text:
         return _empty(name, msg("not a text file (it contains NUL bytes)"), profile)
+    text = clean_text(text)
     data = [text.encode("utf-8", "replace")]  # a \r is a space to the fast path
     return _interpret(Lines(_split(text)), data, name, profile, tools, folder)
 
@@ -213,19 +218,12 @@ def load(path: str | Path, profile: MachineProfile | None = None, tools: dict | 
     path = Path(path)
     profile = profile or MachineProfile()
     try:
-        raw = path.read_bytes()
-    except OSError as exc:
-        message = msg("cannot read {path}: {error}", path=str(path), error=str(exc.strerror or exc))
-        return _empty(str(path), message, profile)
-    if b"\x00" in raw:
-        return _empty(str(path), msg("not a text file (it contains NUL bytes)"), profile)
-    if not raw.isascii():  # ASCII is UTF-8; anything else must decode
-        try:
-            raw.decode("utf-8")
-        except UnicodeDecodeError as exc:
-            line = raw.count(b"\n", 0, exc.start) + 1
-            return _empty(str(path), msg("not a UTF-8 text file (bad byte at line {line}, offset {offset})",
-                                         line=line, offset=exc.start), profile)
+        raw = clean_bytes(read_source(path))
+    except SourceError as exc:
+        return _empty(str(path), exc.args[0], profile)
+    problem = text_problem(raw)
+    if problem:
+        return _empty(str(path), problem, profile)
     lines = Lines(data=raw)  # split on first use, not here
     data = [raw]  # valid UTF-8: the bytes the fast path reads
     del raw

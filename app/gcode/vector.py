@@ -16,6 +16,7 @@ import numpy as np
 
 from .arcs import RADIUS_TOL, spiral_refused
 from .bulk import Scan
+from .limits import bad_rows
 from .motion import LIMIT_MM
 from .ops import ARC_CW, SPINDLE, OpBuffer
 from .state import State
@@ -67,7 +68,7 @@ class _Run:
         with np.errstate(invalid="ignore"):
             for c in "XYZIJ":
                 bad |= np.abs(self.v[c]) * self.scale > LIMIT_MM
-        return bad
+        return bad | bad_rows(self.v)
 
     def spindle(self, stop: int, state: State):
         """(event mask, rpm value) of M3/M5/S lines before ``stop``."""
@@ -134,6 +135,7 @@ def run(scan: Scan, a: int, b: int, state: State, ops: OpBuffer) -> tuple[State,
     moving = (r.has_axis[:stop] | r.arc[:stop]) & (r.to_be[:stop] >= 0)
     rows = np.flatnonzero(moving | event)
     end, ends, center, arc_bad = _geometry(r, stop, rows, state)
+    arc_bad |= (np.abs(ends) > LIMIT_MM).any(axis=1)  # G91 steps adding up: motion.py refuses them
     if arc_bad.any():
         cut = _first(arc_bad)
         stop, rows, ends, center = int(rows[cut]), rows[:cut], ends[:cut], center[:cut]

@@ -146,6 +146,11 @@ def load_program(path: Path, tolerance: float = 0.01, view_size=None, tools=None
 
 
 def _sniff(path: Path) -> None:
+    from app.gcode.reading import file_problem, looks_utf16
+
+    problem = file_problem(path) if path.exists() else None  # a FIFO or a device is never opened
+    if problem:
+        raise LoadError(problem)
     try:
         with path.open("rb") as file:
             head = file.read(SNIFF_BYTES)
@@ -155,6 +160,10 @@ def _sniff(path: Path) -> None:
     except OSError as exc:
         said = QCoreApplication.translate("Loader", "%1 cannot be opened: %2.")
         raise LoadError(fill(said, path, exc.strerror or exc)) from None
+    if looks_utf16(head):
+        said = QCoreApplication.translate("Loader",
+                                          "%1 is UTF-16 text: save it as UTF-8 (or plain ASCII) text.")
+        raise LoadError(fill(said, path.name))
     if b"\0" in head or _mostly_binary(head):
         said = QCoreApplication.translate("Loader",
                                           "%1 is not a G-code file (it holds binary data, such as an image).")

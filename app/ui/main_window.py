@@ -10,7 +10,15 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, QEvent, QSettings, QStandardPaths, Qt
+from PySide6.QtCore import (
+    QT_TRANSLATE_NOOP,
+    QByteArray,
+    QCoreApplication,
+    QEvent,
+    QSettings,
+    QStandardPaths,
+    Qt,
+)
 from PySide6.QtWidgets import QDockWidget, QMainWindow, QTabWidget, QWidget
 
 from app.gcode.tools import FILE_NAME as TOOLS_FILE
@@ -34,6 +42,8 @@ from app.ui.program.program_panel import ProgramPanel
 from app.ui.sd_panel import SdPanel
 from app.ui.settings.store import FILE_NAME, load_settings
 from app.ui.status_bar import JobStatusBar
+from app.ui.window_state import FILE_NAME as WINDOW_FILE
+from app.ui.window_state import load_window_state, save_window_state
 
 STATE_VERSION = 1
 DOCK_TITLES = {
@@ -143,11 +153,12 @@ class MainWindow(QMainWindow):
         self.docks["plot"].raise_()
         self.resize(1400, 900)
         self._sized = False
+        self._has_saved_layout = False
         self._default_state = self.saveState(STATE_VERSION)
 
     def showEvent(self, event) -> None:  # noqa: N802 (Qt override)
         super().showEvent(event)
-        if not self._sized and self.qsettings.value("state") is None:
+        if not self._sized and not self._has_saved_layout:
             self._sized = True
             side = [self.docks["program"], self.docks["controls"]]
             self.resizeDocks(side, [330, 370], Qt.Orientation.Horizontal)
@@ -208,17 +219,22 @@ class MainWindow(QMainWindow):
     # -- window state -----------------------------------------------------------------
 
     def restore_state(self) -> None:
-        geometry = self.qsettings.value("geometry")
-        state = self.qsettings.value("state")
-        if geometry is not None:
-            self.restoreGeometry(geometry)
-        if state is not None:
-            self.restoreState(state, STATE_VERSION)
+        """Geometry and docks from ``window.json``; a damaged file is set aside and named."""
+        saved = load_window_state(self.config_dir / WINDOW_FILE)
+        if saved.geometry is not None:
+            self.restoreGeometry(QByteArray(saved.geometry))
+        if saved.state is not None:
+            self._has_saved_layout = self.restoreState(QByteArray(saved.state), STATE_VERSION)
+        if saved.problem:
+            self.notifier.warning(self.tr("Window layout"), saved.problem)
 
     def save_state(self) -> None:
-        self.qsettings.setValue("geometry", self.saveGeometry())
-        self.qsettings.setValue("state", self.saveState(STATE_VERSION))
-        self.qsettings.sync()
+        """Write geometry and docks atomically; a failed write loses only this layout."""
+        try:
+            save_window_state(self.config_dir / WINDOW_FILE, bytes(self.saveGeometry().data()),
+                              bytes(self.saveState(STATE_VERSION).data()))
+        except OSError as exc:
+            self.status.showMessage(self.tr("Window layout not saved: %1").replace("%1", str(exc)))
 
     def reset_layout(self) -> None:
         self.restoreState(self._default_state, STATE_VERSION)

@@ -244,7 +244,8 @@ class MotionController(ControllerOps):
         a[_S["lo"]], a[_S["hi"]] = self._window(k, pressed)
         if not pressed:
             return
-        if self.state == "HOMING" and self.homing.on_switch(k, self.measured_mm[k]):
+        homing = self.homing if self.state == "HOMING" else None  # None: a stopped homing decelerating
+        if homing is not None and homing.on_switch(k, self.measured_mm[k]):
             return
         self._alarm("LIMIT", f"{AXES[k]} {'max' if k == 2 else 'min'}")
 

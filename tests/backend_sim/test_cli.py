@@ -5,7 +5,7 @@ from __future__ import annotations
 import serial
 
 from app.comm.frame import Finished
-from backend_sim.__main__ import _apply_faults, build_parser, main
+from backend_sim.__main__ import _apply_faults, build_parser, load_profile_for_sim
 from backend_sim.simulator import Simulator
 from tests.backend_sim.serial_host import SerialHost, start_sim, stop_sim
 
@@ -20,10 +20,10 @@ def test_fault_flags_set_seeded_rates_on_the_chosen_hop(tmp_path):
     assert sim.wires["usb_down"].faults.rates == {}
 
 
-def test_bad_profile_is_reported(tmp_path, capsys):
+def test_bad_profile_is_reported_and_its_default_used(tmp_path, capsys):
     bad = tmp_path / "bad.toml"
     bad.write_text("[axis]\nlead_mm = -3\n")
-    assert main(["--pty", "--profile", str(bad)]) == 2
+    assert load_profile_for_sim(str(bad)).axis.lead_mm == 8.0  # issue 14: the simulator still starts
     assert "lead_mm" in capsys.readouterr().err
 
 

@@ -202,7 +202,8 @@ def test_stop_under_a_full_queue(link):
 
 def test_feed_hold_in_noise_only_holds(link):
     lines = motion_program(30)
-    Tamper(link.sim, "usb_down", frame_of("D", 12), lambda line: b"~!~x\n" + line)
+    # a frame sent while the machine runs (the window of 16 sends the first 16 at once)
+    Tamper(link.sim, "usb_down", frame_of("D", 20), lambda line: b"~!~x\n" + line)
     start(link, lines)
     assert link.run_until(lambda: link.session.state is S.PAUSED, 30.0)
     link.run_for(2.0)

@@ -52,13 +52,14 @@ def test_urgent_command_goes_first_and_answers_match_ids():
     assert queue.on_answer(fr.Ok(stop.id, "STOP")).ok
 
 
-def test_heartbeat_is_skipped_while_a_command_is_retried():
+def test_heartbeat_goes_out_while_a_command_is_retried():
     queue = CommandQueue()
     queue.submit("HOME")
-    queue.due(0.0)
-    assert queue.heartbeat() is None
+    frames, _ = queue.due(0.0)
+    assert [c.verb for c in queue.heartbeat(frames)] == ["PING"]
+    assert queue.heartbeat([fr.Command(9, "STATUS")]) == []
     queue.on_answer(fr.Ok(1, "HOME"))
-    assert queue.heartbeat().verb == "PING"
+    assert queue.heartbeat([])[0].verb == "PING"
 
 
 def test_link_monitor_states():

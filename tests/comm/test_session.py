@@ -21,11 +21,11 @@ def streaming(lines=LINES, free=16):
 # ---------------------------------------------------------------------- credit window
 
 
-def test_window_is_min_of_free_and_eight():
-    h = streaming(free=16)
-    assert h.take_data() == list(range(8))
-    h.reply(fr.Ack(1, 16))
-    assert h.take_data() == [8, 9]
+def test_window_is_min_of_free_and_sixteen():
+    h = streaming(free=20)
+    assert h.take_data() == list(range(16))
+    h.reply(fr.Ack(1, 20))
+    assert h.take_data() == [16, 17]
 
 
 def test_window_respects_a_small_free_count():
@@ -52,32 +52,32 @@ def test_status_credit_unblocks_a_full_queue():
 # ---------------------------------------------------------------------- go-back-N
 
 
-def test_nak_resends_from_its_seq_and_ignores_repeats():
+def test_nak_resends_only_its_seq_and_ignores_repeats():
     h = streaming()
     h.take()
     h.clock.now += 0.03
     h.reply(fr.Ack(2, 16), fr.Nak(3))
-    assert h.take_data() == [3, 4, 5, 6, 7, 8, 9, 10]
+    assert h.take_data() == [3, 16, 17, 18]  # selective repeat: 3 alone, then new frames
     h.reply(fr.Nak(3))  # caused by frames already in flight
     assert h.take_data() == []
 
 
-def test_timeout_resends_the_whole_unacked_window():
+def test_timeout_resends_the_first_unacked_frame_alone():
     h = streaming()
     h.take()
     h.advance(0.49)
     assert h.take_data() == []
     h.advance(0.03)
-    assert h.take_data() == list(range(8))
+    assert h.take_data() == [0]  # the machine keeps what lies above a gap
 
 
-def test_late_ack_after_a_go_back_is_honoured():
+def test_late_ack_after_a_probe_is_honoured():
     h = streaming()
     h.take()
     h.advance(0.52)
-    assert h.take_data() == list(range(8))
+    assert h.take_data() == [0]
     h.reply(fr.Ack(7, 16))
-    assert h.take_data() == list(range(8, 16))
+    assert h.take_data() == list(range(16, 24))
 
 
 def test_garbled_replies_are_never_acks():
@@ -98,7 +98,8 @@ def test_rtt_timeout_maths():
     assert rtt.timeout == 0.5
     rtt.sample(0.02)
     assert rtt.srtt == 0.02 and rtt.rttvar == 0.01
-    assert rtt.timeout == pytest.approx(0.1)  # max(100 ms, 0.02 + 4 * 0.01)
+    assert rtt.timeout == pytest.approx(0.06)  # max(30 ms, 0.02 + 4 * 0.01)
+    assert rtt.probe_timeout == pytest.approx(0.04)  # min(timeout, max(15 ms, 2 * 0.02))
     rtt.sample(0.2)
     assert rtt.srtt == pytest.approx(0.0425)
     assert rtt.rttvar == pytest.approx(0.0525)
@@ -133,12 +134,14 @@ def test_ten_retries_of_one_seq_abort_the_job_with_a_named_error():
 
 def test_ping_every_second_and_link_states():
     h = Harness()
+    start = h.clock.now
     pings = []
     for _ in range(350):
         h.advance(0.01)
         pings += [h.clock.now for f in h.take() if isinstance(f, fr.Command) and f.verb == "PING"]
-    assert len(pings) == 3
-    assert pings[1] - pings[0] == pytest.approx(1.0, abs=0.011)
+    assert pings[0] - start == pytest.approx(1.0, abs=0.011)  # a second after the last answer
+    silent = [b - a for a, b in zip(pings, pings[1:], strict=False)]
+    assert silent and all(d == pytest.approx(0.25, abs=0.011) for d in silent)  # 4 a second once silent
     states = [(e.state, round(e.silent_s, 2)) for e in h.rec.of("on_link_changed")]
     assert [s for s, _ in states][-2:] == ["DEGRADED", "LOST"]
     assert states[-2][1] == pytest.approx(2.0, abs=0.011) and states[-1][1] == pytest.approx(3.0, abs=0.011)
@@ -198,7 +201,9 @@ def test_command_retried_with_the_same_id_until_answered():
     for _ in range(200):
         h.advance(0.01)
         sent += [f for f in h.take() if isinstance(f, fr.Command)]
-    assert {c.id for c in sent} == {cid} and len(sent) >= 3
+    homes = [c for c in sent if c.verb == "HOME"]
+    assert {c.id for c in homes} == {cid} and len(homes) >= 3
+    assert {c.verb for c in sent} == {"HOME", "PING"}  # the heartbeat carries on beside it
     h.reply(fr.Ok(cid, "HOME", "NORMAL"))
     result = h.rec.last("on_command_done")
     assert result.ok and result.id == cid and result.verb == "HOME"
@@ -315,7 +320,7 @@ def test_same_boot_offers_resume_from_acc_plus_one():
     cmd = h.command("RESUME")
     assert cmd.args == ("FROM", "6")
     h.reply(fr.Ok(cmd.id, "RESUME", "FROM 6"))
-    assert h.take_data() == list(range(6, 14))
+    assert h.take_data() == list(range(6, 22))  # the window of 16
 
 
 def test_new_boot_requires_home_and_confirmation():

@@ -1,6 +1,8 @@
 """Bad inputs end in a clear message and no crash."""
 
 import json
+import os
+from pathlib import Path
 
 from app.gcode import load
 from app.profile import MachineProfile
@@ -31,6 +33,19 @@ def test_prose_is_not_gcode(qtbot, window, notifier, tmp_path):
 
 def test_missing_file(qtbot, window, tmp_path):
     assert "does not exist" in _failed_open(qtbot, window, tmp_path / "gone.ngc")
+
+
+def test_a_fifo_or_device_is_refused_without_blocking(qtbot, window, tmp_path):
+    fifo = tmp_path / "pipe.ngc"
+    os.mkfifo(fifo)
+    assert "not a regular file" in _failed_open(qtbot, window, fifo)
+    assert "not a regular file" in _failed_open(qtbot, window, Path("/dev/zero"))
+
+
+def test_utf16_file_gets_the_encoding_message(qtbot, window, tmp_path):
+    path = tmp_path / "wide.ngc"
+    path.write_bytes("G0 X1\nG0 X2\n".encode("utf-16"))
+    assert "UTF-16" in _failed_open(qtbot, window, path)
 
 
 def test_file_with_errors_is_shown_not_run(qtbot, window, notifier, tmp_path):

@@ -20,7 +20,7 @@ from PySide6.QtWidgets import (
 )
 
 from app.i18n import localize
-from app.profile import MachineProfile, ProfileError, check_value
+from app.profile import MachineProfile, ProfileError, check_value, consistency_problems
 from app.ui.language import LANGUAGES, current_language
 from app.ui.numbers import fill, general, parse_number
 from app.ui.settings.labels import field_doc, field_label
@@ -128,7 +128,8 @@ class SettingsDialog(QDialog):
         for (section, key), edit in self.edits.items():
             try:
                 title = QCoreApplication.translate("SettingsDialog", TITLES[section])
-                value = check_value(getattr(self.profile, section), key, parse_number(edit.text()), title)
+                value = check_value(getattr(self.profile, section), key, parse_number(edit.text()), title,
+                                    text=True)
                 changes.setdefault(section, {})[key] = value
                 edit.setStyleSheet("")
             except ProfileError as exc:
@@ -137,7 +138,9 @@ class SettingsDialog(QDialog):
         if problems:
             return None, problems
         sections = {name: replace(getattr(self.profile, name), **vals) for name, vals in changes.items()}
-        return replace(self.profile, **sections), []
+        profile = replace(self.profile, **sections)
+        rules = consistency_problems(profile)
+        return (None, rules) if rules else (profile, [])
 
     def accept(self) -> None:
         profile, problems = self.checked_profile()

@@ -2,8 +2,9 @@
 arc tolerance), as JSON in the per-user config folder. No Qt here: the caller passes
 the path (``QStandardPaths.AppConfigLocation`` in the GUI, ``tmp_path`` in tests).
 
-``load_settings(path)`` never raises: a missing file gives the defaults; a corrupt or
-out-of-range file gives the defaults and a message saying what was wrong.
+``load_settings(path)`` never raises: a missing file gives the defaults; a corrupt
+file gives the defaults, a bad value its default, with a message saying what was
+wrong (file, key, rule); ``save_settings`` writes atomically (``app.atomic``).
 """
 
 from __future__ import annotations
@@ -12,8 +13,9 @@ import json
 from dataclasses import dataclass
 from pathlib import Path
 
-from app.i18n import msg
-from app.profile import MachineProfile, ProfileError, with_overrides
+from app.atomic import write_atomic
+from app.i18n import joined, msg
+from app.profile import MachineProfile, ProfileError, parse_file, read_overrides
 
 VERSION = 1
 FILE_NAME = "settings.json"
@@ -26,6 +28,9 @@ class Loaded:
 
 
 def load_settings(path: Path) -> Loaded:
+    """The saved profile; never raises. Each bad value is named (file, key, rule) and
+    its default used; a file that is no settings at all gives the defaults. The file is
+    never written here: it stays as it is until the operator saves."""
     try:
         text = path.read_text(encoding="utf-8")
     except FileNotFoundError:
@@ -34,11 +39,13 @@ def load_settings(path: Path) -> Loaded:
         problem = msg("{path}: cannot read ({error}); using the defaults", path=str(path), error=str(exc))
         return Loaded(MachineProfile(), problem)
     try:
-        data = _migrate(json.loads(text))
-        return Loaded(with_overrides(MachineProfile(), data["profile"], str(path)))
-    except (json.JSONDecodeError, ProfileError, KeyError, TypeError, ValueError) as exc:
-        return Loaded(MachineProfile(), msg("The settings file is damaged ({error}); using the defaults.",
-                                            error=str(exc)))
+        data = _migrate(parse_file(path, text))
+    except (ProfileError, ValueError) as exc:
+        damaged = msg("The settings file {path} is damaged ({error}); using the defaults.", path=str(path),
+                      error=exc.args[0] if exc.args else str(exc))
+        return Loaded(MachineProfile(), damaged)
+    read = read_overrides(MachineProfile(), data["profile"], str(path))
+    return Loaded(read.profile, joined(read.problems))
 
 
 def _migrate(data) -> dict:
@@ -49,17 +56,15 @@ def _migrate(data) -> dict:
     if version == 0:
         return {"version": VERSION, "profile": data}
     if version != VERSION:
-        raise ValueError(f"unknown settings version {version!r}")
+        raise ValueError(msg("unknown settings version {version!r}", version=version))
     if not isinstance(data.get("profile"), dict):
         raise ValueError("no 'profile' table")
     return data
 
 
 def save_settings(path: Path, profile: MachineProfile) -> None:
-    path.parent.mkdir(parents=True, exist_ok=True)
-    tmp = path.with_suffix(".tmp")
-    tmp.write_text(json.dumps({"version": VERSION, "profile": profile.to_dict()}, indent=2), encoding="utf-8")
-    tmp.replace(path)
+    """Write the profile atomically (a crash mid-write keeps the old file)."""
+    write_atomic(path, json.dumps({"version": VERSION, "profile": profile.to_dict()}, indent=2))
 
 
 # Profile fields the machine takes with ``SET <name> <value>`` (per axis for the PID).

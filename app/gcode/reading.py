@@ -1,0 +1,122 @@
+"""Reading a program's bytes safely: only regular files, a size limit, one encoding.
+
+``read_source(path)`` returns the bytes of a regular file of at most
+``limits.MAX_FILE_BYTES`` (a FIFO, a device such as ``/dev/zero`` or a folder is
+refused before it is opened, so nothing blocks or fills memory). ``text_problem``
+says why bytes are not a program's text (UTF-16, NUL bytes, not UTF-8 with the
+position of the first bad byte), ``clean_bytes``/``clean_text`` drop a UTF-8
+byte-order mark and turn CR-only line ends (old Mac files) into LF. Errors are
+``SourceError`` with a message for the operator.
+"""
+
+from __future__ import annotations
+
+import os
+import stat
+from pathlib import Path
+
+from app.i18n import msg
+
+from .limits import MAX_FILE_BYTES
+
+BOM = b"\xef\xbb\xbf"
+UTF16_BOMS = (b"\xff\xfe", b"\xfe\xff")
+SAVE_AS = msg("save it as UTF-8 (or plain ASCII) text")
+
+
+class SourceError(ValueError):
+    """A file that cannot be read as a program; ``str()`` is the operator's message."""
+
+
+def _size_text(n: int) -> str:
+    return msg("{size:.0f} MiB", size=n / (1 << 20)) if n >= 1 << 20 else msg("{count} bytes", count=n)
+
+
+LIMIT_TEXT = msg("files up to {size} MiB can be loaded", size=MAX_FILE_BYTES // (1 << 20))
+
+
+def _not_regular(path) -> str:
+    return msg("{path} is not a regular file (a folder, device or pipe)", path=str(path))
+
+
+def _unreadable(path, exc: OSError) -> str:
+    return msg("cannot read {path}: {error}", path=str(path), error=str(exc.strerror or exc))
+
+
+def file_problem(path: str | Path) -> str | None:
+    """Why ``path`` cannot be opened as a program (without opening it), or None."""
+    try:
+        info = os.stat(path)
+    except OSError as exc:
+        return _unreadable(path, exc)
+    if not stat.S_ISREG(info.st_mode):
+        return _not_regular(path)
+    if info.st_size > MAX_FILE_BYTES:
+        return msg("{path} is {size}: {limit}", path=str(path), size=_size_text(info.st_size),
+                   limit=LIMIT_TEXT)
+    return None
+
+
+def read_source(path: str | Path) -> bytes:
+    """The bytes of ``path`` if it is a regular file within the size limit; else SourceError."""
+    problem = file_problem(path)
+    if problem:
+        raise SourceError(problem)
+    try:
+        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))  # never waits on a swapped-in FIFO
+        with os.fdopen(fd, "rb") as file:
+            if not stat.S_ISREG(os.fstat(file.fileno()).st_mode):
+                raise SourceError(_not_regular(path))
+            data = file.read(MAX_FILE_BYTES + 1)
+    except OSError as exc:
+        raise SourceError(_unreadable(path, exc)) from None
+    if len(data) > MAX_FILE_BYTES:
+        raise SourceError(msg("{path} is more than {size}: {limit}", path=str(path),
+                              size=_size_text(MAX_FILE_BYTES), limit=LIMIT_TEXT))
+    return data
+
+
+def looks_utf16(raw: bytes) -> bool:
+    """A UTF-16 byte-order mark, or ASCII text with every other byte 0."""
+    if raw.startswith(UTF16_BOMS):
+        return True
+    head = raw[:512]
+    zeros_even, zeros_odd = head[0::2].count(0), head[1::2].count(0)
+    return len(head) >= 4 and max(zeros_even, zeros_odd) > len(head) // 4 and min(zeros_even, zeros_odd) == 0
+
+
+def text_problem(raw: bytes) -> str | None:
+    """Why ``raw`` (BOM already dropped) is not UTF-8 program text, or None."""
+    if looks_utf16(raw):
+        return msg("the file is UTF-16 text: {advice}", advice=SAVE_AS)
+    if b"\x00" in raw:
+        return msg("not a text file (it contains NUL bytes)")
+    if raw.isascii():
+        return None
+    try:
+        raw.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        line = raw.count(b"\n", 0, exc.start) + 1
+        column = exc.start - (raw.rfind(b"\n", 0, exc.start) + 1) + 1
+        return msg("the file is not UTF-8 text (byte 0x{byte:02X} at line {line}, column {column}; "
+                   "Latin-1 or Windows-1252?): {advice}", byte=raw[exc.start], line=line, column=column,
+                   advice=SAVE_AS)
+    return None
+
+
+def clean_bytes(raw: bytes) -> bytes:
+    """``raw`` without a UTF-8 byte-order mark, with CR-only line ends made LF."""
+    if raw.startswith(BOM):
+        raw = raw[len(BOM):]
+    if b"\r" in raw and raw.count(b"\r") != raw.count(b"\r\n"):
+        raw = raw.replace(b"\r\n", b"\n").replace(b"\r", b"\n")
+    return raw
+
+
+def clean_text(text: str) -> str:
+    """``text`` without a byte-order mark, with CR-only line ends made LF."""
+    if text.startswith("\ufeff"):
+        text = text[1:]
+    if "\r" in text and text.count("\r") != text.count("\r\n"):
+        text = text.replace("\r\n", "\n").replace("\r", "\n")
+    return text
