@@ -536,6 +536,10 @@
         <translation>Không mở được %1: %2.</translation>
     </message>
     <message>
+        <source>%1 is UTF-16 text: save it as UTF-8 (or plain ASCII) text.</source>
+        <translation>%1 là văn bản UTF-16: hãy lưu lại dưới dạng văn bản UTF-8 (hoặc ASCII thuần).</translation>
+    </message>
+    <message>
         <source>%1 is not a G-code file (it holds binary data, such as an image).</source>
         <translation>%1 không phải file G-code (nó chứa dữ liệu nhị phân, ví dụ một hình ảnh).</translation>
     </message>
@@ -877,6 +881,14 @@
     <message>
         <source>Loading %1…</source>
         <translation>Đang tải %1…</translation>
+    </message>
+    <message>
+        <source>Window layout</source>
+        <translation>Bố cục cửa sổ</translation>
+    </message>
+    <message>
+        <source>Window layout not saved: %1</source>
+        <translation>Chưa lưu được bố cục cửa sổ: %1</translation>
     </message>
 </context>
 <context>
