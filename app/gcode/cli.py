@@ -21,6 +21,7 @@ from pathlib import Path
 
 import numpy as np
 
+from . import workers
 from .moves import to_jsonl
 from .program import Program, load
 
@@ -31,7 +32,7 @@ def _summary(p: Program) -> str:
     minutes, seconds = divmod(tp.estimated_time, 60)
     rows = [
         f"file: {p.name}",
-        f"lines: {len(p.source_lines)}  device lines: {p.plan.total}  moves: {len(tp)}",
+        f"lines: {len(p.lines)}  device lines: {p.plan.total}  moves: {len(tp)}",
         "bounds: " + "  ".join(f"{a} {lo:.3f}..{hi:.3f}" for a, lo, hi in zip("XYZ", low, high, strict=True)),
         f"cut length: {tp.cut_length:.1f} mm  rapid length: {tp.rapid_length:.1f} mm",
         f"estimated time: {int(minutes)} min {seconds:.0f} s",
@@ -106,6 +107,7 @@ def main(argv: list[str] | None = None) -> int:
     args = parser.parse_args(argv)
     if args.trace and args.command != "expand":
         parser.error("--trace goes with expand")
+    workers.set_enabled(False)  # a one-shot process: starting the helper costs more than it saves
     try:
         program = load(args.file)
         return _expand(program, args.trace) if args.command == "expand" else COMMANDS[args.command](program)

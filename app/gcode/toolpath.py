@@ -12,7 +12,6 @@ seconds. ``polyline(tolerance)`` gives drawable points with arcs as chords.
 
 from __future__ import annotations
 
-from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 from functools import cached_property
 
@@ -121,6 +120,8 @@ class Toolpath:
 
         if len(arcs) < PARALLEL_ARCS:
             return of(arcs)
+        from concurrent.futures import ThreadPoolExecutor  # only here: a CLI start-up need not load it
+
         half = len(arcs) // 2
         with ThreadPoolExecutor(max_workers=2, thread_name_prefix="chords") as pool:
             (pts_a, owner_a), (pts_b, owner_b) = pool.map(of, (arcs[:half], arcs[half:]))
