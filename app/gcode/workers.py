@@ -20,6 +20,7 @@ opens, the benchmark before timing). It is shut down when the interpreter exits.
 
 from __future__ import annotations
 
+import atexit
 import os
 import sys
 import threading
@@ -83,6 +84,7 @@ def _start() -> None:
         if not _disabled:
             _pool = pool
             _ready.set()
+            atexit.register(_drop, pool)  # before the late-imported pool modules are torn down
     if _pool is not pool:  # forbidden while it started
         pool.shutdown(wait=False)
 
