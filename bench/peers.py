@@ -25,12 +25,14 @@ PACKAGES = ("gcode-toolpath@3.0.0", "gcode-parser@2.2.0")
 
 @dataclass(frozen=True)
 class Run:
-    """One finished process: wall seconds, peak resident MB, exit status, its output."""
+    """One finished process: wall seconds, peak resident MB, exit status, its output,
+    CPU seconds (user + system; a busy machine stretches wall time, not this)."""
 
     wall: float
     peak_mb: float
     status: int
     out: str
+    cpu: float = 0.0
 
 
 def measure(argv: list[str], cwd: Path = ROOT, env: dict | None = None) -> Run:
@@ -41,7 +43,8 @@ def measure(argv: list[str], cwd: Path = ROOT, env: dict | None = None) -> Run:
     _, status, usage = os.wait4(proc.pid, 0)
     wall = time.perf_counter() - started
     proc.returncode = os.waitstatus_to_exitcode(status)
-    return Run(wall, usage.ru_maxrss / 1024, proc.returncode, out.decode(errors="replace"))
+    cpu = usage.ru_utime + usage.ru_stime
+    return Run(wall, usage.ru_maxrss / 1024, proc.returncode, out.decode(errors="replace"), cpu)
 
 
 def median_of(n: int, argv: list[str], **kwargs) -> tuple[float, float, list[Run]]:
