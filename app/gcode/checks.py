@@ -21,6 +21,8 @@ from .diagnostics import ERROR, Diagnostic, Report
 from .lexer import lex_line
 from .ops import ARC_CCW, ARC_CW, FEED, PLANE_AXES, SPINDLE, Ops
 
+BLOCK = 1 << 16  # rows the envelope check takes at a time
+
 
 def _column(lines: list[str], line_no: int, letter: str) -> int:
     words = lex_line(lines[line_no - 1], line_no).words
@@ -76,26 +78,43 @@ def _limits(profile: MachineProfile, offset=None) -> np.ndarray:
     return np.array(profile.travel.limits()) - offset[:, None]
 
 
-def _candidates(ops: Ops, limits: np.ndarray) -> np.ndarray:
-    """Moves that may leave the travel: an end outside, or an arc whose circle reaches out."""
-    kind = ops.kind
+def _candidates(ops: Ops, limits: np.ndarray, first: int, stop: int) -> np.ndarray:
+    """Moves among rows ``first..stop`` that may leave the travel: an end outside, or an
+    arc whose circle reaches out."""
+    kind, end = ops.kind[first:stop], ops.end[first:stop]
     out = np.zeros(len(kind), bool)
     for axis in range(3):
-        out |= (ops.end[:, axis] < limits[axis, 0]) | (ops.end[:, axis] > limits[axis, 1])
+        out |= (end[:, axis] < limits[axis, 0]) | (end[:, axis] > limits[axis, 1])
     out &= kind <= ARC_CCW
     arcs = np.flatnonzero((kind == ARC_CW) | (kind == ARC_CCW))
-    out[arcs[_may_bulge_out(ops, arcs, limits)]] = True
-    return np.flatnonzero(out)
+    out[arcs[_may_bulge_out(ops, arcs + first, limits)]] = True
+    return np.flatnonzero(out) + first
 
 
 def _violations(ops: Ops, limits: np.ndarray, shown: int = 1):
     """Per axis and direction past ``limits``: (axis name, sign, limit, rows, values), in
     work coordinates, rows in program order. Every row is found; the values are exact for
     the first ``shown`` rows of each (the arcs' quadrant points are worked out only for
-    arcs the ends of which do not already decide, and for those shown)."""
-    moves = _candidates(ops, limits)
+    arcs the ends of which do not already decide, and for those shown). Rows are taken
+    ``BLOCK`` at a time, so the temporaries stay small whatever the program's size."""
+    found: dict[tuple[int, str], tuple[float, list, list]] = {}
+    for first in range(0, len(ops), BLOCK):
+        for axis, sign, limit, rows, values in _block(ops, limits, shown, first, first + BLOCK):
+            _, all_rows, all_values = found.setdefault((axis, sign), (limit, [], []))
+            all_rows.append(rows)
+            all_values.append(values)
+    for axis in range(3):
+        for sign in "+-":
+            if (axis, sign) in found:
+                limit, rows, values = found[axis, sign]
+                yield "XYZ"[axis], sign, limit, np.concatenate(rows), np.concatenate(values)
+
+
+def _block(ops: Ops, limits: np.ndarray, shown: int, first: int, stop: int) -> list:
+    """``_violations`` of rows ``first..stop``: (axis, sign, limit, rows, values)."""
+    moves = _candidates(ops, limits, first, stop)
     if not len(moves):
-        return
+        return []
     end, start = ops.end.take(moves, axis=0), ops.starts().take(moves, axis=0)
     still = end == start  # an axis a move leaves alone is not news
     low, high = np.where(still, np.inf, end), np.where(still, -np.inf, end)
@@ -117,10 +136,10 @@ def _violations(ops: Ops, limits: np.ndarray, shown: int = 1):
             if len(hit):
                 found.append((axis, sign, limit, hit))
     if found:
-        first = np.unique(np.concatenate([hit[:shown] for *_, hit in found]))
-        _exact_arcs(ops, moves, first[~exact[first]], low, high, exact)
-    for axis, sign, limit, hit in found:
-        yield "XYZ"[axis], sign, limit, moves[hit], (high if sign == "+" else low)[hit, axis]
+        firsts = np.unique(np.concatenate([hit[:shown] for *_, hit in found]))
+        _exact_arcs(ops, moves, firsts[~exact[firsts]], low, high, exact)
+    return [(axis, sign, limit, moves[hit], (high if sign == "+" else low)[hit, axis])
+            for axis, sign, limit, hit in found]
 
 
 def _exact_arcs(ops: Ops, moves: np.ndarray, rows: np.ndarray, low, high, exact) -> None:
