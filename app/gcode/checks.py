@@ -116,14 +116,17 @@ def _block(ops: Ops, limits: np.ndarray, shown: int, first: int, stop: int) -> l
     if not len(moves):
         return []
     end, start = ops.end.take(moves, axis=0), ops.starts().take(moves, axis=0)
-    still = end == start  # an axis a move leaves alone is not news
-    low, high = np.where(still, np.inf, end), np.where(still, -np.inf, end)
-    arcs = np.flatnonzero((ops.kind[moves] == ARC_CW) | (ops.kind[moves] == ARC_CCW))
+    kind = ops.kind[moves]
+    is_arc = (kind == ARC_CW) | (kind == ARC_CCW)
+    line_still = (end == start) & ~is_arc[:, None]  # an axis a line leaves alone is not news
+    low, high = np.where(line_still, np.inf, end), np.where(line_still, -np.inf, end)
+    np.minimum(low, start, out=low, where=is_arc[:, None])  # an arc: the box of its ends,
+    np.maximum(high, start, out=high, where=is_arc[:, None])  # a bound of the arc's box
+    arcs = np.flatnonzero(is_arc)
     exact = np.ones(len(moves), bool)
     if len(arcs):
         arc_start, arc_end = start.take(arcs, axis=0), end.take(arcs, axis=0)
-        arc_low, arc_high = np.minimum(arc_start, arc_end), np.maximum(arc_start, arc_end)
-        low[arcs], high[arcs] = arc_low, arc_high  # the box of the ends: a bound of the arc's box
+        arc_low, arc_high = low.take(arcs, axis=0), high.take(arcs, axis=0)
         reach_low, reach_high = _circle_reach(ops, moves[arcs], arc_start, arc_end)
         lo, hi = limits[:, 0] - 1e-9, limits[:, 1] + 1e-9
         open_ = ((arc_high <= hi) & (reach_high > hi)) | ((arc_low >= lo) & (reach_low < lo))

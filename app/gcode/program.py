@@ -174,6 +174,7 @@ def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfi
     the_plan = normalize.plan(ops, profile.motion.arc_tolerance_mm)
     toolpath = build(ops, the_plan.first, profile)
     checking.join()
+    ops._starts = None  # the Toolpath has its own copy of the moves' starts; a later caller recomputes them
     return Program(name, lines, report.finish(), ops, toolpath, profile, the_plan)
 
 
