@@ -88,6 +88,17 @@ def _expand(p: Program, trace: bool = False) -> int:
     return 1 if p.errors else 0
 
 
+def _load(path: str) -> Program:
+    """``load`` without the helper process: for a one-shot run its start-up costs more
+    than the part of the scan it would take over (the setting is restored after)."""
+    was = workers.enabled()
+    workers.set_enabled(False)
+    try:
+        return load(path)
+    finally:
+        workers.set_enabled(was)
+
+
 COMMANDS = {"check": _check, "normalize": _normalize, "moves": _moves, "expand": _expand}
 
 
@@ -107,9 +118,8 @@ def main(argv: list[str] | None = None) -> int:
     args = parser.parse_args(argv)
     if args.trace and args.command != "expand":
         parser.error("--trace goes with expand")
-    workers.set_enabled(False)  # a one-shot process: starting the helper costs more than it saves
     try:
-        program = load(args.file)
+        program = _load(args.file)
         return _expand(program, args.trace) if args.command == "expand" else COMMANDS[args.command](program)
     except BrokenPipeError:
         return 0

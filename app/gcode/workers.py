@@ -145,6 +145,11 @@ def helper_pids() -> list[int]:
     return list(getattr(pool, "_processes", None) or {}) if pool is not None else []
 
 
+def enabled() -> bool:
+    """False once the helper is forbidden (``set_enabled``) or found unusable."""
+    return not _disabled
+
+
 def set_enabled(enabled: bool) -> None:
     """Allow or forbid the helper (tests compare both; a forbidden one is shut down)."""
     global _disabled
