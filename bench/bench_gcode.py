@@ -1,30 +1,36 @@
-"""G-code load benchmark: 1,000,000+ lines -> Program with Toolpath arrays.
+"""G-code load benchmark: 1,000,000+ lines -> Program with Toolpath arrays (issue 13).
 
-Builds (or reuses) ``bench/data/big.ngc`` from shifted copies of the Inkscape samples
-in ``resources/samples/*.ngc`` (each copy moved a little in X and Y, its ``%`` and
-``M2``/``M30`` lines dropped, one ``M2`` at the end), then prints: the best of three
-wall-clock times of ``app.gcode.load`` (Toolpath included) on one core (the helper
-process of ``app.gcode.workers`` off) and with the helper scanning part of the file
-on the second core (started and ready before timing, as the GUI does on start), the
-CPU time of each stage of one load, the peak resident memory of a fresh process doing
-one load (and of its helper), the time to render the device lines (done on first
-use), and the time PyPI ``gcodeparser`` takes to parse the same file, with the
-ratios. Figures are printed, never asserted.
+Builds (or reuses) two files in ``bench/data/`` from shifted copies of the Inkscape
+samples in ``resources/samples/*.ngc`` (their ``%`` and ``M2``/``M30`` lines dropped,
+one ``M2`` at the end): ``far.ngc``, nine copies in ten moved 200-680 mm, far outside
+the 150 mm travel, and ``big.ngc``, copies moved by up to 4.5 mm, inside it. For each:
+``cnc-gcode check`` as a whole fresh process (median of 5: wall, CPU and peak RSS by
+``wait4``), paired with CNCjs's ``gcode-toolpath`` (npm, when ``node`` is there) on the
+same file, then ``gcode-parser`` and PyPI ``gcodeparser`` once, the ratios, the CPU
+time of each stage of one load, and the window's figures from ``bench_ui`` (first
+picture after Open, pan/zoom, timer lateness while the rest loads). Then a 10,000-line
+file and a bare ``import app.gcode.cli`` as whole processes, and in one process: load
+with and without the helper process, peak memory, device lines. The machine may be
+shared: compare CPU times and medians. Figures are printed, never asserted.
 """
 
 from __future__ import annotations
 
 import os
 import re
+import statistics
 import subprocess
 import sys
 import time
 from functools import partial
 from pathlib import Path
 
+from bench import peers
+
 ROOT = Path(__file__).resolve().parents[1]
 DATA = ROOT / "bench" / "data"
 BIG = DATA / "big.ngc"
+FAR = DATA / "far.ngc"
 TARGET_LINES = 1_000_000
 _AXIS = re.compile(r"([XY])(-?\d*\.?\d+)")
 _DROP = re.compile(r"^\s*(%|M0?2\b|M30\b)", re.IGNORECASE)
@@ -58,25 +64,31 @@ def _generated() -> str:
     return "\n".join(rows) + "\n"
 
 
-def build() -> tuple[Path, str]:
-    """The big file (built once, then reused) and a description of its origin."""
+def build(far: bool = False) -> tuple[Path, str]:
+    """The big file (built once, then reused) and a description of its origin.
+
+    ``far=False`` (``big.ngc``): copies moved by up to 4.5 mm, inside the travel.
+    ``far=True`` (``far.ngc``): nine copies in ten moved 200-680 mm in X and Y, far
+    outside the 150 mm travel (so the checks' out-of-travel branch works on most rows)."""
     texts, origin = _sources()
-    if BIG.exists() and sum(1 for _ in BIG.open()) >= TARGET_LINES:
-        return BIG, origin + " (reused)"
+    path = FAR if far else BIG
+    if path.exists() and sum(1 for _ in path.open()) >= TARGET_LINES:
+        return path, origin + " (reused)"
     DATA.mkdir(parents=True, exist_ok=True)
     out, count, copy = [], 0, 0
     while count < TARGET_LINES:
         for text in texts:
             inch = re.search(r"\bG20\b", text) is not None
-            step = (copy % 10) * (0.5 / 25.4 if inch else 0.5)
+            mm = (200.0 + 20.0 * (copy % 25) if copy % 10 else 0.0) if far else (copy % 10) * 0.5
+            step = mm / 25.4 if inch else mm
             shifted = _shift(text, step, step)
             out.append(shifted)
             out.append("G21\n" if inch else "")
             count += shifted.count("\n") + inch
             copy += 1
     out.append("M5\nM2\n")
-    BIG.write_text("".join(out))
-    return BIG, origin
+    path.write_text("".join(out))
+    return path, origin + (", 9 copies in 10 far outside the travel" if far else ", inside the travel")
 
 
 def _timed(fn) -> tuple[float, float, object]:
@@ -163,47 +175,111 @@ def _stages(path: Path) -> str:
     return ", ".join(f"{name} {cpu:.2f}" for name, cpu in spent.items()) + f" (sum {sum(spent.values()):.2f})"
 
 
-def _gcodeparser(text: str) -> None:
-    from gcodeparser import parse_gcode_lines
+_GCODEPARSER = ("import sys\nfrom gcodeparser import parse_gcode_lines\n"
+                "for _ in parse_gcode_lines(open(sys.argv[1]).read()): pass\n")
+RUNS = 5  # whole-process runs of ours and of gcode-toolpath, paired, per file
 
-    for _ in parse_gcode_lines(text):
-        pass
+
+def _small(path: Path, lines: int = 10_000) -> Path:
+    """The first ``lines`` lines of ``path`` and an M2: a file of everyday size."""
+    small = DATA / f"head_{lines // 1000}k.ngc"
+    if not small.exists():
+        with path.open() as src:
+            small.write_text("".join(next(src) for _ in range(lines)) + "M2\n")
+    return small
+
+
+def _whole(runs: list, what: str) -> str:
+    wall = statistics.median(r.wall for r in runs)
+    cpu = statistics.median(r.cpu for r in runs)
+    peak = statistics.median(r.peak_mb for r in runs)
+    spread = f"{min(r.wall for r in runs):.2f}-{max(r.wall for r in runs):.2f}"
+    return (f"{what}: {wall:.2f} s wall (median of {len(runs)}, {spread}), {cpu:.2f} s CPU, "
+            f"peak {peak:.0f} MB")
+
+
+def _versus(path: Path) -> None:
+    """``cnc-gcode check`` and the peers on ``path``, each a whole fresh process, paired
+    runs (ours, then gcode-toolpath) so that both see the same load on the machine."""
+    ours = [sys.executable, "-m", "app.gcode", "check", str(path)]
+    node, modules = peers.node_peers()
+    env = peers.node_env(modules) if node else None
+    toolpath_name = next(iter(node)) if node else ""
+    mine, theirs = [], []
+    for _ in range(RUNS):
+        mine.append(peers.measure(ours))
+        if node:
+            theirs.append(peers.measure([*node[toolpath_name], str(path)], env=env))
+    print("  " + _whole(mine, "cnc-gcode check (whole process)") + f"; exit status {mine[0].status}")
+    summary = [row for row in mine[0].out.splitlines() if row.startswith(("lines:", "warnings:"))]
+    print("    " + " / ".join(summary))
+    wall, cpu = statistics.median(r.wall for r in mine), statistics.median(r.cpu for r in mine)
+    if not node:
+        print(f"  CNCjs peers skipped: {modules}")
+    else:
+        print("  " + _whole(theirs, toolpath_name))
+        their_wall, their_cpu = (statistics.median(r.wall for r in theirs),
+                                 statistics.median(r.cpu for r in theirs))
+        print(f"    ours is {their_wall / wall:.1f}x faster by wall clock, {their_cpu / cpu:.1f}x by CPU "
+              "time (target >= 3x)")
+        for name, argv in list(node.items())[1:]:
+            run = peers.measure([*argv, str(path)], env=env)
+            print(f"  {name}: {run.wall:.2f} s wall, {run.cpu:.2f} s CPU, peak {run.peak_mb:.0f} MB "
+                  f"(one run); ours {run.wall / wall:.1f}x faster by wall, {run.cpu / cpu:.1f}x by CPU")
+    run = peers.measure([sys.executable, "-c", _GCODEPARSER, str(path)])
+    print(f"  PyPI gcodeparser (parse only): {run.wall:.2f} s wall, {run.cpu:.2f} s CPU, peak "
+          f"{run.peak_mb:.0f} MB (one run); ours {run.wall / wall:.1f}x faster by wall, "
+          f"{run.cpu / cpu:.1f}x by CPU")
+
+
+def _window(path: Path) -> None:
+    """bench_ui's figures for opening ``path`` in the window, in a fresh process."""
+    code = f"from bench.bench_ui import open_file; open_file({str(path)!r})"
+    env = {**os.environ, "QT_QPA_PLATFORM": os.environ.get("QT_QPA_PLATFORM", "offscreen")}
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, env=env)
+    rows = done.stdout.splitlines() or [f"the window benchmark failed: {done.stderr.strip()[-300:]}"]
+    print("\n".join(f"  window: {row.strip()}" for row in rows))
 
 
 def main() -> None:
     from app.gcode import load, workers
 
-    path, origin = build()
-    text = path.read_text()
-    lines = text.count("\n")
-    print(f"file: {path.relative_to(ROOT)}: {lines:,} lines, {len(text) / 1e6:.1f} MB, from {origin}")
-    print(f"machine load average: {_loadavg()}")
+    print(f"machine load average: {_loadavg()} on {os.cpu_count()} cores")
+    files = [build(far=True), build(far=False)]
+    for path, origin in files:
+        size = path.stat().st_size
+        print(f"file: {path.relative_to(ROOT)}: {_count(path):,} lines, {size / 1e6:.1f} MB, from {origin}")
+        _versus(path)
+        print(f"  stages of one load, CPU s: {_stages(path)}")
+        _window(path)
+    small = _small(files[1][0])
+    runs = [peers.measure([sys.executable, "-m", "app.gcode", "check", str(small)]) for _ in range(RUNS)]
+    print(_whole(runs, f"{small.name} ({_count(small):,} lines), cnc-gcode check") + " (target <= 0.25 s)")
+    runs = [peers.measure([sys.executable, "-c", "import app.gcode.cli"]) for _ in range(RUNS)]
+    print(_whole(runs, "python -c 'import app.gcode.cli'"))
+    path = files[1][0]
     workers.set_enabled(False)
     alone, alone_cpu, _ = _best_of(3, lambda: load(path))
-    print(f"load -> Toolpath on one core (helper process off): {alone:.2f} s wall, {alone_cpu:.2f} s CPU, "
-          "best of 3")
+    print(f"in one process, {path.name}: load -> Toolpath on one core: {alone:.2f} s wall, "
+          f"{alone_cpu:.2f} s CPU, best of 3")
     workers.set_enabled(True)
     helper = workers.warm_up(wait=10)
     helper_cpu = _helper_cpu()
     wall, cpu, program = _best_of(3, lambda: load(path))
     helper_cpu = (_helper_cpu() - helper_cpu) / 3
-    tp = program.toolpath
-    print(f"load -> Toolpath{' with the helper process' if helper else ' (no helper process available)'}: "
-          f"{wall:.2f} s wall, {cpu:.2f} s CPU here + {helper_cpu:.2f} s in the helper (mean), best of 3 "
-          f"({lines / wall / 1e6:.2f} M lines/s wall); "
-          f"{len(tp):,} moves, {len(program.errors)} errors, {len(program.warnings)} warnings")
-    print(f"stages of one load, CPU s: {_stages(path)}")
+    print(f"  load -> Toolpath{' with the helper process (the GUI)' if helper else ' (no helper process)'}: "
+          f"{wall:.2f} s wall, {cpu:.2f} s CPU here + {helper_cpu:.2f} s in the helper (mean), best of 3")
     base, peak, helper_peak, used = _peak_mb(path)
-    print(f"peak resident memory of one load: {peak} MB (python + numpy + app alone: {base} MB)"
+    print(f"  peak resident memory of one load: {peak} MB (python + numpy + app alone: {base} MB)"
           + (f"; helper process {helper_peak} MB" if used else ""))
     started = time.perf_counter()
     device = program.device_lines
-    print(f"device lines (rendered on first use): {len(device):,} in {time.perf_counter() - started:.2f} s")
-    their_wall, their_cpu, _ = _timed(lambda: _gcodeparser(text))
-    print(f"gcodeparser parse_gcode_lines (parse only, no arcs or toolpath): {their_wall:.2f} s wall, "
-          f"{their_cpu:.2f} s CPU; ours is {their_wall / wall:.1f}x faster by wall clock "
-          f"({their_wall / alone:.1f}x on one core), {their_cpu / (cpu + helper_cpu):.1f}x by CPU time "
-          "(both processes)")
+    print(f"  device lines (rendered on first use): {len(device):,} in {time.perf_counter() - started:.2f} s")
+
+
+def _count(path: Path) -> int:
+    with path.open("rb") as f:
+        return sum(block.count(b"\n") for block in iter(lambda: f.read(1 << 20), b""))
 
 
 def _loadavg() -> str:

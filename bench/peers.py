@@ -13,7 +13,7 @@ import os
 import shutil
 import statistics
 import subprocess
-import time
+import sys
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -25,23 +25,43 @@ PACKAGES = ("gcode-toolpath@3.0.0", "gcode-parser@2.2.0")
 
 @dataclass(frozen=True)
 class Run:
-    """One finished process: wall seconds, peak resident MB, exit status, its output."""
+    """One finished process: wall seconds, peak resident MB, exit status, its output,
+    CPU seconds (user + system; a busy machine stretches wall time, not this)."""
 
     wall: float
     peak_mb: float
     status: int
     out: str
+    cpu: float = 0.0
+
+
+_LAUNCH = """
+import os, sys, time
+started = time.perf_counter()
+pid = os.fork()
+if pid == 0:
+    os.dup2(os.open(os.devnull, os.O_WRONLY), 2)
+    try:
+        os.execvp(sys.argv[1], sys.argv[1:])
+    finally:
+        os._exit(127)
+_, status, usage = os.wait4(pid, 0)
+print(time.perf_counter() - started, usage.ru_maxrss, usage.ru_utime + usage.ru_stime,
+      os.waitstatus_to_exitcode(status), file=sys.stderr)
+"""
 
 
 def measure(argv: list[str], cwd: Path = ROOT, env: dict | None = None) -> Run:
-    """Run ``argv`` to its end; its wall time and its peak resident memory."""
-    started = time.perf_counter()
-    proc = subprocess.Popen(argv, cwd=cwd, env=env, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL)
-    out = proc.stdout.read()
-    _, status, usage = os.wait4(proc.pid, 0)
-    wall = time.perf_counter() - started
-    proc.returncode = os.waitstatus_to_exitcode(status)
-    return Run(wall, usage.ru_maxrss / 1024, proc.returncode, out.decode(errors="replace"))
+    """Run ``argv`` to its end; its wall time and its peak resident memory.
+
+    A small launcher process starts it: a child forked from a big process (this one,
+    once it has loaded files) would report that process's memory as its own peak
+    (Linux keeps ``ru_maxrss`` across fork and exec)."""
+    proc = subprocess.Popen([sys.executable, "-S", "-c", _LAUNCH, *argv], cwd=cwd, env=env,
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    out, err = proc.communicate()
+    wall, peak_kb, cpu, status = err.decode().split()[-4:]
+    return Run(float(wall), int(peak_kb) / 1024, int(status), out.decode(errors="replace"), float(cpu))
 
 
 def median_of(n: int, argv: list[str], **kwargs) -> tuple[float, float, list[Run]]:

@@ -17,10 +17,12 @@ import numpy as np
 from app.i18n import N_, msg
 from app.profile import MachineProfile
 
-from .arcs import arc_box
+from .arcs import arc_box, in_plane
 from .diagnostics import ERROR, Diagnostic, Report
 from .lexer import lex_line
 from .ops import ARC_CCW, ARC_CW, FEED, PLANE_AXES, SPINDLE, Ops
+
+BLOCK = 1 << 16  # rows the envelope check takes at a time
 
 
 def _column(lines: list[str], line_no: int, letter: str) -> int:
@@ -32,6 +34,28 @@ def _arc_extremes(ops: Ops, rows: np.ndarray):
     """Per arc row, (low xyz, high xyz) of the whole arc."""
     axes = np.array(PLANE_AXES)[ops.plane[rows]]
     return arc_box(ops.starts()[rows], ops.end[rows], ops.center[rows], axes, ops.turn[rows])
+
+
+def _circle_reach(ops: Ops, rows: np.ndarray, start: np.ndarray, end: np.ndarray):
+    """Per arc row (``start``/``end`` its ends), the farthest ``arc_box`` could reach:
+    (low, high) xyz of its circle in its plane (centre -/+ radius, computed as
+    ``arc_box`` does), the box of its ends on the normal axis."""
+    plane = ops.plane[rows]
+    one = not len(rows) or (plane == plane[0]).all()  # one plane: whole columns, no gathers
+    axes = np.array(PLANE_AXES)[plane[:1] if one else plane]
+    center = ops.center.take(rows, axis=0)
+    if one:
+        s, e, c = (p[:, axes[0, :2]] for p in (start, end, center))
+    else:
+        s, e, c, _ = in_plane(axes, start, end, center)
+    r = np.maximum(np.hypot(*(s - c).T), np.hypot(*(e - c).T))
+    reach_low, reach_high = np.minimum(start, end), np.maximum(start, end)
+    idx = slice(None) if one else np.arange(len(rows))
+    for k in range(2):
+        axis = int(axes[0, k]) if one else axes[:, k]
+        reach_low[idx, axis] = c[:, k] - r
+        reach_high[idx, axis] = c[:, k] + r
+    return reach_low, reach_high
 
 
 def _may_bulge_out(ops: Ops, rows: np.ndarray, limits: np.ndarray) -> np.ndarray:
@@ -55,39 +79,82 @@ def _limits(profile: MachineProfile, offset=None) -> np.ndarray:
     return np.array(profile.travel.limits()) - offset[:, None]
 
 
-def _candidates(ops: Ops, limits: np.ndarray) -> np.ndarray:
-    """Moves that may leave the travel: an end outside, or an arc whose circle reaches out."""
-    kind = ops.kind
+def _candidates(ops: Ops, limits: np.ndarray, first: int, stop: int) -> np.ndarray:
+    """Moves among rows ``first..stop`` that may leave the travel: an end outside, or an
+    arc whose circle reaches out."""
+    kind, end = ops.kind[first:stop], ops.end[first:stop]
     out = np.zeros(len(kind), bool)
     for axis in range(3):
-        out |= (ops.end[:, axis] < limits[axis, 0]) | (ops.end[:, axis] > limits[axis, 1])
+        out |= (end[:, axis] < limits[axis, 0]) | (end[:, axis] > limits[axis, 1])
     out &= kind <= ARC_CCW
     arcs = np.flatnonzero((kind == ARC_CW) | (kind == ARC_CCW))
-    out[arcs[_may_bulge_out(ops, arcs, limits)]] = True
-    return np.flatnonzero(out)
+    out[arcs[_may_bulge_out(ops, arcs + first, limits)]] = True
+    return np.flatnonzero(out) + first
 
 
-def _violations(ops: Ops, limits: np.ndarray):
+def _violations(ops: Ops, limits: np.ndarray, shown: int = 1):
     """Per axis and direction past ``limits``: (axis name, sign, limit, rows, values), in
-    work coordinates, rows in program order."""
-    moves = _candidates(ops, limits)
+    work coordinates, rows in program order. Every row is found; the values are exact for
+    the first ``shown`` rows of each (the arcs' quadrant points are worked out only for
+    arcs the ends of which do not already decide, and for those shown). Rows are taken
+    ``BLOCK`` at a time, so the temporaries stay small whatever the program's size."""
+    found: dict[tuple[int, str], tuple[float, list, list]] = {}
+    for first in range(0, len(ops), BLOCK):
+        for axis, sign, limit, rows, values in _block(ops, limits, shown, first, first + BLOCK):
+            _, all_rows, all_values = found.setdefault((axis, sign), (limit, [], []))
+            all_rows.append(rows)
+            all_values.append(values)
+    for axis in range(3):
+        for sign in "+-":
+            if (axis, sign) in found:
+                limit, rows, values = found[axis, sign]
+                yield "XYZ"[axis], sign, limit, np.concatenate(rows), np.concatenate(values)
+
+
+def _block(ops: Ops, limits: np.ndarray, shown: int, first: int, stop: int) -> list:
+    """``_violations`` of rows ``first..stop``: (axis, sign, limit, rows, values)."""
+    moves = _candidates(ops, limits, first, stop)
     if not len(moves):
-        return
-    low, high = ops.end[moves].copy(), ops.end[moves].copy()
-    still = ops.end[moves] == ops.starts()[moves]  # an axis a move leaves alone is not news
-    low[still], high[still] = np.inf, -np.inf
-    arcs = np.flatnonzero((ops.kind[moves] == ARC_CW) | (ops.kind[moves] == ARC_CCW))
+        return []
+    end, start = ops.end.take(moves, axis=0), ops.starts().take(moves, axis=0)
+    kind = ops.kind[moves]
+    is_arc = (kind == ARC_CW) | (kind == ARC_CCW)
+    line_still = (end == start) & ~is_arc[:, None]  # an axis a line leaves alone is not news
+    low, high = np.where(line_still, np.inf, end), np.where(line_still, -np.inf, end)
+    np.minimum(low, start, out=low, where=is_arc[:, None])  # an arc: the box of its ends,
+    np.maximum(high, start, out=high, where=is_arc[:, None])  # a bound of the arc's box
+    arcs = np.flatnonzero(is_arc)
+    exact = np.ones(len(moves), bool)
     if len(arcs):
-        low[arcs], high[arcs] = _arc_extremes(ops, moves[arcs])
+        arc_start, arc_end = start.take(arcs, axis=0), end.take(arcs, axis=0)
+        arc_low, arc_high = low.take(arcs, axis=0), high.take(arcs, axis=0)
+        reach_low, reach_high = _circle_reach(ops, moves[arcs], arc_start, arc_end)
+        lo, hi = limits[:, 0] - 1e-9, limits[:, 1] + 1e-9
+        open_ = ((arc_high <= hi) & (reach_high > hi)) | ((arc_low >= lo) & (reach_low < lo))
+        exact[arcs] = False
+        _exact_arcs(ops, moves, arcs[open_.any(axis=1)], low, high, exact)
+    found = []
     for axis, (lo, hi) in enumerate(limits.tolist()):
         for sign, values, limit, beyond in (("+", high, hi, np.greater), ("-", low, lo, np.less)):
-            hit = beyond(values[:, axis], limit + (1e-9 if sign == "+" else -1e-9))
-            if hit.any():
-                yield "XYZ"[axis], sign, limit, moves[hit], values[hit, axis]
+            hit = np.flatnonzero(beyond(values[:, axis], limit + (1e-9 if sign == "+" else -1e-9)))
+            if len(hit):
+                found.append((axis, sign, limit, hit))
+    if found:
+        firsts = np.unique(np.concatenate([hit[:shown] for *_, hit in found]))
+        _exact_arcs(ops, moves, firsts[~exact[firsts]], low, high, exact)
+    return [(axis, sign, limit, moves[hit], (high if sign == "+" else low)[hit, axis])
+            for axis, sign, limit, hit in found]
+
+
+def _exact_arcs(ops: Ops, moves: np.ndarray, rows: np.ndarray, low, high, exact) -> None:
+    """The whole-arc box of ``moves[rows]`` into ``low``/``high`` at ``rows``."""
+    if len(rows):
+        low[rows], high[rows] = _arc_extremes(ops, moves[rows])
+        exact[rows] = True
 
 
 def _envelope(ops: Ops, profile: MachineProfile, lines: list[str], report: Report) -> None:
-    for name, sign, limit, out, vals in _violations(ops, _limits(profile)):
+    for name, sign, limit, out, vals in _violations(ops, _limits(profile), report.limit):
         rel = ">" if sign == "+" else "<"
         for row, value in zip(out[: report.limit].tolist(), vals[: report.limit].tolist(), strict=True):
             line = int(ops.main_lines()[row])  # a subprogram's row: its calling line

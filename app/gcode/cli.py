@@ -23,6 +23,7 @@ import numpy as np
 
 from app.i18n import N_, localize, msg
 
+from . import workers
 from .moves import to_jsonl
 from .program import Program, load
 
@@ -36,7 +37,7 @@ def _summary(p: Program) -> str:
                        for a, lo, hi in zip("XYZ", low, high, strict=True))
     rows = [
         msg("file: {name}", name=p.name),
-        msg("lines: {lines}  device lines: {device}  moves: {moves}", lines=len(p.source_lines),
+        msg("lines: {lines}  device lines: {device}  moves: {moves}", lines=len(p.lines),
             device=p.plan.total, moves=len(tp)),
         msg("bounds: {bounds}", bounds=bounds),
         msg("cut length: {cut:.1f} mm  rapid length: {rapid:.1f} mm", cut=float(tp.cut_length),
@@ -97,6 +98,19 @@ def _expand(p: Program, trace: bool = False) -> int:
 
 
 SEVERITIES = (N_("error"), N_("warning"))
+
+
+def _load(path: str) -> Program:
+    """``load`` without the helper process: for a one-shot run its start-up costs more
+    than the part of the scan it would take over (the setting is restored after)."""
+    was = workers.enabled()
+    workers.set_enabled(False)
+    try:
+        return load(path)
+    finally:
+        workers.set_enabled(was)
+
+
 COMMANDS = {"check": _check, "normalize": _normalize, "moves": _moves, "expand": _expand}
 
 
@@ -117,7 +131,7 @@ def main(argv: list[str] | None = None) -> int:
     if args.trace and args.command != "expand":
         parser.error("--trace goes with expand")
     try:
-        program = load(args.file)
+        program = _load(args.file)
         return _expand(program, args.trace) if args.command == "expand" else COMMANDS[args.command](program)
     except BrokenPipeError:
         return 0

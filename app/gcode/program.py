@@ -34,6 +34,8 @@ from .source import Lines
 from .state import State
 from .toolpath import Toolpath, build
 
+TRIM_BYTES = 8 << 20  # after the scan of a file this big, free heap pages go back to the system
+
 
 @dataclass(repr=False)
 class Program:
@@ -167,14 +169,31 @@ def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfi
         data.clear()
         ops = _expanded(lines, name, folder, start, report)
     else:
+        big = len(data[0]) >= TRIM_BYTES
         ops = _plain(lines, data, start, report)
+        if big:
+            _give_back_free_memory()  # the scan's many chunk-sized temporaries
     ops.starts()  # computed once, before two threads read it
     checking = _in_thread(checks.run, ops, profile, lines, report)  # numpy lets both run at once
     the_plan = normalize.plan(ops, profile.motion.arc_tolerance_mm)
     toolpath = build(ops, the_plan.first, profile)
     checking.join()
     program_checks(toolpath, profile, report)
+    ops._starts = None  # the Toolpath has its own copy of the moves' starts; a later caller recomputes them
     return Program(name, lines, report.finish(), ops, toolpath, profile, the_plan)
+
+
+def _give_back_free_memory() -> None:
+    """Return the heap's free pages to the system (glibc's ``malloc_trim``; elsewhere
+    nothing): freed chunks in the middle of the heap otherwise stay resident, and the
+    rest of a big load would add its peak on top of them."""
+    import ctypes
+
+    try:
+        trim = ctypes.CDLL(None).malloc_trim
+    except (AttributeError, OSError):
+        return
+    trim(0)
 
 
 class _in_thread(threading.Thread):

@@ -12,7 +12,6 @@ seconds. ``polyline(tolerance)`` gives drawable points with arcs as chords.
 
 from __future__ import annotations
 
-from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 from functools import cached_property
 
@@ -121,6 +120,8 @@ class Toolpath:
 
         if len(arcs) < PARALLEL_ARCS:
             return of(arcs)
+        from concurrent.futures import ThreadPoolExecutor  # only here: a CLI start-up need not load it
+
         half = len(arcs) // 2
         with ThreadPoolExecutor(max_workers=2, thread_name_prefix="chords") as pool:
             (pts_a, owner_a), (pts_b, owner_b) = pool.map(of, (arcs[:half], arcs[half:]))
@@ -157,8 +158,11 @@ def build(ops: Ops, device_first: np.ndarray, profile: MachineProfile) -> Toolpa
     feed = np.where(feed > 0, feed, motion.max_feed_mm_min)
     feed[kind == RAPID] = motion.rapid_mm_min
     step = end - start
-    length = np.sqrt(step[:, 0] * step[:, 0] + step[:, 1] * step[:, 1] + step[:, 2] * step[:, 2])
+    step *= step  # the same sum of squares as before, with fewer temporaries
+    length = step[:, 0] + step[:, 1]
+    length += step[:, 2]
     del step
+    np.sqrt(length, out=length)
     arc = np.flatnonzero((kind == ARC_CW) | (kind == ARC_CCW))
     length[arc] = arc_length(start.take(arc, axis=0), end.take(arc, axis=0), center.take(arc, axis=0),
                              np.take(PLANE_AXES, plane[arc], axis=0), turn[arc])

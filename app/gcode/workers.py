@@ -20,11 +20,14 @@ opens, the benchmark before timing). It is shut down when the interpreter exits.
 
 from __future__ import annotations
 
-import multiprocessing
+import atexit
 import os
+import sys
 import threading
-from concurrent.futures import Future, ProcessPoolExecutor
-from concurrent.futures.process import BrokenProcessPool
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:  # multiprocessing and concurrent.futures are imported when the helper starts
+    from concurrent.futures import Future, ProcessPoolExecutor
 
 PRELOAD = ["app.gcode.bulk"]  # imported once by the forkserver, not by every helper
 _lock = threading.Lock()
@@ -36,11 +39,15 @@ _disabled = False
 
 def available() -> bool:
     """True when a helper may be used: more than one core, and not disabled."""
-    in_helper = multiprocessing.parent_process() is not None  # never a helper's helper
-    return not _disabled and not in_helper and (os.cpu_count() or 1) > 1
+    if _disabled or (os.cpu_count() or 1) < 2:
+        return False
+    mp = sys.modules.get("multiprocessing")  # a helper has it imported; a fresh CLI need not
+    return mp is None or mp.parent_process() is None  # never a helper's helper
 
 
 def _context():
+    import multiprocessing
+
     methods = multiprocessing.get_all_start_methods()
     ctx = multiprocessing.get_context("forkserver" if "forkserver" in methods else "spawn")
     if ctx.get_start_method() == "forkserver":
@@ -63,6 +70,8 @@ def _executor() -> ProcessPoolExecutor | None:
 
 def _start() -> None:
     global _pool, _disabled, _starting
+    from concurrent.futures import ProcessPoolExecutor
+
     try:
         pool = ProcessPoolExecutor(max_workers=1, mp_context=_context())
         pool.submit(int).result()  # the helper process exists and answers
@@ -75,6 +84,7 @@ def _start() -> None:
         if not _disabled:
             _pool = pool
             _ready.set()
+            atexit.register(_drop, pool)  # before the late-imported pool modules are torn down
     if _pool is not pool:  # forbidden while it started
         pool.shutdown(wait=False)
 
@@ -98,6 +108,8 @@ def submit(fn, *args) -> Future | None:
     pool = _executor()
     if pool is None:
         return None
+    from concurrent.futures.process import BrokenProcessPool
+
     try:
         return pool.submit(fn, *args)
     except (BrokenProcessPool, RuntimeError, OSError):
@@ -109,6 +121,8 @@ def result(future: Future | None):
     """The helper's result, or ``None`` when it failed (the caller falls back)."""
     if future is None:
         return None
+    from concurrent.futures.process import BrokenProcessPool
+
     try:
         return future.result()
     except BrokenProcessPool:
@@ -129,6 +143,11 @@ def helper_pids() -> list[int]:
     """Process ids of the running helper (for measuring it; empty when there is none)."""
     pool = _pool
     return list(getattr(pool, "_processes", None) or {}) if pool is not None else []
+
+
+def enabled() -> bool:
+    """False once the helper is forbidden (``set_enabled``) or found unusable."""
+    return not _disabled
 
 
 def set_enabled(enabled: bool) -> None:

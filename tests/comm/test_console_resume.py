@@ -8,7 +8,7 @@ threads, no sleeps), so every run is deterministic.
 import pytest
 
 from app.comm.console import Console, ConsoleError, load_lines
-from app.comm.transport import SimTransport
+from app.comm.transport import open_transport
 from backend_sim import Simulator
 from tests.comm.simlink import assert_oracle, dialect_program
 
@@ -25,7 +25,9 @@ class Rig:
         self.hooks = []
 
     def console(self) -> Console:
-        transport = SimTransport(self.sim, owns_sim=False)
+        transport = open_transport("sim://", do_not_open=True)  # the pyserial sim:// handler
+        transport.simulator = self.sim  # this (unstarted) machine, driven by pause()
+        transport.open()
         console = Console(transport, quiet=True, timeout=120.0, sleep=self.pause,
                           wall=lambda: self.sim.clock.now)
         console.connect()
