@@ -112,7 +112,12 @@ class Walker:
         tooling.publish(self.state)
 
     def _returned(self, frame: Frame) -> None:
-        """A call level ended: what its M73 saved comes back (``modal_state``)."""
+        """A call level ended: what its M73 saved comes back (``modal_state``). Only an
+        M73 (interpreted by ``emit``, never batched) sets ``saved``: without one the
+        batch goes on across the return."""
+        saved = self.state.saved
+        if saved is None or not saved.get("auto"):
+            return
         self.flush()
         before = len(self.ops.rows)
         line = frame.unit.blocks[max(0, min(frame.pc, len(frame.unit.blocks)) - 1)].line
