@@ -213,7 +213,7 @@ class Walker:
         if not b.words or b.call_only:
             pass
         elif b.simple and self.fast_ok and self.batch.add(b, values, f.iteration, f.where):
-            if len(self.batch.g) >= MAX_ROWS:
+            if len(self.batch) >= MAX_ROWS:
                 self.flush()
         else:
             self._general(f, b, values, len(b.words))
@@ -240,10 +240,9 @@ class Walker:
             self._general(f, b, values, len(b.words))
         else:
             batch = self.batch
-            batch.g.append(made[0])
-            batch.rows.append(made[1])
-            batch.blocks.append((b, values, f.iteration, f.where))
-            if len(batch.g) >= MAX_ROWS:
+            batch.extend(made)
+            batch.append((b, values, f.iteration, f.where))
+            if len(batch.blocks) >= MAX_ROWS:
                 self.flush()
         if b.assigns:
             self.assign(b, values)
