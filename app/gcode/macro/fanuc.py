@@ -15,6 +15,8 @@ from .calls import FANUC_ARGUMENTS
 from .errors import MacroError
 from .frame import Frame
 
+_G65_WORDS = frozenset(FANUC_ARGUMENTS) | {"G", "P", "L"}
+
 
 def call(w, f: Frame, b, letter: str, code: float, column: int, by_letter: dict) -> None:
     """Run ``M98``/``G65`` (a call) or ``M99`` (a return); ``by_letter``: the other words."""
@@ -35,7 +37,7 @@ def call(w, f: Frame, b, letter: str, code: float, column: int, by_letter: dict)
         locals_ = f.locals  # M98 keeps the caller's local level
     else:
         locals_ = {FANUC_ARGUMENTS[k]: v for k, v in by_letter.items() if k in FANUC_ARGUMENTS}
-        extra = sorted(set(by_letter) - set(FANUC_ARGUMENTS) - {"G", "P", "L"})
+        extra = [] if by_letter.keys() <= _G65_WORDS else sorted(set(by_letter) - _G65_WORDS)
         if extra:
             raise MacroError(f"G65 cannot pass {', '.join(extra)} (argument specification I)", b.line)
     unit = w.library.units[file_id]

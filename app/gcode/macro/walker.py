@@ -247,6 +247,16 @@ class Walker:
         if b.assigns:
             self.assign(b, values)
 
+    def call_words(self, f: Frame, b: bk.Block) -> None:
+        """``words`` for a Fanuc line that is only a call (``b.call_only``)."""
+        values = b.values(self.scope)
+        f.pc += 1
+        if b.assigns:
+            self.assign(b, values)
+        call = b.call
+        by_letter = {w.letter: v for w, v in zip(b.words, values, strict=False) if v is not None}
+        fanuc.call(self, f, b, call.letter, by_letter.pop(call.letter), call.column, by_letter)
+
     def assignments(self, f: Frame, b: bk.Block) -> None:
         """``words`` for a line of assignments only."""
         values = b.values(self.scope)
@@ -374,6 +384,8 @@ def _handler(b: bk.Block):
         return Walker.assignments
     if b.kind == bk.WORDS and b.simple and not b.call_only:
         return Walker.simple_words
+    if b.kind == bk.WORDS and b.call_only and b.words:
+        return Walker.call_words
     return HANDLERS[b.kind]
 
 
