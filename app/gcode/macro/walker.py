@@ -257,6 +257,13 @@ class Walker:
         by_letter = {w.letter: v for w, v in zip(b.words, values, strict=False) if v is not None}
         fanuc.call(self, f, b, call.letter, by_letter.pop(call.letter), call.column, by_letter)
 
+    def return_only(self, f: Frame, b: bk.Block) -> None:
+        """``call_words`` for a line that is only ``M99`` (no P, L, nor assignments)."""
+        f.pc += 1
+        if len(self.frames) == 1:
+            raise MacroError("M99 outside a subprogram (the main program ends with M30)")
+        fanuc.leave(self, f, None)
+
     def assignments(self, f: Frame, b: bk.Block) -> None:
         """``words`` for a line of assignments only."""
         values = b.values(self.scope)
@@ -385,7 +392,8 @@ def _handler(b: bk.Block):
     if b.kind == bk.WORDS and b.simple and not b.call_only:
         return Walker.simple_words
     if b.kind == bk.WORDS and b.call_only and b.words:
-        return Walker.call_words
+        bare_m99 = len(b.words) == 1 and b.words[0] is b.call and b.call.letter == "M" and not b.assigns
+        return Walker.return_only if bare_m99 and bk.constant(b.call.code) == 99.0 else Walker.call_words
     return HANDLERS[b.kind]
 
 
