@@ -159,19 +159,25 @@ class Walker:
                 self.flush()  # the blocks before the error stay, as rs274ngc's output does
 
     def _run_frame(self, f: Frame, frames: list[Frame]) -> None:
-        """Run blocks of frame ``f`` until it ends, calls or returns."""
-        blocks = f.unit.blocks
-        if not f.unit.bound:
-            bind(f.unit)
-        n, left = len(blocks), BLOCK_LIMIT - self.blocks_run
+        """Run blocks of frame ``f``, then of the frame it calls or returns to, until
+        the walk ends or a frame reaches the end of its file (``run`` handles that)."""
+        left = BLOCK_LIMIT - self.blocks_run
         ran, b = 0, None
         try:
-            while frames and frames[-1] is f and f.pc < n:
-                b = blocks[f.pc]
-                ran += 1
-                if ran > left:
-                    raise MacroError(f"the program runs more than {BLOCK_LIMIT:,} blocks", b.line)
-                b.run(self, f, b)
+            while True:
+                blocks = f.unit.blocks
+                if not f.unit.bound:
+                    bind(f.unit)
+                n = len(blocks)
+                while frames and frames[-1] is f and f.pc < n:
+                    b = blocks[f.pc]
+                    ran += 1
+                    if ran > left:
+                        raise MacroError(f"the program runs more than {BLOCK_LIMIT:,} blocks", b.line)
+                    b.run(self, f, b)
+                if not frames or frames[-1].pc >= len(frames[-1].unit.blocks):
+                    return
+                f = frames[-1]
         except MacroError as exc:
             raise exc.at(b.line if b is not None else 0, f.unit.name if f.file_id else "") from None
         finally:
