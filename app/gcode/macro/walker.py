@@ -232,10 +232,14 @@ class Walker:
             by_letter = {w.letter: v for w, v in zip(b.words, values, strict=False) if v is not None}
             self._fanuc_call(f, b, call.letter, by_letter.pop(call.letter), call.column, by_letter)
         elif self.pending_call is not None:
-            block, call, words = self.pending_call
-            self.pending_call = None
-            by_letter = {w.letter: w.value for w in words}
-            self._fanuc_call(f, block, call.letter, call.value, call.column, by_letter)
+            self._pending_call(f)
+
+    def _pending_call(self, f: Frame) -> None:
+        """Run the call ``_general`` found among a line's computed words."""
+        block, call, words = self.pending_call
+        self.pending_call = None
+        by_letter = {w.letter: w.value for w in words}
+        self._fanuc_call(f, block, call.letter, call.value, call.column, by_letter)
 
     def simple_words(self, f: Frame, b: bk.Block) -> None:
         """``words`` for a block of G0-G3 X Y Z I J F words: straight into the batch."""
@@ -252,6 +256,8 @@ class Walker:
                 self.flush()
         if b.assigns:
             self.assign(b, values)
+        if self.pending_call is not None:  # a computed G65 (G#1 with #1 = 65)
+            self._pending_call(f)
 
     def call_words(self, f: Frame, b: bk.Block) -> None:
         """``words`` for a Fanuc line that is only a call (``b.call_only``)."""
