@@ -62,6 +62,7 @@ class Block:
     call: Word | None = None  # Fanuc: the M98/M99/G65 word of the line (a constant)
     call_only: bool = False  # Fanuc: the line is only that call and its P/L/arguments
     context: str = ""  # LinuxCNC call: the trace's name of the subroutine it runs
+    plan: tuple | None = None  # Fanuc G65 line: where its P, L and arguments are (fanuc.g65_plan)
 
     def finish(self) -> Block:
         """Compile the codes of the line into functions (done once)."""

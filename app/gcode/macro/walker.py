@@ -269,6 +269,12 @@ class Walker:
         by_letter = {w.letter: v for w, v in zip(b.words, values, strict=False) if v is not None}
         fanuc.call(self, f, b, call.letter, by_letter.pop(call.letter), call.column, by_letter)
 
+    def g65_words(self, f: Frame, b: bk.Block) -> None:
+        """``call_words`` for a ``G65`` line planned by ``fanuc.g65_plan``."""
+        values = b.values(self.scope)
+        f.pc += 1
+        fanuc.g65(self, f, b, values)
+
     def return_only(self, f: Frame, b: bk.Block) -> None:
         """``call_words`` for a line that is only ``M99`` (no P, L, nor assignments)."""
         f.pc += 1
@@ -405,7 +411,10 @@ def _handler(b: bk.Block):
         return Walker.simple_words
     if b.kind == bk.WORDS and b.call_only and b.words:
         bare_m99 = len(b.words) == 1 and b.words[0] is b.call and b.call.letter == "M" and not b.assigns
-        return Walker.return_only if bare_m99 and bk.constant(b.call.code) == 99.0 else Walker.call_words
+        if bare_m99 and bk.constant(b.call.code) == 99.0:
+            return Walker.return_only
+        b.plan = fanuc.g65_plan(b) if b.call.letter == "G" else None
+        return Walker.call_words if b.plan is None else Walker.g65_words
     return HANDLERS[b.kind]
 
 
