@@ -16,6 +16,7 @@ from .errors import MacroError
 from .frame import Frame
 
 _G65_WORDS = frozenset(FANUC_ARGUMENTS) | {"G", "P", "L"}
+_NAMES: dict[int, str] = {}  # program number -> its name in the trace ("O9010")
 
 
 def call(w, f: Frame, b, letter: str, code: float, column: int, by_letter: dict) -> None:
@@ -70,7 +71,8 @@ def g65(w, f: Frame, b, values) -> None:
     locals_ = {n: v for i, n in args if (v := values[i]) is not None}
     unit = w.library.units[file_id]
     program = unit.program_of[start] if unit.program_of else 0
-    w._push(Frame(unit, start, locals_, f"O{number:04d}", file_id, program, count, b.line))
+    name = _NAMES.get(number) or _NAMES.setdefault(number, f"O{number:04d}")
+    w._push(Frame(unit, start, locals_, name, file_id, program, count, b.line))
 
 
 def leave(w, f: Frame, label) -> None:
