@@ -4,10 +4,12 @@ A grid of holes written as a Fanuc 21/31 macro B program (WHILE/DO/END, G65 with
 arguments) and as its LinuxCNC twin (o-word while loops and a subroutine call): each
 hole is a rapid above it, a plunge and a retract, 3 moves, 577 x 578 holes. Prints
 for each dialect the wall and CPU time of ``app.gcode.load`` (expansion, interpreter,
-checks, plan and Toolpath), the CPU time of the expansion alone, and the peak
+checks, plan and Toolpath) and the CPU time of the expansion alone, each the best of
+``REPEATS`` runs (the machine is shared: CPU time is the steadier figure), and the peak
 resident memory of a fresh process doing one load; then the time LinuxCNC's ``rs274``
-takes on the LinuxCNC twin (skipped with a message when rs274 is not installed).
-Figures are printed, never asserted.
+takes on the LinuxCNC twin in the same run (skipped with a message when rs274 is not
+installed). The goal (issue 9): at most 3 s and 500 MB. Figures are printed, never
+asserted.
 """
 
 from __future__ import annotations
@@ -24,6 +26,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 DATA = ROOT / "bench" / "data"
 ROWS, COLUMNS, PITCH = 577, 578, 0.25  # 333,506 holes, 1,000,518 moves
+REPEATS = 3
 
 FANUC = f"""%
 O1000 (grid of holes: {ROWS} x {COLUMNS})
@@ -125,21 +128,31 @@ def _rs274(path: Path) -> str:
     return f"rs274 -g on the LinuxCNC twin: {wall:.2f} s wall, {cpu:.2f} s CPU, {moves:,} moves{status}"
 
 
+def _seconds(values: list[float]) -> str:
+    return "/".join(f"{v:.2f}" for v in values)
+
+
 def main() -> None:
     from app.gcode import load
 
     print(f"machine load average: {Path('/proc/loadavg').read_text().split()[:3]}")
     paths = _files()
     for name, path in paths.items():
-        wall, cpu = time.perf_counter(), time.process_time()
-        program = load(path)
-        wall, cpu = time.perf_counter() - wall, time.process_time() - cpu
-        errors = [str(d) for d in program.errors][:2]
-        print(f"{name} ({path.name}): load -> Toolpath {wall:.2f} s wall, {cpu:.2f} s CPU; "
-              f"{len(program.toolpath):,} moves, {program.device_count:,} device lines, errors {errors}")
-        del program
-        expand_cpu, rows = _expansion_cpu(path)
+        walls, cpus = [], []
+        for _ in range(REPEATS):
+            wall, cpu = time.perf_counter(), time.process_time()
+            program = load(path)
+            walls.append(time.perf_counter() - wall)
+            cpus.append(time.process_time() - cpu)
+            errors = [str(d) for d in program.errors][:2]
+            moves, device = len(program.toolpath), program.device_count
+            del program
+        print(f"{name} ({path.name}): load -> Toolpath best of {REPEATS}: {min(walls):.2f} s wall, "
+              f"{min(cpus):.2f} s CPU (all: {_seconds(walls)} wall, {_seconds(cpus)} CPU); "
+              f"{moves:,} moves, {device:,} device lines, errors {errors}")
+        expand = [_expansion_cpu(path) for _ in range(REPEATS)]
         base, peak = _peak_mb(path)
-        print(f"  expansion alone (walk + interpreter, {rows:,} rows): {expand_cpu:.2f} s CPU; "
+        best = min(e[0] for e in expand)
+        print(f"  expansion alone (walk + interpreter, {expand[0][1]:,} rows): best {best:.2f} s CPU; "
               f"peak resident memory of one load {peak} MB (python + numpy + app alone: {base} MB)")
     print(_rs274(paths["LinuxCNC o-words"]))

@@ -8,10 +8,16 @@ an ``O`` word, ``WHILE``/``END``/``GOTO``/``DO`` outside comments, ``M98``/``M99
 dialect is Fanuc when the program has a bare ``O`` number line, ``IF [``, ``GOTO``,
 ``WHILE [``, ``DO``/``END`` or ``M98``/``M99``/``G65``; else LinuxCNC. Nothing
 here imports Qt.
+
+The walk runs with Python's cyclic garbage collector paused (``_no_cycle_collection``):
+it makes millions of small tuples, dicts and frames and no reference cycles, and the
+collector's passes over the growing batch cost a quarter of the time.
 """
 
 from __future__ import annotations
 
+import contextlib
+import gc
 import re
 from pathlib import Path
 
@@ -57,6 +63,19 @@ def is_fanuc(text: str) -> bool:
     return _FANUC.search(re.sub(r"\([^()\n]*\)", "", text)) is not None
 
 
+@contextlib.contextmanager
+def _no_cycle_collection():
+    """Pause the cyclic garbage collector (reference counting still frees everything),
+    and start it again after, if it was running."""
+    running = gc.isenabled()
+    gc.disable()
+    try:
+        yield
+    finally:
+        if running:
+            gc.enable()
+
+
 def expand(lines, name: str, folder: Path | None, state, ops: OpBuffer, report: Report) -> Trace:
     """Expand the program ``lines`` into ``ops`` (see the module docstring)."""
     fanuc = is_fanuc("\n".join(lines))
@@ -66,6 +85,7 @@ def expand(lines, name: str, folder: Path | None, state, ops: OpBuffer, report: 
     params = getattr(state, "params", None)
     walker = Walker(Library(unit, folder), state, ops, report, params if params is not None else Params())
     if unit.structure_ok:
-        walker.run()
+        with _no_cycle_collection():
+            walker.run()
     walker.trace.state = walker.state
     return walker.trace

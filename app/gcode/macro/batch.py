@@ -32,7 +32,7 @@ def simple_shape(letters: list[str]) -> bool:
 
 
 def row_maker(letters: list[str], vacant: bool):
-    """A compiled ``fn(values) -> (g, [X Y Z I J F]) or None`` for a block of these words
+    """A compiled ``fn(values) -> (g, X, Y, Z, I, J, F) or None`` for a block of these words
     (``None`` when its G word is not G0-G3; ``vacant``: a ``None`` value leaves a word out)."""
     row = ["nan"] * 6
     g = "-1.0"
@@ -42,7 +42,7 @@ def row_maker(letters: list[str], vacant: bool):
             g = f"v[{i}]" if not vacant else f"(-1.0 if v[{i}] is None else v[{i}])"
         else:
             row[LETTERS.index(c)] = code
-    body = f"(({g}), [{', '.join(row)}])"
+    body = f"(({g}), {', '.join(row)})"
     check = "" if "G" not in letters else f" if {g} in MOTION else None"
     return eval(f"lambda v: {body}{check}", {"nan": _NAN, "MOTION": _MOTION})  # noqa: S307
 
@@ -51,12 +51,12 @@ class Batch:
     """Collects plain motion blocks (see the module docstring)."""
 
     def __init__(self) -> None:
-        self.g: list[int] = []
-        self.rows: list[list[float]] = []  # X Y Z I J F per block, NaN when absent
-        self.blocks: list[tuple] = []  # (block, words values, file id, call line, context, iteration, report)
+        self.flat: list[float] = []  # G X Y Z I J F per block, one after the other, NaN when absent
+        self.blocks: list[tuple] = []  # (block, words values, iteration, where: see ``add``)
+        self.extend, self.append = self.flat.extend, self.blocks.append  # the walker's hot path
 
     def __len__(self) -> int:
-        return len(self.g)
+        return len(self.blocks)
 
     def add(self, block, values, iteration: int, where: tuple) -> bool:
         """Add a block whose word ``values`` are all known; False (nothing added) when
@@ -64,20 +64,19 @@ class Batch:
         made = block.row(values)
         if made is None:
             return False
-        self.g.append(made[0])
-        self.rows.append(made[1])
+        self.flat.extend(made)
         self.blocks.append((block, values, iteration, where))
         return True
 
     def flush(self, state, ops, trace):
         """Interpret every collected block; return the new state."""
-        if not self.g:
+        if not self.blocks:
             return state
-        n = len(self.g)
-        table = np.array(self.rows, np.float64).reshape(n, 6)
-        values = {c: table[:, i] for i, c in enumerate(LETTERS)}
+        n = len(self.blocks)
+        table = np.array(self.flat, np.float64).reshape(n, 7)
+        values = {c: table[:, i + 1] for i, c in enumerate(LETTERS)}
         values["M"] = values["S"] = np.full(n, np.nan)
-        g = np.asarray(self.g, np.float64).astype(np.int8)
+        g = table[:, 0].astype(np.int8)
         scan = Scan(np.ones(n, bool), g, np.full(n, -1, np.int8), values)
         before = len(ops.blocks)
         state, stop = vector.run(scan, 0, n, state, ops)
@@ -87,7 +86,8 @@ class Batch:
             state = self._one(i, state, ops, trace)
             if state.ended:
                 break
-        self.__init__()
+        self.flat.clear()
+        self.blocks.clear()
         return state
 
     def _trace_block(self, ops, trace) -> None:

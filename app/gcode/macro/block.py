@@ -63,6 +63,8 @@ class Block:
     run: object = None  # the walker's handler for this block (walker.bind)
     call: Word | None = None  # Fanuc: the M98/M99/G65 word of the line (a constant)
     call_only: bool = False  # Fanuc: the line is only that call and its P/L/arguments
+    context: str = ""  # LinuxCNC call: the trace's name of the subroutine it runs
+    plan: tuple | None = None  # Fanuc G65 line: where its P, L and arguments are (fanuc.g65_plan)
 
     def finish(self) -> Block:
         """Compile the codes of the line into functions (done once)."""
@@ -84,6 +86,9 @@ class Block:
                 self.call.letter == "G" or all(w.letter in "MPL" for w in self.words))
         n = len(self.words)
         self.assigns = [(target, n + i) for i, target in enumerate(self.targets)]
+        if self.kind == OWORD and self.keyword == "call":  # all arguments in one function
+            self.values = compile_codes(self.args) if self.args else None
+            self.context = f"o{self.oname}" if self.oname.isdigit() else f"o<{self.oname}>"
         self.args = [compile_code(a) for a in self.args]
         return self
 

@@ -17,6 +17,9 @@ from .calls import FANUC_ARGUMENTS
 from .errors import MacroError
 from .frame import Frame
 
+_G65_WORDS = frozenset(FANUC_ARGUMENTS) | {"G", "P", "L"}
+_NAMES: dict[int, str] = {}  # program number -> its name in the trace ("O9010")
+
 
 def call(w, f: Frame, b, letter: str, code: float, column: int, by_letter: dict) -> None:
     """Run ``M98``/``G65`` (a call) or ``M99`` (a return); ``by_letter``: the other words."""
@@ -39,7 +42,7 @@ def call(w, f: Frame, b, letter: str, code: float, column: int, by_letter: dict)
         locals_ = f.locals  # M98 keeps the caller's local level
     else:
         locals_ = {FANUC_ARGUMENTS[k]: v for k, v in by_letter.items() if k in FANUC_ARGUMENTS}
-        extra = sorted(set(by_letter) - set(FANUC_ARGUMENTS) - {"G", "P", "L"})
+        extra = [] if by_letter.keys() <= _G65_WORDS else sorted(set(by_letter) - _G65_WORDS)
         if extra:
             said = msg("G65 cannot pass {words} (argument specification I)", words=", ".join(extra))
             raise MacroError(said, b.line)
@@ -47,6 +50,35 @@ def call(w, f: Frame, b, letter: str, code: float, column: int, by_letter: dict)
     unit = w.library.units[file_id]
     program = unit.program_of[start] if unit.program_of else 0
     w._push(Frame(unit, start, locals_, f"O{number:04d}", file_id, program, count, b.line))
+
+
+def g65_plan(b) -> tuple | None:
+    """For a ``G65 P..`` line of distinct argument letters and no assignments: (index of
+    P, index of L or -1, [(index, local number)]) for ``g65``; else None."""
+    letters = [w.letter for w in b.words]
+    if b.assigns or len(set(letters)) != len(letters) or "P" not in letters:
+        return None
+    if not _G65_WORDS.issuperset(letters):
+        return None
+    args = [(i, FANUC_ARGUMENTS[c]) for i, c in enumerate(letters) if c in FANUC_ARGUMENTS]
+    return letters.index("P"), letters.index("L") if "L" in letters else -1, args
+
+
+def g65(w, f: Frame, b, values) -> None:
+    """``call`` for a line planned by ``g65_plan`` (the same rules, fewer steps)."""
+    p, repeat, args = b.plan
+    number = values[p]
+    if number is None:
+        raise MacroError(msg("G65 needs P (the program number)"), b.line, b.call.column)
+    number, count = int(number), (1 if repeat < 0 or values[repeat] is None else int(values[repeat]))
+    if count < 1:
+        return
+    file_id, start = w.library.program(number, f.file_id)
+    locals_ = {n: v for i, n in args if (v := values[i]) is not None}
+    unit = w.library.units[file_id]
+    program = unit.program_of[start] if unit.program_of else 0
+    name = _NAMES.get(number) or _NAMES.setdefault(number, f"O{number:04d}")
+    w._push(Frame(unit, start, locals_, name, file_id, program, count, b.line))
 
 
 def leave(w, f: Frame, label) -> None:

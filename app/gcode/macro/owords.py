@@ -15,19 +15,21 @@ from app.i18n import msg
 from .errors import MacroError
 from .frame import Frame
 
+_NUMBERS = range(1, 31)  # a call's arguments go to #1, #2 ...
+
 
 def _sub(w, f: Frame, b) -> None:
     f.pc = f.unit.jump[f.pc]
 
 
 def _call(w, f: Frame, b) -> None:
-    scope = w.scope
-    args = [fn(scope) for fn in b.args]
+    args = b.values(w.scope) if b.values is not None else ()
     file_id, start = w.library.subroutine(b.oname, f.file_id)
     f.pc += 1
-    locals_ = {i + 1: (0.0 if v is None else v) for i, v in enumerate(args)}
-    w._push(Frame(w.library.units[file_id], start + 1, locals_, f"o<{b.oname}>" if not b.oname.isdigit()
-                  else f"o{b.oname}", file_id, caller_line=b.line))
+    locals_ = dict(zip(_NUMBERS, args, strict=False))
+    if None in args:
+        locals_ = {i: (0.0 if v is None else v) for i, v in locals_.items()}
+    w._push(Frame(w.library.units[file_id], start + 1, locals_, b.context, file_id, caller_line=b.line))
 
 
 def _return(w, f: Frame, b) -> None:

@@ -113,7 +113,12 @@ class Walker:
         tooling.publish(self.state)
 
     def _returned(self, frame: Frame) -> None:
-        """A call level ended: what its M73 saved comes back (``modal_state``)."""
+        """A call level ended: what its M73 saved comes back (``modal_state``). Only an
+        M73 (interpreted by ``emit``, never batched) sets ``saved``: without one the
+        batch goes on across the return."""
+        saved = self.state.saved
+        if saved is None or not saved.get("auto"):
+            return
         self.flush()
         before = len(self.ops.rows)
         line = frame.unit.blocks[max(0, min(frame.pc, len(frame.unit.blocks)) - 1)].line
@@ -155,21 +160,26 @@ class Walker:
                 self.flush()  # the blocks before the error stay, as rs274ngc's output does
 
     def _run_frame(self, f: Frame, frames: list[Frame]) -> None:
-        """Run blocks of frame ``f`` until it ends, calls or returns."""
-        blocks = f.unit.blocks
-        if not f.unit.bound:
-            bind(f.unit)
-        n, left = len(blocks), BLOCK_LIMIT - self.blocks_run
+        """Run blocks of frame ``f``, then of the frame it calls or returns to, until
+        the walk ends or a frame reaches the end of its file (``run`` handles that)."""
+        left = BLOCK_LIMIT - self.blocks_run
         ran, b = 0, None
         try:
-            while frames and frames[-1] is f and f.pc < n:
-                b = blocks[f.pc]
-                ran += 1
-                if ran > left:
-                    raise MacroError(msg("the program runs more than {limit:,} blocks", limit=BLOCK_LIMIT),
-                                     b.line)
-
-                b.run(self, f, b)
+            while True:
+                blocks = f.unit.blocks
+                if not f.unit.bound:
+                    bind(f.unit)
+                n = len(blocks)
+                while frames and frames[-1] is f and f.pc < n:
+                    b = blocks[f.pc]
+                    ran += 1
+                    if ran > left:
+                        too_many = msg("the program runs more than {limit:,} blocks", limit=BLOCK_LIMIT)
+                        raise MacroError(too_many, b.line)
+                    b.run(self, f, b)
+                if not frames or frames[-1].pc >= len(frames[-1].unit.blocks):
+                    return
+                f = frames[-1]
         except MacroError as exc:
             raise exc.at(b.line if b is not None else 0, f.unit.name if f.file_id else "") from None
         finally:
@@ -211,7 +221,7 @@ class Walker:
         if not b.words or b.call_only:
             pass
         elif b.simple and self.fast_ok and self.batch.add(b, values, f.iteration, f.where):
-            if len(self.batch.g) >= MAX_ROWS:
+            if len(self.batch) >= MAX_ROWS:
                 self.flush()
         else:
             self._general(f, b, values, len(b.words))
@@ -224,10 +234,14 @@ class Walker:
             by_letter = {w.letter: v for w, v in zip(b.words, values, strict=False) if v is not None}
             self._fanuc_call(f, b, call.letter, by_letter.pop(call.letter), call.column, by_letter)
         elif self.pending_call is not None:
-            block, call, words = self.pending_call
-            self.pending_call = None
-            by_letter = {w.letter: w.value for w in words}
-            self._fanuc_call(f, block, call.letter, call.value, call.column, by_letter)
+            self._pending_call(f)
+
+    def _pending_call(self, f: Frame) -> None:
+        """Run the call ``_general`` found among a line's computed words."""
+        block, call, words = self.pending_call
+        self.pending_call = None
+        by_letter = {w.letter: w.value for w in words}
+        self._fanuc_call(f, block, call.letter, call.value, call.column, by_letter)
 
     def simple_words(self, f: Frame, b: bk.Block) -> None:
         """``words`` for a block of G0-G3 X Y Z I J F words: straight into the batch."""
@@ -238,13 +252,37 @@ class Walker:
             self._general(f, b, values, len(b.words))
         else:
             batch = self.batch
-            batch.g.append(made[0])
-            batch.rows.append(made[1])
-            batch.blocks.append((b, values, f.iteration, f.where))
-            if len(batch.g) >= MAX_ROWS:
+            batch.extend(made)
+            batch.append((b, values, f.iteration, f.where))
+            if len(batch.blocks) >= MAX_ROWS:
                 self.flush()
         if b.assigns:
             self.assign(b, values)
+        if self.pending_call is not None:  # a computed G65 (G#1 with #1 = 65)
+            self._pending_call(f)
+
+    def call_words(self, f: Frame, b: bk.Block) -> None:
+        """``words`` for a Fanuc line that is only a call (``b.call_only``)."""
+        values = b.values(self.scope)
+        f.pc += 1
+        if b.assigns:
+            self.assign(b, values)
+        call = b.call
+        by_letter = {w.letter: v for w, v in zip(b.words, values, strict=False) if v is not None}
+        fanuc.call(self, f, b, call.letter, by_letter.pop(call.letter), call.column, by_letter)
+
+    def g65_words(self, f: Frame, b: bk.Block) -> None:
+        """``call_words`` for a ``G65`` line planned by ``fanuc.g65_plan``."""
+        values = b.values(self.scope)
+        f.pc += 1
+        fanuc.g65(self, f, b, values)
+
+    def return_only(self, f: Frame, b: bk.Block) -> None:
+        """``call_words`` for a line that is only ``M99`` (no P, L, nor assignments)."""
+        f.pc += 1
+        if len(self.frames) == 1:
+            raise MacroError(msg("M99 outside a subprogram (the main program ends with M30)"))
+        fanuc.leave(self, f, None)
 
     def assignments(self, f: Frame, b: bk.Block) -> None:
         """``words`` for a line of assignments only."""
@@ -375,6 +413,12 @@ def _handler(b: bk.Block):
         return Walker.assignments
     if b.kind == bk.WORDS and b.simple and not b.call_only:
         return Walker.simple_words
+    if b.kind == bk.WORDS and b.call_only and b.words:
+        bare_m99 = len(b.words) == 1 and b.words[0] is b.call and b.call.letter == "M" and not b.assigns
+        if bare_m99 and bk.constant(b.call.code) == 99.0:
+            return Walker.return_only
+        b.plan = fanuc.g65_plan(b) if b.call.letter == "G" else None
+        return Walker.call_words if b.plan is None else Walker.g65_words
     return HANDLERS[b.kind]
 
 

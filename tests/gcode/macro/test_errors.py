@@ -111,3 +111,8 @@ def test_the_moves_before_an_error_stay():
                         "G1 X[1/0]\nG1 X9\nM2\n")
     assert [m["end"][0] for m in program.moves] == [0.0, 1.0, 2.0, 3.0, 4.0]
     assert [(d.line, d.column) for d in program.errors] == [(6, 7)]
+
+
+def test_a_computed_g65_on_a_motion_line_is_a_call_and_is_refused_there():
+    text = "O1000\n#1 = 65\nG1 X0 F100\nG#1 X1\nG1 X2\nM30\n"
+    assert errors(text) == [("", 4, 1, "G65 needs P (the program number)")]
