@@ -1,6 +1,9 @@
 """One stream of D frames (a job, a restarted job, or an SD upload) and its seq mapping.
 
-A job streams the program's device lines with seq = program line index. A job
+A job streams the program's device lines with seq = program line index, and sends
+nothing past a program stop line (``M00``, ``M01``, ``M06``) until the machine has
+finished that line, so the lines after a stop wait on the computer, not in the
+machine's queue (docs/protocol.md, "Program stops"). A job
 restarted after a machine reset streams ``preamble + lines[start:]`` as a new JOB,
 so stream seq ``s`` is program line ``s - len(preamble) + start`` (preamble lines map
 to ``start - 1``). Progress is always reported in program line indices.
@@ -9,10 +12,12 @@ to ``start - 1``). Progress is always reported in program line indices.
 from __future__ import annotations
 
 import zlib
-from dataclasses import dataclass
+from bisect import bisect_right
+from dataclasses import dataclass, field
 
 from app.comm.events import ProgressEvent
 from app.comm.rtt import RttEstimator
+from app.comm.stops import is_stop_line
 from app.comm.window import MAX_WINDOW, SendWindow
 
 
@@ -33,6 +38,7 @@ class Stream:
     name: str = ""
     boot: str = ""
     done: int = -1
+    stops: list[int] = field(default_factory=list)  # stream seqs of the program stop lines
 
     @classmethod
     def job(cls, lines: list[str], rtt: RttEstimator, free: int, start: int = 0,
@@ -40,7 +46,10 @@ class Stream:
         """A job over ``lines[start:]`` preceded by ``preamble``."""
         pre = list(preamble or [])
         window = SendWindow(pre + list(lines[start:]), free=max(1, free), rtt=rtt, max_window=max_window)
-        return cls("job", window, len(lines), start, len(pre), boot=boot)
+        stream = cls("job", window, len(lines), start, len(pre), boot=boot,
+                     stops=[seq for seq, line in enumerate(window.lines) if is_stop_line(line)])
+        stream.hold_at_next_stop()
+        return stream
 
     @classmethod
     def upload(cls, name: str, lines: list[str], rtt: RttEstimator) -> Stream:
@@ -56,7 +65,13 @@ class Stream:
         if seq <= self.done:
             return False
         self.done = seq
+        self.hold_at_next_stop()
         return True
+
+    def hold_at_next_stop(self) -> None:
+        """Send up to the first stop line not yet finished, and nothing after it."""
+        i = bisect_right(self.stops, self.done)
+        self.window.hold_at = self.stops[i] if i < len(self.stops) else None
 
     @property
     def complete(self) -> bool:

@@ -48,6 +48,7 @@ class SendWindow:
     high_sent: int = -1
     failed: str = ""
     timeouts: int = 0
+    hold_at: int | None = None  # no frame after this seq is sent (a program stop line)
     _first_sent: dict[int, float] = field(default_factory=dict)
     _resent_seqs: set[int] = field(default_factory=set)
     _retries: dict[int, int] = field(default_factory=dict)
@@ -89,6 +90,8 @@ class SendWindow:
         out = [self._send(seq, now) for seq in sorted(self._repeat) if self.acked < seq < self.next_seq]
         self._repeat.clear()
         limit = min(self.room_end, self.acked + self.max_window, self.total - 1)
+        if self.hold_at is not None:
+            limit = min(limit, self.hold_at)
         while not self.failed and self.next_seq <= limit:
             out.append(self._send(self.next_seq, now))
             self.next_seq += 1

@@ -8,6 +8,8 @@ in order; the spindle is off and Z at the clearance height during the tool chang
 from __future__ import annotations
 
 from app.comm.listener import SessionState
+from app.comm.rtt import RttEstimator
+from app.comm.stream import Stream
 from app.comm.stops import StopWatch, is_stop_line, stop_event
 from tests.comm.simlink import FAST_HOMING, SimLink, assert_oracle
 
@@ -26,6 +28,20 @@ def test_stop_lines_are_read():
     watch = StopWatch()
     assert watch.update("HW", 4) == 5 and watch.update("HW", 4) is None
     assert watch.update("H", 5) is None and watch.update("HW", 6) == 7
+
+
+def test_the_stream_holds_after_each_stop_line_until_the_machine_has_finished_it():
+    stream = Stream.job(PROGRAM, RttEstimator(), free=32)
+    assert stream.stops == STOPS
+    assert [frame.seq for frame in stream.window.due(0.0)] == list(range(6))  # up to M00, not past it
+    stream.window.on_ack(5, 32, 0.01)
+    stream.finish_line(4)  # the lines before the stop are done: the machine holds at M00
+    assert stream.window.due(0.02) == []
+    stream.finish_line(5)  # RESUME: M00 finished
+    assert [frame.seq for frame in stream.window.due(0.03)] == [6, 7]  # to the next stop, M01
+    restarted = Stream.job(PROGRAM, RttEstimator(), free=32, start=8, preamble=["G21", "G90"])
+    assert restarted.stops == [3]  # M06 T2 after the two preamble lines and line 8
+    assert [frame.seq for frame in restarted.window.due(0.0)] == [0, 1, 2, 3]
 
 
 def _link(tmp_path, **settings) -> SimLink:
@@ -63,6 +79,7 @@ def test_the_machine_holds_at_each_stop_and_continues(tmp_path):
     assert [event.line for event, *_ in seen] == ["M00", "M01", "M06 T2"]
     for event, *_, status in seen:
         assert status.state == "HOLD" and "W" in status.flags and status.done == event.index - 1
+        assert status.acc == event.index  # the host sent nothing past the stop line
     (_, rpm0, z0, _), _, (tool, rpm6, z6, _) = seen
     assert rpm0 > 2000 and z0 < 20  # M00 keeps the spindle and the tool where it was
     assert tool.tool == 2 and rpm6 < 100 and abs(z6 - 30.0) < 0.05  # M06: spindle off, Z up
