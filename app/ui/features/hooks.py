@@ -6,6 +6,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from app.gcode.pointlist import looks_like_points
+from app.gcode.reading import file_problem
 
 SNIFF_BYTES = 4096
 
@@ -24,6 +25,10 @@ def feature_dialog(window):
 
 
 def is_point_list(path: str | Path) -> bool:
+    """True when ``path`` is a regular file whose head reads as a point list (a FIFO or a
+    device is never opened here: the loader refuses it with its message)."""
+    if file_problem(path) is not None:
+        return False
     try:
         with Path(path).open("rb") as file:
             head = file.read(SNIFF_BYTES)
