@@ -151,6 +151,7 @@ class JobEvent:
     done: int
     total: int
     name: str = ""
+    refused: int = -1  # the program line the machine refused (-1: none)
 
 
 @dataclass(frozen=True)

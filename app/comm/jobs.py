@@ -289,6 +289,7 @@ class JobControl:
         if self.state in JOB_STATES | SENDING_STATES:
             seq = _refused_seq(frame.text, self.status.done + 1 if self.status else 0)
             line = self.stream.program_index(seq)
+            self.stream.refused = line
             reason = msg(_LINE_REFUSED if frame.text else _LINE_REFUSED_BARE, line=line, **said)
             self._finish_stream(False, reason)
 

@@ -309,7 +309,7 @@ class Session(JobControl):
         stream, self.stream = self.stream, None
         if stream is not None:
             event = JobEvent(stream.kind, completed, reason, stream.program_index(stream.done),
-                             stream.program_total, stream.name)
+                             stream.program_total, stream.name, stream.refused)
             self.listener.on_progress(stream.progress())
             self.listener.on_job_finished(event)
         self._warned = False

@@ -38,6 +38,7 @@ class Stream:
     name: str = ""
     boot: str = ""
     done: int = -1
+    refused: int = -1  # program line of a D line the machine refused
     stops: list[int] = field(default_factory=list)  # stream seqs of the program stop lines
 
     @classmethod

@@ -238,13 +238,14 @@ class SessionBinder(QObject):
                                     .replace("%1", localize(event.reason)) + self._where_it_stopped(event))
 
     def _where_it_stopped(self, event) -> str:
-        """Which source line the job stopped at and how much ran (the log keeps the rest)."""
+        """Which source line the job stopped at (the refused line, else the one after the
+        last finished) and how much ran (the log keeps the rest)."""
         line_map = getattr(getattr(self.job, "program", None), "line_map", None)
-        nxt = event.done + 1
+        nxt = event.refused if event.refused >= 0 else event.done + 1
         if line_map is None or not 0 <= nxt < len(line_map):
             return ""
         return self.tr(" (at source line %1; %2 device lines ran, see the console)").replace(
-            "%1", str(int(line_map[nxt]))).replace("%2", str(nxt))
+            "%1", str(int(line_map[nxt]))).replace("%2", str(event.done + 1))
 
     def on_command(self, result) -> None:
         if result.verb == "SD" and result.args[:1] == ("LIST",) and result.ok:

@@ -18,7 +18,7 @@ from tests.ui.untranslated import english_in_vietnamese, placeholders
 from tests.ui.visible import all_texts
 
 SPEED = 40
-BAD = "G0 X10 Y10\nG1 Z-1 F100\nG1 X200 Y10\nG1 E5\nG2 X20 Y20\n"  # travel warning, two errors
+BAD = "G0 X10 Y10\nG1 Z-1 F100\nG1 X155 Y10\nG1 E5\nG2 X20 Y20\n"  # one travel warning, two errors
 
 
 def _click(qtbot, button):
