@@ -19,6 +19,7 @@ from . import comp, modal_state, offsets, tooling
 from .diagnostics import Report
 from .errors import LineError
 from .lexer import Word
+from .limits import word_problem
 from .motion import do_motion
 from .ops import END, PAUSE, SPINDLE, OpBuffer
 from .state import State
@@ -34,11 +35,17 @@ def _gname(code: float) -> str:
 
 
 def _check_letters(words: list[Word]) -> dict[str, Word]:
+    """Letter -> word of the line's non-G/M words; refuses unknown letters, repeats and
+    numbers no word may hold (``limits.word_problem``: the lexer checks typed numbers,
+    this also checks those a macro computed)."""
     params: dict[str, Word] = {}
     for w in words:
         if w.letter in REFUSED_LETTERS or w.letter not in ALLOWED_LETTERS:
             raise LineError(w.column, REFUSED_LETTERS.get(w.letter) or msg("unknown word {letter}",
                                                                            letter=w.letter))
+        problem = word_problem(w.letter, w.value)
+        if problem:
+            raise LineError(w.column, problem)
         if w.letter in "GM":
             continue
         if w.letter in params:

@@ -31,3 +31,12 @@ def test_a_macro_reads_the_position_and_the_tool():
     assert not program.errors
     moves = [m for m in program.moves if m["kind"] == "rapid"]
     assert moves[-1]["end"][:2] == [4 * 25.4, 1.0 * 25.4]  # X 1 + tool 3, Y 0.5 + 0.5 inch diameter
+
+
+def test_numbers_a_macro_computes_are_checked_as_typed_ones_are():
+    program = load_text("#1 = [10 ** 20]\nG1 X1 F#1\nS[0 - 5]\nG4 P[10 ** 9]\nM2\n")
+    found = {(d.line, d.column): d.message for d in program.errors}
+    assert "number too large: F" in found[2, 7]
+    assert found[3, 1] == "spindle speed S-5 is negative"
+    assert "number too large: P" in found[4, 4]
+    assert not any(line.startswith("G01") for line in program.device_lines)  # no wrapped feed sent
