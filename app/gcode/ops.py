@@ -78,6 +78,10 @@ class Ops:
             self._starts = start
         return self._starts
 
+    def forget_starts(self) -> None:
+        """Free the cached starts (a later ``starts()`` computes them again)."""
+        self._starts = None
+
 
 @dataclass
 class OpBuffer:

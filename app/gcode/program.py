@@ -179,7 +179,7 @@ def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfi
     toolpath = build(ops, the_plan.first, profile)
     checking.join()
     program_checks(toolpath, profile, report)
-    ops._starts = None  # the Toolpath has its own copy of the moves' starts; a later caller recomputes them
+    ops.forget_starts()  # the Toolpath has its own copy of the moves' starts
     return Program(name, lines, report.finish(), ops, toolpath, profile, the_plan)
 
 

@@ -129,12 +129,7 @@ def if_then(w, f: Frame, b) -> None:
 
 
 def while_do(w, f: Frame, b) -> None:
-    if w.test(b.args[0]):
-        w.loop_pass(f, f.pc)
-        f.pc += 1
-    else:
-        w.loop_done(f, f.pc)
-        f.pc = f.unit.jump[f.pc]
+    w.loop_test(f, w.test(b.args[0]))
 
 
 def do(w, f: Frame, b) -> None:

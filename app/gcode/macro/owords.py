@@ -84,13 +84,7 @@ def _do_while(w, f: Frame, b) -> None:
 
 
 def _while(w, f: Frame, b) -> None:
-    v = b.args[0](w.scope)
-    if v is not None and v != 0.0:
-        w.loop_pass(f, f.pc)
-        f.pc += 1
-    else:
-        w.loop_done(f, f.pc)
-        f.pc = f.unit.jump[f.pc]
+    w.loop_test(f, w.test(b.args[0]))
 
 
 def _endwhile(w, f: Frame, b) -> None:

@@ -205,6 +205,16 @@ class Walker:
         """A loop's test passed: the rows that follow are of pass ``count + 1``."""
         f.iteration = f.counts.get(head, 0) + 1
 
+    def loop_test(self, f: Frame, passed: bool) -> None:
+        """The test of the loop whose head is ``f.pc`` (WHILE, o-word while): into the
+        body, or past the loop's end."""
+        if passed:
+            self.loop_pass(f, f.pc)
+            f.pc += 1
+        else:
+            self.loop_done(f, f.pc)
+            f.pc = f.unit.jump[f.pc]
+
     def loop_done(self, f: Frame, head: int) -> None:
         f.counts.pop(head, None)
         f.iteration = 0
