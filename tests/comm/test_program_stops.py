@@ -9,8 +9,8 @@ from __future__ import annotations
 
 from app.comm.listener import SessionState
 from app.comm.rtt import RttEstimator
-from app.comm.stream import Stream
 from app.comm.stops import StopWatch, is_stop_line, stop_event
+from app.comm.stream import Stream
 from tests.comm.simlink import FAST_HOMING, SimLink, assert_oracle
 
 PROGRAM = [
