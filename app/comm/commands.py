@@ -76,6 +76,10 @@ class CommandQueue:
         dropped, self.outstanding = self.outstanding, None
         return dropped
 
+    def is_waiting(self, command_id: int) -> bool:
+        """True while command ``command_id`` is queued and not yet sent."""
+        return any(command.id == command_id for command in self.waiting)
+
     def idle(self) -> bool:
         return self.outstanding is None and not self.waiting
 

@@ -85,6 +85,7 @@ class JobControl:
             return False
         self.stream = Stream.upload(name, lines, self.rtt)
         self._set_state(S.UPLOADING)
+        self.stream.opener = self.commands.next_id  # the id SD PUT gets: its D frames wait for it
         self.submit("SD", "PUT", name, len(lines), f"{sd_crc32(lines):08X}", then=self._upload_answered)
         return True
 
@@ -246,6 +247,8 @@ class JobControl:
         stream = self.stream
         if stream is None or self.state not in SENDING_STATES or not self.attached:
             return
+        if self.commands.is_waiting(stream.opener):  # SD PUT still behind another command:
+            return  # a D frame before it would reach a machine with no upload open (BAD_SEQ)
         for frame in stream.window.due(now):
             self._send(frame)
         if stream.window.failed:

@@ -39,6 +39,7 @@ class Stream:
     boot: str = ""
     done: int = -1
     refused: int = -1  # program line of a D line the machine refused
+    opener: int = 0  # id of the command that opens the stream on the machine (SD PUT)
     stops: list[int] = field(default_factory=list)  # stream seqs of the program stop lines
 
     @classmethod

@@ -297,6 +297,18 @@ def test_upload_sends_count_and_crc32():
     assert h.rec.last("on_job_finished").completed
 
 
+def test_upload_frames_wait_until_the_sd_put_itself_has_been_sent():
+    h = Harness()
+    listing = h.session.list_sd()  # a command outstanding: SD PUT queues behind it
+    h.take()
+    assert h.session.upload_to_sd("part.nc", ["G00 X1", "G01 X2 F100"])
+    assert h.take() == []  # no D frame may reach a machine with no upload open (BAD_SEQ)
+    h.reply(fr.Ok(listing, "SD", "LIST"))
+    out = h.take()
+    kinds = [type(f) for f in out]
+    assert kinds[0] is fr.Command and out[0].args[0] == "PUT" and fr.Data in kinds  # PUT first
+
+
 # ---------------------------------------------------------------------- link loss and resume
 
 
