@@ -154,8 +154,8 @@ def _expanded(lines: Lines, name: str, folder: Path | None, start: State, report
     buffer = OpBuffer()
     trace = macro.expand(lines.as_list(), name, folder, start, buffer, report)
     ops = buffer.finish()
-    ops.source = Source(np.asarray(trace.file, np.int32), np.asarray(trace.call_line, np.int64),
-                        np.asarray(trace.context, np.int32), np.asarray(trace.iteration, np.int32),
+    ops.source = Source(trace.file.array(np.int32), trace.call_line.array(np.int64),
+                        trace.context.array(np.int32), trace.iteration.array(np.int32),
                         trace.files, trace.names)
     return ops
 

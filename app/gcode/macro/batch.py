@@ -19,8 +19,11 @@ from app.gcode.bulk import Scan
 from app.gcode.interp import interpret_line
 from app.gcode.lexer import Word
 
+from .expr import NAMESPACE
+
 LETTERS = "XYZIJF"
 SIMPLE_LETTERS = frozenset("GXYZIJF")
+ROW = 10  # per block: G X Y Z I J F, source line, where id, loop pass
 MAX_ROWS = 1 << 16
 _NAN = float("nan")
 _MOTION = (0.0, 1.0, 2.0, 3.0)
@@ -31,41 +34,83 @@ def simple_shape(letters: list[str]) -> bool:
     return bool(letters) and len(set(letters)) == len(letters) and SIMPLE_LETTERS.issuperset(letters)
 
 
-def row_maker(letters: list[str], vacant: bool):
-    """A compiled ``fn(values) -> (g, X, Y, Z, I, J, F) or None`` for a block of these words
-    (``None`` when its G word is not G0-G3; ``vacant``: a ``None`` value leaves a word out)."""
+def _row_codes(letters: list[str], codes: list[str], vacant: bool, line: int) -> tuple[str, str]:
+    """(the row's Python code, the code of its G word) for a block of these words."""
     row = ["nan"] * 6
     g = "-1.0"
-    for i, c in enumerate(letters):
-        code = f"v[{i}]" if not vacant else f"(nan if v[{i}] is None else v[{i}])"
+    for c, code in zip(letters, codes, strict=True):
+        if vacant and not _is_number(code):
+            code = f"({'-1.0' if c == 'G' else 'nan'} if (t := {code}) is None else t)"
         if c == "G":
-            g = f"v[{i}]" if not vacant else f"(-1.0 if v[{i}] is None else v[{i}])"
+            g = code
         else:
             row[LETTERS.index(c)] = code
-    body = f"(({g}), {', '.join(row)})"
+    return f"({g}, {', '.join(row)}, {line}, w, it)", g
+
+
+def _is_number(code: str) -> bool:
+    try:
+        float(code)
+    except ValueError:
+        return False
+    return True
+
+
+def row_maker(letters: list[str], vacant: bool, line: int):
+    """A compiled ``fn(values, where, iteration) -> row or None`` for a block of these words
+    (``None`` when its G word is not G0-G3; ``vacant``: a ``None`` value leaves a word out)."""
+    body, g = _row_codes(letters, [f"v[{i}]" for i in range(len(letters))], vacant, line)
     check = "" if "G" not in letters else f" if {g} in MOTION else None"
-    return eval(f"lambda v: {body}{check}", {"nan": _NAN, "MOTION": _MOTION})  # noqa: S307
+    return eval(f"lambda v, w, it: {body}{check}", {"nan": _NAN, "MOTION": _MOTION})  # noqa: S307
+
+
+def fast_row_code(letters: list[str], codes: list[str], vacant: bool, line: int) -> str | None:
+    """The code of a row read straight from the scope ``S`` (the words' value ``codes``),
+    for a block whose G word, if any, is a constant G0-G3; else None."""
+    if "G" in letters:
+        g = codes[letters.index("G")]
+        if not _is_number(g) or float(g) not in _MOTION:
+            return None
+    return _row_codes(letters, codes, vacant, line)[0]
+
+
+def compile_rows(row_codes: list[str]):
+    """``fn(S, where, iteration)`` -> the rows of ``row_codes`` one after the other, flat."""
+    flat = ", ".join(code[1:-1] for code in row_codes)
+    return eval(f"lambda S, w, it: ({flat})", {**NAMESPACE, "nan": _NAN})  # noqa: S307
 
 
 class Batch:
     """Collects plain motion blocks (see the module docstring)."""
 
     def __init__(self) -> None:
-        self.flat: list[float] = []  # G X Y Z I J F per block, one after the other, NaN when absent
-        self.blocks: list[tuple] = []  # (block, words values, iteration, where: see ``add``)
+        self.flat: list[float] = []  # ROW numbers per block, one block after the other, NaN when absent
+        self.blocks: list = []  # the compiled block of each row
+        self.wheres: list[tuple] = []  # where id -> (file id, calling line or 0, subprogram id, report)
+        self._where_ids: dict[tuple, int] = {}
+        self._where_table: np.ndarray | None = None
         self.extend, self.append = self.flat.extend, self.blocks.append  # the walker's hot path
 
     def __len__(self) -> int:
         return len(self.blocks)
 
-    def add(self, block, values, iteration: int, where: tuple) -> bool:
+    def where_id(self, where: tuple) -> int:
+        """The id of a frame's ``where`` (file id, calling line or 0, subprogram id, report)."""
+        wid = self._where_ids.get(where)
+        if wid is None:
+            wid = self._where_ids[where] = len(self.wheres)
+            self.wheres.append(where)
+            self._where_table = None
+        return wid
+
+    def add(self, block, values, iteration: int, where: int) -> bool:
         """Add a block whose word ``values`` are all known; False (nothing added) when
-        its G word is not G0-G3. ``where``: (file id, calling line or 0, subprogram, report)."""
-        made = block.row(values)
+        its G word is not G0-G3. ``where``: a ``where_id``."""
+        made = block.row(values, where, iteration)
         if made is None:
             return False
         self.flat.extend(made)
-        self.blocks.append((block, values, iteration, where))
+        self.blocks.append(block)
         return True
 
     def flush(self, state, ops, trace):
@@ -73,7 +118,8 @@ class Batch:
         if not self.blocks:
             return state
         n = len(self.blocks)
-        table = np.array(self.flat, np.float64).reshape(n, 7)
+        table = np.array(self.flat, np.float64).reshape(n, ROW)
+        self.flat.clear()
         values = {c: table[:, i + 1] for i, c in enumerate(LETTERS)}
         values["M"] = values["S"] = np.full(n, np.nan)
         g = table[:, 0].astype(np.int8)
@@ -81,36 +127,39 @@ class Batch:
         before = len(ops.blocks)
         state, stop = vector.run(scan, 0, n, state, ops)
         if len(ops.blocks) > before:
-            self._trace_block(ops, trace)
+            self._trace_block(ops, trace, table)
         for i in range(stop, n):
-            state = self._one(i, state, ops, trace)
+            state = self._one(self.blocks[i], table[i].tolist(), state, ops, trace)
             if state.ended:
                 break
-        self.flat.clear()
         self.blocks.clear()
         return state
 
-    def _trace_block(self, ops, trace) -> None:
-        line, *rest = ops.blocks[-1]
-        index = line - 1  # vector.run numbers rows by their place in the batch
-        meta = [self.blocks[i] for i in index.tolist()]
-        lines = [m[0].line for m in meta]
-        ops.blocks[-1] = (np.asarray(lines, np.int64), *rest)
-        trace.file.extend(m[3][0] for m in meta)
-        trace.call_line.extend([m[3][1] or line for m, line in zip(meta, lines, strict=True)])
-        trace.context.extend(m[3][2] for m in meta)
-        trace.iteration.extend(m[2] for m in meta)
+    def _where_columns(self) -> np.ndarray:
+        if self._where_table is None:
+            self._where_table = np.array([w[:3] for w in self.wheres], np.int64).reshape(-1, 3)
+        return self._where_table
 
-    def _one(self, i: int, state, ops, trace):
-        block, values, iteration, (file_id, call_line, context, report) = self.blocks[i]
-        call_line = call_line or block.line
-        pairs = zip(block.words, values, strict=False)
-        words = [Word(w.letter, v, w.column) for w, v in pairs if v is not None]
+    def _trace_block(self, ops, trace, table: np.ndarray) -> None:
+        line, *rest = ops.blocks[-1]
+        rows = table[line - 1]  # vector.run numbers rows by their place in the batch
+        lines = rows[:, 7].astype(np.int64)
+        where = self._where_columns()[rows[:, 8].astype(np.intp)]
+        ops.blocks[-1] = (lines, *rest)
+        trace.file.add(where[:, 0])
+        trace.call_line.add(np.where(where[:, 1] == 0, lines, where[:, 1]))
+        trace.context.add(where[:, 2])
+        trace.iteration.add(rows[:, 9].astype(np.int64))
+
+    def _one(self, block, row: list[float], state, ops, trace):
+        """Interpret one block of the batch, its words read back from its ``row``."""
+        file_id, call_line, context, report = self.wheres[int(row[8])]
+        words = []
+        for w in block.words:
+            v = row[0] if w.letter == "G" else row[1 + LETTERS.index(w.letter)]
+            if v == v and not (w.letter == "G" and v == -1.0):  # NaN, or -1 for G: a vacant word
+                words.append(Word(w.letter, v, w.column))
         before = len(ops.rows)
         state, _ = interpret_line(state, words, block.line, ops, report)
-        n = len(ops.rows) - before
-        trace.file.extend([file_id] * n)
-        trace.call_line.extend([call_line] * n)
-        trace.context.extend([context] * n)
-        trace.iteration.extend([iteration] * n)
+        trace.repeat(len(ops.rows) - before, file_id, context, int(row[9]), call_line or block.line)
         return state

@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 
 from app.i18n import msg
 
-from .batch import row_maker, simple_shape
+from .batch import compile_rows, fast_row_code, row_maker, simple_shape
 from .errors import MacroError
 from .expr import Reader, compile_code, compile_codes, constant
 from .text import squeeze
@@ -58,6 +58,9 @@ class Block:
     targets: list = field(default_factory=list)  # per set: a number, a name, or (index into values,)
     simple: bool = False  # only G X Y Z I J F words, each once: may go to the fast path
     row: object = None  # for a simple block: values -> a batch row (batch.row_maker)
+    fast: object = None  # for a simple block without assignments: scope -> a batch row, or None
+    fast_code: str | None = None  # the code of ``fast`` (runs.py joins those of a run)
+    reads_machine: bool = False  # reads #5000 and up or a computed number (``S.num``)
     assigns: list = field(default_factory=list)  # (target, index of its value)
     vacant: bool = False  # Fanuc: a parameter may be vacant
     run: object = None  # the walker's handler for this block (walker.bind)
@@ -79,11 +82,16 @@ class Block:
         self.values = compile_codes(codes) if codes else None
         self.simple = self.kind == WORDS and simple_shape([w.letter for w in self.words])
         if self.simple:
-            self.row = row_maker([w.letter for w in self.words], self.vacant)
+            letters = [w.letter for w in self.words]
+            self.row = row_maker(letters, self.vacant, self.line)
+            if not self.sets:
+                self.fast_code = fast_row_code(letters, [w.code for w in self.words], self.vacant, self.line)
+                self.fast = compile_rows([self.fast_code]) if self.fast_code else None
         if self.vacant and self.kind == WORDS:  # Fanuc: a call line read without building words
             self.call = next((w for w in self.words if (w.letter, constant(w.code)) in _CALLS), None)
             self.call_only = self.call is not None and (
                 self.call.letter == "G" or all(w.letter in "MPL" for w in self.words))
+        self.reads_machine = any("S.num(" in code for code in codes)
         n = len(self.words)
         self.assigns = [(target, n + i) for i, target in enumerate(self.targets)]
         if self.kind == OWORD and self.keyword == "call":  # all arguments in one function

@@ -18,7 +18,6 @@ from .errors import MacroError
 from .frame import Frame
 
 _G65_WORDS = frozenset(FANUC_ARGUMENTS) | {"G", "P", "L"}
-_NAMES: dict[int, str] = {}  # program number -> its name in the trace ("O9010")
 
 
 def call(w, f: Frame, b, letter: str, code: float, column: int, by_letter: dict) -> None:
@@ -54,31 +53,45 @@ def call(w, f: Frame, b, letter: str, code: float, column: int, by_letter: dict)
 
 def g65_plan(b) -> tuple | None:
     """For a ``G65 P..`` line of distinct argument letters and no assignments: (index of
-    P, index of L or -1, [(index, local number)]) for ``g65``; else None."""
+    P, index of L or -1, fn(values) -> argument values, their local numbers, a cache of
+    the programs it called) for ``g65``; else None."""
     letters = [w.letter for w in b.words]
     if b.assigns or len(set(letters)) != len(letters) or "P" not in letters:
         return None
     if not _G65_WORDS.issuperset(letters):
         return None
     args = [(i, FANUC_ARGUMENTS[c]) for i, c in enumerate(letters) if c in FANUC_ARGUMENTS]
-    return letters.index("P"), letters.index("L") if "L" in letters else -1, args
+    pick = eval("lambda v: (" + "".join(f"v[{i}], " for i, _ in args) + ")")  # noqa: S307
+    return (letters.index("P"), letters.index("L") if "L" in letters else -1, pick,
+            tuple(n for _, n in args), {})
 
 
 def g65(w, f: Frame, b, values) -> None:
     """``call`` for a line planned by ``g65_plan`` (the same rules, fewer steps)."""
-    p, repeat, args = b.plan
+    p, repeat, pick, numbers, called = b.plan
     number = values[p]
     if number is None:
         raise MacroError(msg("G65 needs P (the program number)"), b.line, b.call.column)
-    number, count = int(number), (1 if repeat < 0 or values[repeat] is None else int(values[repeat]))
+    count = 1 if repeat < 0 or values[repeat] is None else int(values[repeat])
     if count < 1:
         return
-    file_id, start = w.library.program(number, f.file_id)
-    locals_ = {n: v for i, n in args if (v := values[i]) is not None}
-    unit = w.library.units[file_id]
-    program = unit.program_of[start] if unit.program_of else 0
-    name = _NAMES.get(number) or _NAMES.setdefault(number, f"O{number:04d}")
+    key = (int(number), f.file_id)
+    target = called.get(key)
+    if target is None:
+        target = called[key] = _program(w, *key)
+    unit, start, program, name, file_id = target
+    given = pick(values)
+    locals_ = dict(zip(numbers, given, strict=True))
+    if None in given:
+        locals_ = {n: v for n, v in locals_.items() if v is not None}
     w._push(Frame(unit, start, locals_, name, file_id, program, count, b.line))
+
+
+def _program(w, number: int, caller: int) -> tuple:
+    """(unit, first block, program start, trace name, file id) of program ``O<number>``."""
+    file_id, start = w.library.program(number, caller)
+    unit = w.library.units[file_id]
+    return unit, start, unit.program_of[start] if unit.program_of else 0, f"O{number:04d}", file_id
 
 
 def leave(w, f: Frame, label) -> None:

@@ -22,7 +22,7 @@ class Frame:
     """One call level (see the module docstring)."""
 
     __slots__ = ("unit", "pc", "locals", "named", "program", "name", "file_id", "calls_left",
-                 "counts", "repeat_left", "iteration", "caller_line", "where")
+                 "counts", "repeat_left", "iteration", "caller_line", "where", "wid")
 
     def __init__(self, unit: Unit, pc: int, locals_: dict, name: str, file_id: int,
                  program: int = 0, calls_left: int = 1, caller_line: int = 0):
@@ -33,6 +33,7 @@ class Frame:
         self.repeat_left: dict[int, int] = {}
         self.iteration = 0
         self.where: tuple = ()  # (file id, calling line or 0, subprogram id, report): set by the walker
+        self.wid = 0  # the batch's id of ``where``
 
 
 class Scope:

@@ -14,10 +14,9 @@ first error stops the walk (rs274ngc stops too); it is reported with its file.
 from __future__ import annotations
 
 import contextlib
-from dataclasses import dataclass, field
 
 from app.gcode import modal_state, tooling
-from app.gcode.diagnostics import ERROR, WARNING, Report
+from app.gcode.diagnostics import ERROR, Report
 from app.gcode.interp import finish_program, interpret_line
 from app.gcode.lexer import Word
 from app.gcode.ops import OpBuffer
@@ -28,37 +27,12 @@ from .batch import MAX_ROWS, Batch
 from .calls import Library
 from .errors import MacroError
 from .frame import Frame, Scope
+from .trace import FileReport, Trace
 
 LOOP_LIMIT = 1_000_000
 DEPTH_LIMIT = 64
 MOVE_LIMIT = 20_000_000
 BLOCK_LIMIT = 50_000_000
-
-
-@dataclass
-class Trace:
-    """Per row of the expansion: file id, main-program line, subprogram id, iteration."""
-
-    files: list[str]
-    names: list[str] = field(default_factory=lambda: [""])
-    file: list[int] = field(default_factory=list)
-    call_line: list[int] = field(default_factory=list)
-    context: list[int] = field(default_factory=list)
-    iteration: list[int] = field(default_factory=list)
-    state: object = None  # the interpreter's state after the walk
-
-
-class FileReport:
-    """A ``Report`` seen through one file: what ``interpret_line`` reports gets the file."""
-
-    def __init__(self, report: Report, file: str):
-        self.report, self.file = report, file
-
-    def error(self, line, column, message, key=""):
-        self.report.add(line, column, ERROR, message, key, file=self.file)
-
-    def warning(self, line, column, message, key=""):
-        self.report.add(line, column, WARNING, message, key, file=self.file)
 
 
 class Walker:
@@ -78,26 +52,40 @@ class Walker:
         self.batch = Batch()
         self.pending_call = None
         self._names: dict[str, int] = {"": 0}
+        self._wheres: dict[tuple, tuple] = {}  # (file id, calling line, name) -> (where, its id)
         first = next((i for i, b in enumerate(main.blocks) if b.kind != bk.SKIP), 0)
         self._push(Frame(main, 0, {}, "", 0, main.program_of[first] if self.fanuc else 0))
 
     # --- frames ------------------------------------------------------------------------
     def _push(self, frame: Frame) -> None:
-        if len(self.frames) >= DEPTH_LIMIT + 1:
+        frames = self.frames
+        if len(frames) >= DEPTH_LIMIT + 1:
             raise MacroError(msg("calls nested deeper than {depth} levels", depth=DEPTH_LIMIT))
-        if self.frames:
-            frame.iteration = frame.iteration or self.frames[-1].iteration  # the caller's loop pass
-        self.frames.append(frame)
+        if frames:
+            frame.iteration = frame.iteration or frames[-1].iteration  # the caller's loop pass
+            main = frames[0]
+            call_line = main.unit.blocks[main.pc - 1].line  # the main program's line running
+        else:
+            call_line = 0
+        frames.append(frame)
         self.scope.frame = frame
-        if frame.name not in self._names:
-            self._names[frame.name] = len(self.trace.names)
-            self.trace.names.append(frame.name)
-        while len(self.reports) <= frame.file_id:
+        key = (frame.file_id, call_line, frame.name)
+        known = self._wheres.get(key)
+        if known is None:
+            known = self._wheres[key] = self._where(*key)
+        frame.where, frame.wid = known
+
+    def _where(self, file_id: int, call_line: int, name: str) -> tuple[tuple, int]:
+        """A frame's ``where`` (file id, calling line or 0, subprogram id, report) and its id."""
+        if name not in self._names:
+            self._names[name] = len(self.trace.names)
+            self.trace.names.append(name)
+        while len(self.reports) <= file_id:
             unit = self.library.units[len(self.reports)]
             self.trace.files.append(unit.name)
             self.reports.append(FileReport(self.report, unit.name))
-        call_line = self._call_line(frame, None) if len(self.frames) > 1 else 0
-        frame.where = (frame.file_id, call_line, self._names[frame.name], self.reports[frame.file_id])
+        where = (file_id, call_line, self._names[name], self.reports[file_id])
+        return where, self.batch.where_id(where)
 
     def _pop(self) -> Frame:
         frame = self.frames.pop()
@@ -133,13 +121,8 @@ class Walker:
             return
         before = len(self.ops.rows)
         finish_program(self.state, self.ops)
-        n = len(self.ops.rows) - before
-        if n:
-            t = self.trace
-            t.file.extend([0] * n)
-            t.call_line.extend(int(row[0]) for row in self.ops.rows[before:])
-            t.context.extend([0] * n)
-            t.iteration.extend([0] * n)
+        rows = self.ops.rows[before:]
+        self.trace.repeat(len(rows), 0, 0, 0, [int(row[0]) for row in rows])
 
     # --- the loop --------------------------------------------------------------------
     def run(self) -> None:
@@ -230,7 +213,7 @@ class Walker:
         f.pc += 1
         if not b.words or b.call_only:
             pass
-        elif b.simple and self.fast_ok and self.batch.add(b, values, f.iteration, f.where):
+        elif b.simple and self.fast_ok and self.batch.add(b, values, f.iteration, f.wid):
             if len(self.batch) >= MAX_ROWS:
                 self.flush()
         else:
@@ -255,15 +238,21 @@ class Walker:
 
     def simple_words(self, f: Frame, b: bk.Block) -> None:
         """``words`` for a block of G0-G3 X Y Z I J F words: straight into the batch."""
-        values = b.values(self.scope)
         f.pc += 1
-        made = b.row(values) if self.fast_ok else None
+        batch = self.batch
+        if b.fast is not None and self.fast_ok:  # no assignments, a constant G0-G3 or none
+            batch.extend(b.fast(self.scope, f.wid, f.iteration))
+            batch.append(b)
+            if len(batch.blocks) >= MAX_ROWS:
+                self.flush()
+            return
+        values = b.values(self.scope)
+        made = b.row(values, f.wid, f.iteration) if self.fast_ok else None
         if made is None:
             self._general(f, b, values, len(b.words))
         else:
-            batch = self.batch
             batch.extend(made)
-            batch.append((b, values, f.iteration, f.where))
+            batch.append(b)
             if len(batch.blocks) >= MAX_ROWS:
                 self.flush()
         if b.assigns:
@@ -353,17 +342,12 @@ class Walker:
 
     def _trace_rows(self, f: Frame, call_line: int, before: int, line: int = 0) -> None:
         """The rows added since row ``before`` come from frame ``f`` at ``call_line``."""
-        n = len(self.ops.rows) - before
-        if n:
-            t = self.trace
-            t.file.extend([f.file_id] * n)
-            if f is self.frames[0]:  # the main program: each row's own line (a held move's too)
-                t.call_line.extend(int(row[0]) for row in self.ops.rows[before:])
-            else:
-                t.call_line.extend([call_line] * n)
-            t.context.extend([self._names[f.name]] * n)
-            t.iteration.extend([f.iteration] * n)
-            if len(t.file) > MOVE_LIMIT:
+        rows = self.ops.rows[before:]
+        if rows:
+            main = f is self.frames[0]  # the main program: each row's own line (a held move's too)
+            lines = [int(row[0]) for row in rows] if main else call_line
+            self.trace.repeat(len(rows), f.file_id, self._names[f.name], f.iteration, lines)
+            if len(self.trace.file) > MOVE_LIMIT:
                 raise MacroError(msg("the expansion makes more than {limit:,} moves", limit=MOVE_LIMIT), line)
 
     def _after_end(self, f: Frame) -> None:
@@ -406,6 +390,7 @@ class Walker:
 
 from . import fanuc  # noqa: E402  (the statement handlers use Walker's helpers)
 from .owords import handler as oword_handler  # noqa: E402
+from .runs import run_handler, runs  # noqa: E402
 
 HANDLERS = [None] * 10  # by block kind
 for _kind, _handler in {
@@ -433,7 +418,10 @@ def _handler(b: bk.Block):
 
 
 def bind(unit) -> None:
-    """Give every block of ``unit`` the handler that runs it (once per unit)."""
+    """Give every block of ``unit`` the handler that runs it (once per unit); a block
+    that starts a straight run of moves runs the whole run (``runs.py``)."""
     for b in unit.blocks:
         b.run = _handler(b)
+    for i, (members, span) in runs(unit).items():
+        unit.blocks[i].run = run_handler(members, span, unit.blocks[i].run)
     unit.bound = True
