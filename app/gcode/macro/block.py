@@ -18,6 +18,7 @@ from app.i18n import msg
 from .batch import compile_rows, fast_row_code, row_maker, simple_shape
 from .errors import MacroError
 from .expr import Reader, compile_code, compile_codes, constant
+from .stores import compile_stores
 from .text import squeeze
 
 WORDS, SKIP, OWORD, PROGRAM, IF_GOTO, IF_THEN, GOTO, WHILE, DO, END = range(10)
@@ -62,6 +63,7 @@ class Block:
     fast_code: str | None = None  # the code of ``fast`` (runs.py joins those of a run)
     reads_machine: bool = False  # reads #5000 and up or a computed number (``S.num``)
     assigns: list = field(default_factory=list)  # (target, index of its value)
+    store: object = None  # fn(scope, values) applying ``assigns`` (frame.compile_stores)
     vacant: bool = False  # Fanuc: a parameter may be vacant
     run: object = None  # the walker's handler for this block (walker.bind)
     call: Word | None = None  # Fanuc: the M98/M99/G65 word of the line (a constant)
@@ -94,6 +96,8 @@ class Block:
         self.reads_machine = any("S.num(" in code for code in codes)
         n = len(self.words)
         self.assigns = [(target, n + i) for i, target in enumerate(self.targets)]
+        if self.assigns:
+            self.store = compile_stores(self.assigns, self.vacant)
         if self.kind == OWORD and self.keyword == "call":  # all arguments in one function
             self.values = compile_codes(self.args) if self.args else None
             self.context = f"o{self.oname}" if self.oname.isdigit() else f"o<{self.oname}>"

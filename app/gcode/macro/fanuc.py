@@ -53,22 +53,21 @@ def call(w, f: Frame, b, letter: str, code: float, column: int, by_letter: dict)
 
 def g65_plan(b) -> tuple | None:
     """For a ``G65 P..`` line of distinct argument letters and no assignments: (index of
-    P, index of L or -1, fn(values) -> argument values, their local numbers, a cache of
-    the programs it called) for ``g65``; else None."""
+    P, index of L or -1, fn(values) -> the locals its arguments set, a cache of the
+    programs it called) for ``g65``; else None."""
     letters = [w.letter for w in b.words]
     if b.assigns or len(set(letters)) != len(letters) or "P" not in letters:
         return None
     if not _G65_WORDS.issuperset(letters):
         return None
     args = [(i, FANUC_ARGUMENTS[c]) for i, c in enumerate(letters) if c in FANUC_ARGUMENTS]
-    pick = eval("lambda v: (" + "".join(f"v[{i}], " for i, _ in args) + ")")  # noqa: S307
-    return (letters.index("P"), letters.index("L") if "L" in letters else -1, pick,
-            tuple(n for _, n in args), {})
+    given = eval("lambda v: {" + "".join(f"{n}: v[{i}], " for i, n in args) + "}")  # noqa: S307
+    return letters.index("P"), letters.index("L") if "L" in letters else -1, given, {}
 
 
 def g65(w, f: Frame, b, values) -> None:
     """``call`` for a line planned by ``g65_plan`` (the same rules, fewer steps)."""
-    p, repeat, pick, numbers, called = b.plan
+    p, repeat, given, called = b.plan
     number = values[p]
     if number is None:
         raise MacroError(msg("G65 needs P (the program number)"), b.line, b.call.column)
@@ -80,9 +79,8 @@ def g65(w, f: Frame, b, values) -> None:
     if target is None:
         target = called[key] = _program(w, *key)
     unit, start, program, name, file_id = target
-    given = pick(values)
-    locals_ = dict(zip(numbers, given, strict=True))
-    if None in given:
+    locals_ = given(values)
+    if None in locals_.values():  # a vacant argument sets nothing
         locals_ = {n: v for n, v in locals_.items() if v is not None}
     w._push(Frame(unit, start, locals_, name, file_id, program, count, b.line))
 

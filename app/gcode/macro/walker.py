@@ -219,9 +219,7 @@ class Walker:
         else:
             self._general(f, b, values, len(b.words))
         if b.assigns:
-            assign = self.scope.assign
-            for target, i in b.assigns:
-                assign(values[target[0]] if type(target) is tuple else target, values[i])
+            self.assign(b, values)
         if b.call_only:
             call = b.call
             by_letter = {w.letter: v for w, v in zip(b.words, values, strict=False) if v is not None}
@@ -287,14 +285,11 @@ class Walker:
         """``words`` for a line of assignments only."""
         values = b.values(self.scope)
         f.pc += 1
-        assign = self.scope.assign
-        for target, i in b.assigns:
-            assign(values[target[0]] if type(target) is tuple else target, values[i])
+        b.store(self.scope, values)
 
     def assign(self, b: bk.Block, values) -> None:
         """Apply the line's assignments (their values were read with the line)."""
-        for target, i in b.assigns:
-            self.scope.assign(values[target[0]] if type(target) is tuple else target, values[i])
+        b.store(self.scope, values)
 
     def _general(self, f: Frame, b: bk.Block, values, n: int) -> None:
         words = []
