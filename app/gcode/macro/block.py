@@ -17,7 +17,7 @@ from app.i18n import msg
 
 from .batch import compile_rows, fast_row_code, row_maker, simple_shape
 from .errors import MacroError
-from .expr import Reader, compile_code, compile_codes, constant
+from .expr import Reader, compile_code, compile_codes, compile_locals, constant
 from .stores import compile_stores
 from .text import squeeze
 
@@ -70,6 +70,7 @@ class Block:
     call_only: bool = False  # Fanuc: the line is only that call and its P/L/arguments
     context: str = ""  # LinuxCNC call: the trace's name of the subroutine it runs
     plan: tuple | None = None  # Fanuc G65 line: where its P, L and arguments are (fanuc.g65_plan)
+    called: dict = field(default_factory=dict)  # o-word call: caller's file id -> (unit, start, file id)
 
     def finish(self) -> Block:
         """Compile the codes of the line into functions (done once)."""
@@ -99,7 +100,7 @@ class Block:
         if self.assigns:
             self.store = compile_stores(self.assigns, self.vacant)
         if self.kind == OWORD and self.keyword == "call":  # all arguments in one function
-            self.values = compile_codes(self.args) if self.args else None
+            self.values = compile_locals(self.args)
             self.context = f"o{self.oname}" if self.oname.isdigit() else f"o<{self.oname}>"
         self.args = [compile_code(a) for a in self.args]
         return self

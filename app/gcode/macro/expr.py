@@ -129,6 +129,11 @@ def compile_codes(codes: list[str]):
     return eval("lambda S: (" + "".join(c + ", " for c in codes) + ")", NAMESPACE)  # noqa: S307
 
 
+def compile_locals(codes: list[str]):
+    """``fn(S)`` -> ``{1: value of codes[0], 2: ...}`` (a call's arguments into ``#1``..)."""
+    return eval("lambda S: {" + "".join(f"{i}: {c}, " for i, c in enumerate(codes, 1)) + "}", NAMESPACE)  # noqa: S307
+
+
 def compile_code(code: str):
     """A function ``fn(S) -> value`` computing ``code``."""
     return eval("lambda S: " + code, NAMESPACE)  # noqa: S307

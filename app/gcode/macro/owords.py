@@ -15,30 +15,32 @@ from app.i18n import msg
 from .errors import MacroError
 from .frame import Frame
 
-_NUMBERS = range(1, 31)  # a call's arguments go to #1, #2 ...
-
 
 def _sub(w, f: Frame, b) -> None:
     f.pc = f.unit.jump[f.pc]
 
 
 def _call(w, f: Frame, b) -> None:
-    args = b.values(w.scope) if b.values is not None else ()
-    file_id, start = w.library.subroutine(b.oname, f.file_id)
+    locals_ = b.values(w.scope)
+    target = b.called.get(f.file_id)
+    if target is None:
+        file_id, start = w.library.subroutine(b.oname, f.file_id)
+        target = b.called[f.file_id] = (w.library.units[file_id], start + 1, file_id)
     f.pc += 1
-    locals_ = dict(zip(_NUMBERS, args, strict=False))
-    if None in args:
+    if None in locals_.values():
         locals_ = {i: (0.0 if v is None else v) for i, v in locals_.items()}
-    w._push(Frame(w.library.units[file_id], start + 1, locals_, b.context, file_id, caller_line=b.line))
+    unit, start, file_id = target
+    w._push(Frame(unit, start, locals_, b.context, file_id, caller_line=b.line))
 
 
 def _return(w, f: Frame, b) -> None:
-    params = w.scope.params
+    named = w.scope.params.named
     if b.args:
-        params.set_named("_value", b.args[0](w.scope))
-        params.set_named("_value_returned", 1.0)
+        value = b.args[0](w.scope)
+        named["_value"] = 0.0 if value is None else float(value)
+        named["_value_returned"] = 1.0
     else:
-        params.set_named("_value_returned", 0.0)
+        named["_value_returned"] = 0.0
     if len(w.frames) == 1:
         raise MacroError(msg("o{name} {keyword} reached outside a call", name=b.oname, keyword=b.keyword))
 
