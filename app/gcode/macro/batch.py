@@ -146,10 +146,10 @@ class Batch:
         lines = rows[:, 7].astype(np.int64)
         where = self._where_columns()[rows[:, 8].astype(np.intp)]
         ops.blocks[-1] = (lines, *rest)
-        trace.file.add(where[:, 0])
+        trace.file.add(where[:, 0].astype(np.int32))
         trace.call_line.add(np.where(where[:, 1] == 0, lines, where[:, 1]))
-        trace.context.add(where[:, 2])
-        trace.iteration.add(rows[:, 9].astype(np.int64))
+        trace.context.add(where[:, 2].astype(np.int32))
+        trace.iteration.add(rows[:, 9].astype(np.int32))
 
     def _one(self, block, row: list[float], state, ops, trace):
         """Interpret one block of the batch, its words read back from its ``row``."""
