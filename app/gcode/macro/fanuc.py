@@ -135,7 +135,7 @@ def if_goto(w, f: Frame, b) -> None:
 
 def if_then(w, f: Frame, b) -> None:
     if w.test(b.args[0]):
-        w.assign(b, b.values(w.scope))
+        b.store(w.scope, b.values(w.scope))
     f.pc += 1
 
 

@@ -1,9 +1,9 @@
 """The walk: run compiled blocks with explicit call frames, emit plain blocks.
 
 ``Walker.run()`` starts at the first block of the main file and follows the control
-flow of both dialects (handlers per block kind); every ``WORDS`` block that is left
-is evaluated (all values first, then the line's assignments, as LinuxCNC does) and
-handed to ``interpret_line`` as plain words. Rows get, beside their own line, the
+flow of both dialects: each block has its handler (``lines.py`` for word lines,
+``fanuc.py`` and ``owords.py`` for statements); plain moves are collected in the
+``Batch``, other words go to ``interpret_line`` through ``emit``. Rows get, beside their own line, the
 file they came from, the main program's line that caused them, the subprogram and
 the loop iteration (``Trace``). Limits: a loop jumped back to more than
 ``LOOP_LIMIT`` times, calls nested deeper than ``DEPTH_LIMIT``, more than
@@ -23,7 +23,7 @@ from app.gcode.ops import OpBuffer
 from app.i18n import msg
 
 from . import block as bk
-from .batch import MAX_ROWS, Batch
+from .batch import Batch
 from .calls import Library
 from .errors import MacroError
 from .frame import Frame, Scope
@@ -50,7 +50,6 @@ class Walker:
         self.reports = [FileReport(report, "")]
         self.blocks_run = 0
         self.batch = Batch()
-        self.pending_call = None
         self._names: dict[str, int] = {"": 0}
         self._wheres: dict[tuple, tuple] = {}  # (file id, calling line, name) -> (where, its id)
         first = next((i for i, b in enumerate(main.blocks) if b.kind != bk.SKIP), 0)
@@ -206,110 +205,6 @@ class Walker:
         v = fn(self.scope)
         return v is not None and v != 0.0
 
-    # --- plain blocks ------------------------------------------------------------------
-    def words(self, f: Frame, b: bk.Block) -> None:
-        scope = self.scope
-        values = b.values(scope) if b.values is not None else ()
-        f.pc += 1
-        if not b.words or b.call_only:
-            pass
-        elif b.simple and self.fast_ok and self.batch.add(b, values, f.iteration, f.wid):
-            if len(self.batch) >= MAX_ROWS:
-                self.flush()
-        else:
-            self._general(f, b, values, len(b.words))
-        if b.assigns:
-            self.assign(b, values)
-        if b.call_only:
-            call = b.call
-            by_letter = {w.letter: v for w, v in zip(b.words, values, strict=False) if v is not None}
-            self._fanuc_call(f, b, call.letter, by_letter.pop(call.letter), call.column, by_letter)
-        elif self.pending_call is not None:
-            self._pending_call(f)
-
-    def _pending_call(self, f: Frame) -> None:
-        """Run the call ``_general`` found among a line's computed words."""
-        block, call, words = self.pending_call
-        self.pending_call = None
-        by_letter = {w.letter: w.value for w in words}
-        self._fanuc_call(f, block, call.letter, call.value, call.column, by_letter)
-
-    def simple_words(self, f: Frame, b: bk.Block) -> None:
-        """``words`` for a block of G0-G3 X Y Z I J F words: straight into the batch."""
-        f.pc += 1
-        batch = self.batch
-        if b.fast is not None and self.fast_ok:  # no assignments, a constant G0-G3 or none
-            batch.extend(b.fast(self.scope, f.wid, f.iteration))
-            batch.append(b)
-            if len(batch.blocks) >= MAX_ROWS:
-                self.flush()
-            return
-        values = b.values(self.scope)
-        made = b.row(values, f.wid, f.iteration) if self.fast_ok else None
-        if made is None:
-            self._general(f, b, values, len(b.words))
-        else:
-            batch.extend(made)
-            batch.append(b)
-            if len(batch.blocks) >= MAX_ROWS:
-                self.flush()
-        if b.assigns:
-            self.assign(b, values)
-        if self.pending_call is not None:  # a computed G65 (G#1 with #1 = 65)
-            self._pending_call(f)
-
-    def call_words(self, f: Frame, b: bk.Block) -> None:
-        """``words`` for a Fanuc line that is only a call (``b.call_only``)."""
-        values = b.values(self.scope)
-        f.pc += 1
-        if b.assigns:
-            self.assign(b, values)
-        call = b.call
-        by_letter = {w.letter: v for w, v in zip(b.words, values, strict=False) if v is not None}
-        fanuc.call(self, f, b, call.letter, by_letter.pop(call.letter), call.column, by_letter)
-
-    def g65_words(self, f: Frame, b: bk.Block) -> None:
-        """``call_words`` for a ``G65`` line planned by ``fanuc.g65_plan``."""
-        values = b.values(self.scope)
-        f.pc += 1
-        fanuc.g65(self, f, b, values)
-
-    def return_only(self, f: Frame, b: bk.Block) -> None:
-        """``call_words`` for a line that is only ``M99`` (no P, L, nor assignments)."""
-        f.pc += 1
-        if len(self.frames) == 1:
-            raise MacroError(msg("M99 outside a subprogram (the main program ends with M30)"))
-        fanuc.leave(self, f, None)
-
-    def assignments(self, f: Frame, b: bk.Block) -> None:
-        """``words`` for a line of assignments only."""
-        values = b.values(self.scope)
-        f.pc += 1
-        b.store(self.scope, values)
-
-    def assign(self, b: bk.Block, values) -> None:
-        """Apply the line's assignments (their values were read with the line)."""
-        b.store(self.scope, values)
-
-    def _general(self, f: Frame, b: bk.Block, values, n: int) -> None:
-        words = []
-        for w, v in zip(b.words, values, strict=False):
-            if v is None:
-                if w.bare:
-                    continue  # Fanuc: a word whose parameter is vacant is left out
-                v = 0.0
-            words.append(Word(w.letter, v, w.column))
-        call = self._call_word(words) if self.fanuc else None
-        if call is None:
-            if words:
-                self.emit(f, b, words)
-            return
-        if call.letter == "M":  # motion on an M98/M99 line runs first
-            rest = [w for w in words if w is not call and w.letter not in "PL"]
-            if rest:
-                self.emit(f, b, rest)
-        self.pending_call = (b, call, [w for w in words if w is not call])
-
     def _call_line(self, f: Frame, b: bk.Block | None) -> int:
         """The main program's line that ``b`` of frame ``f`` runs for."""
         main = self.frames[0]
@@ -363,60 +258,6 @@ class Walker:
                                                    line=ended))
                 return
 
-    def skip(self, f: Frame, b: bk.Block) -> None:
-        if f.pc in f.unit.bad:
-            self.frames.clear()  # its error is reported already; the walk stops as rs274ngc does
-            return
-        if b.skip == "block delete":
-            self.reports[f.file_id].warning(b.line, 0, msg("block delete '/': line skipped"), "block delete")
-
-        f.pc += 1
-
-    def _call_word(self, words: list[Word]) -> Word | None:
-        """The M98/M99/G65 word of a Fanuc line whose values were computed, if any."""
-        for w in words:
-            if (w.letter == "M" and w.value in (98.0, 99.0)) or (w.letter == "G" and w.value == 65.0):
-                return w
-        return None
-
-    def _fanuc_call(self, f: Frame, b: bk.Block, letter: str, code: float, column: int, by_letter) -> None:
-        fanuc.call(self, f, b, letter, code, column, by_letter)
-
 
 from . import fanuc  # noqa: E402  (the statement handlers use Walker's helpers)
-from .owords import handler as oword_handler  # noqa: E402
-from .runs import run_handler, runs  # noqa: E402
-
-HANDLERS = [None] * 10  # by block kind
-for _kind, _handler in {
-    bk.WORDS: Walker.words, bk.SKIP: Walker.skip, bk.OWORD: None, bk.PROGRAM: fanuc.program,
-    bk.IF_GOTO: fanuc.if_goto, bk.IF_THEN: fanuc.if_then, bk.GOTO: fanuc.goto,
-    bk.WHILE: fanuc.while_do, bk.DO: fanuc.do, bk.END: fanuc.end,
-}.items():
-    HANDLERS[_kind] = _handler
-
-
-def _handler(b: bk.Block):
-    if b.kind == bk.OWORD:
-        return oword_handler(b)
-    if b.kind == bk.WORDS and not b.words and b.values is not None:
-        return Walker.assignments
-    if b.kind == bk.WORDS and b.simple and not b.call_only:
-        return Walker.simple_words
-    if b.kind == bk.WORDS and b.call_only and b.words:
-        bare_m99 = len(b.words) == 1 and b.words[0] is b.call and b.call.letter == "M" and not b.assigns
-        if bare_m99 and bk.constant(b.call.code) == 99.0:
-            return Walker.return_only
-        b.plan = fanuc.g65_plan(b) if b.call.letter == "G" else None
-        return Walker.call_words if b.plan is None else Walker.g65_words
-    return HANDLERS[b.kind]
-
-
-def bind(unit) -> None:
-    """Give every block of ``unit`` the handler that runs it (once per unit); a block
-    that starts a straight run of moves runs the whole run (``runs.py``)."""
-    for b in unit.blocks:
-        b.run = _handler(b)
-    for i, (members, span) in runs(unit).items():
-        unit.blocks[i].run = run_handler(members, span, unit.blocks[i].run)
-    unit.bound = True
+from .lines import bind  # noqa: E402
