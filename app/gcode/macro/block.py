@@ -11,6 +11,7 @@ the line and column of anything it cannot read.
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 
 from app.i18n import msg
@@ -27,6 +28,7 @@ O_KEYWORDS = ("sub", "endsub", "call", "return", "if", "elseif", "else", "endif"
 WITH_VALUE = {"if", "elseif", "while", "repeat"}  # keywords that need one [value]
 MAY_VALUE = {"return", "endsub"}  # keywords that may carry one [value]
 LETTERS = set("abcdefghijklmnpqrstuvwxyz")
+_COMMENT = re.compile(r"\(([^()]*)\)")
 _CALLS = {("M", 98.0), ("M", 99.0), ("G", 65.0)}  # a word's letter ('o' is a statement)
 
 
@@ -70,6 +72,7 @@ class Block:
     call_only: bool = False  # Fanuc: the line is only that call and its P/L/arguments
     context: str = ""  # LinuxCNC call: the trace's name of the subroutine it runs
     plan: tuple | None = None  # Fanuc G65 line: where its P, L and arguments are (fanuc.g65_plan)
+    comment: str = ""  # Fanuc: the text of the line's first comment (a #3000 alarm's message)
     called: dict = field(default_factory=dict)  # o-word call: caller's file id -> (unit, start, file id)
 
     def finish(self) -> Block:
@@ -98,7 +101,7 @@ class Block:
         n = len(self.words)
         self.assigns = [(target, n + i) for i, target in enumerate(self.targets)]
         if self.assigns:
-            self.store = compile_stores(self.assigns, self.vacant)
+            self.store = compile_stores(self.assigns, self.vacant, self.comment)
         if self.kind == OWORD and self.keyword == "call":  # all arguments in one function
             self.values = compile_locals(self.args)
             self.context = f"o{self.oname}" if self.oname.isdigit() else f"o<{self.oname}>"
@@ -222,6 +225,9 @@ def compile_line(line: str, line_no: int, fanuc: bool) -> Block:
     """The ``Block`` of one source line (``fanuc``: the dialect's assignment rule)."""
     block = _read_line(line, line_no, fanuc)
     block.vacant = fanuc
+    if fanuc and "(" in line:
+        found = _COMMENT.search(line)
+        block.comment = found.group(1).strip() if found else ""
     try:
         return block.finish()
     except (SyntaxError, RecursionError, MemoryError):  # Python's own limits on one expression

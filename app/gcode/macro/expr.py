@@ -28,6 +28,7 @@ from .text import Squeezed
 
 FANUC_LOCALS, LINUXCNC_LOCALS = 33, 30
 MACHINE_PARAMETERS = 5000  # #5000 and up: the interpreter's (read after a sync)
+FANUC_SYSTEM = 4000  # Fanuc: #4000 and up are the control's (fanuc_system.py; read after a sync)
 
 EQUAL_TOLERANCE = 1e-4
 MAX_DEPTH = 50  # brackets, functions and signs inside each other
@@ -292,13 +293,14 @@ class Reader:
 
     def fixed_parameter(self, n: int) -> str:
         """Code reading ``#n`` for a fixed ``n``: the tables directly (no call), except
-        for the machine's parameters, which ``S.num`` reads after a sync."""
+        for the machine's parameters (Fanuc: system variables), which ``S.num`` reads
+        after a sync."""
         default = "" if self.fanuc else ", 0.0"  # LinuxCNC: unset reads 0; Fanuc: vacant
         if n == 0 and self.fanuc:
             return "None"
         if 0 < n <= (FANUC_LOCALS if self.fanuc else LINUXCNC_LOCALS):
             return f"S.frame.locals.get({n}{default})"
-        if 0 < n < MACHINE_PARAMETERS:
+        if 0 < n < (FANUC_SYSTEM if self.fanuc else MACHINE_PARAMETERS):
             return f"S.params.numbered.get({n}{default})"
         return f"S.num({n})"
 

@@ -13,8 +13,9 @@ from __future__ import annotations
 from app.gcode.params import LAST, ParamError, Params
 from app.i18n import msg
 
+from . import fanuc_system
 from .errors import MacroError
-from .expr import FANUC_LOCALS, LINUXCNC_LOCALS, MACHINE_PARAMETERS
+from .expr import FANUC_LOCALS, FANUC_SYSTEM, LINUXCNC_LOCALS, MACHINE_PARAMETERS
 from .structure import Unit
 
 
@@ -44,9 +45,10 @@ class Scope:
         self.local_max = FANUC_LOCALS if fanuc else LINUXCNC_LOCALS
         self.frame: Frame | None = None
         self.sync = None  # called before reading a machine parameter (#5000 and up)
+        self.synced_from = FANUC_SYSTEM if fanuc else MACHINE_PARAMETERS
 
     def num(self, n: int):
-        if n >= MACHINE_PARAMETERS and self.sync is not None:
+        if n >= self.synced_from and self.sync is not None:
             self.sync()  # the interpreter's rows so far must be in before it is read
         if n <= self.local_max and n > 0:
             v = self.frame.locals.get(n)
@@ -93,6 +95,10 @@ class Scope:
             else:
                 self.frame.locals[target] = float(value)
             return
+        if self.fanuc and target == fanuc_system.ALARM:
+            raise fanuc_system.alarm(value, "")
+        if self.fanuc and fanuc_system.read_only(target):
+            raise fanuc_system.refuse_write(target)
         if target == 0:
             raise MacroError(msg("#0 cannot be set (it is always vacant)") if self.fanuc
                              else msg("#0 does not exist"))

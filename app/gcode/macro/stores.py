@@ -9,17 +9,23 @@ from __future__ import annotations
 
 from app.gcode.params import LAST
 
+from . import fanuc_system
 from .expr import FANUC_LOCALS, LINUXCNC_LOCALS
 
 
-def compile_stores(assigns: list, fanuc: bool):
+def compile_stores(assigns: list, fanuc: bool, comment: str = ""):
     """``fn(S, values)`` doing ``S.assign`` for each (target, index of its value) of a
     line, in order: a fixed number is stored straight into its table by the same rules,
-    a name or a computed number goes through ``S.assign``."""
+    a name or a computed number goes through ``S.assign``. Fanuc: ``#3000`` raises the
+    alarm with the line's ``comment``, a read-only system variable is refused."""
     local_max = FANUC_LOCALS if fanuc else LINUXCNC_LOCALS
     lines = ["def store(S, v):"]
     for target, i in assigns:
-        if type(target) is int and 0 < target <= LAST:
+        if fanuc and target == fanuc_system.ALARM:
+            lines.append(f"    raise alarm(v[{i}], {comment!r})")
+        elif fanuc and type(target) is int and fanuc_system.read_only(target):
+            lines.append(f"    raise refuse_write({target})")
+        elif type(target) is int and 0 < target <= LAST:
             table = "S.frame.locals" if target <= local_max else "S.params.numbered"
             if fanuc:
                 lines += [f"    if v[{i}] is None: {table}.pop({target}, None)",
@@ -29,6 +35,6 @@ def compile_stores(assigns: list, fanuc: bool):
         else:
             code = f"v[{target[0]}]" if type(target) is tuple else repr(target)
             lines.append(f"    S.assign({code}, v[{i}])")
-    namespace: dict = {}
+    namespace: dict = {"alarm": fanuc_system.alarm, "refuse_write": fanuc_system.refuse_write}
     exec("\n".join(lines), namespace)  # noqa: S102
     return namespace["store"]

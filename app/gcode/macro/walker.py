@@ -23,6 +23,7 @@ from app.gcode.ops import OpBuffer
 from app.i18n import msg
 
 from . import block as bk
+from . import fanuc_system
 from .batch import Batch
 from .calls import Library
 from .errors import MacroError
@@ -94,10 +95,13 @@ class Walker:
         return frame
 
     def _sync(self) -> None:
-        """Before a macro reads #5000 and up: the rows so far interpreted, and the
-        parameters the interpreter derives (tool, position) written."""
+        """Before a macro reads #5000 and up (Fanuc: #4000 and up): the rows so far
+        interpreted, and the parameters the interpreter derives (tool, position; Fanuc's
+        system variables) written."""
         self.flush()
         tooling.publish(self.state)
+        if self.fanuc:
+            fanuc_system.publish(self.state)
 
     def _returned(self, frame: Frame) -> None:
         """A call level ended: what its M73 saved comes back (``modal_state``). Only an
