@@ -20,6 +20,31 @@ from .structure import Unit
 FANUC_ARGUMENTS = {"A": 1, "B": 2, "C": 3, "I": 4, "J": 5, "K": 6, "D": 7, "E": 8, "F": 9, "H": 11,
                    "M": 13, "Q": 17, "R": 18, "S": 19, "T": 20, "U": 21, "V": 22, "W": 23,
                    "X": 24, "Y": 25, "Z": 26}
+IJK_SETS = 10  # specification II: up to ten sets of I J K, into #4-#33
+
+
+def fanuc_arguments(pairs) -> dict[int, float]:
+    """The locals a ``G65`` line's argument words (letter, value), in line order, set.
+
+    Specification I maps each letter to its number (``FANUC_ARGUMENTS``); I, J and K
+    may also come as up to ten sets (specification II): a letter that does not follow
+    the one before in the order I J K starts the next set, whose I J K are #4+3k,
+    #5+3k, #6+3k. Where both give a number, the later word wins (as the control)."""
+    found: dict[int, float] = {}
+    group, last = 0, -1
+    for letter, value in pairs:
+        if letter in "IJK":
+            index = "IJK".index(letter)
+            if index <= last:
+                group += 1
+            last = index
+            if group >= IJK_SETS:
+                raise MacroError(msg("G65 takes at most {sets} sets of I J K (argument specification II)",
+                                     sets=IJK_SETS))
+            found[4 + 3 * group + index] = value
+        elif letter in FANUC_ARGUMENTS:
+            found[FANUC_ARGUMENTS[letter]] = value
+    return found
 
 
 def read_lines(path: Path) -> list[str]:

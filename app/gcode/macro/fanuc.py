@@ -13,15 +13,16 @@ from __future__ import annotations
 
 from app.i18n import msg
 
-from .calls import FANUC_ARGUMENTS
+from .calls import FANUC_ARGUMENTS, fanuc_arguments
 from .errors import MacroError
 from .frame import Frame
 
 _G65_WORDS = frozenset(FANUC_ARGUMENTS) | {"G", "P", "L"}
 
 
-def call(w, f: Frame, b, letter: str, code: float, column: int, by_letter: dict) -> None:
-    """Run ``M98``/``G65`` (a call) or ``M99`` (a return); ``by_letter``: the other words."""
+def call(w, f: Frame, b, letter: str, code: float, column: int, by_letter: dict, pairs=None) -> None:
+    """Run ``M98``/``G65`` (a call) or ``M99`` (a return); ``by_letter``: the other words
+    (``pairs``: all of them as (letter, value) in line order, when a letter may repeat)."""
     if letter == "M" and code == 99.0:
         if len(w.frames) == 1:
             raise MacroError(msg("M99 outside a subprogram (the main program ends with M30)"))
@@ -40,7 +41,7 @@ def call(w, f: Frame, b, letter: str, code: float, column: int, by_letter: dict)
     if letter == "M":
         locals_ = f.locals  # M98 keeps the caller's local level
     else:
-        locals_ = {FANUC_ARGUMENTS[k]: v for k, v in by_letter.items() if k in FANUC_ARGUMENTS}
+        locals_ = fanuc_arguments(pairs if pairs is not None else by_letter.items())
         extra = [] if by_letter.keys() <= _G65_WORDS else sorted(set(by_letter) - _G65_WORDS)
         if extra:
             said = msg("G65 cannot pass {words} (argument specification I)", words=", ".join(extra))
@@ -60,8 +61,8 @@ def g65_plan(b) -> tuple | None:
         return None
     if not _G65_WORDS.issuperset(letters):
         return None
-    args = [(i, FANUC_ARGUMENTS[c]) for i, c in enumerate(letters) if c in FANUC_ARGUMENTS]
-    given = eval("lambda v: {" + "".join(f"{n}: v[{i}], " for i, n in args) + "}")  # noqa: S307
+    args = fanuc_arguments((c, i) for i, c in enumerate(letters))  # local -> index of its word
+    given = eval("lambda v: {" + "".join(f"{n}: v[{i}], " for n, i in args.items()) + "}")  # noqa: S307
     return letters.index("P"), letters.index("L") if "L" in letters else -1, given, {}
 
 

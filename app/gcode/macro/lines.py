@@ -79,8 +79,10 @@ def call_words(w, f: Frame, b: bk.Block) -> None:
 
 def call_words_of(w, f: Frame, b: bk.Block, values) -> None:
     call = b.call
-    by_letter = {word.letter: v for word, v in zip(b.words, values, strict=False) if v is not None}
-    fanuc.call(w, f, b, call.letter, by_letter.pop(call.letter), call.column, by_letter)
+    given = list(zip(b.words, values, strict=False))
+    pairs = [(word.letter, v) for word, v in given if v is not None and word is not call]
+    code = next(v for word, v in given if word is call)
+    fanuc.call(w, f, b, call.letter, code, call.column, dict(pairs), pairs)
 
 
 def g65_words(w, f: Frame, b: bk.Block) -> None:
@@ -129,8 +131,8 @@ def general(w, f: Frame, b: bk.Block, values) -> tuple | None:
 
 def _computed_call(w, f: Frame, pending: tuple) -> None:
     block, call, line_words = pending
-    by_letter = {word.letter: word.value for word in line_words}
-    fanuc.call(w, f, block, call.letter, call.value, call.column, by_letter)
+    pairs = [(word.letter, word.value) for word in line_words]
+    fanuc.call(w, f, block, call.letter, call.value, call.column, dict(pairs), pairs)
 
 
 def _call_word(line_words: list[Word]) -> Word | None:

@@ -130,3 +130,20 @@ def test_fix_and_fup_follow_each_dialect():
 def test_subroutines_may_be_defined_after_m2_and_called_before():
     program = load_text("o100 call [2]\nG1 X#<_value> F100\nM2\no100 sub\n  G1 X#1 F100\no100 endsub [7]\n")
     assert [m["end"][0] for m in program.moves] == [2.0, 7.0] and not program.diagnostics
+
+
+def test_g65_argument_specification_ii_sets_of_i_j_k():
+    text = ("O0001\nG65 P9000 A7 I1 J2 K3 I4 J5 K6 I7\nG65 P9000 I1 K3 J9\nM30\n"
+            "O9000\nG0 X#4 Y#5 Z#6\nG0 X#7 Y#8 Z#9\nG0 X#10 Y#1\nM99\n")
+    program = load_text(text)
+    assert not program.errors
+    ends = [m["end"] for m in program.moves]
+    assert ends[:3] == [[1.0, 2.0, 3.0], [4.0, 5.0, 6.0], [7.0, 7.0, 6.0]]
+    # I1 K3 J9: J after K starts the second set (#8), the first set's J stays vacant
+    assert ends[3:5] == [[1.0, 7.0, 3.0], [1.0, 9.0, 3.0]]
+
+
+def test_g65_refuses_more_than_ten_sets_of_i_j_k():
+    program = load_text("O0001\nG65 P9000 " + "I1 " * 11 + "\nM30\nO9000\nM99\n")
+    assert [(e.line, e.message) for e in program.errors] == [
+        (2, "G65 takes at most 10 sets of I J K (argument specification II)")]
