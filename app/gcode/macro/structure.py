@@ -193,6 +193,8 @@ class Unit:
         self.back[i] = loop[2]  # resolved by the walker: the loop head's exit or test
 
     def _o_return(self, stack, i, b) -> None:
-        if not any(k == "sub" and n == b.oname for k, n, *_ in stack):
-            self.fail(msg("o{name} return outside o{name} sub", name=b.oname), b)
+        """Inside any subroutine definition; its o-word may name another (an ``if`` around
+        it), as rs274ngc allows: it leaves the subroutine it is in."""
+        if not any(k == "sub" for k, *_ in stack):
+            self.fail(msg("o{name} return outside a subroutine definition", name=b.oname), b)
 
