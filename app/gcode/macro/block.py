@@ -63,7 +63,7 @@ class Block:
     row: object = None  # for a simple block: values -> a batch row (batch.row_maker)
     fast: object = None  # for a simple block without assignments: scope -> a batch row, or None
     fast_code: str | None = None  # the code of ``fast`` (runs.py joins those of a run)
-    reads_machine: bool = False  # reads #5000 and up or a computed number (``S.num``)
+    reads_machine: bool = False  # reads #5000 and up, a computed number or a predefined #<_name>
     assigns: list = field(default_factory=list)  # (target, index of its value)
     store: object = None  # fn(scope, values) applying ``assigns`` (frame.compile_stores)
     vacant: bool = False  # Fanuc: a parameter may be vacant
@@ -97,7 +97,7 @@ class Block:
             self.call = next((w for w in self.words if (w.letter, constant(w.code)) in _CALLS), None)
             self.call_only = self.call is not None and (
                 self.call.letter == "G" or all(w.letter in "MPL" for w in self.words))
-        self.reads_machine = any("S.num(" in code for code in codes)
+        self.reads_machine = any("S.num(" in code or "S.system(" in code for code in codes)
         n = len(self.words)
         self.assigns = [(target, n + i) for i, target in enumerate(self.targets)]
         if self.assigns:

@@ -23,6 +23,7 @@ import math
 
 from app.i18n import msg
 
+from . import predefined
 from .errors import MacroError
 from .text import Squeezed
 
@@ -286,6 +287,12 @@ class Reader:
         at = self.pos
         target = self.target()
         if isinstance(target, str):
+            if target == "_line":
+                return f"{float(self.line_no)!r}"
+            if target in predefined.CONSTANT:
+                return repr(predefined.CONSTANT[target])
+            if target in predefined.FROM_STATE:
+                return f"S.system({target!r})"
             return f"(S.named({target!r}) if S.has({target!r}) else _unset({target!r}, {self.where(at)}))"
         if isinstance(target, int):
             return self.fixed_parameter(target)

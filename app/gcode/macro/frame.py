@@ -13,7 +13,7 @@ from __future__ import annotations
 from app.gcode.params import LAST, ParamError, Params
 from app.i18n import msg
 
-from . import fanuc_system
+from . import fanuc_system, predefined
 from .errors import MacroError
 from .expr import FANUC_LOCALS, FANUC_SYSTEM, LINUXCNC_LOCALS, MACHINE_PARAMETERS
 from .structure import Unit
@@ -65,6 +65,12 @@ class Scope:
             return 0.0
         return v
 
+    def system(self, name: str) -> float:
+        """A predefined parameter (``#<_x>`` ...): the interpreter's state, after a sync."""
+        if self.sync is not None:
+            self.sync()
+        return self.params.named.get(name, 0.0)
+
     def named(self, name: str) -> float | None:
         """The value of ``#<name>``, ``None`` when unset (the reader refuses it)."""
         return self.params.get_named(name) if name[0] == "_" else self.frame.named.get(name)
@@ -80,6 +86,8 @@ class Scope:
     def assign(self, target, value) -> None:
         """Set ``#target`` (a number or a name) to ``value`` (``None``: vacant)."""
         if isinstance(target, str):
+            if target in predefined.READ_ONLY:
+                raise predefined.refuse_write(target)
             if value is None:
                 value = 0.0
             if target[0] == "_":

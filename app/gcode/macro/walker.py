@@ -23,7 +23,7 @@ from app.gcode.ops import OpBuffer
 from app.i18n import msg
 
 from . import block as bk
-from . import fanuc_system
+from . import fanuc_system, predefined
 from .batch import Batch
 from .calls import Library
 from .errors import MacroError
@@ -95,13 +95,16 @@ class Walker:
         return frame
 
     def _sync(self) -> None:
-        """Before a macro reads #5000 and up (Fanuc: #4000 and up): the rows so far
-        interpreted, and the parameters the interpreter derives (tool, position; Fanuc's
-        system variables) written."""
+        """Before a macro reads #5000 and up (Fanuc: #4000 and up) or a predefined
+        ``#<_name>``: the rows so far interpreted, and the parameters the interpreter
+        derives (tool, position; Fanuc's system variables or LinuxCNC's predefined
+        named parameters) written."""
         self.flush()
         tooling.publish(self.state)
         if self.fanuc:
             fanuc_system.publish(self.state)
+        else:
+            predefined.publish(self.state, len(self.frames) - 1)
 
     def _returned(self, frame: Frame) -> None:
         """A call level ended: what its M73 saved comes back (``modal_state``). Only an

@@ -147,3 +147,15 @@ def test_g65_refuses_more_than_ten_sets_of_i_j_k():
     program = load_text("O0001\nG65 P9000 " + "I1 " * 11 + "\nM30\nO9000\nM99\n")
     assert [(e.line, e.message) for e in program.errors] == [
         (2, "G65 takes at most 10 sets of I J K (argument specification II)")]
+
+
+def test_linuxcnc_predefined_parameters_are_read_only():
+    program = load_text("G21\n#<_x> = 5\nM2\n")
+    assert [(e.line, e.message) for e in program.errors] == [
+        (2, "#<_x> is a predefined parameter: it can be read, not set")]
+
+
+def test_linuxcnc_predefined_parameters_follow_the_moves_before_them():
+    program = load_text("G21 G90\nG0 X3 Y4\nG1 X[#<_x> + #<_y>] Y#<_line> F100\nM2\n")
+    assert not program.errors
+    assert program.moves[-1]["end"][:2] == [7.0, 3.0]
