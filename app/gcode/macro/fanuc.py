@@ -11,6 +11,7 @@ program it does not start (the main program stops; a subprogram returns).
 
 from __future__ import annotations
 
+from app.gcode.lexer import Word
 from app.i18n import msg
 
 from .calls import FANUC_ARGUMENTS, fanuc_arguments
@@ -18,6 +19,15 @@ from .errors import MacroError
 from .frame import Frame
 
 _G65_WORDS = frozenset(FANUC_ARGUMENTS) | {"G", "P", "L"}
+
+
+def dwell_words(words: list) -> list:
+    """A Fanuc ``G04`` line's words as the interpreter reads them: Fanuc gives the dwell
+    as ``X`` in seconds or ``P`` in milliseconds, the interpreter as ``P`` in seconds."""
+    if not any(word.letter == "G" and word.value == 4.0 for word in words):
+        return words
+    return [Word("P", word.value / 1000.0, word.column) if word.letter == "P"
+            else Word("P", word.value, word.column) if word.letter == "X" else word for word in words]
 
 
 def call(w, f: Frame, b, letter: str, code: float, column: int, by_letter: dict, pairs=None) -> None:

@@ -117,6 +117,8 @@ def general(w, f: Frame, b: bk.Block, values) -> tuple | None:
                 continue  # Fanuc: a word whose parameter is vacant is left out
             v = 0.0
         line_words.append(Word(word.letter, v, word.column))
+    if w.fanuc:
+        line_words = fanuc.dwell_words(line_words)
     call = _call_word(line_words) if w.fanuc else None
     if call is None:
         if line_words:
