@@ -121,7 +121,7 @@ def _folded(moves, dialect, var, main, subs, end, note, number):
                 if m.note and m.note != note:
                     main.append(f"({m.note})")
                     note = m.note
-                main.append(line_of(m, end))
+                main.append(line_of(m, end, fanuc=True))
                 if m.kind in (RAPID, FEED, ARC):
                     end = m.end
             continue

@@ -24,8 +24,9 @@ def _xyz(m: Move, previous_end, always: str = "") -> str:
     return " ".join(words)
 
 
-def line_of(m: Move, previous_end) -> str:
-    """One move as a G-code line (``previous_end`` items None where unknown)."""
+def line_of(m: Move, previous_end, fanuc: bool = False) -> str:
+    """One move as a G-code line (``previous_end`` items None where unknown; ``fanuc``:
+    the dwell as Fanuc writes it, ``G04 X`` seconds, since Fanuc's ``P`` is milliseconds)."""
     if m.kind == RAPID:
         return f"G00 {_xyz(m, previous_end)}"
     if m.kind == FEED:
@@ -34,7 +35,7 @@ def line_of(m: Move, previous_end) -> str:
         i, j = m.center[0] - previous_end[0], m.center[1] - previous_end[1]
         return f"{'G02' if m.cw else 'G03'} {_xyz(m, previous_end, 'XY')} I{num(i)} J{num(j)} F{num(m.feed)}"
     if m.kind == DWELL:
-        return f"G04 P{num(m.value)}"
+        return f"G04 {'X' if fanuc else 'P'}{num(m.value)}"
     if m.kind == TOOL:
         return f"M06 T{int(m.value)}"
     if m.kind == SPINDLE:
