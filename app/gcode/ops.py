@@ -97,6 +97,10 @@ class OpBuffer:
         if message is not None:
             self.messages.append(message)
 
+    def clear(self) -> None:
+        """Drop every row collected so far."""
+        self.blocks, self.rows, self.messages = [], [], []
+
     def add_block(self, line, kind, end, center, turn, value) -> None:
         """Append many XY rows at once (the fast path); arrays of equal length."""
         self._flush()

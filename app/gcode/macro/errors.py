@@ -24,3 +24,8 @@ class MacroError(Exception):
     def __str__(self) -> str:
         where = f"line {self.line}" + (f", column {self.column}" if self.column else "")
         return f"{self.file + ' ' if self.file else ''}{where}: {self.message}"
+
+
+class TooLarge(MacroError):
+    """The expansion passed the move limit: the walk stops and its rows are dropped
+    (the program is refused; keeping millions of rows would only fill the memory)."""

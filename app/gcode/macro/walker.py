@@ -8,12 +8,11 @@ file they came from, the main program's line that caused them, the subprogram an
 the loop iteration (``Trace``). Limits: a loop jumped back to more than
 ``LOOP_LIMIT`` times, calls nested deeper than ``DEPTH_LIMIT``, more than
 ``MOVE_LIMIT`` rows or ``BLOCK_LIMIT`` blocks run: an error naming the line. The
-first error stops the walk (rs274ngc stops too); it is reported with its file.
+first error stops the walk (rs274ngc stops too); it is reported with its file, and the
+rows before it stay, except after the move limit (``TooLarge``: none are kept).
 """
 
 from __future__ import annotations
-
-import contextlib
 
 from app.gcode import modal_state, tooling
 from app.gcode.diagnostics import ERROR, Report
@@ -26,7 +25,7 @@ from . import block as bk
 from . import fanuc_system, predefined
 from .batch import Batch
 from .calls import Library
-from .errors import MacroError
+from .errors import MacroError, TooLarge
 from .frame import Frame, Scope
 from .trace import FileReport, Trace
 
@@ -143,10 +142,21 @@ class Walker:
                 self._run_frame(f, frames)
             self.flush()
             self._finish_program()
+        except TooLarge as exc:
+            self.report.add(exc.line, exc.column, ERROR, exc.message, file=exc.file)
+            self._drop_rows()
         except MacroError as exc:
             self.report.add(exc.line, exc.column, ERROR, exc.message, file=exc.file)
-            with contextlib.suppress(MacroError):  # the move limit, reported already
+            try:
                 self.flush()  # the blocks before the error stay, as rs274ngc's output does
+            except TooLarge:
+                self._drop_rows()
+
+    def _drop_rows(self) -> None:
+        """A refused program of millions of rows: none are kept."""
+        self.batch = Batch()
+        self.ops.clear()
+        self.trace = Trace(self.trace.files, self.trace.names)
 
     def _run_frame(self, f: Frame, frames: list[Frame]) -> None:
         """Run blocks of frame ``f``, then of the frame it calls or returns to, until
@@ -223,7 +233,7 @@ class Walker:
             self.state = self.batch.flush(self.state, self.ops, self.trace)
             self.fast_ok = self.state.fast_path_ok()
             if len(self.trace.file) > MOVE_LIMIT:
-                raise MacroError(msg("the expansion makes more than {limit:,} moves", limit=MOVE_LIMIT))
+                raise TooLarge(msg("the expansion makes more than {limit:,} moves", limit=MOVE_LIMIT))
 
     def emit(self, f: Frame, b: bk.Block, words: list[Word]) -> None:
         self.flush()
@@ -245,7 +255,7 @@ class Walker:
             lines = [int(row[0]) for row in rows] if main else call_line
             self.trace.repeat(len(rows), f.file_id, self._names[f.name], f.iteration, lines)
             if len(self.trace.file) > MOVE_LIMIT:
-                raise MacroError(msg("the expansion makes more than {limit:,} moves", limit=MOVE_LIMIT), line)
+                raise TooLarge(msg("the expansion makes more than {limit:,} moves", limit=MOVE_LIMIT), line)
 
     def _after_end(self, f: Frame) -> None:
         """One warning for the first block after M2/M30 (Fanuc: before the next program;
