@@ -12,6 +12,8 @@ read out of order.
 
 from __future__ import annotations
 
+import struct
+
 import numpy as np
 
 from app.gcode import vector
@@ -58,10 +60,18 @@ def _is_number(code: str) -> bool:
 
 def row_maker(letters: list[str], vacant: bool, line: int):
     """A compiled ``fn(values, where, iteration) -> row or None`` for a block of these words
-    (``None`` when its G word is not G0-G3; ``vacant``: a ``None`` value leaves a word out)."""
+    (``None`` when its G word is not G0-G3; ``vacant``: a ``None`` value leaves a word out).
+    A row is ``ROW`` doubles packed as bytes (``_packer``)."""
     body, g = _row_codes(letters, [f"v[{i}]" for i in range(len(letters))], vacant, line)
     check = "" if "G" not in letters else f" if {g} in MOTION else None"
-    return eval(f"lambda v, w, it: {body}{check}", {"nan": _NAN, "MOTION": _MOTION})  # noqa: S307
+    namespace = {"nan": _NAN, "MOTION": _MOTION, "pack": _packer(1)}
+    return eval(f"lambda v, w, it: pack{body}{check}", namespace)  # noqa: S307
+
+
+def _packer(rows: int):
+    """``struct`` packing of ``rows`` batch rows: the batch grows by bytes, which numpy
+    reads without converting a float object at a time."""
+    return struct.Struct(f"<{ROW * rows}d").pack
 
 
 def fast_row_code(letters: list[str], codes: list[str], vacant: bool, line: int) -> str | None:
@@ -75,16 +85,17 @@ def fast_row_code(letters: list[str], codes: list[str], vacant: bool, line: int)
 
 
 def compile_rows(row_codes: list[str]):
-    """``fn(S, where, iteration)`` -> the rows of ``row_codes`` one after the other, flat."""
+    """``fn(S, where, iteration)`` -> the rows of ``row_codes`` one after the other, packed."""
     flat = ", ".join(code[1:-1] for code in row_codes)
-    return eval(f"lambda S, w, it: ({flat})", {**NAMESPACE, "nan": _NAN})  # noqa: S307
+    namespace = {**NAMESPACE, "nan": _NAN, "pack": _packer(len(row_codes))}
+    return eval(f"lambda S, w, it: pack({flat})", namespace)  # noqa: S307
 
 
 class Batch:
     """Collects plain motion blocks (see the module docstring)."""
 
     def __init__(self) -> None:
-        self.flat: list[float] = []  # ROW numbers per block, one block after the other, NaN when absent
+        self.flat = bytearray()  # ROW doubles per block, one block after the other, NaN when absent
         self.blocks: list = []  # the compiled block of each row
         self.wheres: list[tuple] = []  # where id -> (file id, calling line or 0, subprogram id, report)
         self._where_ids: dict[tuple, int] = {}
@@ -118,8 +129,8 @@ class Batch:
         if not self.blocks:
             return state
         n = len(self.blocks)
-        table = np.array(self.flat, np.float64).reshape(n, ROW)
-        self.flat.clear()
+        table = np.frombuffer(bytes(self.flat), "<f8").reshape(n, ROW)  # a copy: ``flat`` is
+        self.flat.clear()  # the same object for a caller that holds ``extend`` across a sync
         values = {c: table[:, i + 1] for i, c in enumerate(LETTERS)}
         values["M"] = values["S"] = np.full(n, np.nan)
         g = table[:, 0].astype(np.int8)

@@ -76,8 +76,10 @@ def g65_plan(b) -> tuple | None:
     return letters.index("P"), letters.index("L") if "L" in letters else -1, given, {}
 
 
-def g65(w, f: Frame, b, values) -> None:
-    """``call`` for a line planned by ``g65_plan`` (the same rules, fewer steps)."""
+def g65(w, f: Frame, b) -> None:
+    """The handler of a ``G65`` line planned by ``g65_plan``: ``call``'s rules, fewer steps."""
+    values = b.values(w.scope)
+    f.pc += 1
     p, repeat, given, called = b.plan
     number = values[p]
     if number is None:

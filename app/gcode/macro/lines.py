@@ -5,7 +5,8 @@ batch (plain G0-G3 moves) or to ``interpret_line`` (``Walker.emit``), then the l
 assignments apply, then a Fanuc call on the line runs (``M98``/``M99``/``G65``; on
 an ``M98``/``M99`` line the motion runs first). The others are the same rules for
 lines of one shape, chosen once per block by ``handler``: moves only
-(``simple_words``), assignments only, a call only, a planned ``G65``, a bare ``M99``.
+(``simple_words``), assignments only, a call only, a planned ``G65`` (``fanuc.g65``), a
+bare ``M99``.
 A block that starts a straight run of moves runs the whole run (``runs.py``).
 """
 
@@ -83,13 +84,6 @@ def call_words_of(w, f: Frame, b: bk.Block, values) -> None:
     pairs = [(word.letter, v) for word, v in given if v is not None and word is not call]
     code = next(v for word, v in given if word is call)
     fanuc.call(w, f, b, call.letter, code, call.column, dict(pairs), pairs)
-
-
-def g65_words(w, f: Frame, b: bk.Block) -> None:
-    """``call_words`` for a ``G65`` line planned by ``fanuc.g65_plan``."""
-    values = b.values(w.scope)
-    f.pc += 1
-    fanuc.g65(w, f, b, values)
 
 
 def return_only(w, f: Frame, b: bk.Block) -> None:
@@ -174,7 +168,7 @@ def handler(b: bk.Block):
         if bare_m99 and bk.constant(b.call.code) == 99.0:
             return return_only
         b.plan = fanuc.g65_plan(b) if b.call.letter == "G" else None
-        return call_words if b.plan is None else g65_words
+        return call_words if b.plan is None else fanuc.g65
     return HANDLERS[b.kind]
 
 
