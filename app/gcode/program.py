@@ -22,7 +22,7 @@ import numpy as np
 from app.i18n import msg
 from app.profile import MachineProfile
 
-from . import bulk, checks, macro, normalize, runner
+from . import bulk, checks, normalize, runner, sniff
 from .diagnostics import ERROR, WARNING, Diagnostic, Report
 from .limits import program_checks
 from .moves import moves_of
@@ -151,6 +151,8 @@ def _plain(lines: Lines, data: list[bytes], start: State, report: Report) -> Ops
 
 def _expanded(lines: Lines, name: str, folder: Path | None, start: State, report: Report) -> Ops:
     """The expander's path (parameters, control flow, calls), rows traced to their source."""
+    from . import macro  # only for a program that needs it: a plain load never imports it
+
     buffer = OpBuffer()
     trace = macro.expand(lines.as_list(), name, folder, start, buffer, report)
     ops = buffer.finish()
@@ -165,7 +167,7 @@ def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfi
     """Interpret ``lines``: the expander when the bytes in ``data`` need it, else the fast path."""
     report = Report()
     start = _start_state(profile, tools)
-    if macro.needs_expander(data[0]):
+    if sniff.needs_expander(data[0]):
         data.clear()
         ops = _expanded(lines, name, folder, start, report)
     else:
