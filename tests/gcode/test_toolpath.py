@@ -74,6 +74,12 @@ def test_bounds_include_arc_bulge_exactly():
     assert max(abs(low[2]), abs(high[2])) == pytest.approx(5) and min(abs(low[2]), abs(high[2])) == 0
 
 
+def test_bounds_of_arcs_in_several_planes_at_once():
+    text = "G0 X0 Y0 Z0\nG18 G2 X10 Z0 I5 K0 F100\nG17 G3 X10 Y0 I0 J-4\nG19 G2 Y0 Z0 J3 K0\n"
+    low, high = toolpath(text).bounds
+    assert low.tolist() == pytest.approx([0, -8, -5]) and high.tolist() == pytest.approx([14, 6, 3])
+
+
 def test_helix_length():
     tp = toolpath("G0 X10\nG2 I-10 Z-5 F100")
     assert tp.length[1] == pytest.approx(math.hypot(2 * math.pi * 10, 5))
