@@ -49,6 +49,7 @@ class Program:
     profile: MachineProfile
     plan: normalize.Plan
     _render: tuple | None = field(default=None, repr=False)
+    envelope: checks.Envelope | None = field(default=None, repr=False)  # for checks.preflight
 
     def __repr__(self) -> str:
         return (f"Program({self.name!r}, {len(self.lines)} lines, {len(self.toolpath)} moves, "
@@ -179,10 +180,10 @@ def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfi
     checking = _in_thread(checks.run, ops, profile, lines, report)  # numpy lets both run at once
     the_plan = normalize.plan(ops, profile.motion.arc_tolerance_mm)
     toolpath = build(ops, the_plan.first, profile)
-    checking.join()
+    envelope = checking.join()
     program_checks(toolpath, profile, report)
     ops.forget_starts()  # the Toolpath has its own copy of the moves' starts
-    return Program(name, lines, report.finish(), ops, toolpath, profile, the_plan)
+    return Program(name, lines, report.finish(), ops, toolpath, profile, the_plan, envelope=envelope)
 
 
 def _give_back_free_memory() -> None:
@@ -199,24 +200,25 @@ def _give_back_free_memory() -> None:
 
 
 class _in_thread(threading.Thread):
-    """``fn(*args)`` on a thread; ``join()`` re-raises what it raised."""
+    """``fn(*args)`` on a thread; ``join()`` returns its value or re-raises what it raised."""
 
     def __init__(self, fn, *args):
         super().__init__(name="gcode-checks", daemon=True)
-        self._call, self._error = (fn, args), None
+        self._call, self._error, self._value = (fn, args), None, None
         self.start()
 
     def run(self) -> None:
         fn, args = self._call
         try:
-            fn(*args)
+            self._value = fn(*args)
         except BaseException as exc:  # handed to the joining thread
             self._error = exc
 
-    def join(self, timeout: float | None = None) -> None:
+    def join(self, timeout: float | None = None):
         super().join(timeout)
         if self._error is not None:
             raise self._error
+        return self._value
 
 
 def load_text(text: str, name: str = "<text>", profile: MachineProfile | None = None,
