@@ -31,7 +31,7 @@ import numpy as np  # noqa: E402
 
 from app.i18n import N_, localize, msg  # noqa: E402
 
-from . import workers  # noqa: E402
+from . import forked, workers  # noqa: E402
 from .moves import to_jsonl  # noqa: E402
 from .program import Program, load  # noqa: E402
 
@@ -114,7 +114,8 @@ def _load(path: str) -> Program:
     was = workers.enabled()
     workers.set_enabled(False)
     try:
-        return load(path)
+        with forked.allowed():  # a big file's scan shared with a forked child (forked.py)
+            return load(path)
     finally:
         workers.set_enabled(was)
 
