@@ -34,6 +34,7 @@ def one_shot(monkeypatch):
     may have threads of its own; the child only scans and writes to its pipe)."""
     monkeypatch.setattr(forked, "_allowed", True)
     monkeypatch.setattr(forked.threading, "active_count", lambda: 1)
+    monkeypatch.setattr(forked.os, "getloadavg", lambda: (0.0, 0.0, 0.0))  # a quiet machine
     workers.set_enabled(False)
     taken = []
     take = forked.Tail.take
@@ -88,6 +89,22 @@ def test_a_child_that_fails_costs_time_not_the_result(big, one_shot, monkeypatch
     assert one_shot and not any(one_shot)  # asked, and nothing came
     monkeypatch.setattr(forked, "_allowed", False)
     _same(failed, bulk.scan(big, n))
+
+
+def test_a_busy_machine_or_a_second_thread_keeps_the_load_in_one_process(monkeypatch):
+    monkeypatch.setattr(forked, "_allowed", True)
+    monkeypatch.setattr(forked.threading, "active_count", lambda: 1)
+    monkeypatch.setattr(forked.os, "cpu_count", lambda: 2)
+    monkeypatch.setattr(forked.os, "getloadavg", lambda: (0.4, 0.4, 0.4))
+    assert forked.usable()
+    monkeypatch.setattr(forked.os, "getloadavg", lambda: (2.5, 2.0, 1.0))
+    assert not forked.usable()
+    monkeypatch.setattr(forked.os, "getloadavg", lambda: (0.0, 0.0, 0.0))
+    monkeypatch.setattr(forked.threading, "active_count", lambda: 2)
+    assert not forked.usable()
+    monkeypatch.setattr(forked, "_allowed", False)
+    monkeypatch.setattr(forked.threading, "active_count", lambda: 1)
+    assert not forked.usable()
 
 
 def test_a_tail_gives_the_groups_from_the_last_one_back():
