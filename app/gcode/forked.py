@@ -10,10 +10,11 @@ other has been (the parent's position is in a word of shared memory), so no grou
 scanned twice for long. A child that fails simply sends nothing: the parent then does
 every group, as without it.
 
-Only where ``os.fork`` exists, only when allowed (``allowed()``: the command line turns
-it on for its own load), only while the process runs a single thread (forking a
-process with threads can leave the child holding a lock no one will release), and
-only when the machine has a core to spare for the child (``usable``).
+Only on Linux (macOS's system libraries are not fork-safe, Windows has no fork), only
+when allowed (``allowed()``: the command line turns it on for its own load), only while
+the process runs a single thread (forking a process with threads can leave the child
+holding a lock no one will release), and only when the machine has two cores to spare
+(``usable``).
 """
 
 from __future__ import annotations
@@ -24,6 +25,7 @@ import os
 import pickle
 import signal
 import struct
+import sys
 import threading
 
 _allowed = False
@@ -45,8 +47,8 @@ def usable() -> bool:
     last minute's load average at most the cores less 1.5): on a busy machine the child
     only takes turns with its parent, and the load took longer (0.95 s against 0.82 s,
     best of 6, at load 3 on 2 cores)."""
-    if not (_allowed and hasattr(os, "fork") and threading.active_count() == 1):
-        return False
+    if not (_allowed and sys.platform.startswith("linux") and threading.active_count() == 1):
+        return False  # (macOS's system libraries are not fork-safe; Windows has no fork)
     try:
         busy = os.getloadavg()[0]
     except OSError:  # not known: as if idle
