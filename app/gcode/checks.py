@@ -27,8 +27,14 @@ from .ops import ARC_CCW, ARC_CW, FEED, PLANE_AXES, SPINDLE, Ops
 BLOCK = 1 << 16  # rows the envelope check takes at a time
 
 
-def _column(lines: list[str], line_no: int, letter: str) -> int:
-    words = lex_line(lines[line_no - 1], line_no).words
+def _column(lines: list[str], line_no: int, letter: str, seen: dict | None = None) -> int:
+    """Column of ``letter``'s word on line ``line_no`` (0 when none); ``seen`` keeps each
+    line's words, as a line usually earns a warning for X and one for Y."""
+    words = None if seen is None else seen.get(line_no)
+    if words is None:
+        words = lex_line(lines[line_no - 1], line_no).words
+        if seen is not None:
+            seen[line_no] = words
     return next((w.column for w in words if w.letter == letter), 0)
 
 
@@ -156,13 +162,13 @@ def _exact_arcs(ops: Ops, moves: np.ndarray, rows: np.ndarray, low, high, exact)
 
 
 def _envelope(ops: Ops, profile: MachineProfile, lines: list[str], report: Report) -> Envelope:
-    limits, found = _limits(profile), []
+    limits, found, seen = _limits(profile), [], {}
     for name, sign, limit, out, vals in _violations(ops, limits, report.limit):
         found.append((name, sign, limit, int(out[0]), float(vals[0]), len(out)))
         rel = ">" if sign == "+" else "<"
         for row, value in zip(out[: report.limit].tolist(), vals[: report.limit].tolist(), strict=True):
             line = int(ops.main_lines()[row])  # a subprogram's row: its calling line
-            report.warning(line, _column(lines, line, name),
+            report.warning(line, _column(lines, line, name, seen),
                            msg("{axis}{sign} beyond travel ({value:.3f} {rel} {limit:g})", axis=name,
                                sign=sign, value=float(value), rel=rel, limit=float(limit)),
                            f"{name}{sign} beyond travel")
