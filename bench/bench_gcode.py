@@ -244,7 +244,10 @@ def _window(path: Path) -> None:
 def main() -> None:
     from app.gcode import load, workers
 
-    print(f"machine load average: {_loadavg()} on {os.cpu_count()} cores")
+    print(f"machine load average: {_loadavg()} on {os.cpu_count()} cores (cnc-gcode shares a big "
+          f"file's scan with a forked child only at a load average of cores - 1 or less)")
+    print("python bytecode: " + ("not written (PYTHONDONTWRITEBYTECODE): each start compiles what has no "
+                                 "up-to-date .pyc" if sys.flags.dont_write_bytecode else "cached"))
     files = [build(far=True), build(far=False)]
     for path, origin in files:
         size = path.stat().st_size

@@ -5,17 +5,39 @@
 ``errors`` / ``warnings`` / ``diagnostics`` (``Diagnostic(line, column, severity,
 message)``), ``pauses``, ``toolpath`` (``Toolpath`` arrays) and ``moves`` (dicts in
 the ``cnc-gcode moves`` format). ``normalize_text(text)`` gives the device lines.
+
+The names are imported on first use (PEP 562), so that ``import app.gcode.cli`` can
+set up numpy's environment before anything imports numpy.
 """
 
-from .diagnostics import Diagnostic
-from .ops import ARC_CCW, ARC_CW, DWELL, FEED, RAPID
-from .program import Program, load, load_text
-from .toolpath import Toolpath
+from importlib import import_module
+
+_HOMES = {
+    "Diagnostic": "diagnostics",
+    "ARC_CCW": "ops", "ARC_CW": "ops", "DWELL": "ops", "FEED": "ops", "RAPID": "ops",
+    "Program": "program", "load": "program", "load_text": "program",
+    "Toolpath": "toolpath",
+}
 
 
 def normalize_text(text: str) -> list[str]:
     """Device lines of G-code ``text`` (lines with errors are left out)."""
+    from .program import load_text
+
     return load_text(text).device_lines
+
+
+def __getattr__(name: str):
+    home = _HOMES.get(name)
+    if home is None:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    value = getattr(import_module(f"{__name__}.{home}"), name)
+    globals()[name] = value  # found once
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted([*globals(), *_HOMES])
 
 
 __all__ = [

@@ -1,8 +1,6 @@
 """``python -m app.gcode check|normalize|moves FILE``."""
 
-import sys
-
-from .cli import main
+from .cli import run
 
 if __name__ == "__main__":  # the helper process of workers.py imports this module too
-    sys.exit(main())
+    run()

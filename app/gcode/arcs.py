@@ -116,6 +116,9 @@ def chord_points(start3, end3, center3, plane_axes, turn, tolerance):
 
     ``start3``/``end3``/``center3`` are (n, 3) in XYZ; ``plane_axes`` gives per arc
     the (first, second, normal) axis indices; the normal axis moves linearly (helix).
+    An arc of one chord has one point, its end: only arcs of several chords are worked
+    out point by point (at the coarse tolerance of a first picture, nearly every arc is
+    one chord).
     """
     *flat, (n_start, n_end) = in_plane(plane_axes, start3, end3, center3)
     s, e, c = flat
@@ -125,24 +128,32 @@ def chord_points(start3, end3, center3, plane_axes, turn, tolerance):
     count = segments(np.maximum(r, r_end), ang, tolerance)
     owner = np.repeat(np.arange(len(s)), count)
     last = np.cumsum(count) - 1
-    frac = np.arange(1, len(owner) + 1, dtype=float)
-    frac -= np.repeat(last + 1 - count, count)
-    frac /= np.repeat(count, count)  # (k+1)/count for the k-th chord end of its arc
-    theta0 = np.arctan2(s[:, 1] - c[:, 1], s[:, 0] - c[:, 0])
-    theta = np.repeat(theta0, count) + np.repeat(ang, count) * frac
-    rad = np.repeat(r, count) + np.repeat(r_end - r, count) * frac  # spiral slightly if r1 != r2
-    first_axis = np.repeat(c[:, 0], count) + rad * np.cos(theta)
-    second_axis = np.repeat(c[:, 1], count) + rad * np.sin(theta)
-    normal = np.repeat(n_start, count) + np.repeat(n_end - n_start, count) * frac
-    axes = np.asarray(plane_axes)
-    if not len(axes) or (axes == (0, 1, 2)).all():  # all in XY: the columns as they are
-        pts = np.column_stack([first_axis, second_axis, normal])
-    else:
-        pts = np.empty((len(owner), 3))
-        rows = np.arange(len(owner))
-        for column, values in zip(axes.T, (first_axis, second_axis, normal), strict=True):
-            pts[rows, column[owner]] = values
-    pts[last] = end3  # land exactly on the programmed end
+    pts = np.empty((len(owner), 3))
+    many = np.flatnonzero(count > 1)
+    if len(many):
+        few = len(many) < 0.75 * len(count)  # else the gathers cost more than they save
+        k = many if few else slice(None)  # (a one-chord arc's point is overwritten below)
+        at = np.repeat(count > 1, count) if few else slice(None)
+        sub = count[k]
+        frac = np.arange(1, int(sub.sum()) + 1, dtype=float)
+        frac -= np.repeat(np.cumsum(sub) - sub, sub)
+        frac /= np.repeat(sub, sub)  # (j+1)/count for the j-th chord end of its arc
+        sk, ck = s[k], c[k]
+        theta0 = np.arctan2(sk[:, 1] - ck[:, 1], sk[:, 0] - ck[:, 0])
+        theta = np.repeat(theta0, sub) + np.repeat(ang[k], sub) * frac
+        rad = np.repeat(r[k], sub) + np.repeat((r_end - r)[k], sub) * frac  # spiral slightly if r1 != r2
+        first_axis = np.repeat(ck[:, 0], sub) + rad * np.cos(theta)
+        second_axis = np.repeat(ck[:, 1], sub) + rad * np.sin(theta)
+        normal = np.repeat(n_start[k], sub) + np.repeat((n_end - n_start)[k], sub) * frac
+        axes = np.asarray(plane_axes)
+        if not len(axes) or (axes == (0, 1, 2)).all():  # all in XY: the columns as they are
+            pts[at] = np.column_stack([first_axis, second_axis, normal])
+        else:
+            rows = np.arange(len(owner))[at]
+            sub_owner = np.repeat(np.arange(len(sub)), sub)
+            for column, values in zip(axes[k].T, (first_axis, second_axis, normal), strict=True):
+                pts[rows, column[sub_owner]] = values
+    pts[last] = end3  # land exactly on the programmed end (the one point of a one-chord arc)
     return pts, owner
 
 

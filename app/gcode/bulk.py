@@ -20,7 +20,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import workers
+from . import forked, workers
 from .clean import quick
 from .source import chunks as chunk_table
 from .tokens import numbers, tokenize
@@ -138,17 +138,27 @@ def scan_stream(data: bytes, n_lines: int, chunks: list | None = None, share_byt
     if not data.endswith(b"\n"):
         data, chunks = data + b"\n", None
     big = len(data) >= (SHARE_BYTES if share_bytes is None else share_bytes)
-    groups = _groups(chunks or chunk_table(data), big)
-    futures = {k: _submit(data, groups[k]) for k in range(len(groups) - 1, 0, -1)}  # the tail first
+    parts = chunks or chunk_table(data)
+    tail = None
+    if big and len(parts) >= 2 and not workers.ready() and forked.usable():  # a one-shot load
+        groups = _split(parts)
+        tail = forked.Tail(scan_chunks, data, groups)
+    else:
+        groups = _groups(parts, big)
+    futures = {k: _submit(data, groups[k]) for k in range(len(groups) - 1, 0, -1)} if not tail else {}
     base = 0
-    for k, group in enumerate(groups):
-        words_of = _collect(futures.get(k)) or scan_chunks(data, group)
-        first = base
-        for words, (_, _, count) in zip(words_of, group, strict=True):
-            _fill(table, result.simple, base, *words)
-            base += count
-        _classify(result, table, first, base)
-        yield result, min(base, n_lines)
+    try:
+        for k, group in enumerate(groups):
+            words_of = (tail.take(k) if tail and k else _collect(futures.get(k))) or scan_chunks(data, group)
+            first = base
+            for words, (_, _, count) in zip(words_of, group, strict=True):
+                _fill(table, result.simple, base, *words)
+                base += count
+            _classify(result, table, first, base)
+            yield result, min(base, n_lines)
+    finally:
+        if tail:
+            tail.close()
     if base < n_lines:
         yield result, n_lines
 
@@ -162,6 +172,10 @@ def _groups(parts: list, big: bool) -> list[list]:
     """``parts`` in HELPER_GROUPS runs of chunks when shared, else one run."""
     if not big or len(parts) < 2 or not workers.ready():
         return [parts]
+    return _split(parts)
+
+
+def _split(parts: list) -> list[list]:
     size = -(-len(parts) // HELPER_GROUPS)
     return [parts[i : i + size] for i in range(0, len(parts), size)]
 

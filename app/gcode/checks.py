@@ -12,6 +12,8 @@ Vectorised over all rows; at most ``Report.limit`` of each kind are listed.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 
 from app.i18n import N_, msg
@@ -25,8 +27,14 @@ from .ops import ARC_CCW, ARC_CW, FEED, PLANE_AXES, SPINDLE, Ops
 BLOCK = 1 << 16  # rows the envelope check takes at a time
 
 
-def _column(lines: list[str], line_no: int, letter: str) -> int:
-    words = lex_line(lines[line_no - 1], line_no).words
+def _column(lines: list[str], line_no: int, letter: str, seen: dict | None = None) -> int:
+    """Column of ``letter``'s word on line ``line_no`` (0 when none); ``seen`` keeps each
+    line's words, as a line usually earns a warning for X and one for Y."""
+    words = None if seen is None else seen.get(line_no)
+    if words is None:
+        words = lex_line(lines[line_no - 1], line_no).words
+        if seen is not None:
+            seen[line_no] = words
     return next((w.column for w in words if w.letter == letter), 0)
 
 
@@ -153,16 +161,29 @@ def _exact_arcs(ops: Ops, moves: np.ndarray, rows: np.ndarray, low, high, exact)
         exact[rows] = True
 
 
-def _envelope(ops: Ops, profile: MachineProfile, lines: list[str], report: Report) -> None:
-    for name, sign, limit, out, vals in _violations(ops, _limits(profile), report.limit):
+def _envelope(ops: Ops, profile: MachineProfile, lines: list[str], report: Report) -> Envelope:
+    limits, found, seen = _limits(profile), [], {}
+    for name, sign, limit, out, vals in _violations(ops, limits, report.limit):
+        found.append((name, sign, limit, int(out[0]), float(vals[0]), len(out)))
         rel = ">" if sign == "+" else "<"
         for row, value in zip(out[: report.limit].tolist(), vals[: report.limit].tolist(), strict=True):
             line = int(ops.main_lines()[row])  # a subprogram's row: its calling line
-            report.warning(line, _column(lines, line, name),
+            report.warning(line, _column(lines, line, name, seen),
                            msg("{axis}{sign} beyond travel ({value:.3f} {rel} {limit:g})", axis=name,
                                sign=sign, value=float(value), rel=rel, limit=float(limit)),
                            f"{name}{sign} beyond travel")
         report.overflow("warning", f"{name}{sign} beyond travel", len(out) - report.limit)
+    return Envelope(limits, found)
+
+
+@dataclass(frozen=True)
+class Envelope:
+    """What the load's envelope check found, for ``preflight`` to reuse when the work zero
+    gives the same limits: per axis and direction (name, sign, limit, first row, its
+    value, number of rows), in work coordinates."""
+
+    limits: np.ndarray
+    found: list
 
 
 _LEAVES_ONE = N_("{axis}{sign} leaves the travel by {by:.3f} mm with the work zero at machine "
@@ -171,19 +192,26 @@ _LEAVES_MANY = N_("{axis}{sign} leaves the travel by {by:.3f} mm with the work z
                   "{axis}{zero:.3f} ({axis} {value:.3f} {rel} {limit:g}); {count} moves in all")
 
 
-def preflight(ops: Ops, profile: MachineProfile, lines: list[str], offset) -> list[Diagnostic]:
+def preflight(ops: Ops, profile: MachineProfile, lines: list[str], offset,
+              known: Envelope | None = None) -> list[Diagnostic]:
     """Errors for moves that would leave the travel with the work zero at ``offset``
     (machine mm, as the machine reports it): the first line per axis and direction,
-    by how much, in program order. Empty when the whole program fits."""
+    by how much, in program order. Empty when the whole program fits. ``known`` is the
+    load's ``Envelope`` (``Program.envelope``): used as it is when its limits are these."""
+    limits = _limits(profile, offset)
+    if known is not None and np.array_equal(known.limits, limits):
+        found = known.found  # the load checked these limits already: no second pass
+    else:
+        found = [(name, sign, limit, int(rows[0]), float(values[0]), len(rows))
+                 for name, sign, limit, rows, values in _violations(ops, limits)]
     out = []
-    for name, sign, limit, rows, values in _violations(ops, _limits(profile, offset)):
-        row, value = int(rows[0]), float(values[0])
+    for name, sign, limit, row, value, count in found:
         line = int(ops.main_lines()[row])
         k = "XYZ".index(name)
-        template = (_LEAVES_ONE if len(rows) == 1 else _LEAVES_MANY)
+        template = (_LEAVES_ONE if count == 1 else _LEAVES_MANY)
         message = msg(template, axis=name, sign=sign, by=abs(value - limit), zero=float(offset[k]),
                       value=value + float(offset[k]), rel=">" if sign == "+" else "<",
-                      limit=float(limit + offset[k]), count=len(rows))
+                      limit=float(limit + offset[k]), count=count)
         out.append(Diagnostic(line, _column(lines, line, name) if lines else 0, ERROR, message))
     return sorted(out)
 
@@ -210,8 +238,10 @@ def _spindle_speed(ops: Ops, profile: MachineProfile, lines: list[str], report: 
     report.overflow("warning", key, len(rows) - report.limit)
 
 
-def run(ops: Ops, profile: MachineProfile, lines: list[str], report: Report) -> None:
-    """Add the envelope, feed and spindle speed warnings of ``ops`` to ``report``."""
-    _envelope(ops, profile, lines, report)
+def run(ops: Ops, profile: MachineProfile, lines: list[str], report: Report) -> Envelope:
+    """Add the envelope, feed and spindle speed warnings of ``ops`` to ``report``; return
+    what the envelope check found (for ``preflight``)."""
+    envelope = _envelope(ops, profile, lines, report)
     _feed_zero(ops, lines, report)
     _spindle_speed(ops, profile, lines, report)
+    return envelope

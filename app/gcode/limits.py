@@ -89,7 +89,19 @@ def program_checks(toolpath, profile, report) -> None:
                                axis=name, lo=lo, hi=hi, span=hi - lo, travel=high - low))
 
 
-def _first_too_wide(ends: np.ndarray, span: float) -> int | None:
-    """The first row at which the ends so far spread over more than ``span``."""
-    over = np.flatnonzero(np.maximum.accumulate(ends) - np.minimum.accumulate(ends) > span + 1e-6)
-    return int(over[0]) if len(over) else None
+def _first_too_wide(ends: np.ndarray, span: float, block: int = 1 << 14) -> int | None:
+    """The first row at which the ends so far spread over more than ``span``: the whole
+    column first (a program that fits is done in one pass), then ``block`` rows at a
+    time up to the block where it happens (the running extremes are the same numbers)."""
+    if not len(ends) or not ends.max() - ends.min() > span + 1e-6:
+        return None
+    low = high = ends[0]
+    for first in range(0, len(ends), block):
+        part = ends[first : first + block]
+        part_low, part_high = min(low, part.min()), max(high, part.max())
+        if part_high - part_low > span + 1e-6:
+            spread = np.maximum(np.maximum.accumulate(part), high)
+            spread -= np.minimum(np.minimum.accumulate(part), low)
+            return first + int(np.flatnonzero(spread > span + 1e-6)[0])
+        low, high = part_low, part_high
+    return None

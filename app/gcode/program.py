@@ -22,7 +22,7 @@ import numpy as np
 from app.i18n import msg
 from app.profile import MachineProfile
 
-from . import bulk, checks, macro, normalize, runner
+from . import bulk, checks, normalize, runner, sniff
 from .diagnostics import ERROR, WARNING, Diagnostic, Report
 from .limits import program_checks
 from .moves import moves_of
@@ -49,6 +49,7 @@ class Program:
     profile: MachineProfile
     plan: normalize.Plan
     _render: tuple | None = field(default=None, repr=False)
+    envelope: checks.Envelope | None = field(default=None, repr=False)  # for checks.preflight
 
     def __repr__(self) -> str:
         return (f"Program({self.name!r}, {len(self.lines)} lines, {len(self.toolpath)} moves, "
@@ -151,6 +152,8 @@ def _plain(lines: Lines, data: list[bytes], start: State, report: Report) -> Ops
 
 def _expanded(lines: Lines, name: str, folder: Path | None, start: State, report: Report) -> Ops:
     """The expander's path (parameters, control flow, calls), rows traced to their source."""
+    from . import macro  # only for a program that needs it: a plain load never imports it
+
     buffer = OpBuffer()
     trace = macro.expand(lines.as_list(), name, folder, start, buffer, report)
     ops = buffer.finish()
@@ -165,7 +168,7 @@ def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfi
     """Interpret ``lines``: the expander when the bytes in ``data`` need it, else the fast path."""
     report = Report()
     start = _start_state(profile, tools)
-    if macro.needs_expander(data[0]):
+    if sniff.needs_expander(data[0]):
         data.clear()
         ops = _expanded(lines, name, folder, start, report)
     else:
@@ -177,10 +180,10 @@ def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfi
     checking = _in_thread(checks.run, ops, profile, lines, report)  # numpy lets both run at once
     the_plan = normalize.plan(ops, profile.motion.arc_tolerance_mm)
     toolpath = build(ops, the_plan.first, profile)
-    checking.join()
+    envelope = checking.join()
     program_checks(toolpath, profile, report)
     ops.forget_starts()  # the Toolpath has its own copy of the moves' starts
-    return Program(name, lines, report.finish(), ops, toolpath, profile, the_plan)
+    return Program(name, lines, report.finish(), ops, toolpath, profile, the_plan, envelope=envelope)
 
 
 def _give_back_free_memory() -> None:
@@ -197,24 +200,25 @@ def _give_back_free_memory() -> None:
 
 
 class _in_thread(threading.Thread):
-    """``fn(*args)`` on a thread; ``join()`` re-raises what it raised."""
+    """``fn(*args)`` on a thread; ``join()`` returns its value or re-raises what it raised."""
 
     def __init__(self, fn, *args):
         super().__init__(name="gcode-checks", daemon=True)
-        self._call, self._error = (fn, args), None
+        self._call, self._error, self._value = (fn, args), None, None
         self.start()
 
     def run(self) -> None:
         fn, args = self._call
         try:
-            fn(*args)
+            self._value = fn(*args)
         except BaseException as exc:  # handed to the joining thread
             self._error = exc
 
-    def join(self, timeout: float | None = None) -> None:
+    def join(self, timeout: float | None = None):
         super().join(timeout)
         if self._error is not None:
             raise self._error
+        return self._value
 
 
 def load_text(text: str, name: str = "<text>", profile: MachineProfile | None = None,

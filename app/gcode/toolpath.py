@@ -93,12 +93,16 @@ class Toolpath:
 
     def _may_bulge_out(self, arcs: np.ndarray, low: np.ndarray, high: np.ndarray) -> np.ndarray:
         """Mask of the arcs whose whole circle reaches past the box (low, high)."""
-        axes = np.array(PLANE_AXES)[self.plane[arcs]]
-        s, e, c, _ = in_plane(axes, self.start[arcs], self.end[arcs], self.center[arcs])
+        plane = self.plane[arcs]
+        s, e, c = (points.take(arcs, axis=0) for points in (self.start, self.end, self.center))
+        if (plane == 0).all():  # all in XY: the columns as they are (no gather per row)
+            first, second = 0, 1
+        else:
+            axes = np.array(PLANE_AXES)[plane]
+            s, e, c, _ = in_plane(axes, s, e, c)
+            first, second = axes[:, 0], axes[:, 1]
         r = np.maximum(np.hypot(s[:, 0] - c[:, 0], s[:, 1] - c[:, 1]),
                        np.hypot(e[:, 0] - c[:, 0], e[:, 1] - c[:, 1]))
-        xy = (self.plane[arcs] == 0).all()
-        first, second = (0, 1) if xy else (axes[:, 0], axes[:, 1])  # scalars: no gather
         out = (c[:, 0] + r > high[first]) | (c[:, 0] - r < low[first])
         out |= (c[:, 1] + r > high[second]) | (c[:, 1] - r < low[second])
         return out

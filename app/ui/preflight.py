@@ -62,7 +62,8 @@ class Preflight(QObject):
         old = [str(e) for e in self.errors]
         self.errors = []
         if program is not None and not program.errors:
-            self.errors = preflight(program.ops, self.w.profile, program.source_lines, self.current_offset())
+            self.errors = preflight(program.ops, self.w.profile, program.lines, self.current_offset(),
+                                    program.envelope)  # the lines unsplit; the load's check reused
         if self.errors and [str(e) for e in self.errors] != old:
             self.w.notifier.error(self.tr("Program leaves the travel"), self.message())
         self.w.binder.refresh_enabled()

@@ -6,6 +6,7 @@ import stat
 import subprocess
 import sys
 
+import numpy as np
 import pytest
 
 from app.gcode import load, load_text
@@ -136,6 +137,18 @@ def test_g91_piling_up_past_the_travel_is_named():
     named = [d for d in program.warnings if "spans X" in d.message and "G91" in d.message]
     assert len(named) == 1 and named[0].line == 18  # the first move that takes it past 150 mm
     assert not program.errors
+
+
+@pytest.mark.parametrize("block", [1, 3, 16, 1 << 14])
+def test_the_first_row_too_wide_is_found_block_by_block_as_in_one_pass(block):
+    from app.gcode.limits import _first_too_wide
+
+    rng = np.random.default_rng(13)
+    for _ in range(300):
+        ends = np.cumsum(rng.normal(0, rng.uniform(0.1, 30), int(rng.integers(1, 120))))
+        span = float(rng.uniform(0, 200))
+        over = np.flatnonzero(np.maximum.accumulate(ends) - np.minimum.accumulate(ends) > span + 1e-6)
+        assert _first_too_wide(ends, span, block) == (int(over[0]) if len(over) else None)
 
 
 @pytest.mark.parametrize("prefix", ["", "G0 X1 (general path)\n"])

@@ -214,6 +214,20 @@ def test_preflight_with_the_real_work_offset_names_line_axis_direction_and_amoun
     assert [(d.line, d.message[:2]) for d in low] == [(4, "Z-")] and "by 0.500 mm" in low[0].message
 
 
+def test_preflight_reuses_the_loads_envelope_check_only_for_the_same_limits():
+    from app.gcode.checks import preflight
+
+    text = "G0 X140 Y5\nG2 X140 Y25 I0 J10 F300\nG1 X-3 Z-25\nG3 X-3 Y5 I0 J-10\nG0 Y160\n"
+    program = load_text(text)
+    assert program.envelope is not None and program.envelope.found
+    default = program.profile.travel.work_offset()
+    for offset in (default, (0.0, 0.0, 20.0), (50.0, 10.0, 20.0), (5.0, 0.0, 0.5)):
+        fresh = preflight(program.ops, program.profile, program.source_lines, offset)
+        reused = preflight(program.ops, program.profile, program.lines, offset, program.envelope)
+        assert reused == fresh
+    assert preflight(program.ops, program.profile, program.lines, default, program.envelope)
+
+
 def test_spindle_speed_beyond_the_motor_warns_with_the_maximum():
     program = load_text("M3 S9000\nG0 X1\nM3 S3000\n")
     (warning,) = [d for d in program.warnings if "spindle" in d.message]

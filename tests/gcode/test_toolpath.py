@@ -74,6 +74,12 @@ def test_bounds_include_arc_bulge_exactly():
     assert max(abs(low[2]), abs(high[2])) == pytest.approx(5) and min(abs(low[2]), abs(high[2])) == 0
 
 
+def test_bounds_of_arcs_in_several_planes_at_once():
+    text = "G0 X0 Y0 Z0\nG18 G2 X10 Z0 I5 K0 F100\nG17 G3 X10 Y0 I0 J-4\nG19 G2 Y0 Z0 J3 K0\n"
+    low, high = toolpath(text).bounds
+    assert low.tolist() == pytest.approx([0, -8, -5]) and high.tolist() == pytest.approx([14, 6, 3])
+
+
 def test_helix_length():
     tp = toolpath("G0 X10\nG2 I-10 Z-5 F100")
     assert tp.length[1] == pytest.approx(math.hypot(2 * math.pi * 10, 5))
@@ -95,3 +101,32 @@ def test_chords_on_two_threads_equal_chords_on_one(monkeypatch):
     two = toolpath(text).polyline(0.01)
     np.testing.assert_array_equal(one[0], two[0])
     np.testing.assert_array_equal(one[1], two[1])
+
+
+def test_chord_points_of_many_arcs_equal_those_of_each_arc_alone():
+    """Arcs of one chord and of many, in every plane, helices and full turns: a batch
+    gives exactly the points each arc gives alone (one-chord arcs take a shortcut)."""
+    from app.gcode.arcs import chord_points
+    from app.gcode.ops import PLANE_AXES
+
+    rng = np.random.default_rng(9)
+    n = 300
+    c = rng.uniform(-50, 50, (n, 3))
+    r = rng.uniform(0.01, 40, n)
+    a0, a1 = rng.uniform(-4, 4, n), rng.uniform(-4, 4, n)
+    axes = np.array(PLANE_AXES)[rng.integers(0, 3, n)]
+    s, e, rows = c.copy(), c.copy(), np.arange(n)
+    s[rows, axes[:, 0]] += r * np.cos(a0)
+    s[rows, axes[:, 1]] += r * np.sin(a0)
+    e[rows, axes[:, 0]] += r * np.cos(a1)
+    e[rows, axes[:, 1]] += r * np.sin(a1)
+    e[rows, axes[:, 2]] += rng.uniform(-3, 3, n) * (rng.random(n) < 0.3)
+    e[::17] = s[::17]  # full circles
+    turn = rng.choice([-2, -1, 1, 2], n)
+    for tolerance in (0.01, 2.0, 30.0):
+        points, owner = chord_points(s, e, c, axes, turn, tolerance)
+        assert 0 < np.count_nonzero(np.bincount(owner, minlength=n) == 1) < n or tolerance == 0.01
+        for i in range(n):
+            one = slice(i, i + 1)
+            alone, _ = chord_points(s[one], e[one], c[one], axes[one], turn[one], tolerance)
+            np.testing.assert_array_equal(points[owner == i], alone)

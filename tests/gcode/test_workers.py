@@ -9,7 +9,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from app.gcode import bulk, load, workers
+from app.gcode import bulk, load, sniff, workers
 from app.gcode.source import CHUNK_BYTES, chunks
 
 SAMPLES = Path(__file__).resolve().parents[2] / "resources" / "samples"
@@ -81,7 +81,9 @@ def test_a_helper_that_dies_is_replaced(helper):
 
 def test_loading_with_the_helper_gives_the_same_program(big, helper, tmp_path):
     path = tmp_path / "big.ngc"
-    path.write_bytes(big)
+    plain = big.replace(b"(unclosed\n", b"")  # an unclosed comment sends a file to the expander
+    assert not sniff.needs_expander(plain)
+    path.write_bytes(plain)
     monkey = bulk.SHARE_BYTES
     try:
         bulk.SHARE_BYTES = 0
@@ -91,7 +93,7 @@ def test_loading_with_the_helper_gives_the_same_program(big, helper, tmp_path):
     workers.set_enabled(False)
     alone = load(path)
     assert [str(d) for d in shared.diagnostics] == [str(d) for d in alone.diagnostics]
-    assert len(shared.errors) >= 2  # the repeated X and the unclosed comment at least
+    assert shared.errors  # the repeated X at least
     assert len(shared.toolpath) > 60_000
     np.testing.assert_array_equal(shared.toolpath.end, alone.toolpath.end)
     np.testing.assert_array_equal(shared.toolpath.source_line, alone.toolpath.source_line)

@@ -1,7 +1,7 @@
 """The expander: parametric programs (Fanuc macro B, LinuxCNC o-words) -> plain blocks.
 
-``needs_expander(raw)`` is the loader's cheap test on a file's bytes: ``#``, ``[``,
-an ``O`` word, ``WHILE``/``END``/``GOTO``/``DO`` outside comments, ``M98``/``M99``/``G65``.
+``needs_expander(raw)`` (``app/gcode/sniff.py``, so that a plain program's load does not
+import the expander) is the loader's cheap test on a file's bytes.
 ``expand(lines, name, folder, state, ops, report)`` compiles the program
 (``structure.Unit``), walks it (``walker.Walker``) and hands every block left to
 ``interp.interpret_line``; it returns the ``Trace`` of the rows it added. The
@@ -29,33 +29,9 @@ from .calls import Library
 from .structure import Unit
 from .walker import Trace, Walker
 
-_COMMENTS = re.compile(rb"\([^()\n]*\)|;[^\n]*")
-_PARENS = re.compile(rb"\([^()]*\)")
-_PLAIN = b" \t\r0123456789.-+GXYZIJKFMSNRTgxyzijkfmsnrt"  # what plain lines are made of
-_MACRO_BYTES = b"#[oOwWeE"  # parameters, expressions, o-words, O numbers, GOTO, DO, WHILE, END
-_UPPER = bytes.maketrans(b"abcdefghijklmnopqrstuvwxyz", b"ABCDEFGHIJKLMNOPQRSTUVWXYZ")
-_CALLS = (b"M98", b"M99", b"G65", b"M098", b"M099", b"G065")
 _FANUC = re.compile(
     r"(?im)^[ \t]*(?:n[ \t]*\d+[ \t]*)?(?:o[ \t]*\d+[ \t]*(?:\([^\n]*\))?[ \t]*$|if[ \t]*\[|goto"
     r"|while[ \t]*\[|(?:do|end)[ \t]*\d)|m[ \t]*0*9[ \t]*[89](?![\d.])|g[ \t]*0*6[ \t]*5(?![\d.])")
-
-
-def needs_expander(raw: bytes) -> bool:
-    """True when the program uses anything beyond plain words (see the module docstring).
-
-    Costs two ``bytes.translate`` passes: the bytes of plain lines are dropped first,
-    so only comments and unusual letters are left to look at."""
-    rest = raw.translate(None, _PLAIN)
-    if b";" in rest:
-        rest = _COMMENTS.sub(b"", rest)
-    elif b"(" in rest:  # lines need not be told apart: drop the newlines before the comments
-        rest = _PARENS.sub(b"", rest.translate(None, b"\n"))
-    if any(rest.find(c) >= 0 for c in (bytes([b]) for b in _MACRO_BYTES)):
-        return True
-    if any(c in rest for c in (b"P", b"p", b"L", b"l")):  # M98 P, G65 P, L counts
-        squeezed = raw.translate(_UPPER, b" \t\r")
-        return any(call in squeezed for call in _CALLS)
-    return False
 
 
 def is_fanuc(text: str) -> bool:

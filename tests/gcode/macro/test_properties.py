@@ -6,7 +6,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from app.gcode import load_text, macro
+from app.gcode import load_text, sniff
 
 SETTINGS = settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 number = st.integers(-2000, 2000).map(lambda v: f"{v / 100:g}")
@@ -28,7 +28,7 @@ def test_a_plain_program_expands_to_what_the_fast_path_reads(text):
     fast = load_text(text)
     assert fast.ops.source is None  # nothing to expand: the loader takes the fast path
     with pytest.MonkeyPatch.context() as patch:
-        patch.setattr(macro, "needs_expander", lambda raw: True)
+        patch.setattr(sniff, "needs_expander", lambda raw: True)
         slow = load_text(text)
     assert slow.ops.source is not None
     assert slow.moves == fast.moves

@@ -1,0 +1,35 @@
+"""Does a program need the expander (``macro``)? The loader's cheap test on a file's bytes.
+
+``needs_expander(raw)``: ``#``, ``[``, an ``O`` word, ``WHILE``/``END``/``GOTO``/``DO``
+outside comments, ``M98``/``M99``/``G65``. It lives apart from ``macro`` so that loading
+a plain program never imports the expander.
+"""
+
+from __future__ import annotations
+
+import re
+
+_COMMENTS = re.compile(rb"\([^()\n]*\)|;[^\n]*")
+_PARENS = re.compile(rb"\([^()]*\)")
+_PLAIN = b" \t\r0123456789.-+GXYZIJKFMSNRTgxyzijkfmsnrt"  # what plain lines are made of
+_MACRO_BYTES = b"#[oOwWeE"  # parameters, expressions, o-words, O numbers, GOTO, DO, WHILE, END
+_UPPER = bytes.maketrans(b"abcdefghijklmnopqrstuvwxyz", b"ABCDEFGHIJKLMNOPQRSTUVWXYZ")
+_CALLS = (b"M98", b"M99", b"G65", b"M098", b"M099", b"G065")
+
+
+def needs_expander(raw: bytes) -> bool:
+    """True when the program uses anything beyond plain words (see the module docstring).
+
+    Costs two ``bytes.translate`` passes: the bytes of plain lines are dropped first,
+    so only comments and unusual letters are left to look at."""
+    rest = raw.translate(None, _PLAIN)
+    if b";" in rest:
+        rest = _COMMENTS.sub(b"", rest)
+    elif b"(" in rest:  # lines need not be told apart: drop the newlines before the comments
+        rest = _PARENS.sub(b"", rest.translate(None, b"\n"))
+    if any(rest.find(c) >= 0 for c in (bytes([b]) for b in _MACRO_BYTES)):
+        return True
+    if any(c in rest for c in (b"P", b"p", b"L", b"l")):  # M98 P, G65 P, L counts
+        squeezed = raw.translate(_UPPER, b" \t\r")
+        return any(call in squeezed for call in _CALLS)
+    return False

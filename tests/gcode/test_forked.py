@@ -1,0 +1,136 @@
+"""The forked child that scans the tail of a big file for a one-shot load: the same
+result as a scan alone, and a child that fails costs time, never the result."""
+
+import os
+import re
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from app.gcode import bulk, forked, load, sniff, workers
+from app.gcode.source import CHUNK_BYTES
+
+SAMPLES = Path(__file__).resolve().parents[2] / "resources" / "samples"
+pytestmark = pytest.mark.skipif(not sys.platform.startswith("linux"), reason="forks only on Linux")
+
+
+@pytest.fixture(scope="module")
+def big() -> bytes:
+    """About 3 MB of Inkscape output (a dozen chunks), with lines the general path
+    refuses near the end (the child's part)."""
+    lines = [line for p in sorted(SAMPLES.glob("*.ngc")) for line in p.read_bytes().splitlines()
+             if not re.match(rb"\s*(%|M0?2\b|M30\b)", line, re.IGNORECASE)]
+    text = b"\n".join(lines) + b"\nG21\n"
+    copies = text * (3 * CHUNK_BYTES * 4 // len(text) + 1)
+    return copies + b"G1 X1 Y2 X3\n(unclosed\nG91.1 G2 X1 I1\n" + text + b"M2\n"
+
+
+@pytest.fixture
+def one_shot(monkeypatch):
+    """As the command line loads: no helper process, forking allowed (the test runner
+    may have threads of its own; the child only scans and writes to its pipe)."""
+    monkeypatch.setattr(forked, "_allowed", True)
+    monkeypatch.setattr(forked.threading, "active_count", lambda: 1)
+    monkeypatch.setattr(forked.os, "getloadavg", lambda: (0.0, 0.0, 0.0))  # a quiet machine
+    workers.set_enabled(False)
+    taken = []
+    take = forked.Tail.take
+
+    def spy(self, k):
+        result = take(self, k)
+        taken.append(result is not None)
+        return result
+
+    monkeypatch.setattr(forked.Tail, "take", spy)
+    yield taken
+    workers.set_enabled(True)
+
+
+def _same(a: bulk.Scan, b: bulk.Scan) -> None:
+    np.testing.assert_array_equal(a.simple, b.simple)
+    np.testing.assert_array_equal(a.g, b.g)
+    np.testing.assert_array_equal(a.units, b.units)
+    for letter in a.values:
+        np.testing.assert_array_equal(a.values[letter], b.values[letter])
+
+
+def test_a_scan_shared_with_a_forked_child_equals_a_scan_alone(big, one_shot, monkeypatch):
+    n = big.count(b"\n")
+    parent, real = os.getpid(), bulk.scan_chunks
+
+    def scan_chunks(data, parts):  # this process slower than the child: its groups are used
+        if os.getpid() == parent:
+            time.sleep(0.05)
+        return real(data, parts)
+
+    monkeypatch.setattr(bulk, "scan_chunks", scan_chunks)
+    shared = bulk.scan(big, n, share_bytes=0)
+    monkeypatch.setattr(bulk, "scan_chunks", real)
+    assert any(one_shot), "the child sent no group"
+    monkeypatch.setattr(forked, "_allowed", False)
+    _same(shared, bulk.scan(big, n))
+
+
+def test_a_child_that_fails_costs_time_not_the_result(big, one_shot, monkeypatch):
+    n = big.count(b"\n")
+    parent, real = os.getpid(), bulk.scan_chunks
+
+    def scan_chunks(data, parts):  # fails in the child only
+        if os.getpid() != parent:
+            raise RuntimeError("the child failed")
+        return real(data, parts)
+
+    monkeypatch.setattr(bulk, "scan_chunks", scan_chunks)
+    failed = bulk.scan(big, n, share_bytes=0)
+    monkeypatch.setattr(bulk, "scan_chunks", real)
+    assert one_shot and not any(one_shot)  # asked, and nothing came
+    monkeypatch.setattr(forked, "_allowed", False)
+    _same(failed, bulk.scan(big, n))
+
+
+def test_a_busy_machine_or_a_second_thread_keeps_the_load_in_one_process(monkeypatch):
+    monkeypatch.setattr(forked, "_allowed", True)
+    monkeypatch.setattr(forked.threading, "active_count", lambda: 1)
+    monkeypatch.setattr(forked.os, "cpu_count", lambda: 2)
+    monkeypatch.setattr(forked.os, "getloadavg", lambda: (0.4, 0.4, 0.4))
+    assert forked.usable()
+    monkeypatch.setattr(forked.os, "getloadavg", lambda: (2.5, 2.0, 1.0))
+    assert not forked.usable()
+    monkeypatch.setattr(forked.os, "getloadavg", lambda: (0.0, 0.0, 0.0))
+    monkeypatch.setattr(forked.threading, "active_count", lambda: 2)
+    assert not forked.usable()
+    monkeypatch.setattr(forked, "_allowed", False)
+    monkeypatch.setattr(forked.threading, "active_count", lambda: 1)
+    assert not forked.usable()
+
+
+def test_a_tail_gives_the_groups_from_the_last_one_back():
+    groups = [[k] for k in range(6)]
+    tail = forked.Tail(lambda data, group: (data, group[0] * 10), b"x", groups)
+    try:
+        deadline = time.monotonic() + 30
+        while time.monotonic() < deadline and len(tail._results) < 5:
+            time.sleep(0.01)
+        assert [tail.take(k) for k in range(1, 6)] == [(b"x", k * 10) for k in range(1, 6)]
+        assert tail.take(0) is None  # never the child's: the parent starts there
+    finally:
+        tail.close()
+
+
+def test_the_command_line_load_with_a_child_gives_the_same_program(big, one_shot, tmp_path, monkeypatch):
+    path = tmp_path / "big.ngc"
+    plain = big.replace(b"(unclosed\n", b"")  # an unclosed comment sends a file to the expander
+    assert not sniff.needs_expander(plain)
+    path.write_bytes(plain)
+    monkeypatch.setattr(bulk, "SHARE_BYTES", 0)
+    shared = load(path)
+    monkeypatch.setattr(forked, "_allowed", False)
+    alone = load(path)
+    assert one_shot  # a child was forked and asked
+    assert [str(d) for d in shared.diagnostics] == [str(d) for d in alone.diagnostics]
+    assert shared.errors  # the repeated X at least
+    np.testing.assert_array_equal(shared.toolpath.end, alone.toolpath.end)
+    np.testing.assert_array_equal(shared.toolpath.source_line, alone.toolpath.source_line)
