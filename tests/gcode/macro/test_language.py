@@ -164,6 +164,7 @@ def test_linuxcnc_predefined_parameters_follow_the_moves_before_them():
 def test_fanuc_dwell_is_x_seconds_or_p_milliseconds():
     program = load_text("O0001\n#1 = 250\nG04 X1.5\nG04 P1500\nG4 P#1\nM30\n")
     assert not program.errors
-    assert [line for line in program.device_lines if line.startswith("G04")] == ["G04 P1.5", "G04 P1.5", "G04 P0.25"]
+    dwells = [line for line in program.device_lines if line.startswith("G04")]
+    assert dwells == ["G04 P1.5", "G04 P1.5", "G04 P0.25"]
     linuxcnc = load_text("#1 = 2\nG4 P#1\nM2\n")
     assert "G04 P2" in linuxcnc.device_lines
