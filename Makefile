@@ -18,7 +18,7 @@ MO := $(PO:.po=.mo)
 UI_SOURCES = $(shell find app/ui -name '*.py' | sort)
 CORE_SOURCES = app/i18n.py app/profile.py app/ui/settings/store.py app/gcode app/comm
 
-.PHONY: run test bench lint clean i18n translations
+.PHONY: run test bench lint clean i18n translations bytecode
 
 $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
@@ -43,13 +43,19 @@ i18n: $(STAMP)
 	$(BIN)/pybabel -q update --ignore-obsolete --ignore-pot-creation-date --no-fuzzy-matching -D cnc -i $(POT) -d $(I18N)
 	$(MAKE) translations
 
-run: $(STAMP) translations
+# The project is installed editable, so pip compiles none of its modules: compile them
+# (as an installed package is) so that a start reads bytecode even where the environment
+# writes none (PYTHONDONTWRITEBYTECODE); only what changed is compiled again.
+bytecode: $(STAMP)
+	$(BIN)/python -m compileall -q app backend_sim
+
+run: $(STAMP) translations bytecode
 	$(BIN)/python -m app.run
 
-test: $(STAMP) translations
+test: $(STAMP) translations bytecode
 	QT_QPA_PLATFORM=offscreen $(BIN)/python -m pytest -q
 
-bench: $(STAMP)
+bench: $(STAMP) bytecode
 	QT_QPA_PLATFORM=offscreen $(BIN)/python -m bench
 
 lint: $(STAMP)
