@@ -128,6 +128,7 @@ class Wire:
     def clear(self) -> None:
         self._pending.clear()
         self._delayed.clear()
+        self._lane_end = self._taken  # no priority frame waits any more
 
     def set_cut(self, cut: bool) -> None:
         self.cut = cut

@@ -57,6 +57,17 @@ def test_a_priority_lane_emptied_on_the_wire_starts_again_behind_the_current_fra
     assert wire.take(1.0) == b" 8 b\nD 2 x\nD 9 c\n"
 
 
+def test_a_cut_wire_forgets_its_priority_lane():
+    wire = Wire("uart_down", BYTE)
+    wire.write(b"D 7 a\n", 0.0)
+    wire.write_priority(b"D 3 x\n", 0.5 * BYTE)
+    wire.set_cut(True)
+    wire.set_cut(False)
+    wire.write(b"D 8 b\nD 9 c\n", 1.0)
+    wire.write_priority(b"D 4 y\n", 1.0 + 2.5 * BYTE)  # behind "D 8 b" on the wire, never inside it
+    assert wire.take(2.0) == b"D 8 b\nD 4 y\nD 9 c\n"
+
+
 def test_usb_is_fast_but_not_instant():
     wire = Wire("usb_down", 1e-6, USB_LATENCY)
     wire.write(b"C 1 PING*0000\n", 0.0)
