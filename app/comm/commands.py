@@ -11,8 +11,11 @@ Urgent commands (``STOP``) supersede the outstanding one.
 
 Ids come from one sequence for the whole process (``next_command_id``): every queue,
 session and reconnect takes the next, and the sequence starts at a random point below
-``ID_START_MAX``. So a machine that still remembers the last id of an earlier session
-(or of an earlier run of the program) never takes a new command for a retry of it.
+``ID_START_MAX`` (one in a million that a new run meets the id a machine remembers; ids
+stay short, so a command frame stays short on a noisy link). So a machine that still
+remembers the last id of an earlier session (or of an earlier run of the program) never
+takes a new command for a retry of it. A test or a benchmark may give a queue its own
+sequence (``ids``) to be repeatable.
 """
 
 from __future__ import annotations
@@ -20,6 +23,7 @@ from __future__ import annotations
 import itertools
 import random
 from collections import deque
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
 from app.comm.events import CommandResult
@@ -33,7 +37,7 @@ DEADLINES = {
     "RESET": 10.0, "RESUME": 10.0, "JOB": 6.0,
 }
 STATUS_VERBS = frozenset({"PING", "STATUS"})
-ID_START_MAX = 500_000_000  # ids from 1,000,000,000 are the main MCU's own (docs/protocol.md)
+ID_START_MAX = 1_000_000  # ids from 1,000,000,000 are the main MCU's own (docs/protocol.md)
 _IDS = itertools.count(random.SystemRandom().randrange(1, ID_START_MAX))
 
 
@@ -73,13 +77,14 @@ class CommandQueue:
 
     outstanding: Pending | None = None
     waiting: deque[Command] = field(default_factory=deque)
+    ids: Callable[[], int] = next_command_id  # where ids come from (the process's sequence)
     _next: int | None = None
 
     @property
     def next_id(self) -> int:
         """The id the next command of this queue will get (taken from the sequence now)."""
         if self._next is None:
-            self._next = next_command_id()
+            self._next = self.ids()
         return self._next
 
     def _take_id(self) -> int:

@@ -11,8 +11,11 @@ within the last ``lost_s`` (a false loss).
 
 from __future__ import annotations
 
+import itertools
+import random
 from dataclasses import dataclass
 
+from app.comm.commands import ID_START_MAX
 from app.comm.listener import SessionListener, SessionState
 from app.comm.session import Session
 from backend_sim import Simulator
@@ -54,7 +57,8 @@ def noisy_run(lines: list[str], rate: float, seed: int, sd_dir, home: bool = Tru
     port = sim.host_port
     port.timeout = 0
     tally = _Tally()
-    session = Session(None, tally, clock=lambda: sim.clock.now)
+    ids = itertools.count(random.Random(f"ids:{seed}").randrange(1, ID_START_MAX)).__next__  # repeatable
+    session = Session(None, tally, clock=lambda: sim.clock.now, ids=ids)
     session.attach(port.write)
 
     def step() -> None:
