@@ -11,14 +11,12 @@ within the last ``lost_s`` (a false loss).
 
 from __future__ import annotations
 
-import itertools
-import random
 from dataclasses import dataclass
 
-from app.comm.commands import ID_START_MAX
 from app.comm.listener import SessionListener, SessionState
 from app.comm.session import Session
 from backend_sim import Simulator
+from tests.comm.simlink import seeded_ids
 
 STEP_S = 0.005
 
@@ -57,8 +55,7 @@ def noisy_run(lines: list[str], rate: float, seed: int, sd_dir, home: bool = Tru
     port = sim.host_port
     port.timeout = 0
     tally = _Tally()
-    ids = itertools.count(random.Random(f"ids:{seed}").randrange(1, ID_START_MAX)).__next__  # repeatable
-    session = Session(None, tally, clock=lambda: sim.clock.now, ids=ids)
+    session = Session(None, tally, clock=lambda: sim.clock.now, ids=seeded_ids(seed))
     session.attach(port.write)
 
     def step() -> None:

@@ -18,7 +18,7 @@ def test_a_new_session_is_not_answered_from_the_old_sessions_cache():
     assert link.sim.cnc.check_mode
     link.session.detach("reconnect")
     link.rec = Recorder()
-    link.session = Session(None, link.rec, clock=lambda: link.sim.clock.now)
+    link.session = Session(None, link.rec, clock=lambda: link.sim.clock.now, ids=link.session.commands.ids)
     link.attach()
     assert link.run_until(lambda: link.session.state is SessionState.READY, 2.0)
     result = link.command("SET", "CHECK", 0)
