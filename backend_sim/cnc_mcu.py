@@ -4,7 +4,8 @@ Contract: ``CncMcu`` receives the bytes the UART lands (``receive``), runs the m
 controller for whole milliseconds (``run``), then turns what happened into frames on
 its UART TX wire (``service``). It owns the ``D`` stream of a job (expected seq, ``A``
 with free slots, duplicates re-acked, gaps and bad CRCs answered ``N expected`` once per
-bad stretch), reports ``F <seq>`` cumulatively as lines finish, and sends ``S`` on every
+bad stretch, every later seq seen missing named at once, a probe answered with what is
+missing: ``job_stream``), reports ``F <seq>`` cumulatively as lines finish, and sends ``S`` on every
 state change, on ``PING``/``STATUS`` and at least every 50 ms while moving. With nothing
 from the main MCU for 3 s while moving it holds (``X UART_LOST``). A refused
 line (``E - <code> <seq> <text>``) flushes the queue and ends the job. Commands are in
@@ -193,10 +194,13 @@ class CncMcu:
         verdict = self.job.offer(frame.seq)
         if verdict is Verdict.REACK:
             self.send(AckFrame(self.job.expected - 1, self.free_slots()))
+            missing = self.job.after_duplicate()
+            if missing is not None:
+                self.send(Nak(missing))
         elif verdict in (Verdict.NAK, Verdict.QUIET):
-            self.job.keep(frame.seq, frame.line, self.free_slots())  # selective repeat
-            if verdict is Verdict.NAK:
-                self.send(Nak(self.job.expected))
+            holes = self.job.keep(frame.seq, frame.line, self.free_slots())  # selective repeat
+            for seq in [self.job.expected] * (verdict is Verdict.NAK) + holes:
+                self.send(Nak(seq))
         elif verdict is Verdict.QUEUE:
             self._queue_line(frame.seq, frame.line)
             self._queue_kept()

@@ -9,13 +9,19 @@ CRC. Used by the CNC MCU for jobs and by the main MCU for SD uploads.
 Selective repeat (docs/protocol.md): a frame above a gap is not thrown away but kept
 (``keep``, within ``room`` seqs of ``expected``); once the gap is filled the caller
 takes the kept frames in order (``take``) and, if another gap remains
-(``gap_remains``), answers ``N`` for it at once.
+(``gap_remains``), answers ``N`` for it at once. Every seq seen missing is named as
+soon as it is seen: ``keep`` returns the seqs of a new hole below the kept frame
+(answer ``N`` for each), and a duplicate that arrives while frames are kept above a
+gap is answered ``N expected`` as well as ``A`` (``after_duplicate``: once per burst of
+duplicates, so a go-back-N host's rewind gets one ``N``, not one per frame).
 """
 
 from __future__ import annotations
 
 import enum
 from dataclasses import dataclass, field
+
+MAX_HOLE_NAKS = 4  # N frames for one newly seen hole (the rest follow as it is filled)
 
 
 class Verdict(enum.Enum):
@@ -36,10 +42,13 @@ class JobStream:
     open: bool = False
     bad_stretch: bool = False
     ahead: dict[int, str] = field(default_factory=dict)
+    high: int = -1  # the highest seq seen: queued or kept
+    probe_answered: bool = False  # a duplicate of this burst was answered N expected
 
     def start(self, total: int) -> None:
         self.total, self.expected, self.acc, self.done = total, 0, -1, -1
         self.open, self.bad_stretch = True, False
+        self.high, self.probe_answered = -1, False
         self.ahead.clear()
 
     def close(self) -> None:
@@ -47,10 +56,24 @@ class JobStream:
         self.bad_stretch = False
         self.ahead.clear()
 
-    def keep(self, seq: int, line: str, room: int) -> None:
-        """Keep a frame above the gap (``expected < seq < expected + room``) for later."""
-        if self.expected < seq < min(self.expected + max(room, 1), self.total):
-            self.ahead.setdefault(seq, line)
+    def keep(self, seq: int, line: str, room: int) -> list[int]:
+        """Keep a frame above the gap (``expected < seq < expected + room``) for later;
+        return the seqs seen missing for the first time (between the highest frame seen
+        and this one, ``expected`` excepted: ``offer`` names it), at most ``MAX_HOLE_NAKS``."""
+        if not self.expected < seq < min(self.expected + max(room, 1), self.total):
+            return []
+        self.ahead.setdefault(seq, line)
+        new = range(max(self.high + 1, self.expected + 1), seq)
+        self.high = max(self.high, seq)
+        return list(new[:MAX_HOLE_NAKS])
+
+    def after_duplicate(self) -> int | None:
+        """A duplicate was re-acknowledged: the seq to answer ``N`` for too (the first
+        of a burst while frames are kept above a gap: a host's probe), else None."""
+        if self.probe_answered or not any(s > self.expected for s in self.ahead):
+            return None
+        self.probe_answered = True
+        return self.expected
 
     def take(self) -> tuple[int, str] | None:
         """The kept frame that is next (seq ``expected``), if there is one."""
@@ -69,6 +92,7 @@ class JobStream:
     def offer(self, seq: int) -> Verdict:
         if seq < self.expected:
             return Verdict.REACK
+        self.probe_answered = False
         if seq > self.expected:
             return self._nak()
         return Verdict.QUEUE
@@ -79,6 +103,7 @@ class JobStream:
     def accepted(self, seq: int) -> None:
         self.expected = seq + 1
         self.acc = seq
+        self.high = max(self.high, seq)
         self.bad_stretch = False
 
     def finished(self, seq: int) -> bool:

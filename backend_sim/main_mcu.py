@@ -8,8 +8,10 @@ Contract:
   executed again: its answers are sent again, or, for a forwarded command not yet
   answered, it is forwarded again (the CNC MCU answers a repeated id from its cache).
   A bad host frame is answered ``N expected`` once per bad stretch, with
-  ``expected`` mirrored from the stream (an ``N`` of the CNC MCU for the same seq in
-  the same stretch is not passed on twice).
+  ``expected`` mirrored from the stream (the CNC MCU's ``N`` for that same seq is
+  not passed on twice). A resent ``D`` frame (seq at or below the highest relayed in
+  this stream) goes down ahead of the new frames waiting for the UART
+  (``Wire.write_priority``), so a gap is filled while the frames above it arrive.
 - real-time bytes go down ahead of every queue (``Wire.write_urgent``).
 - CNC frames go up (``S`` with merged flags), except the answers to the main MCU's own
   commands (ids from ``OWN_ID0``) and, during ``SD RUN``, the stream's ``A``/``N``/``F``.
@@ -91,7 +93,9 @@ class MainMcu:
         self.last_relayed: Status | None = None
         self.answers = AnswerCache()
         self.expected = 0
-        self.nak_sent: int | None = None
+        self.relayed = -1
+        self.nak_sent: int | None = None  # N sent in this bad stretch (the main MCU's or passed on)
+        self.own_nak: int | None = None  # the N the main MCU sent itself, for a bad host frame
         self.upload = None
         self.sd_job = None
         self.own_id = OWN_ID0
@@ -185,7 +189,7 @@ class MainMcu:
         if self.upload is not None:
             return main_sd.upload_bad_frame(self)
         if self.nak_sent is None:
-            self.nak_sent = self.expected
+            self.nak_sent = self.own_nak = self.expected
             self.to_host(Nak(self.expected))
         return None
 
@@ -203,6 +207,11 @@ class MainMcu:
         if frame.seq == self.expected:
             self.expected += 1
             self.nak_sent = None
+        if frame.seq <= self.relayed:  # a resend: ahead of the new frames waiting for the UART
+            self.uart_tx.write_priority(encode_fit(frame), self.clock.now)
+            self.next_ping = self.clock.now + PING_PERIOD_S
+            return None
+        self.relayed = frame.seq
         self.to_cnc(frame)
         return None
 
@@ -240,12 +249,13 @@ class MainMcu:
         if self.sd_job is not None or self.upload is not None:
             self.answer(Error(cmd.id, "BUSY", "SD job or upload in progress"))
             return False
-        self.expected, self.nak_sent = 0, None
+        self.expected, self.nak_sent, self.relayed = 0, None, -1
         return True
 
     def _before_resume(self, cmd: Command) -> bool:
         if cmd.args[:1] == ("FROM",) and len(cmd.args) == 2 and cmd.args[1].isdigit():
             self.expected, self.nak_sent = int(cmd.args[1]), None
+            self.relayed = self.expected - 1
         return True
 
     def _before_stop(self, cmd: Command) -> bool:
@@ -321,7 +331,8 @@ class MainMcu:
         return None
 
     def _cnc_nak(self, frame: Nak) -> None:
-        if self.nak_sent == frame.seq:
+        if self.own_nak == frame.seq:  # named already for a bad host frame: not twice
+            self.own_nak = None
             return
         self.expected, self.nak_sent = frame.seq, frame.seq
         self.to_host(frame)

@@ -8,7 +8,9 @@ real-time byte, or the last byte waiting) lands, and ``take(now)`` returns every
 landed by ``now``. Nothing is ticked per bit or per byte.
 
 ``write_urgent`` puts a real-time byte right behind the byte being shifted out, ahead
-of everything queued. ``cut`` models an unplugged cable: bytes written are lost.
+of everything queued; ``write_priority`` puts whole frames (resent ``D`` frames) behind
+the frame being shifted out and earlier priority frames, ahead of the frames queued
+by ``write``: a TX queue with a fast lane. ``cut`` models an unplugged cable: bytes written are lost.
 
 The UART between the MCUs runs at 115200 8N1 (10 bits per byte); the USB CDC hop to
 the host is fast but not instant (``USB_LATENCY``, about 1 MB/s).
@@ -52,6 +54,8 @@ class Wire:
         self._t_first = 0.0
         self._delayed: list[tuple[float, int, bytes]] = []
         self._order = 0
+        self._taken = 0  # bytes landed and taken so far (positions below are counted from it)
+        self._lane_end = 0  # where the priority lane ends, in bytes since the wire started
 
     def write(self, data: bytes, now: float) -> None:
         if self.cut or not data:
@@ -64,6 +68,26 @@ class Wire:
             else:
                 self._queue(piece, now)
 
+    def write_priority(self, data: bytes, now: float) -> None:
+        """Send whole frames ahead of the frames queued by ``write`` (behind the frame
+        being shifted out and earlier priority frames): a TX queue with a fast lane."""
+        if self.cut or not data:
+            return
+        self.sent += len(data)
+        for delay, piece in self.faults.process(bytes(data)):
+            if delay > 0:
+                self._order += 1
+                heapq.heappush(self._delayed, (now + delay, self._order, piece))
+            elif not self._pending:
+                self._queue(piece, now)
+                self._lane_end = self._taken + len(piece)
+            else:
+                index = self._lane_end - self._taken
+                if index <= self._count(now):
+                    index = self._pending.find(b"\n", self._count(now)) + 1 or len(self._pending)
+                self._pending[index:index] = piece
+                self._lane_end = self._taken + index + len(piece)
+
     def write_urgent(self, data: bytes, now: float) -> None:
         """Send ``data`` ahead of every queued byte (behind the one in the shifter)."""
         if self.cut:
@@ -73,6 +97,8 @@ class Wire:
             return
         index = min(len(self._pending), self._count(now) + 1)
         self._pending[index:index] = data
+        if self._taken + index < self._lane_end:
+            self._lane_end += len(data)
 
     def take(self, now: float) -> bytes:
         """Every byte landed by ``now`` (seconds), in order."""
@@ -102,6 +128,7 @@ class Wire:
     def clear(self) -> None:
         self._pending.clear()
         self._delayed.clear()
+        self._lane_end = self._taken  # no priority frame waits any more
 
     def set_cut(self, cut: bool) -> None:
         self.cut = cut
@@ -128,5 +155,6 @@ class Wire:
             return bytearray()
         out = self._pending[:count]
         del self._pending[:count]
+        self._taken += count
         self._t_first += count * self.byte_time
         return out

@@ -144,3 +144,31 @@ def test_corrupt_window_state_is_ignored_and_kept_aside(tmp_path, text):
     loaded = load_window_state(path)
     assert loaded.geometry is None and loaded.state is None and "window" in loaded.problem
     assert not path.exists() and (tmp_path / "window.json.damaged").read_text() == text
+
+
+@pytest.mark.parametrize("text", ["", "[1, 2]", "{\"version\": 7}", "[" * 10_000 + "]" * 10_000, "\ud800",
+                                  "{\"recent_files\": [1], \"dark\": 1}"])
+def test_damaged_prefs_give_the_defaults_and_leave_the_file_alone(tmp_path, text):
+    from app.ui.settings.prefs import Prefs, load_prefs
+
+    path = tmp_path / "prefs.json"
+    path.write_text(text, encoding="utf-8", errors="surrogatepass")
+    before = path.read_bytes()
+    loaded = load_prefs(path)
+    assert loaded.prefs == Prefs() and "prefs.json" in loaded.problem
+    assert path.read_bytes() == before
+
+
+def test_prefs_round_trip_atomically_and_keep_eight_recent_files(tmp_path):
+    from app.ui.settings.prefs import Prefs, load_prefs, save_prefs
+
+    prefs = Prefs()
+    for n in range(10):
+        prefs = prefs.with_recent(f"/f{n}.ngc")
+    prefs = prefs.with_recent("/f3.ngc")
+    save_prefs(tmp_path / "prefs.json", Prefs(prefs.recent_files, True))
+    loaded = load_prefs(tmp_path / "prefs.json")
+    assert loaded.problem == "" and loaded.prefs.dark is True
+    assert loaded.prefs.recent_files == ("/f3.ngc", "/f9.ngc", "/f8.ngc", "/f7.ngc", "/f6.ngc", "/f5.ngc",
+                                         "/f4.ngc", "/f2.ngc")
+    assert [p.name for p in tmp_path.iterdir()] == ["prefs.json"]  # no temporary file left

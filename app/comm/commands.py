@@ -8,11 +8,22 @@ heartbeat ``PING`` goes out every second besides (``PING``/``STATUS`` ids are ne
 remembered by the machine). ``PING`` and ``STATUS`` are answered by
 an ``S`` frame. A command unanswered by its verb's deadline ends with ``TIMEOUT``.
 Urgent commands (``STOP``) supersede the outstanding one.
+
+Ids come from one sequence for the whole process (``next_command_id``): every queue,
+session and reconnect takes the next, and the sequence starts at a random point below
+``ID_START_MAX`` (one in a million that a new run meets the id a machine remembers; ids
+stay short, so a command frame stays short on a noisy link). So a machine that still
+remembers the last id of an earlier session (or of an earlier run of the program) never
+takes a new command for a retry of it. A test or a benchmark may give a queue its own
+sequence (``ids``) to be repeatable.
 """
 
 from __future__ import annotations
 
+import itertools
+import random
 from collections import deque
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
 from app.comm.events import CommandResult
@@ -26,6 +37,13 @@ DEADLINES = {
     "RESET": 10.0, "RESUME": 10.0, "JOB": 6.0,
 }
 STATUS_VERBS = frozenset({"PING", "STATUS"})
+ID_START_MAX = 1_000_000  # ids from 1,000,000,000 are the main MCU's own (docs/protocol.md)
+_IDS = itertools.count(random.SystemRandom().randrange(1, ID_START_MAX))
+
+
+def next_command_id() -> int:
+    """The next command id of this process (see the module docstring)."""
+    return next(_IDS)
 
 
 @dataclass
@@ -57,14 +75,25 @@ def deadline_for(verb: str, args: tuple[str, ...]) -> float | None:
 class CommandQueue:
     """Assigns ids, sends one command at a time, matches answers, retries, times out."""
 
-    next_id: int = 1
     outstanding: Pending | None = None
     waiting: deque[Command] = field(default_factory=deque)
+    ids: Callable[[], int] = next_command_id  # where ids come from (the process's sequence)
+    _next: int | None = None
+
+    @property
+    def next_id(self) -> int:
+        """The id the next command of this queue will get (taken from the sequence now)."""
+        if self._next is None:
+            self._next = self.ids()
+        return self._next
+
+    def _take_id(self) -> int:
+        cid, self._next = self.next_id, None
+        return cid
 
     def submit(self, verb: str, args: tuple[str, ...] = (), urgent: bool = False) -> Command:
         """Queue a command and return its frame (with its id)."""
-        command = Command(self.next_id, verb, tuple(str(a) for a in args))
-        self.next_id += 1
+        command = Command(self._take_id(), verb, tuple(str(a) for a in args))
         if urgent:
             self.waiting.appendleft(command)
         else:
@@ -132,9 +161,7 @@ class CommandQueue:
         ``sending`` already holds a PING or STATUS."""
         if any(c.verb in STATUS_VERBS for c in sending):
             return []
-        command = Command(self.next_id, "PING")
-        self.next_id += 1
-        return [command]
+        return [Command(self._take_id(), "PING")]
 
     def fail_all(self, code: str, info: str) -> list[CommandResult]:
         """End every command (link lost, disconnect): results for each."""

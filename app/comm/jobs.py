@@ -1,7 +1,9 @@
 """Jobs, SD uploads, pause/stop and recovery: the stream half of ``Session``.
 
 ``JobControl`` is mixed into ``Session`` (it uses its ``submit``, ``_set_state``,
-``_send``, listener and clock). Contract of the operator calls:
+``_send``, listener and clock). Its frame handlers are ``job_frames.StreamFrames``, its
+link-loss and reset handling ``job_recovery.Recovery``; here the operator calls and
+the answers to the commands they send. Contract of the operator calls:
 
 - ``start_job(program, start=0)`` (a ``Program`` with ``device_lines`` or a list of
   lines): only when READY with nothing in flight; sends ``JOB n`` and streams once it
@@ -22,28 +24,17 @@ from __future__ import annotations
 import math
 
 from app.comm import frame as fr
-from app.comm.events import CommandResult, ResumeOffer, StatusEvent
-from app.comm.listener import JOB_STATES, RECOVERY_STATES, SENDING_STATES, SessionState
+from app.comm.events import CommandResult
+from app.comm.job_frames import UNKNOWN_BOOT, StreamFrames
+from app.comm.job_recovery import Recovery
+from app.comm.listener import JOB_STATES, RECOVERY_STATES, SessionState
 from app.comm.modal import restart_preamble
-from app.comm.stops import stop_event
 from app.comm.stream import Stream, sd_crc32
-from app.i18n import N_, msg
+from app.i18n import msg
+
+__all__ = ["UNKNOWN_BOOT", "JobControl", "device_lines", "plain_number"]
 
 S = SessionState
-PROGRESS_EVERY_S = 0.1
-UNKNOWN_BOOT = "0"
-STOP_ALARMS = frozenset({"LIMIT", "SOFT_LIMIT", "FOLLOWING_ERROR"})  # COVER_OPEN holds: RESUME goes on
-
-
-_REFUSED, _REFUSED_BARE = N_("line refused: {code} {text}"), N_("line refused: {code}")
-_LINE_REFUSED = N_("line {line} refused: {code} {text}")
-_LINE_REFUSED_BARE = N_("line {line} refused: {code}")
-
-
-def _refused_seq(text: str, default: int) -> int:
-    """The seq an ``E -`` names as the first word of its text (the machine's), else ``default``."""
-    first = text.split(" ", 1)[0]
-    return int(first) if first.isdigit() else default
 
 
 def plain_number(value: float) -> str:
@@ -57,8 +48,8 @@ def device_lines(program) -> list[str]:
     return list(getattr(program, "device_lines", program))
 
 
-class JobControl:
-    """Operator calls and frame handlers for streams (see the module docstring)."""
+class JobControl(StreamFrames, Recovery):
+    """Operator calls and command answers for streams (see the module docstring)."""
 
     # ------------------------------------------------------------------ operator calls
 
@@ -240,159 +231,3 @@ class JobControl:
     def _realtime_confirmed(self, byte: bytes) -> None:
         if byte == fr.STOP_FLUSH and self.state is S.STOPPING:
             self._finish_stream(False, msg("stopped by the operator"))
-
-    # ------------------------------------------------------------------ frames of a stream
-
-    def _tick_stream(self, now: float) -> None:
-        stream = self.stream
-        if stream is None or self.state not in SENDING_STATES or not self.attached:
-            return
-        if self.commands.is_waiting(stream.opener):  # SD PUT still behind another command:
-            return  # a D frame before it would reach a machine with no upload open (BAD_SEQ)
-        for frame in stream.window.due(now):
-            self._send(frame)
-        if stream.window.failed:
-            self._error("RETRIES_EXHAUSTED", stream.window.failed)
-            if stream.kind == "job":
-                self.realtime.request(fr.STOP_FLUSH, now)
-            self._finish_stream(False, stream.window.failed)
-            return
-        self._check_quality()
-        self._report_progress(now)
-
-    def _on_ack(self, frame: fr.Ack, now: float) -> None:
-        if self.stream is None or self.state not in SENDING_STATES:
-            return
-        if self.stream.window.on_ack(frame.seq, frame.free, now) and self.state is S.UPLOADING:
-            self.commands.acknowledge()
-
-    def _on_nak(self, frame: fr.Nak, now: float) -> None:
-        if self.stream is not None and self.state in SENDING_STATES:
-            self.stream.window.on_nak(frame.seq, now)
-
-    def _on_finished(self, frame: fr.Finished, now: float) -> None:
-        if self.stream is None or self.stream.kind != "job" or self.state not in SENDING_STATES:
-            return
-        self.stream.window.on_ack(frame.seq, 0, now, timed=False)
-        self._lines_finished(frame.seq, now)
-
-    def _lines_finished(self, seq: int, now: float) -> None:
-        if self.stream.finish_line(seq):
-            self._report_progress(now, force=True)
-            if self.stream.complete:
-                self._finish_stream(True, msg("completed"))
-
-    def _line_refused(self, frame: fr.Error) -> None:
-        said = {"code": frame.code, "text": frame.text}
-        reason = msg(_REFUSED if frame.text else _REFUSED_BARE, **said)
-        if self.stream is None or self.state is S.STOPPING:  # a frame still in flight
-            self._log("warning", msg("{reason} (no job running)", reason=reason))
-            return
-        self._error("LINE_REFUSED", reason)
-        if self.state in JOB_STATES | SENDING_STATES:
-            seq = _refused_seq(frame.text, self.status.done + 1 if self.status else 0)
-            line = self.stream.program_index(seq)
-            self.stream.refused = line
-            reason = msg(_LINE_REFUSED if frame.text else _LINE_REFUSED_BARE, line=line, **said)
-            self._finish_stream(False, reason)
-
-    def _job_alarm(self, code: str, text: str) -> None:
-        if self.stream is None:
-            return
-        if code == "UART_LOST" and self.state in JOB_STATES - {S.STOPPING}:
-            self._interrupt(msg("the UART hop to the CNC MCU is down"))
-        elif code in STOP_ALARMS and self.state in JOB_STATES | SENDING_STATES:
-            self._finish_stream(False, msg("alarm {code} {text}", code=code, text=text))
-
-    def _job_status(self, event: StatusEvent, now: float) -> None:
-        stream = self.stream
-        if stream is None or event.boot == UNKNOWN_BOOT:
-            return
-        if self.state is S.INTERRUPTED:
-            if self.link.state.value == "CONNECTED":
-                self._offer_recovery(event)
-            return
-        if stream.kind != "job" or self.state not in SENDING_STATES:
-            return
-        if "U" in event.flags:
-            self._interrupt(msg("the UART hop to the CNC MCU is down"))
-            return
-        stream.window.on_status_ack(event.acc, event.free, now)
-        if event.state == "HOLD" and self.state is S.STREAMING:
-            self._set_state(S.PAUSED)
-        elif event.state == "RUN" and self.state is S.PAUSED:
-            self._set_state(S.STREAMING)
-        self._lines_finished(event.done, now)
-        self._program_stop(event)
-        if self.stream is not None and event.state == "ALARM":
-            self._finish_stream(False, msg("the machine is in ALARM"))
-
-    def _program_stop(self, event: StatusEvent) -> None:
-        """Report a program stop the machine now holds at (flag ``W``), once."""
-        if self.stream is None or self.stream.kind != "job":
-            return
-        seq = self.program_stops.update(event.flags, event.done)
-        if seq is None or seq >= self.stream.window.total:
-            return
-        index = self.stream.program_index(seq)
-        line = self.lines[index] if 0 <= index < len(self.lines) else ""
-        self._log("info", f"program stop at line {index}: {line}")
-        self.listener.on_program_stop(stop_event(index, line))
-
-    def _report_progress(self, now: float, force: bool = False) -> None:
-        last, when = self._last_progress
-        if not force and now - when < PROGRESS_EVERY_S:
-            return
-        progress = self.stream.progress()
-        if progress != last:
-            self._last_progress = (progress, now)
-            self.listener.on_progress(progress)
-
-    # ------------------------------------------------------------------ recovery
-
-    def _interrupt(self, reason: str) -> None:
-        if self.state is not S.INTERRUPTED:
-            self._log("warning", f"job interrupted: {reason}")
-            self._set_state(S.INTERRUPTED)
-
-    def _job_link_lost(self, reason: str) -> None:
-        if self.stream is None:
-            return
-        if self.state is S.UPLOADING:
-            self._finish_stream(False, msg("upload failed: {reason}", reason=reason))
-        elif self.state is S.STOPPING:
-            self._finish_stream(False, msg("stopped (link lost before the machine confirmed: {reason})",
-                                                  reason=reason))
-        elif self.state in JOB_STATES or self.state in RECOVERY_STATES:
-            self._interrupt(reason)
-
-    def _offer_recovery(self, event: StatusEvent) -> None:
-        stream = self.stream
-        if event.boot == stream.boot and stream.kind == "job":
-            self._lines_finished(event.done, self.clock())
-            if self.stream is None:
-                return
-        if "U" in event.flags:
-            return
-        if event.boot == stream.boot:
-            start = stream.program_index(event.acc) + 1
-            offer = ResumeOffer(True, start, stream.program_index(stream.done), stream.program_total, False,
-                                "the machine kept its position")
-            self._offer(offer, S.RESUME_OFFERED)
-        else:
-            self._offer_restart("the machine was reset")
-
-    def _offer_restart(self, reason: str) -> None:
-        stream = self.stream
-        done = stream.program_index(stream.done)
-        offer = ResumeOffer(False, done + 1, done, stream.program_total, True, reason)
-        self._offer(offer, S.RESTART_REQUIRED)
-
-    def _machine_reset(self, event: StatusEvent) -> None:
-        self._error("MACHINE_RESET", msg("the machine was reset (new boot id {boot}); position unknown",
-                                                 boot=event.boot))
-        if self.stream is not None and self.stream.kind == "job" and self.state is not S.STOPPING:
-            if self.state in JOB_STATES or self.state in RECOVERY_STATES:
-                self._offer_restart("the machine was reset: home it, then confirm the restart")
-        elif self.stream is not None:
-            self._finish_stream(False, msg("the machine was reset"))

@@ -5,7 +5,9 @@ reads a port: the owner (the worker, the console, a test) calls ``feed(bytes)`` 
 whatever arrived, ``tick()`` as time passes (every 5-10 ms), and the operator calls
 (``start_job``, ``pause``, ``stop``, ...). Frames are written with ``write(bytes)``;
 an ``OSError`` from it (pyserial's ``SerialException`` is one) is a link loss, never
-a crash. ``clock()`` gives seconds; inject a fake one for deterministic tests.
+a crash. ``clock()`` gives seconds; inject a fake one for deterministic tests, and
+``ids`` (a function giving the next command id) for repeatable ones; by default the ids
+are the process's sequence (``commands.next_command_id``).
 
 Everything observable goes to the ``SessionListener`` as frozen events. Streams
 (``stream.py``) use the selective-repeat credit window of ``window.py``; commands
@@ -25,7 +27,7 @@ from collections.abc import Callable
 
 from app.comm import deframer as dfr
 from app.comm import frame as fr
-from app.comm.commands import CommandQueue
+from app.comm.commands import CommandQueue, next_command_id
 from app.comm.events import (
     AlarmEvent,
     CommandResult,
@@ -59,13 +61,14 @@ class Session(JobControl):
 
     def __init__(self, write: Callable[[bytes], object] | None = None,
                  listener: SessionListener | None = None,
-                 clock: Callable[[], float] = time.monotonic, link: Link | None = None) -> None:
+                 clock: Callable[[], float] = time.monotonic, link: Link | None = None,
+                 ids: Callable[[], int] | None = None) -> None:
         link = link or Link()
         self.listener = listener or SessionListener()
         self.clock = clock
         self.state = S.DISCONNECTED
         self.link = LinkMonitor(link.heartbeat_s, link.degraded_s, link.lost_s)
-        self.commands = CommandQueue()
+        self.commands = CommandQueue(ids=ids or next_command_id)
         self.realtime = RealtimeRepeater()
         self.deframer = dfr.Deframer()
         self.rtt = RttEstimator()

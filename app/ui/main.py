@@ -63,7 +63,7 @@ def main(argv: list[str] | None = None) -> int:
     window = MainWindow(restore=not args.demo)
     if args.demo:
         window.resize(1600, 1000)
-    if args.dark or window.qsettings.value("dark", False, type=bool):
+    if args.dark or window.prefs.dark:
         apply_dark(app, True)
     window.show()
     if args.demo:

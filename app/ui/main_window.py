@@ -40,6 +40,8 @@ from app.ui.plot.position_plot import PositionPlot
 from app.ui.preview.widget import PreviewWidget
 from app.ui.program.program_panel import ProgramPanel
 from app.ui.sd_panel import SdPanel
+from app.ui.settings.prefs import FILE_NAME as PREFS_FILE
+from app.ui.settings.prefs import Prefs, from_legacy, load_prefs, save_prefs
 from app.ui.settings.store import FILE_NAME, load_settings
 from app.ui.status_bar import JobStatusBar
 from app.ui.window_state import FILE_NAME as WINDOW_FILE
@@ -68,6 +70,7 @@ class MainWindow(QMainWindow):
         self.config_dir = Path(config_dir) if config_dir else default_config_dir()
         self.qsettings = QSettings(str(self.config_dir / "window.ini"), QSettings.Format.IniFormat)
         self.notifier = notifier or Notifier(self)
+        self.prefs, prefs_problem = self._load_prefs()
         loaded = load_settings(self.config_dir / FILE_NAME)
         self.profile = loaded.profile
         self.loaded = None  # LoadedProgram of the open file
@@ -97,8 +100,9 @@ class MainWindow(QMainWindow):
         self.retranslate_ui()
         if restore:
             self.restore_state()
-        if loaded.problem:
-            self.notifier.warning(self.tr("Settings"), localize(loaded.problem))
+        for problem in (prefs_problem, loaded.problem):
+            if problem:
+                self.notifier.warning(self.tr("Settings"), localize(problem))
         if tools.problem:
             self.notifier.warning(self.tr("Tool table"), localize(tools.problem))
 
@@ -215,6 +219,33 @@ class MainWindow(QMainWindow):
         if urls:
             self.open_file(urls[0].toLocalFile())
             event.acceptProposedAction()
+
+    # -- preferences (recent files, dark palette) ----------------------------------------
+
+    def _load_prefs(self) -> tuple[Prefs, str]:
+        """``prefs.json``; the first time, what an older version kept in ``window.ini``
+        (moved over once written, so the two never disagree)."""
+        path = self.config_dir / PREFS_FILE
+        legacy = [key for key in ("recent_files", "dark") if self.qsettings.contains(key)]
+        if path.exists() or not legacy:
+            loaded = load_prefs(path)
+            return loaded.prefs, loaded.problem
+        prefs = from_legacy(self.qsettings.value("recent_files", []), self.qsettings.value("dark", False))
+        try:
+            save_prefs(path, prefs)
+        except OSError:
+            return prefs, ""  # left in window.ini: migrated by a later start that can write
+        for key in legacy:
+            self.qsettings.remove(key)
+        return prefs, ""
+
+    def update_prefs(self, prefs: Prefs) -> None:
+        """Keep and save ``prefs`` atomically; a failed write is shown in the status bar."""
+        self.prefs = prefs
+        try:
+            save_prefs(self.config_dir / PREFS_FILE, prefs)
+        except OSError as exc:
+            self.status.showMessage(self.tr("Preferences not saved: %1").replace("%1", str(exc)))
 
     # -- window state -----------------------------------------------------------------
 

@@ -188,7 +188,7 @@ def open_features(w) -> None:
 
 def _fill_recent(w, menu: QMenu) -> None:
     menu.clear()
-    files = recent_files(w.qsettings)
+    files = recent_files(w)
     for path in files:
         menu.addAction(path, lambda p=path: w.open_file(p))
     if not files:

@@ -177,7 +177,7 @@ class OperatorActions(QObject):
         self.w.preview.show_model(loaded.preview)
         self.w.sd_panel.suggest_for(loaded.path)
         self.w.retranslate_ui()  # the title names the file
-        add_recent(self.w.qsettings, loaded.path)
+        add_recent(self.w, loaded.path)
         self.w.binder.refresh_enabled()
         # A big program is millions of long-lived objects: keep the cyclic GC from
         # re-scanning them every few seconds (each pass would stall the event loop).

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 from PySide6.QtGui import QColor, QPalette
 from PySide6.QtWidgets import QApplication
 
@@ -36,4 +38,4 @@ def toggle_dark(window) -> None:
     app = QApplication.instance()
     dark = not bool(app.property("cnc_dark"))
     apply_dark(app, dark)
-    window.qsettings.setValue("dark", dark)
+    window.update_prefs(replace(window.prefs, dark=dark))

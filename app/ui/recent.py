@@ -1,24 +1,20 @@
-"""Recent files: the last few opened paths, newest first, kept in QSettings."""
+"""Recent files: the last few opened paths, newest first, kept in the window's
+preferences (``app/ui/settings/prefs.py``: ``prefs.json``, written atomically)."""
 
 from __future__ import annotations
 
 from pathlib import Path
 
-from PySide6.QtCore import QSettings
+from app.ui.settings.prefs import RECENT_LIMIT as LIMIT
 
-KEY = "recent_files"
-LIMIT = 8
-
-
-def recent_files(settings: QSettings) -> list[str]:
-    value = settings.value(KEY, [])
-    if isinstance(value, str):
-        value = [value]
-    return [str(v) for v in (value or []) if v]
+__all__ = ["LIMIT", "add_recent", "recent_files"]
 
 
-def add_recent(settings: QSettings, path: str | Path) -> list[str]:
-    path = str(Path(path).resolve())
-    files = [path] + [f for f in recent_files(settings) if f != path]
-    settings.setValue(KEY, files[:LIMIT])
-    return files[:LIMIT]
+def recent_files(window) -> list[str]:
+    return list(window.prefs.recent_files)
+
+
+def add_recent(window, path: str | Path) -> list[str]:
+    """Put ``path`` first and save the preferences (a failed write is shown, not raised)."""
+    window.update_prefs(window.prefs.with_recent(str(Path(path).resolve())))
+    return recent_files(window)

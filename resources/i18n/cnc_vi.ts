@@ -883,6 +883,10 @@
         <translation>Đang tải %1…</translation>
     </message>
     <message>
+        <source>Preferences not saved: %1</source>
+        <translation>Chưa lưu được tùy chọn: %1</translation>
+    </message>
+    <message>
         <source>Window layout</source>
         <translation>Bố cục cửa sổ</translation>
     </message>

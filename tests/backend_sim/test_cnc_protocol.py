@@ -62,6 +62,35 @@ def test_duplicate_is_reacked_and_a_gap_is_naked_once(sim, host):
     host.wait(lambda f: isinstance(f, Ack) and f.seq == 1)
 
 
+def test_every_seq_seen_missing_is_naked_at_once(sim, host):
+    host.home()
+    host.ok("JOB 12")
+    host.send("D 0 G00 Z5")
+    host.send("D 2 G00 Z6")  # 1 missing: N 1 (the gap)
+    host.send("D 3 G00 Z7")  # nothing new missing
+    host.send("D 6 G00 Z8")  # 4 and 5 missing above the gap: named now, not after 1 is filled
+    sim.run_for(0.2)
+    assert [f.seq for f in host.of(Nak)] == [1, 4, 5]
+    for seq, z in ((1, 4), (4, 3), (5, 2)):
+        host.send(f"D {seq} G00 Z{z}")
+    host.wait(lambda f: isinstance(f, Ack) and f.seq == 6)
+
+
+def test_a_probe_while_frames_are_kept_is_answered_with_what_is_missing(sim, host):
+    host.home()
+    host.ok("JOB 8")
+    host.send("D 0 G00 Z5")
+    host.send("D 1 G00 Z6")
+    host.send("D 3 G00 Z7")  # 2 missing, 3 kept
+    sim.run_for(0.2)
+    naks = len(host.of(Nak))
+    host.send("D 1 G00 Z6")  # the host's probe (its A 1 was lost): A 1 and N 2
+    host.send("D 1 G00 Z6")  # same burst: A again only
+    sim.run_for(0.2)
+    assert [f.seq for f in host.of(Ack)][-2:] == [1, 1]
+    assert [f.seq for f in host.of(Nak)][naks:] == [2]
+
+
 def test_bad_crc_is_naked_with_the_expected_seq(sim, host):
     host.home()
     host.ok("JOB 3")

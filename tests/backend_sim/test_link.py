@@ -38,6 +38,36 @@ def test_urgent_byte_overtakes_the_queue_but_not_the_byte_on_the_wire():
     assert wire.take(BYTE * 2.01) == b"D!"
 
 
+def test_priority_frames_overtake_queued_frames_but_not_the_frame_on_the_wire():
+    wire = Wire("uart_down", BYTE)
+    wire.write(b"D 7 a\nD 8 b\nD 9 c\n", 0.0)
+    wire.write_priority(b"D 3 x\n", BYTE * 2.5)  # "D 7 a" is being shifted out
+    wire.write_priority(b"D 4 y\n", BYTE * 3.5)  # behind the earlier resend, in order
+    assert wire.take(1.0) == b"D 7 a\nD 3 x\nD 4 y\nD 8 b\nD 9 c\n"
+    wire.write_priority(b"D 5 z\n", 2.0)  # an idle wire: sent at once
+    assert wire.take(2.0 + 6.01 * BYTE) == b"D 5 z\n"
+
+
+def test_a_priority_lane_emptied_on_the_wire_starts_again_behind_the_current_frame():
+    wire = Wire("uart_down", BYTE)
+    wire.write_priority(b"D 1 a\n", 0.0)
+    wire.write(b"D 8 b\nD 9 c\n", 0.0)
+    assert wire.take(7.01 * BYTE) == b"D 1 a\nD"  # the resend has gone, "D 8 b" is on the wire
+    wire.write_priority(b"D 2 x\n", 7.5 * BYTE)
+    assert wire.take(1.0) == b" 8 b\nD 2 x\nD 9 c\n"
+
+
+def test_a_cut_wire_forgets_its_priority_lane():
+    wire = Wire("uart_down", BYTE)
+    wire.write(b"D 7 a\n", 0.0)
+    wire.write_priority(b"D 3 x\n", 0.5 * BYTE)
+    wire.set_cut(True)
+    wire.set_cut(False)
+    wire.write(b"D 8 b\nD 9 c\n", 1.0)
+    wire.write_priority(b"D 4 y\n", 1.0 + 2.5 * BYTE)  # behind "D 8 b" on the wire, never inside it
+    assert wire.take(2.0) == b"D 8 b\nD 4 y\nD 9 c\n"
+
+
 def test_usb_is_fast_but_not_instant():
     wire = Wire("usb_down", 1e-6, USB_LATENCY)
     wire.write(b"C 1 PING*0000\n", 0.0)

@@ -16,6 +16,7 @@ from dataclasses import dataclass
 from app.comm.listener import SessionListener, SessionState
 from app.comm.session import Session
 from backend_sim import Simulator
+from tests.comm.simlink import seeded_ids
 
 STEP_S = 0.005
 
@@ -54,7 +55,7 @@ def noisy_run(lines: list[str], rate: float, seed: int, sd_dir, home: bool = Tru
     port = sim.host_port
     port.timeout = 0
     tally = _Tally()
-    session = Session(None, tally, clock=lambda: sim.clock.now)
+    session = Session(None, tally, clock=lambda: sim.clock.now, ids=seeded_ids(seed))
     session.attach(port.write)
 
     def step() -> None:

@@ -7,8 +7,12 @@ compare the CNC MCU's executed log with the program.
 
 from __future__ import annotations
 
+import itertools
+import random
+
 import serial
 
+from app.comm.commands import ID_START_MAX
 from app.comm.listener import SessionState
 from app.comm.session import Session
 from app.profile import MachineProfile, with_overrides
@@ -29,6 +33,12 @@ def dialect_program(n: int, seed: int = 0) -> list[str]:
     return lines[:n]
 
 
+def seeded_ids(seed: int):
+    """Command ids as a host makes them (a random start below ``ID_START_MAX``), repeatable:
+    the start comes from ``seed``, so the bytes on a noisy link are the same each run."""
+    return itertools.count(random.Random(f"ids:{seed}").randrange(1, ID_START_MAX)).__next__
+
+
 class SimLink:
     """One simulator and one session on the simulated clock."""
 
@@ -38,7 +48,7 @@ class SimLink:
         self.port = self.sim.host_port
         self.port.timeout = 0
         self.rec = Recorder()
-        self.session = Session(None, self.rec, clock=lambda: self.sim.clock.now)
+        self.session = Session(None, self.rec, clock=lambda: self.sim.clock.now, ids=seeded_ids(seed))
         self.attach()
         assert self.run_until(lambda: self.session.state is SessionState.READY, 2.0), "no status"
         if check:

@@ -3,11 +3,14 @@
 Three seeds at 3e-3 per byte (drop, corrupt, duplicate, noise in equal shares on all
 four wires), homing and a 1,000-line job each: every run completes, the executed log
 is exactly the program, and the host never calls the link lost. The full matrix
-(20 seeds, 1e-4..1e-2, lines/s, resends) is ``python -m bench bench_noisy``.
+(20 seeds, 1e-4..1e-2, lines/s, resends) is ``python -m bench bench_noisy``. A
+go-back-N host (docs/protocol.md: it must keep working) completes too.
 """
 
 import pytest
 
+from app.comm import stream
+from app.comm.window import SendWindow
 from tests.comm.noisy import noisy_run
 from tests.comm.simlink import dialect_program
 
@@ -26,3 +29,36 @@ def test_job_completes_exactly_at_3e_3(tmp_path, seed):
 def test_job_completes_exactly_at_1e_2(tmp_path):
     outcome = noisy_run(LINES[:300], 1e-2, 7, tmp_path)
     assert outcome.completed and outcome.exact and outcome.false_losses == 0, outcome
+
+
+class GoBackN(SendWindow):
+    """A host written from the older reading of docs/protocol.md: ``N n`` resends every
+    frame from ``n`` (a repeat ``N n`` within one timeout of that is ignored), and a
+    timeout (``rtt.timeout``, doubling) resends everything from the first unacknowledged."""
+
+    _rewound: dict
+
+    def on_nak(self, seq: int, now: float) -> None:
+        rewound = getattr(self, "_rewound", {})
+        if self.acked < seq <= self.high_sent and now - rewound.get(seq, -1.0) >= self.rtt.timeout:
+            self._rewound = {**rewound, seq: now}
+            self.next_seq = min(self.next_seq, seq)
+            self._timer = now
+
+    def due(self, now: float) -> list:
+        if self.in_flight > 0 and self._timer is not None and now - self._timer > self.rtt.timeout:
+            self.rtt.expired()
+            self.next_seq, self._timer = self.acked + 1, now
+        limit = min(self.room_end, self.acked + self.max_window, self.total - 1)
+        out = []
+        while self.next_seq <= limit:
+            out.append(self._send(self.next_seq, now))
+            self.next_seq += 1
+        return out
+
+
+def test_a_go_back_n_host_still_completes_exactly(tmp_path, monkeypatch):
+    monkeypatch.setattr(stream, "SendWindow", GoBackN)
+    outcome = noisy_run(LINES[:400], 3e-3, 4, tmp_path)
+    assert outcome.completed and outcome.exact and outcome.false_losses == 0, outcome
+    assert outcome.resends > 0, "the faults never fired"

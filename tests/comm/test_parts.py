@@ -54,11 +54,11 @@ def test_urgent_command_goes_first_and_answers_match_ids():
 
 def test_heartbeat_goes_out_while_a_command_is_retried():
     queue = CommandQueue()
-    queue.submit("HOME")
+    home = queue.submit("HOME")
     frames, _ = queue.due(0.0)
     assert [c.verb for c in queue.heartbeat(frames)] == ["PING"]
     assert queue.heartbeat([fr.Command(9, "STATUS")]) == []
-    queue.on_answer(fr.Ok(1, "HOME"))
+    queue.on_answer(fr.Ok(home.id, "HOME"))
     assert queue.heartbeat([])[0].verb == "PING"
 
 

@@ -12,8 +12,11 @@ range). ``TARGETS`` maps a name to (strategy, function).
 
 from __future__ import annotations
 
+import atexit
 import contextlib
 import math
+import os
+import shutil
 import tempfile
 from dataclasses import fields
 from pathlib import Path
@@ -62,19 +65,23 @@ machine_input = st.lists(st.one_of(commands, data_lines, st.sampled_from(["!", "
                          min_size=1, max_size=12)
 dialect_lines = st.one_of(st.lists(st.sampled_from(GCODE_WORDS), max_size=8).map(" ".join),
                           st.text(alphabet="GMXYZIJFPS0123456789.-+ ", max_size=60))
+json_scalars = st.one_of(st.none(), st.booleans(), st.integers(-10**6, 10**6), st.floats(allow_nan=True),
+                         st.text(max_size=8))
 json_values = st.recursive(
-    st.one_of(st.none(), st.booleans(), st.integers(-10**6, 10**6), st.floats(allow_nan=True),
-              st.text(max_size=8)),
+    json_scalars,
     lambda children: (st.lists(children, max_size=4)
                       | st.dictionaries(st.text(max_size=8), children, max_size=4)),
-    max_leaves=20,
+    max_leaves=10,
 )
 SECTIONS = [f.name for f in fields(MachineProfile)]
+# Sections of scalars mostly (what a profile holds: the loaders' range and type rules), with
+# nested values now and then; sizes bounded so that generating one costs about a loader call.
 profile_like = st.dictionaries(
     st.sampled_from([*SECTIONS, "wheels"]),
-    st.one_of(json_values, st.dictionaries(
+    st.one_of(st.dictionaries(
         st.sampled_from(["kp", "ki", "lost_s", "heartbeat_s", "x_max", "encoder_ppr", "lead_mm", "nope"]),
-        json_values)),
+        json_scalars, max_size=6), json_values),
+    max_size=5,
 )
 settings_text = st.one_of(
     st.text(max_size=200),
@@ -90,7 +97,9 @@ def gcode_text_loads(text: str) -> None:
     assert len(program.line_map) == len(program.device_lines)
 
 
-_TMP = Path(tempfile.mkdtemp(prefix="fuzz-"))
+_SHM = Path("/dev/shm")  # a memory file system where there is one: the loaders still read real files
+_TMP = Path(tempfile.mkdtemp(prefix="fuzz-", dir=_SHM if os.access(_SHM, os.W_OK) else None))
+atexit.register(shutil.rmtree, _TMP, True)
 
 
 def gcode_bytes_load(data: bytes) -> None:

@@ -182,3 +182,10 @@ def test_other_encodings_get_one_clear_message(tmp_path, encoding):
     path.write_bytes("G0 X1 (café, 10°)\nG0 X2\n".encode(encoding))
     message = only_error(load(path))[2]
     assert "UTF-8" in message and ("UTF-16" in message if "16" in encoding else "Latin-1" in message)
+
+
+@pytest.mark.parametrize("text", ["O²", "o²", "O1\n#1=²", "#1=[1+٣]"])
+def test_unicode_digits_are_not_numbers(text):
+    # found by the long fuzz run: "O²" passed str.isdigit() and float("²") raised ValueError
+    program = load_text(text)
+    assert program.diagnostics and all(d.line >= 1 for d in program.diagnostics)

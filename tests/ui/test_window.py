@@ -4,6 +4,7 @@ from PySide6.QtCore import QMimeData, QPointF, Qt, QUrl
 from PySide6.QtGui import QDropEvent
 
 from app.ui.recent import recent_files
+from app.ui.settings.prefs import load_prefs
 from tests.ui.conftest import SAMPLE_FILES, open_and_wait
 
 
@@ -31,7 +32,9 @@ def test_drop_a_file_on_the_window(qtbot, window):
 def test_recent_files_newest_first(qtbot, window):
     for path in SAMPLE_FILES[:2]:
         open_and_wait(qtbot, window, path)
-    assert recent_files(window.qsettings)[:2] == [str(SAMPLE_FILES[1]), str(SAMPLE_FILES[0])]
+    assert recent_files(window)[:2] == [str(SAMPLE_FILES[1]), str(SAMPLE_FILES[0])]
+    saved = load_prefs(window.config_dir / "prefs.json").prefs
+    assert saved.recent_files[:2] == tuple(recent_files(window)[:2])
 
 
 def test_window_state_is_restored(qtbot, make_window, tmp_path):
@@ -70,3 +73,40 @@ def test_the_first_picture_is_drawn_at_screen_tolerance_then_refined(qtbot, wind
     assert fine.program is first.program and fine.preview.tolerance == window.loader.tolerance
     qtbot.waitUntil(lambda: window.preview.model is fine.preview)
     assert window.loaded is fine and fine.preview.levels_built
+
+
+def test_dark_palette_and_recent_files_are_kept_in_prefs_json(qtbot, make_window, tmp_path):
+    first = make_window(config_dir=tmp_path / "prefs")
+    first.actions_by_name["dark"].trigger()
+    open_and_wait(qtbot, first, SAMPLE_FILES[0])
+    saved = load_prefs(tmp_path / "prefs" / "prefs.json")
+    assert saved.prefs.dark is True and saved.prefs.recent_files == (str(SAMPLE_FILES[0]),)
+    assert not first.qsettings.contains("dark") and not first.qsettings.contains("recent_files")
+    first.actions_by_name["dark"].trigger()  # back to the light palette for the other tests
+    second = make_window(config_dir=tmp_path / "prefs")
+    assert second.prefs.recent_files == (str(SAMPLE_FILES[0]),) and second.prefs.dark is False
+
+
+def test_recent_files_and_dark_move_over_from_window_ini_once(make_window, tmp_path):
+    from PySide6.QtCore import QSettings
+
+    old = QSettings(str(tmp_path / "old" / "window.ini"), QSettings.Format.IniFormat)
+    old.setValue("recent_files", ["/a.ngc", "/b.ngc"])
+    old.setValue("dark", True)
+    old.setValue("language", "en")
+    old.sync()
+    window = make_window(config_dir=tmp_path / "old")
+    assert window.prefs.recent_files == ("/a.ngc", "/b.ngc") and window.prefs.dark is True
+    assert load_prefs(tmp_path / "old" / "prefs.json").prefs == window.prefs
+    window.qsettings.sync()
+    assert not window.qsettings.contains("recent_files") and not window.qsettings.contains("dark")
+    assert window.qsettings.value("language") == "en"  # the language stays where it was
+
+
+def test_damaged_prefs_give_the_defaults_and_are_named(make_window, notifier, tmp_path):
+    (tmp_path / "bad").mkdir()
+    (tmp_path / "bad" / "prefs.json").write_text('{"version": 1, "recent_files": "x", "dark": "yes"}')
+    window = make_window(config_dir=tmp_path / "bad")
+    assert window.prefs.recent_files == () and window.prefs.dark is False
+    level, title, text = notifier.messages[0]
+    assert level == "warning" and "prefs.json" in text and "recent_files" in text and "'yes'" in text

@@ -35,6 +35,7 @@ EQUAL_TOLERANCE = 1e-4
 MAX_DEPTH = 50  # brackets, functions and signs inside each other
 PRECEDENCE = {"**": 6, "*": 5, "/": 5, "mod": 5, "+": 4, "-": 4,
               "eq": 3, "ne": 3, "gt": 3, "ge": 3, "lt": 3, "le": 3, "and": 2, "or": 2, "xor": 2}
+_DIGITS_DOT = frozenset("0123456789.")
 _WORD_OPS = ("mod", "eq", "ne", "gt", "ge", "lt", "le", "and", "or", "xor")
 
 
@@ -201,10 +202,10 @@ class Reader:
     # --- values ----------------------------------------------------------------------
     def number(self) -> float:
         start = self.pos
-        while self.pos < len(self.text) and (self.text[self.pos].isdigit() or self.text[self.pos] == "."):
+        while self.pos < len(self.text) and self.text[self.pos] in _DIGITS_DOT:  # ASCII: not "²"
             self.pos += 1
         token = self.text[start:self.pos]
-        if token.count(".") > 1 or not any(c.isdigit() for c in token):
+        if token.count(".") > 1 or token.strip(".") == "":
             raise self.error(msg("a number was expected here"), start)
         return float(token)
 
