@@ -58,6 +58,12 @@ class Wire:
         self._lane_end = 0  # where the priority lane ends, in bytes since the wire started
 
     def write(self, data: bytes, now: float) -> None:
+        for piece in self._through_faults(data, now):
+            self._queue(piece, now)
+
+    def _through_faults(self, data: bytes, now: float):
+        """The pieces of ``data`` to send now, after the wire's faults; a delayed piece is
+        kept for later. Nothing while the wire is cut."""
         if self.cut or not data:
             return
         self.sent += len(data)
@@ -66,19 +72,13 @@ class Wire:
                 self._order += 1
                 heapq.heappush(self._delayed, (now + delay, self._order, piece))
             else:
-                self._queue(piece, now)
+                yield piece
 
     def write_priority(self, data: bytes, now: float) -> None:
         """Send whole frames ahead of the frames queued by ``write`` (behind the frame
         being shifted out and earlier priority frames): a TX queue with a fast lane."""
-        if self.cut or not data:
-            return
-        self.sent += len(data)
-        for delay, piece in self.faults.process(bytes(data)):
-            if delay > 0:
-                self._order += 1
-                heapq.heappush(self._delayed, (now + delay, self._order, piece))
-            elif not self._pending:
+        for piece in self._through_faults(data, now):
+            if not self._pending:
                 self._queue(piece, now)
                 self._lane_end = self._taken + len(piece)
             else:

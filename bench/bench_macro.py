@@ -139,15 +139,7 @@ def main() -> None:
     print(f"machine load average: {Path('/proc/loadavg').read_text().split()[:3]}")
     paths = _files()
     for name, path in paths.items():
-        walls, cpus = [], []
-        for _ in range(REPEATS):
-            wall, cpu = time.perf_counter(), time.process_time()
-            program = load(path)
-            walls.append(time.perf_counter() - wall)
-            cpus.append(time.process_time() - cpu)
-            errors = [str(d) for d in program.errors][:2]
-            moves, device = len(program.toolpath), program.device_count
-            del program
+        walls, cpus, (moves, device, errors) = _loads(load, path)
         print(f"{name} ({path.name}): load -> Toolpath best of {REPEATS}: {min(walls):.2f} s wall, "
               f"{min(cpus):.2f} s CPU (all: {_seconds(walls)} wall, {_seconds(cpus)} CPU); "
               f"{moves:,} moves, {device:,} device lines, errors {errors}")
@@ -160,19 +152,25 @@ def main() -> None:
     print(_plain(load))
 
 
-def _plain(load) -> str:
-    """The 1 M-line plain file of ``bench_gcode`` (``big.ngc``) through the same ``load``: the
-    fast path the expander must leave as it was (issue 9: print both)."""
-    from bench.bench_gcode import build
-
-    path, _ = build()
+def _loads(load, path: Path) -> tuple[list[float], list[float], tuple]:
+    """``REPEATS`` loads of ``path``: wall times, CPU times, (moves, device lines, errors)."""
     walls, cpus = [], []
     for _ in range(REPEATS):
         wall, cpu = time.perf_counter(), time.process_time()
         program = load(path)
         walls.append(time.perf_counter() - wall)
         cpus.append(time.process_time() - cpu)
-        moves = len(program.toolpath)
+        found = len(program.toolpath), program.device_count, [str(d) for d in program.errors][:2]
         del program
+    return walls, cpus, found
+
+
+def _plain(load) -> str:
+    """The 1 M-line plain file of ``bench_gcode`` (``big.ngc``) through the same ``load``: the
+    fast path the expander must leave as it was (issue 9: print both)."""
+    from bench.bench_gcode import build
+
+    path, _ = build()
+    walls, cpus, (moves, _, _) = _loads(load, path)
     return (f"plain 1 M-line file ({path.name}, fast path): load -> Toolpath best of {REPEATS}: "
             f"{min(walls):.2f} s wall, {min(cpus):.2f} s CPU (all: {_seconds(walls)} wall); {moves:,} moves")

@@ -12,6 +12,7 @@ import pytest
 
 from app.gcode import bulk, forked, load, sniff, workers
 from app.gcode.source import CHUNK_BYTES
+from tests.gcode.scans import assert_same_scan
 
 SAMPLES = Path(__file__).resolve().parents[2] / "resources" / "samples"
 pytestmark = pytest.mark.skipif(not sys.platform.startswith("linux"), reason="forks only on Linux")
@@ -49,14 +50,6 @@ def one_shot(monkeypatch):
     workers.set_enabled(True)
 
 
-def _same(a: bulk.Scan, b: bulk.Scan) -> None:
-    np.testing.assert_array_equal(a.simple, b.simple)
-    np.testing.assert_array_equal(a.g, b.g)
-    np.testing.assert_array_equal(a.units, b.units)
-    for letter in a.values:
-        np.testing.assert_array_equal(a.values[letter], b.values[letter])
-
-
 def test_a_scan_shared_with_a_forked_child_equals_a_scan_alone(big, one_shot, monkeypatch):
     n = big.count(b"\n")
     parent, real = os.getpid(), bulk.scan_chunks
@@ -71,7 +64,7 @@ def test_a_scan_shared_with_a_forked_child_equals_a_scan_alone(big, one_shot, mo
     monkeypatch.setattr(bulk, "scan_chunks", real)
     assert any(one_shot), "the child sent no group"
     monkeypatch.setattr(forked, "_allowed", False)
-    _same(shared, bulk.scan(big, n))
+    assert_same_scan(shared, bulk.scan(big, n))
 
 
 def test_a_child_that_fails_costs_time_not_the_result(big, one_shot, monkeypatch):
@@ -88,7 +81,7 @@ def test_a_child_that_fails_costs_time_not_the_result(big, one_shot, monkeypatch
     monkeypatch.setattr(bulk, "scan_chunks", real)
     assert one_shot and not any(one_shot)  # asked, and nothing came
     monkeypatch.setattr(forked, "_allowed", False)
-    _same(failed, bulk.scan(big, n))
+    assert_same_scan(failed, bulk.scan(big, n))
 
 
 def test_a_busy_machine_or_a_second_thread_keeps_the_load_in_one_process(monkeypatch):

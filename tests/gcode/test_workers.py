@@ -11,6 +11,7 @@ import pytest
 
 from app.gcode import bulk, load, sniff, workers
 from app.gcode.source import CHUNK_BYTES, chunks
+from tests.gcode.scans import assert_same_scan
 
 SAMPLES = Path(__file__).resolve().parents[2] / "resources" / "samples"
 pytestmark = pytest.mark.skipif((os.cpu_count() or 1) < 2, reason="the helper needs a second core")
@@ -35,14 +36,6 @@ def helper():
     workers.set_enabled(True)
 
 
-def _same(a: bulk.Scan, b: bulk.Scan) -> None:
-    np.testing.assert_array_equal(a.simple, b.simple)
-    np.testing.assert_array_equal(a.g, b.g)
-    np.testing.assert_array_equal(a.units, b.units)
-    for letter in a.values:
-        np.testing.assert_array_equal(a.values[letter], b.values[letter])
-
-
 def test_the_helper_scans_exactly_what_this_process_scans(big, helper):
     parts = chunks(big)
     future = workers.submit(bulk.scan_chunks, big, parts)
@@ -57,7 +50,7 @@ def test_a_shared_scan_equals_a_scan_alone(big, helper):
     n = big.count(b"\n")
     shared = bulk.scan(big, n, share_bytes=0)
     workers.set_enabled(False)
-    _same(shared, bulk.scan(big, n))
+    assert_same_scan(shared, bulk.scan(big, n))
 
 
 def test_a_failed_helper_costs_time_not_the_result(big, monkeypatch):
@@ -69,7 +62,7 @@ def test_a_failed_helper_costs_time_not_the_result(big, monkeypatch):
     failed = bulk.scan(big, n, share_bytes=0)
     monkeypatch.undo()
     workers.set_enabled(False)
-    _same(failed, bulk.scan(big, n))
+    assert_same_scan(failed, bulk.scan(big, n))
     workers.set_enabled(True)
 
 
