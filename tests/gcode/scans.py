@@ -1,8 +1,25 @@
 """Helpers shared by the tests of the scan's parallel paths (helper process, forked child)."""
 
+import re
+from pathlib import Path
+
 import numpy as np
 
 from app.gcode import bulk
+from app.gcode.source import CHUNK_BYTES
+
+SAMPLES = Path(__file__).resolve().parents[2] / "resources" / "samples"
+
+
+def big_program() -> bytes:
+    """About 3 MB of real Inkscape output (a dozen chunks; the samples without their
+    ends), with lines the general path refuses near the end (the part another process
+    scans)."""
+    lines = [line for p in sorted(SAMPLES.glob("*.ngc")) for line in p.read_bytes().splitlines()
+             if not re.match(rb"\s*(%|M0?2\b|M30\b)", line, re.IGNORECASE)]
+    text = b"\n".join(lines) + b"\nG21\n"
+    copies = text * (3 * CHUNK_BYTES * 4 // len(text) + 1)
+    return copies + b"G1 X1 Y2 X3\n(unclosed\nG91.1 G2 X1 I1\n" + text + b"M2\n"
 
 
 def assert_same_scan(a: bulk.Scan, b: bulk.Scan) -> None:

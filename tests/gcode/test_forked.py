@@ -2,31 +2,21 @@
 result as a scan alone, and a child that fails costs time, never the result."""
 
 import os
-import re
 import sys
 import time
-from pathlib import Path
 
 import numpy as np
 import pytest
 
 from app.gcode import bulk, forked, load, sniff, workers
-from app.gcode.source import CHUNK_BYTES
-from tests.gcode.scans import assert_same_scan
+from tests.gcode.scans import assert_same_scan, big_program
 
-SAMPLES = Path(__file__).resolve().parents[2] / "resources" / "samples"
 pytestmark = pytest.mark.skipif(not sys.platform.startswith("linux"), reason="forks only on Linux")
 
 
 @pytest.fixture(scope="module")
 def big() -> bytes:
-    """About 3 MB of Inkscape output (a dozen chunks), with lines the general path
-    refuses near the end (the child's part)."""
-    lines = [line for p in sorted(SAMPLES.glob("*.ngc")) for line in p.read_bytes().splitlines()
-             if not re.match(rb"\s*(%|M0?2\b|M30\b)", line, re.IGNORECASE)]
-    text = b"\n".join(lines) + b"\nG21\n"
-    copies = text * (3 * CHUNK_BYTES * 4 // len(text) + 1)
-    return copies + b"G1 X1 Y2 X3\n(unclosed\nG91.1 G2 X1 I1\n" + text + b"M2\n"
+    return big_program()
 
 
 @pytest.fixture

@@ -1,31 +1,22 @@
 """The helper process that scans part of a big file: same result, and never needed."""
 
 import os
-import re
 from concurrent.futures import Future
 from concurrent.futures.process import BrokenProcessPool
-from pathlib import Path
 
 import numpy as np
 import pytest
 
 from app.gcode import bulk, load, sniff, workers
-from app.gcode.source import CHUNK_BYTES, chunks
-from tests.gcode.scans import assert_same_scan
+from app.gcode.source import chunks
+from tests.gcode.scans import assert_same_scan, big_program
 
-SAMPLES = Path(__file__).resolve().parents[2] / "resources" / "samples"
 pytestmark = pytest.mark.skipif((os.cpu_count() or 1) < 2, reason="the helper needs a second core")
 
 
 @pytest.fixture(scope="module")
 def big() -> bytes:
-    """About 3 MB of real Inkscape output (a dozen chunks; the samples without their
-    ends), with lines the general path refuses near the end (the helper's part)."""
-    lines = [line for p in sorted(SAMPLES.glob("*.ngc")) for line in p.read_bytes().splitlines()
-             if not re.match(rb"\s*(%|M0?2\b|M30\b)", line, re.IGNORECASE)]
-    text = b"\n".join(lines) + b"\nG21\n"
-    copies = text * (3 * CHUNK_BYTES * 4 // len(text) + 1)
-    return copies + b"G1 X1 Y2 X3\n(unclosed\nG91.1 G2 X1 I1\n" + text + b"M2\n"
+    return big_program()
 
 
 @pytest.fixture
