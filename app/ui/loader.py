@@ -8,8 +8,7 @@ is emitted then. The rest waits until the window says it has shown the program
 (``shown()``, or SHOW_WAIT_S), so it does not compete with the first picture for the
 interpreter: the model at the real tolerance with every level of detail, for zooming
 in (``refined``, when the first one was coarser), then the device lines, for Start
-and Save to SD (``prepared``). Meanwhile the interpreter hands the GIL round in 1 ms
-turns rather than 5 (``short_gil_turns``), so a pan or zoom is not kept waiting.
+and Save to SD (``prepared``).
 
 Anything that is not G-code ends in ``failed`` with a sentence for the operator: a
 missing or unreadable file, a binary file, or text in which nothing could be run.
@@ -20,7 +19,6 @@ from __future__ import annotations
 import contextlib
 import dataclasses
 import os
-import sys
 import threading
 import time
 from dataclasses import dataclass
@@ -36,7 +34,6 @@ from app.ui.preview.model import PreviewModel, screen_tolerance
 SNIFF_BYTES = 4096
 SHOW_WAIT_S = 3.0
 BACKGROUND_NICE = 10
-BACKGROUND_SWITCH_S = 0.001  # the interpreter's switch interval while the rest loads (default 5 ms)
 DEFAULT_VIEW = (900, 700)  # pixels, when the window did not say
 
 
@@ -95,9 +92,8 @@ class ProgramLoader(QObject):
         if defer:
             self._shown.wait(SHOW_WAIT_S)
         _yield_cpu()  # the rest is background work: the window comes first
-        with short_gil_turns():
-            result = self._refine(result, view_size)
-            _warm(result.program)  # about 1 s for a million lines
+        result = self._refine(result, view_size)
+        _warm(result.program)  # about 1 s for a million lines
         self.prepared.emit(result)
 
     def _refine(self, result: LoadedProgram, view_size) -> LoadedProgram:
@@ -117,33 +113,6 @@ def _yield_cpu() -> None:
     threads one by one); elsewhere nothing changes."""
     with contextlib.suppress(AttributeError, OSError):
         os.setpriority(os.PRIO_PROCESS, threading.get_native_id(), BACKGROUND_NICE)
-
-
-_turns_lock = threading.Lock()
-_turns_users = 0
-_turns_before = 0.005
-
-
-@contextlib.contextmanager
-def short_gil_turns():
-    """Shorter turns of the GIL while this block runs (process-wide, restored when the
-    last such block ends). Each time the GUI thread lets the GIL go (a Qt or numpy call
-    of a redraw) this thread may take it, and the GUI thread then waits for it to be
-    handed back: up to a whole switch interval, so a redraw that lets go ten times
-    waited up to 50 ms at the default 5 ms."""
-    global _turns_users, _turns_before
-    with _turns_lock:
-        if _turns_users == 0:
-            _turns_before = sys.getswitchinterval()
-            sys.setswitchinterval(min(_turns_before, BACKGROUND_SWITCH_S))
-        _turns_users += 1
-    try:
-        yield
-    finally:
-        with _turns_lock:
-            _turns_users -= 1
-            if _turns_users == 0:
-                sys.setswitchinterval(_turns_before)
 
 
 def _warm(program) -> None:

@@ -1,11 +1,8 @@
 """The window as a whole: menus, shortcuts, drag-and-drop, recent files, state."""
 
-import sys
-
 from PySide6.QtCore import QMimeData, QPointF, Qt, QUrl
 from PySide6.QtGui import QDropEvent
 
-from app.ui.loader import BACKGROUND_SWITCH_S, short_gil_turns
 from app.ui.recent import recent_files
 from tests.ui.conftest import SAMPLE_FILES, open_and_wait
 
@@ -73,22 +70,3 @@ def test_the_first_picture_is_drawn_at_screen_tolerance_then_refined(qtbot, wind
     assert fine.program is first.program and fine.preview.tolerance == window.loader.tolerance
     qtbot.waitUntil(lambda: window.preview.model is fine.preview)
     assert window.loaded is fine and fine.preview.levels_built
-
-
-def test_the_rest_loads_with_short_gil_turns_then_the_interval_is_restored(qtbot, window):
-    before = sys.getswitchinterval()
-    with qtbot.waitSignal(window.loader.prepared, timeout=30_000):
-        open_and_wait(qtbot, window, SAMPLE_FILES[0])
-    assert sys.getswitchinterval() == before
-
-
-def test_short_gil_turns_nest_and_the_last_one_out_restores():
-    before = sys.getswitchinterval()
-    first, second = short_gil_turns(), short_gil_turns()
-    first.__enter__()
-    assert sys.getswitchinterval() == min(before, BACKGROUND_SWITCH_S)
-    second.__enter__()
-    first.__exit__(None, None, None)  # a second load still running keeps the short turns
-    assert sys.getswitchinterval() == min(before, BACKGROUND_SWITCH_S)
-    second.__exit__(None, None, None)
-    assert sys.getswitchinterval() == before
