@@ -261,7 +261,7 @@ def bench_big_file(config: Path, path: Path | None = None) -> None:
     first = time.perf_counter()
     loaded = window.loaded
     print(f"open {path.name} ({lines:,} lines): first preview frame {first - started:.2f} s after Open "
-          f"(target <= 1.2 s){'' if helper else ' (no helper process)'}")
+          f"(target <= 1.2 s){'' if helper else ' (no helper process)'}; load average {_load()}")
     print(f"  parse+normalise+toolpath {loaded.load_s:.2f} s, preview model at screen tolerance "
           f"{loaded.preview.tolerance:.3f} mm ({len(loaded.preview.geometry.points):,} points) "
           f"{loaded.model_s:.2f} s, hand-over + first draw {first - loaded_at:.2f} s")
@@ -303,7 +303,13 @@ def _pan_zoom(app, window, when: str) -> None:
     times.sort()
     median = statistics.median(times)
     print(f"  pan/zoom redraw {when}, {len(times)} views (zoom 1x..64x, refill from the level of "
-          f"detail + paint): median {median * 1000:.1f} ms, max {times[-1] * 1000:.1f} ms (target <= 33 ms)")
+          f"detail + paint): median {median * 1000:.1f} ms, max {times[-1] * 1000:.1f} ms (target <= 33 ms); "
+          f"load average {_load()}")
+
+
+def _load() -> str:
+    load = os.getloadavg()[0] if hasattr(os, "getloadavg") else float("nan")
+    return f"{load:.2f} on {os.cpu_count()} cores"
 
 
 def open_file(path: str) -> None:

@@ -141,7 +141,8 @@ class Toolpath:
         pts_arc, owner = self._chords(arcs, tolerance)
         count[arc] = np.bincount(owner, minlength=len(arcs))
         index = np.repeat(moves, count)
-        pts = np.repeat(self.end.take(moves, axis=0), count, axis=0)  # a line's end is its point
+        pts = self.end.take(index, axis=0)  # a line's end is its point (a take lets the GIL go: repeat
+        # of rows would hold it for tens of ms while a window redraws)
         if len(arcs):
             pts[np.repeat(arc, count)] = pts_arc  # an arc's rows are its chord points, in order
         start = self.start[moves[0]][None, :]
