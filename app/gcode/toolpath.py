@@ -107,22 +107,23 @@ class Toolpath:
         out |= (c[:, 1] + r > high[second]) | (c[:, 1] - r < low[second])
         return out
 
-    def polyline(self, tolerance: float = 0.01) -> tuple[np.ndarray, np.ndarray]:
+    def polyline(self, tolerance: float = 0.01, threads: int = 2) -> tuple[np.ndarray, np.ndarray]:
         """Points (m, 3) to draw, arcs as chords within ``tolerance``, and per point the
-        index of the move that ends there (the first point, the start, gets 0)."""
+        index of the move that ends there (the first point, the start, gets 0). ``threads``:
+        1 for work in the background, which then leaves the GIL to one other thread."""
         key = round(tolerance, 9)
         if key not in self._cache:
-            self._cache[key] = self._polyline(tolerance)
+            self._cache[key] = self._polyline(tolerance, threads)
         return self._cache[key]
 
-    def _chords(self, arcs: np.ndarray, tolerance: float):
+    def _chords(self, arcs: np.ndarray, tolerance: float, threads: int):
         """``arcs.chord_points`` of these rows; many arcs in two halves on two threads
-        (numpy's arithmetic lets them run at once)."""
+        (numpy's arithmetic lets them run at once) unless ``threads`` is 1."""
         def of(rows):
             return chord_points(self.start[rows], self.end[rows], self.center[rows],
                                 np.array(PLANE_AXES)[self.plane[rows]], self.turn[rows], tolerance)
 
-        if len(arcs) < PARALLEL_ARCS:
+        if len(arcs) < PARALLEL_ARCS or threads < 2:
             return of(arcs)
         from concurrent.futures import ThreadPoolExecutor  # only here: a CLI start-up need not load it
 
@@ -131,14 +132,14 @@ class Toolpath:
             (pts_a, owner_a), (pts_b, owner_b) = pool.map(of, (arcs[:half], arcs[half:]))
         return np.concatenate([pts_a, pts_b]), np.concatenate([owner_a, owner_b + half])
 
-    def _polyline(self, tolerance: float):
+    def _polyline(self, tolerance: float, threads: int):
         moves = np.flatnonzero(self.kind != DWELL)
         if not len(moves):
             return np.empty((0, 3)), np.empty(0, np.int64)
         arc = (self.kind[moves] == ARC_CW) | (self.kind[moves] == ARC_CCW)
         count = np.ones(len(moves), np.int64)
         arcs = moves[arc]
-        pts_arc, owner = self._chords(arcs, tolerance)
+        pts_arc, owner = self._chords(arcs, tolerance, threads)
         count[arc] = np.bincount(owner, minlength=len(arcs))
         index = np.repeat(moves, count)
         pts = self.end.take(index, axis=0)  # a line's end is its point (a take lets the GIL go: repeat

@@ -100,7 +100,7 @@ class ProgramLoader(QObject):
         if result.preview.tolerance <= self.tolerance:
             result.preview.build_all()  # every level of detail, for zooming
             return result
-        fine = PreviewModel(result.program.toolpath, self.tolerance)
+        fine = PreviewModel(result.program.toolpath, self.tolerance, threads=1)  # the window is in use
         fine.warm(view_size or DEFAULT_VIEW)
         fine.build_all()
         result = dataclasses.replace(result, preview=fine)

@@ -28,9 +28,9 @@ class PathGeometry:
     depth_edges: np.ndarray  # band edges, top (0) to bottom (deepest cut)
 
     @classmethod
-    def from_toolpath(cls, toolpath, tolerance: float = 0.01) -> PathGeometry:
+    def from_toolpath(cls, toolpath, tolerance: float = 0.01, threads: int = 2) -> PathGeometry:
         """Vertices from ``toolpath.polyline(tolerance)`` (arcs as chords, any plane)."""
-        points, move = toolpath.polyline(tolerance)
+        points, move = toolpath.polyline(tolerance, threads)
         points = np.asarray(points, dtype=float).reshape(-1, 3)
         move = np.asarray(move, dtype=np.int64)
         if not len(points):

@@ -20,13 +20,16 @@ MIN_BUDGET = 4_096
 
 
 class PreviewModel:
-    def __init__(self, toolpath, tolerance: float = 0.01):
+    def __init__(self, toolpath, tolerance: float = 0.01, threads: int = 2):
+        """``threads``: 1 when built in the background while the window is in use (a
+        second busy thread would make each redraw wait longer for the GIL)."""
         self.toolpath = toolpath
         self.tolerance = tolerance
-        self.geometry = PathGeometry.from_toolpath(toolpath, tolerance)
+        self.threads = threads
+        self.geometry = PathGeometry.from_toolpath(toolpath, tolerance, threads)
         g = self.geometry
-        self.groups = _each(lambda i: LodSegments(*group_segments(g.points, g.move, g.group, i)),
-                            range(g.group_count))
+        self.groups = self._each(lambda i: LodSegments(*group_segments(g.points, g.move, g.group, i)),
+                                 range(g.group_count))
         self.device_index = _device_index(toolpath)
         self._bounds = _bounds(self.geometry.points)
         self.levels_built = False  # every level of every group (build_all)
@@ -91,8 +94,12 @@ class PreviewModel:
             return
         (x0, x1), (y0, y1) = self.fitted_range()
         pixel = max((x1 - x0) / max(size[0], 1.0), (y1 - y0) / max(size[1], 1.0))  # aspect locked
-        _each(lambda group: group.visible((x0, x1, y0, y1), pixel, self._budget(group)),
-              sorted(self.groups, key=len, reverse=True))
+        self._each(lambda group: group.visible((x0, x1, y0, y1), pixel, self._budget(group)),
+                   sorted(self.groups, key=len, reverse=True))
+
+    def _each(self, fn, items) -> list:
+        """``[fn(item) for item in items]``, on two threads unless ``threads`` is 1."""
+        return _each(fn, items) if self.threads > 1 else [fn(item) for item in items]
 
     def build_all(self) -> None:
         """Build every level of detail of every group (zooming then never waits)."""
