@@ -74,23 +74,20 @@ def _words(code, target, feed_code):
 GIL_SLICE = 16_384  # strings joined per numpy call (a few milliseconds)
 
 
-def _texts(values: np.ndarray) -> np.ndarray:
-    """Formatted text of each whole-thousandth value (object array)."""
-    uniq, inverse = np.unique(values, return_inverse=True)
-    table = np.array([fmt(v) for v in uniq.tolist()] or [""], dtype=object)
-    return table[inverse.reshape(-1)] if len(values) else np.empty(0, dtype=object)
-
-
 def _append(line, mask, prefix: str, numbers) -> None:
-    """``line[i] += prefix + text of numbers[i]`` where ``mask``; in slices, because numpy
-    adds strings one by one holding the GIL: a GUI thread then waits one slice at most."""
+    """``line[i] += prefix + text of numbers[i]`` where ``mask`` (numbers in whole
+    thousandths). Each distinct number is formatted once; the strings are gathered and
+    joined in slices, because numpy handles object arrays one item at a time holding the
+    GIL: a GUI thread then waits one slice at most."""
     idx = np.flatnonzero(mask)
     if not len(idx):
         return
-    texts = _texts(numbers[idx])
+    uniq, inverse = np.unique(numbers[idx], return_inverse=True)
+    table = np.array([prefix + fmt(v) for v in uniq.tolist()], dtype=object)
+    inverse = inverse.reshape(-1)
     for start in range(0, len(idx), GIL_SLICE):
         part = idx[start : start + GIL_SLICE]
-        line[part] = line[part] + (prefix + texts[start : start + GIL_SLICE])
+        line[part] = line[part] + table[inverse[start : start + GIL_SLICE]]
 
 
 def render(ops: Ops, count, chords, tolerance: float, default_rpm: float):
@@ -98,7 +95,7 @@ def render(ops: Ops, count, chords, tolerance: float, default_rpm: float):
     op, code, target, value = _rows(ops, count, chords, tolerance, default_rpm)
     number = milli(value)
     emit, send_f = _words(code, target, number)
-    line = _CODE_TEXT[code]
+    line = _sliced(lambda part: _CODE_TEXT[code[part]], len(code), object)
     for axis, prefix in enumerate((" X", " Y", " Z")):
         col = target[:, axis]
         if prefix == " Z":
@@ -121,5 +118,21 @@ def render(ops: Ops, count, chords, tolerance: float, default_rpm: float):
     stops = np.flatnonzero(code == M00)
     line[stops] = [device_line(v) for v in ops.value[op[stops]].tolist()]
     pauses = list(zip(first[pause_rows].tolist(), ops.messages, strict=True))
-    return line.tolist(), ops.line[op], pauses
+    return _sliced(lambda part: line[part].tolist(), len(line)), ops.line[op], pauses
+
+
+def _sliced(fn, n: int, dtype=None):
+    """``fn(slice)`` over ``range(n)`` in ``GIL_SLICE`` pieces, joined: an array of
+    ``dtype``, or a list when ``dtype`` is None (object items are handled one at a time
+    holding the GIL: a GUI thread then waits one piece at most)."""
+    pieces = [slice(start, start + GIL_SLICE) for start in range(0, n, GIL_SLICE)]
+    if dtype is None:
+        joined: list = []
+        for part in pieces:
+            joined.extend(fn(part))
+        return joined
+    out = np.empty(n, dtype)
+    for part in pieces:
+        out[part] = fn(part)
+    return out
 

@@ -24,6 +24,7 @@ from .ops import ARC_CCW, ARC_CW, DWELL, FEED, PLANE_AXES, RAPID, Ops
 
 KIND_NAMES = {RAPID: "rapid", FEED: "feed", ARC_CW: "arc", ARC_CCW: "arc", DWELL: "dwell"}
 PARALLEL_ARCS = 50_000  # arcs from which chords are computed on two threads
+PIECE_ARCS = 65_536  # arcs per call when chords are computed in the background
 
 
 def move_times(length, feed_mm_min, accel: float) -> np.ndarray:
@@ -123,14 +124,16 @@ class Toolpath:
             return chord_points(self.start[rows], self.end[rows], self.center[rows],
                                 np.array(PLANE_AXES)[self.plane[rows]], self.turn[rows], tolerance)
 
-        if len(arcs) < PARALLEL_ARCS or threads < 2:
+        if threads < 2:  # in pieces: no numpy call holds the GIL for long while a window redraws
+            pieces = [arcs[i:i + PIECE_ARCS] for i in range(0, len(arcs), PIECE_ARCS)] or [arcs]
+            return _joined([of(piece) for piece in pieces], [len(piece) for piece in pieces])
+        if len(arcs) < PARALLEL_ARCS:
             return of(arcs)
         from concurrent.futures import ThreadPoolExecutor  # only here: a CLI start-up need not load it
 
         half = len(arcs) // 2
         with ThreadPoolExecutor(max_workers=2, thread_name_prefix="chords") as pool:
-            (pts_a, owner_a), (pts_b, owner_b) = pool.map(of, (arcs[:half], arcs[half:]))
-        return np.concatenate([pts_a, pts_b]), np.concatenate([owner_a, owner_b + half])
+            return _joined(list(pool.map(of, (arcs[:half], arcs[half:]))), [half, len(arcs) - half])
 
     def _polyline(self, tolerance: float, threads: int):
         moves = np.flatnonzero(self.kind != DWELL)
@@ -178,3 +181,11 @@ def build(ops: Ops, device_first: np.ndarray, profile: MachineProfile) -> Toolpa
     feed[dwell] = 0.0
     source, device = ops.main_lines()[rows], device_first[rows]
     return Toolpath(start, end, kind, center, plane, turn, source, device, feed, length, time)
+
+
+def _joined(parts: list[tuple[np.ndarray, np.ndarray]], sizes: list[int]) -> tuple[np.ndarray, np.ndarray]:
+    """``chord_points`` results of consecutive slices of ``sizes`` arcs as one: points in
+    order, each point's owner counted from the first arc of the first slice."""
+    firsts = np.cumsum([0, *sizes[:-1]])
+    return (np.concatenate([pts for pts, _ in parts]),
+            np.concatenate([owner + first for (_, owner), first in zip(parts, firsts, strict=True)]))
