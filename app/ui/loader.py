@@ -8,7 +8,9 @@ is emitted then. The rest waits until the window says it has shown the program
 (``shown()``, or SHOW_WAIT_S), so it does not compete with the first picture for the
 interpreter: the model at the real tolerance with every level of detail, for zooming
 in (``refined``, when the first one was coarser), then the device lines, for Start
-and Save to SD (``prepared``).
+and Save to SD (``prepared``). The rest runs niced, on this thread alone, and in
+pieces (chords 65,536 arcs at a time, device-line texts in slices), so a redraw never
+waits long for the GIL behind one numpy call.
 
 Anything that is not G-code ends in ``failed`` with a sentence for the operator: a
 missing or unreadable file, a binary file, or text in which nothing could be run.
