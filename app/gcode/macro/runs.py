@@ -7,9 +7,11 @@ together: the walk then dispatches once per run instead of once per block. Each
 block of the run keeps its own handler for a jump that lands inside the run. A
 block that reads the machine's parameters (``S.num``: #5000 and up, or a computed
 number) is never part of a run: that read flushes the batch, and must see every
-row before it. When an expression of the run raises an error, the run's first block
-runs alone (and the rest after it, each starting its own shorter run): the rows
-before the failing block stay, and the error names its line, as block by block.
+row before it. A run counts as one block toward the walk's block limit: its blocks
+are moves, which the move limit bounds. When an expression of the run raises an
+error, the run's first block runs alone (and the rest after it, each starting its
+own shorter run): the rows before the failing block stay, and the error names its
+line, as block by block.
 """
 
 from __future__ import annotations
@@ -55,7 +57,6 @@ def run_handler(members: tuple, span: int, one):
     """The handler of a run (see the module docstring); ``one``: the single-block handler
     used while the fast path is off."""
     rows = compile_rows([m.fast_code for m in members])
-    extra = span - 1
 
     def run(w, f, b):
         if not w.fast_ok:
@@ -68,7 +69,6 @@ def run_handler(members: tuple, span: int, one):
         batch = w.batch
         batch.extend(made)
         batch.blocks.extend(members)
-        w.blocks_run += extra
         if len(batch.blocks) >= MAX_ROWS:
             w.flush()
         return None
