@@ -40,7 +40,8 @@ out vec4 v_colour;
 void main() {
     gl_Position = u_mvp * vec4(a_row.xyz, 1.0);
     float t = clamp(a_row.w / u_tolerance, 0.0, 1.0) * 2.0;
-    vec3 rgb = u_ramp[0] + (u_ramp[1] - u_ramp[0]) * min(t, 1.0) + (u_ramp[2] - u_ramp[1]) * max(t - 1.0, 0.0);
+    vec3 rgb = u_ramp[0] + (u_ramp[1] - u_ramp[0]) * min(t, 1.0)
+             + (u_ramp[2] - u_ramp[1]) * max(t - 1.0, 0.0);
     v_colour = vec4(rgb, 1.0);
 }
 """
