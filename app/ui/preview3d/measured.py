@@ -5,9 +5,12 @@ commanded one the diagnostics plot compares it with (``app.ui.commanded``: the p
 of the programmed path being executed nearest to it). ``MeasuredPath.append`` keeps
 both as rows in arrays that grow by doubling (appending is O(1) amortised, and the
 GPU copy grows the same way, so only the new rows are uploaded); the deviation of a
-row is the distance between the two. ``largest()`` says where the deviation was
-greatest. ``deviation_colour`` maps a deviation to the colour the view draws it in:
-green at 0, yellow at half the tolerance, red from the tolerance up.
+row is the distance between the two. A row taken during a rapid has no deviation
+(stored as -1, drawn grey): the program's rapids start where the preview assumes the
+tool is, the machine's where it really is, and the tolerance is the cuts'.
+``largest()`` says where the deviation was greatest. ``deviation_colour`` maps a
+deviation to the colour the view draws it in: cyan at 0, yellow at half the
+tolerance, red from the tolerance up.
 """
 
 from __future__ import annotations
@@ -18,7 +21,8 @@ import numpy as np
 
 TOLERANCE_MM = 0.1  # the machine holds the tool within this of the path (DESIGN.md)
 _START_ROWS = 1024
-RAMP = np.array([[0.22, 0.83, 0.33], [1.0, 0.88, 0.2], [1.0, 0.25, 0.25]], np.float32)  # 0, tol/2, tol
+RAMP = np.array([[0.0, 0.9, 1.0], [1.0, 0.88, 0.2], [1.0, 0.2, 0.2]], np.float32)  # 0, tol/2, tol
+NO_DEVIATION = -1.0
 
 
 @dataclass(frozen=True)
@@ -43,8 +47,9 @@ class MeasuredPath:
         self.count = 0
         self.version += 1
 
-    def append(self, measured, commanded) -> None:
-        """One status of a job: where the machine was and where the program meant it to be."""
+    def append(self, measured, commanded, rapid: bool = False) -> None:
+        """One status of a job: where the machine was and where the program meant it to be
+        (``rapid``: during a rapid move, when the deviation means nothing)."""
         if self.count == len(self._rows):
             self._rows = _grown(self._rows)
             self._commanded = _grown(self._commanded)
@@ -52,7 +57,7 @@ class MeasuredPath:
         c = np.asarray(commanded, float)
         row = self._rows[self.count]
         row[:3] = m
-        row[3] = float(np.sqrt(np.sum((m - c) ** 2)))
+        row[3] = NO_DEVIATION if rapid else float(np.sqrt(np.sum((m - c) ** 2)))
         self._commanded[self.count] = c
         self.count += 1
 
@@ -66,9 +71,10 @@ class MeasuredPath:
 
     def largest(self) -> Deviation | None:
         """Where the measured path was farthest from the programmed one (first such row)."""
-        if not self.count:
+        deviation = self._rows[: self.count, 3]
+        if not self.count or deviation.max() < 0:
             return None
-        index = int(np.argmax(self._rows[: self.count, 3]))
+        index = int(np.argmax(deviation))
         row = self._rows[index]
         return Deviation(index, float(row[3]), row[:3].astype(float), self._commanded[index].copy())
 

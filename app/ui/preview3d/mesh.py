@@ -101,16 +101,16 @@ class PathMesh:
         self.levels = levels
 
     def pick_level(self, pixel: float, budget: int) -> MeshLevel | None:
-        """The finest level whose cell is no larger than ``pixel`` and whose segments fit
-        ``budget``; the coarsest when none fits; ``None`` when levels are not built."""
+        """The coarsest level whose cell is no larger than ``pixel`` (the finest when none
+        is), or a coarser one until its segments fit ``budget`` (at last the coarsest);
+        ``None`` when the levels are not built."""
         if not self.levels:
             return None
-        for level in self.levels:
-            if level.cell <= pixel and len(level.ends) <= budget:
+        fine = [i for i, level in enumerate(self.levels) if level.cell <= pixel]
+        for level in self.levels[fine[-1] if fine else 0:]:
+            if len(level.ends) <= budget:
                 return level
-        fitting = [level for level in self.levels if len(level.ends) <= budget]
-        return fitting[0] if fitting else self.levels[-1]
-
+        return self.levels[-1]
 
 def _representatives(points, origin, span, ends, cell) -> np.ndarray:
     """The ends (ascending: program order) of the first segment of every 3-D (start

@@ -16,7 +16,7 @@ import numpy as np
 TRAVEL_RGB = (0.5, 0.5, 0.5)
 AXIS_RGB = ((1.0, 0.3, 0.3), (0.3, 0.9, 0.3), (0.35, 0.55, 1.0))
 TOOL_RGB = (1.0, 0.25, 0.25)
-MARK_RGB = (0.0, 0.9, 1.0)
+MARK_RGB = (1.0, 1.0, 1.0)
 DEFAULT_DIAMETER = 3.0  # mm, when the tool table does not say
 CIRCLE_STEPS = 32
 SCAN_LINES = 5_000  # lines of a program looked at for its tool

@@ -3,7 +3,7 @@
 PATH: one vertex per segment end (float32 position, uint8 group normalised to 0..1);
 the line strip's segment takes its last vertex's flat colour, and a segment whose
 end vertex index is at most ``u_done`` is drawn finished: the progress of a job is
-one uniform. MEASURED: rows x, y, z, deviation; the colour ramp is a uniform (the
+one uniform. MEASURED: rows x, y, z, deviation (< 0 during rapids: grey); the colour ramp is a uniform (the
 same three colours as ``measured.RAMP``). LINES: position and colour per vertex.
 """
 
@@ -42,7 +42,7 @@ void main() {
     float t = clamp(a_row.w / u_tolerance, 0.0, 1.0) * 2.0;
     vec3 rgb = u_ramp[0] + (u_ramp[1] - u_ramp[0]) * min(t, 1.0)
              + (u_ramp[2] - u_ramp[1]) * max(t - 1.0, 0.0);
-    v_colour = vec4(rgb, 1.0);
+    v_colour = a_row.w < 0.0 ? vec4(0.6, 0.6, 0.6, 0.6) : vec4(rgb, 1.0);  // rapids: no deviation
 }
 """
 

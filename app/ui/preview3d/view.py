@@ -16,9 +16,10 @@ import threading
 
 import numpy as np
 from PySide6.QtCore import QCoreApplication, QEvent, QObject, Qt, QTimer, Signal
-from PySide6.QtGui import QColor, QOffscreenSurface, QOpenGLContext
+from PySide6.QtGui import QColor, QGuiApplication, QOffscreenSurface, QOpenGLContext
 from PySide6.QtWidgets import QHBoxLayout, QLabel, QPushButton, QStackedWidget, QVBoxLayout, QWidget
 
+from app.gcode.ops import RAPID
 from app.ui.numbers import decimal
 from app.ui.preview.widget import DONE_COLOUR, group_colours, legend_entries
 from app.ui.preview3d import scene
@@ -30,6 +31,7 @@ from app.ui.preview3d.mesh import PathMesh
 FOLLOW_MS = 33
 AXIS_FRACTION = 0.12  # axes as long as this much of the travel
 JUMP_HALF_HEIGHT = 4.0  # mm of view around the largest deviation
+NO_GL_WIDGETS = ("offscreen", "minimal")  # Qt platforms whose windows cannot show a QOpenGLWidget
 
 
 def _tr(text: str) -> str:
@@ -40,6 +42,9 @@ def gl_problem() -> str:
     """Why this machine cannot draw the 3-D view ("" when it can): a 3.3 core context."""
     from app.ui.preview3d.glview import surface_format
 
+    platform = QGuiApplication.platformName()
+    if platform in NO_GL_WIDGETS:  # contexts may work there, but not an OpenGL widget's frame buffer
+        return _tr("the %1 platform cannot show OpenGL widgets").replace("%1", platform)
     context = QOpenGLContext()
     context.setFormat(surface_format())
     if not context.create():
@@ -108,6 +113,7 @@ class Preview3D(QWidget):
         self.builder.built.connect(self._mesh_built)
         self.builder.levels_built.connect(self._levels_built)
         self._built_for = None  # the model whose mesh was asked for
+        self._done_seq = -1
         self._feed = None
         self._follow = QTimer(self, interval=FOLLOW_MS, timeout=self._poll)
         self._build_ui()
@@ -314,8 +320,17 @@ class Preview3D(QWidget):
         self.deviation_label.clear()
         self.set_done(-1)
 
+    def _executing_rapid(self) -> bool:
+        """Whether the move after the last finished one is a rapid."""
+        if self.model is None or self.model.empty:
+            return False
+        kind = self.model.toolpath.kind
+        move = self.model.move_of_device_line(self._done_seq + 1)
+        return 0 <= move < len(kind) and int(kind[move]) == RAPID
+
     def set_done(self, seq: int) -> None:
         """The job has finished device line ``seq``: one uniform (O(log n) to find the vertex)."""
+        self._done_seq = seq
         if self.model is None or self.mesh is None or self.gl is None:
             return
         self.gl.set_done_vertex(self.mesh.vertex_of_move(self.model.move_of_device_line(seq)))
@@ -325,8 +340,10 @@ class Preview3D(QWidget):
         self._update_lines()
 
     def add_measured(self, measured: np.ndarray, commanded: np.ndarray) -> None:
+        """New rows of the job's measured path (taken during the move being executed)."""
+        rapid = self._executing_rapid()
         for m, c in zip(np.atleast_2d(measured), np.atleast_2d(commanded), strict=True):
-            self.measured.append(m, c)
+            self.measured.append(m, c, rapid)
         if self.gl is not None:
             self.gl.update()
 
@@ -334,7 +351,7 @@ class Preview3D(QWidget):
         """Say how far the measured path strayed at most, mark the place and look at it."""
         worst = self.measured.largest()
         if worst is None:
-            self.deviation_label.setText(self.tr("no measured path yet"))
+            self.deviation_label.setText(self.tr("no cut measured yet"))
             return
         x, y, z = (decimal(v, 3) for v in worst.measured)
         self.deviation_label.setText(self.tr("largest deviation %1 mm at X %2 Y %3 Z %4")
