@@ -120,14 +120,40 @@ def test_moving_draws_a_level_of_detail_then_full_detail_again(qtbot, gl_view, m
     assert n > 25_000
     monkeypatch.setattr(glview, "MOVING_BUDGET", 5_000)
     gl_view.show_model(model, program)
-    qtbot.waitUntil(lambda: gl_view.mesh is not None and bool(gl_view.mesh.levels))
+    qtbot.waitUntil(lambda: gl_view.mesh is not None and gl_view.gl.levels_on_gpu > 0)
     qtbot.waitUntil(lambda: gl_view.gl.drawn == ("full", n - 1))
+    seen = []
+    gl_view.gl.frame_drawn.connect(lambda: seen.append(gl_view.gl.drawn))
     gl_view.gl.camera.orbit(15, 5)
     gl_view.gl.camera_moved()
-    gl_view.gl.repaint()
-    kind, count = gl_view.gl.drawn
-    assert kind == "level" and 0 < count <= 5_000
-    qtbot.waitUntil(lambda: gl_view.gl.drawn == ("full", n - 1), timeout=2000)  # after the camera settles
+    qtbot.waitUntil(lambda: bool(seen) and seen[-1] == ("full", n - 1), timeout=3000)  # once it settles
+    assert seen[0][0] == "level" and 0 < seen[0][1] <= 5_000  # while it moved
+
+
+def test_full_detail_in_slices_is_the_same_picture_and_progress_draws_only_what_is_new(qtbot, gl_view):
+    program = _show_star(qtbot, gl_view)
+    gl_view.preset("isometric")
+    gl = gl_view.gl
+    whole = _frame(gl_view)
+    gl._full.slice_segments = 7  # the star's segments in slices of 7: several frames
+    gl.update()
+    seen = []
+    gl.frame_drawn.connect(lambda: seen.append(gl.drawn))
+    qtbot.waitUntil(lambda: bool(seen) and seen[-1][0] == "full")
+    assert seen[0][0] == "partial" and len(seen) >= gl.mesh.segments // 7
+    differ = np.any(_frame(gl_view) != whole, axis=2)
+    assert differ.sum() < 0.0005 * differ.size  # only where the box crosses the path (a copy has no depth)
+    strips = []
+    draw = gl._full.advance
+    gl._full.advance = lambda strip, done: draw(lambda a, b: (strips.append((a, b)), strip(a, b)), done)
+    gl_view.set_done(8)
+    qtbot.waitUntil(lambda: bool(strips))
+    vertex = gl.done_vertex
+    assert strips == [(0, vertex)]  # only the newly finished part, over the picture
+    assert _count(_frame(gl_view), DONE_COLOUR) > 20
+    gl_view.set_done(len(program.device_lines) - 1)
+    qtbot.waitUntil(lambda: len(strips) == 2)
+    assert strips[1] == (vertex, gl.done_vertex)
 
 
 def test_the_measured_path_is_drawn_over_in_its_deviation_colours(qtbot, gl_view):

@@ -6,8 +6,9 @@ Geometry goes to the GPU once per model (``set_mesh``); the progress of a job is
 uniform (``set_done_vertex``: O(1), nothing uploaded), the measured path only sends
 its new rows. While the camera moves, the path is drawn from the mesh's level of
 detail sized to the pixels and a frame budget; SETTLE_MS after the last move the
-full model is drawn again. A context or shader that cannot be made ends in
-``gl_failed`` with the reason, and the widget then draws nothing.
+full model is drawn again, a slice per frame for a big one (``fullframe``). A context
+or shader that cannot be made ends in ``gl_failed`` with the reason, and the widget
+then draws nothing.
 """
 
 from __future__ import annotations
@@ -15,7 +16,7 @@ from __future__ import annotations
 import ctypes
 
 import numpy as np
-from PySide6.QtCore import QPointF, Qt, QTimer, Signal
+from PySide6.QtCore import QPointF, QSize, Qt, QTimer, Signal
 from PySide6.QtGui import QColor, QMatrix4x4, QSurfaceFormat
 from PySide6.QtOpenGL import QOpenGLBuffer, QOpenGLShader, QOpenGLShaderProgram, QOpenGLVertexArrayObject
 from PySide6.QtOpenGLWidgets import QOpenGLWidget
@@ -23,10 +24,12 @@ from PySide6.QtOpenGLWidgets import QOpenGLWidget
 from app.ui.preview.widget import DONE_COLOUR, group_colours
 from app.ui.preview3d import shaders
 from app.ui.preview3d.camera import Camera
+from app.ui.preview3d.fullframe import FullFrame
 from app.ui.preview3d.measured import RAMP, TOLERANCE_MM, MeasuredPath
 from app.ui.preview3d.mesh import PathMesh
 
 SETTLE_MS = 100  # full detail this long after the camera stops
+STILL_BUDGET = 400_000  # segments of the level shown while full detail is drawn in slices
 MOVING_BUDGET = 60_000  # segments per frame while the camera moves (llvmpipe: ~8 M segments/s)
 LOD_PIXELS = 1.0  # cell of the level drawn while moving, in pixels
 RAPID_ALPHA = 0.45  # rapids are drawn faint
@@ -73,6 +76,7 @@ class PathGLView(QOpenGLWidget):
         self._pending = {"mesh": False, "levels": False, "lines": True}
         self._measured_sent = (-1, 0, 0)  # version, rows, capacity on the GPU
         self._level_buffers: list[QOpenGLBuffer] = []
+        self._full = FullFrame()
         self._gl = None
         self._settle = QTimer(self, singleShot=True, interval=SETTLE_MS, timeout=self._settled)
         self._press: tuple[QPointF, Qt.MouseButton] | None = None
@@ -93,6 +97,10 @@ class PathGLView(QOpenGLWidget):
         """The mesh's levels of detail were built (off the GUI thread): send them."""
         self._pending["levels"] = True
         self.update()
+
+    @property
+    def levels_on_gpu(self) -> int:
+        return len(self._level_buffers)
 
     def set_lines(self, rows: np.ndarray) -> None:
         self.lines = np.ascontiguousarray(rows, np.float32)
@@ -173,8 +181,8 @@ class PathGLView(QOpenGLWidget):
         f.glEnable(GL_BLEND)
         f.glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA)
         mvp = QMatrix4x4(*self.camera.matrix().ravel())
+        self._draw_path(f, mvp)  # first: a full-detail picture is copied over the whole frame
         self._draw_lines(f, mvp)
-        self._draw_path(f, mvp)
         f.glDisable(GL_DEPTH_TEST)  # the measured path is drawn over the programmed one
         self._draw_measured(f, mvp)
         self.frame_drawn.emit()
@@ -201,25 +209,49 @@ class PathGLView(QOpenGLWidget):
         program.setUniformValueArray("u_colours", sum(self._colours, []), 8, 4)
         program.setUniformValue("u_done_colour", *_rgba(DONE_COLOUR))
         self._vao["path"].bind()
-        level = self._moving_level()
-        if level is None:
+        pixel = self.camera.pixel(self.height())
+        moving = self._level(pixel * LOD_PIXELS, MOVING_BUDGET) if self.moving else None
+        if moving is not None:
+            self._draw_level(*moving)
+        elif mesh.segments <= self._full.slice_segments:
             f.glDrawArrays(GL_LINE_STRIP, 0, len(mesh.points))
             self.drawn = ("full", mesh.segments)
         else:
-            index, count = level
-            self._level_buffers[index].bind()  # the path's VAO keeps it
-            self._draw_elements(GL_LINES, 2 * count, GL_UNSIGNED_INT, None)  # from the buffer's start
-            self.drawn = ("level", count)
+            self._draw_full_in_slices(f)
         self._vao["path"].release()
 
-    def _moving_level(self) -> tuple[int, int] | None:
-        """(level, segments) to draw while the camera moves; None: the full model."""
+    def _draw_full_in_slices(self, f) -> None:
+        """A slice more of the full picture each frame; a level of detail until it is whole."""
+        mesh, full = self.mesh, self._full
+        ratio = self.devicePixelRatioF()
+        size = QSize(round(self.width() * ratio), round(self.height() * ratio))
+        full.prepare(f, (id(mesh), tuple(self.camera.matrix().ravel())), size, len(mesh.points) - 1,
+                     self.done_vertex)
+        strip = lambda first, last: f.glDrawArrays(GL_LINE_STRIP, first, last - first + 1)  # noqa: E731
+        full.advance(strip, self.done_vertex)
+        level = None if full.complete else self._level(self.camera.pixel(self.height()) / 2, STILL_BUDGET)
+        if level is None:
+            full.blit()
+            self.drawn = ("full" if full.complete else "partial", full.next)
+        else:
+            self._draw_level(*level)
+        if not full.complete:
+            QTimer.singleShot(0, self.update)
+
+    def _level(self, pixel: float, budget: int) -> tuple[int, int] | None:
+        """(level, segments) for this pixel size and budget; None without levels (or when the
+        full model fits the budget)."""
         mesh = self.mesh
-        if not self.moving or mesh.segments <= MOVING_BUDGET or len(self._level_buffers) != len(mesh.levels):
+        if mesh.segments <= budget or len(self._level_buffers) != len(mesh.levels) or not mesh.levels:
             return None
-        level = mesh.pick_level(self.camera.pixel(self.height()) * LOD_PIXELS, MOVING_BUDGET)
+        level = mesh.pick_level(pixel, budget)
         index = next(i for i, candidate in enumerate(mesh.levels) if candidate is level)
         return index, len(level.ends)
+
+    def _draw_level(self, index: int, count: int) -> None:
+        self._level_buffers[index].bind()  # the path's VAO keeps it
+        self._draw_elements(GL_LINES, 2 * count, GL_UNSIGNED_INT, None)  # from the buffer's start
+        self.drawn = ("level", count)
 
     def _draw_measured(self, f, mvp) -> None:
         rows = len(self.measured) if self.measured is not None else 0

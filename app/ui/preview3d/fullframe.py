@@ -1,0 +1,70 @@
+"""Full detail a slice at a time: the whole path drawn into a frame buffer of its own
+over several frames, so no frame of the GUI thread draws millions of segments.
+
+A software renderer draws about ten million short segments a second; a frame of two
+million would hold the window for a fifth of a second, and a job's progress redraws
+it at the status rate. ``FullFrame`` keeps the picture of the whole path for one
+camera: ``prepare`` starts it again when the camera, the model, the size changed or
+the finished part shrank (a new run), ``advance`` draws the segments finished since
+the last frame over what is drawn already (O(new segments): progress never redraws
+the rest) and then the next slice of ``slice_segments``; ``blit`` copies it to the
+widget. Until ``complete``, the caller draws a level of detail instead.
+"""
+
+from __future__ import annotations
+
+from PySide6.QtCore import QSize
+from PySide6.QtOpenGL import QOpenGLFramebufferObject
+
+SLICE_SEGMENTS = 250_000
+GL_COLOR_BUFFER_BIT, GL_DEPTH_BUFFER_BIT = 0x4000, 0x0100
+
+
+class FullFrame:
+    def __init__(self, slice_segments: int = SLICE_SEGMENTS):
+        self.slice_segments = slice_segments
+        self.fbo: QOpenGLFramebufferObject | None = None
+        self.key = None
+        self.next = 0  # segments up to this vertex are drawn
+        self.total = 0  # the last vertex of the model
+        self.done = -1  # the finished part drawn so far (last vertex)
+
+    @property
+    def complete(self) -> bool:
+        return self.fbo is not None and self.next >= self.total
+
+    def prepare(self, f, key, size: QSize, total: int, done: int) -> None:
+        """Begin again unless the buffer holds (part of) this picture."""
+        if self.fbo is None or self.fbo.size() != size:
+            self.fbo = QOpenGLFramebufferObject(size, QOpenGLFramebufferObject.Attachment.Depth)
+            self.key = None
+        if key == self.key and total == self.total and done >= self.done:
+            return
+        self.key, self.total, self.next, self.done = key, total, 0, done
+        self.fbo.bind()
+        f.glClearColor(0.0, 0.0, 0.0, 1.0)
+        f.glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT)
+        self.fbo.release()
+
+    def advance(self, draw_strip, done: int) -> None:
+        """``draw_strip(first, last)`` draws vertices first..last as a line strip with the
+        current uniforms: the newly finished segments already drawn, then the next slice."""
+        self.fbo.bind()
+        if done > self.done:
+            low, high = max(self.done, 0), min(done, self.next)
+            if high > low:
+                draw_strip(low, high)
+            self.done = done
+        if self.next < self.total:
+            end = min(self.next + self.slice_segments, self.total)
+            draw_strip(self.next, end)
+            self.next = end
+        self.fbo.release()
+
+    def blit(self) -> None:
+        """Copy the picture into the frame being drawn (colour only)."""
+        QOpenGLFramebufferObject.blitFramebuffer(None, self.fbo)
+
+    def forget(self) -> None:
+        self.fbo = None
+        self.key = None
