@@ -7,8 +7,9 @@ it at the status rate. ``FullFrame`` keeps the picture of the whole path for one
 camera: ``prepare`` starts it again when the camera, the model, the size changed or
 the finished part shrank (a new run), ``advance`` draws the segments finished since
 the last frame over what is drawn already (O(new segments): progress never redraws
-the rest) and then the next slice of ``slice_segments``; ``blit`` copies it to the
-widget. Until ``complete``, the caller draws a level of detail instead.
+the rest) and then the next slice of ``slice_segments``, sized so that a frame takes
+about FRAME_S on this renderer (``tune``); ``blit`` copies it to the widget. Until
+``complete``, the caller draws a level of detail instead.
 """
 
 from __future__ import annotations
@@ -16,7 +17,9 @@ from __future__ import annotations
 from PySide6.QtCore import QSize
 from PySide6.QtOpenGL import QOpenGLFramebufferObject
 
-SLICE_SEGMENTS = 250_000
+SLICE_SEGMENTS = 250_000  # the first slice; then sized to FRAME_S
+FRAME_S = 0.03  # a frame while full detail is drawn (the window stays responsive)
+MIN_SLICE, MAX_SLICE = 20_000, 4_000_000
 GL_COLOR_BUFFER_BIT, GL_DEPTH_BUFFER_BIT = 0x4000, 0x0100
 
 
@@ -60,6 +63,11 @@ class FullFrame:
             draw_strip(self.next, end)
             self.next = end
         self.fbo.release()
+
+    def tune(self, frame_s: float) -> None:
+        """Size the next slices by how long the last frame with a slice took."""
+        factor = min(2.0, max(0.5, FRAME_S / max(frame_s, 1e-4)))
+        self.slice_segments = int(min(MAX_SLICE, max(MIN_SLICE, self.slice_segments * factor)))
 
     def blit(self) -> None:
         """Copy the picture into the frame being drawn (colour only)."""

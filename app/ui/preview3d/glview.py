@@ -14,6 +14,7 @@ then draws nothing.
 from __future__ import annotations
 
 import ctypes
+import time
 
 import numpy as np
 from PySide6.QtCore import QPointF, QSize, Qt, QTimer, Signal
@@ -29,7 +30,6 @@ from app.ui.preview3d.measured import RAMP, TOLERANCE_MM, MeasuredPath
 from app.ui.preview3d.mesh import PathMesh
 
 SETTLE_MS = 100  # full detail this long after the camera stops
-STILL_BUDGET = 400_000  # segments of the level shown while full detail is drawn in slices
 MOVING_BUDGET = 60_000  # segments per frame while the camera moves (llvmpipe: ~8 M segments/s)
 LOD_PIXELS = 1.0  # cell of the level drawn while moving, in pixels
 RAPID_ALPHA = 0.45  # rapids are drawn faint
@@ -77,6 +77,7 @@ class PathGLView(QOpenGLWidget):
         self._measured_sent = (-1, 0, 0)  # version, rows, capacity on the GPU
         self._level_buffers: list[QOpenGLBuffer] = []
         self._full = FullFrame()
+        self._slice_started: float | None = None
         self._gl = None
         self._settle = QTimer(self, singleShot=True, interval=SETTLE_MS, timeout=self._settled)
         self._press: tuple[QPointF, Qt.MouseButton] | None = None
@@ -213,6 +214,7 @@ class PathGLView(QOpenGLWidget):
         moving = self._level(pixel * LOD_PIXELS, MOVING_BUDGET) if self.moving else None
         if moving is not None:
             self._draw_level(*moving)
+            self._slice_started = None
         elif mesh.segments <= self._full.slice_segments:
             f.glDrawArrays(GL_LINE_STRIP, 0, len(mesh.points))
             self.drawn = ("full", mesh.segments)
@@ -229,12 +231,17 @@ class PathGLView(QOpenGLWidget):
                      self.done_vertex)
         strip = lambda first, last: f.glDrawArrays(GL_LINE_STRIP, first, last - first + 1)  # noqa: E731
         full.advance(strip, self.done_vertex)
-        level = None if full.complete else self._level(self.camera.pixel(self.height()) / 2, STILL_BUDGET)
+        pixel = self.camera.pixel(self.height()) * LOD_PIXELS
+        level = None if full.complete else self._level(pixel, MOVING_BUDGET)
         if level is None:
             full.blit()
             self.drawn = ("full" if full.complete else "partial", full.next)
         else:
             self._draw_level(*level)
+        now = time.perf_counter()
+        if self._slice_started is not None:
+            full.tune(now - self._slice_started)  # the last frame, from its start to this one
+        self._slice_started = None if full.complete else now
         if not full.complete:
             QTimer.singleShot(0, self.update)
 

@@ -119,9 +119,9 @@ def _representatives(points, origin, span, ends, cell) -> np.ndarray:
     side = int(span / cell) + 2  # cells along the longest axis, and one to spare
     key = np.zeros(len(ends), np.int64)
     for vertex in (ends - 1, ends):
-        q = ((points[vertex] - origin) / np.float32(cell)).astype(np.int64)
-        key = key * _MIX + (q[:, 0] * side + q[:, 1]) * side + q[:, 2]
-    order = np.argsort(key)  # (faster than np.unique(return_index=True), as in preview.lod)
+        q = ((np.take(points, vertex, axis=0) - origin) / np.float32(cell)).astype(np.int64)  # (a take
+        key = key * _MIX + (q[:, 0] * side + q[:, 1]) * side + q[:, 2]  # lets the GIL go, indexing not)
+    order = np.argsort(key, kind="stable")  # (its GIL holds are the shortest; np.unique's are long)
     ordered = key[order]
     runs = np.flatnonzero(np.concatenate([[True], ordered[1:] != ordered[:-1]]))
     return ends[np.sort(np.minimum.reduceat(order, runs))]
