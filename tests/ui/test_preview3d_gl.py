@@ -135,6 +135,7 @@ def test_full_detail_in_slices_is_the_same_picture_and_progress_draws_only_what_
     gl_view.preset("isometric")
     gl = gl_view.gl
     whole = _frame(gl_view)
+    gl.direct_segments = 0  # in slices however small
     gl._full.slice_segments = 7  # the first slice: 7 of the star's segments
     gl.update()
     seen = []

@@ -25,7 +25,7 @@ from PySide6.QtOpenGLWidgets import QOpenGLWidget
 from app.ui.preview.widget import DONE_COLOUR, group_colours
 from app.ui.preview3d import shaders
 from app.ui.preview3d.camera import Camera
-from app.ui.preview3d.fullframe import FullFrame
+from app.ui.preview3d.fullframe import SLICE_SEGMENTS, FullFrame
 from app.ui.preview3d.measured import RAMP, TOLERANCE_MM, MeasuredPath
 from app.ui.preview3d.mesh import PathMesh
 
@@ -77,6 +77,7 @@ class PathGLView(QOpenGLWidget):
         self._measured_sent = (-1, 0, 0)  # version, rows, capacity on the GPU
         self._level_buffers: list[QOpenGLBuffer] = []
         self._full = FullFrame()
+        self.direct_segments = SLICE_SEGMENTS  # up to this many, full detail in one frame
         self._slice_started: float | None = None
         self._gl = None
         self._settle = QTimer(self, singleShot=True, interval=SETTLE_MS, timeout=self._settled)
@@ -215,7 +216,7 @@ class PathGLView(QOpenGLWidget):
         if moving is not None:
             self._draw_level(*moving)
             self._slice_started = None
-        elif mesh.segments <= self._full.slice_segments:
+        elif mesh.segments <= self.direct_segments:
             f.glDrawArrays(GL_LINE_STRIP, 0, len(mesh.points))
             self.drawn = ("full", mesh.segments)
         else:
