@@ -18,8 +18,8 @@ from PySide6.QtCore import QSize
 from PySide6.QtOpenGL import QOpenGLFramebufferObject
 
 SLICE_SEGMENTS = 250_000  # the first slice; then sized to FRAME_S
-FRAME_S = 0.03  # a frame while full detail is drawn (the window stays responsive)
-MIN_SLICE, MAX_SLICE = 20_000, 4_000_000
+FRAME_S = 0.04  # a frame while full detail is drawn (the window's stall budget is 50 ms)
+MIN_SLICE, MAX_SLICE = 50_000, 4_000_000
 GL_COLOR_BUFFER_BIT, GL_DEPTH_BUFFER_BIT = 0x4000, 0x0100
 
 
