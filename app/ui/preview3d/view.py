@@ -34,21 +34,18 @@ JUMP_HALF_HEIGHT = 4.0  # mm of view around the largest deviation
 NO_GL_WIDGETS = ("offscreen", "minimal")  # Qt platforms whose windows cannot show a QOpenGLWidget
 
 
-def _tr(text: str) -> str:
-    return QCoreApplication.translate("Preview3D", text)
-
-
 def gl_problem() -> str:
     """Why this machine cannot draw the 3-D view ("" when it can): a 3.3 core context."""
     from app.ui.preview3d.glview import surface_format
 
     platform = QGuiApplication.platformName()
     if platform in NO_GL_WIDGETS:  # contexts may work there, but not an OpenGL widget's frame buffer
-        return _tr("the %1 platform cannot show OpenGL widgets").replace("%1", platform)
+        said = QCoreApplication.translate("Preview3D", "the %1 platform cannot show OpenGL widgets")
+        return said.replace("%1", platform)
     context = QOpenGLContext()
     context.setFormat(surface_format())
     if not context.create():
-        return _tr("no OpenGL context could be created on this display")
+        return QCoreApplication.translate("Preview3D", "no OpenGL context could be created on this display")
     surface = QOffscreenSurface()
     surface.setFormat(context.format())
     surface.create()
@@ -56,9 +53,9 @@ def gl_problem() -> str:
     version = (context.format().majorVersion(), context.format().minorVersion())
     context.doneCurrent()
     if not made:
-        return _tr("the OpenGL context could not be used")
+        return QCoreApplication.translate("Preview3D", "the OpenGL context could not be used")
     if version < (3, 3):
-        return _tr("OpenGL %1.%2 found, 3.3 needed").replace(
+        return QCoreApplication.translate("Preview3D", "OpenGL %1.%2 found, 3.3 needed").replace(
             "%1", str(version[0])).replace("%2", str(version[1]))
     return ""
 
