@@ -7,8 +7,8 @@ it at the status rate. ``FullFrame`` keeps the picture of the whole path for one
 camera: ``prepare`` starts it again when the camera, the model, the size changed or
 the finished part shrank (a new run), ``advance`` draws the segments finished since
 the last frame over what is drawn already (O(new segments): progress never redraws
-the rest) and then the next slice of ``slice_segments``, sized so that a frame takes
-about FRAME_S on this renderer (``tune``); ``blit`` copies it to the widget. Until
+the rest) and then the next slice of ``slice_segments``, sized so that the renderer
+takes about SLICE_S for it (``tune``); ``blit`` copies it to the widget. Until
 ``complete``, the caller draws a level of detail instead.
 """
 
@@ -17,8 +17,8 @@ from __future__ import annotations
 from PySide6.QtCore import QSize
 from PySide6.QtOpenGL import QOpenGLFramebufferObject
 
-SLICE_SEGMENTS = 250_000  # the first slice; then sized to FRAME_S
-FRAME_S = 0.04  # a frame while full detail is drawn (the window's stall budget is 50 ms)
+SLICE_SEGMENTS = 250_000  # the first slice; then sized to SLICE_S
+SLICE_S = 0.03  # rendering a slice (the window's stall budget is 50 ms, a frame costs more)
 MIN_SLICE, MAX_SLICE = 50_000, 4_000_000
 GL_COLOR_BUFFER_BIT, GL_DEPTH_BUFFER_BIT = 0x4000, 0x0100
 
@@ -49,25 +49,29 @@ class FullFrame:
         f.glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT)
         self.fbo.release()
 
-    def advance(self, draw_strip, done: int) -> None:
+    def advance(self, draw_strip, done: int) -> int:
         """``draw_strip(first, last)`` draws vertices first..last as a line strip with the
-        current uniforms: the newly finished segments already drawn, then the next slice."""
+        current uniforms: the newly finished segments already drawn, then the next slice.
+        Returns the segments of the slice (0 when the picture was whole)."""
         self.fbo.bind()
         if done > self.done:
             low, high = max(self.done, 0), min(done, self.next)
             if high > low:
                 draw_strip(low, high)
             self.done = done
+        sliced = 0
         if self.next < self.total:
             end = min(self.next + self.slice_segments, self.total)
             draw_strip(self.next, end)
-            self.next = end
+            sliced, self.next = end - self.next, end
         self.fbo.release()
+        return sliced
 
-    def tune(self, frame_s: float) -> None:
-        """Size the next slices by how long the last frame with a slice took."""
-        factor = min(2.0, max(0.5, FRAME_S / max(frame_s, 1e-4)))
-        self.slice_segments = int(min(MAX_SLICE, max(MIN_SLICE, self.slice_segments * factor)))
+    def tune(self, seconds: float, segments: int) -> None:
+        """Size the next slices by how long the renderer took for ``segments``."""
+        rate = segments / max(seconds, 1e-4)
+        wanted = min(rate * SLICE_S, 2.0 * self.slice_segments)  # grow at most twofold a frame
+        self.slice_segments = int(min(MAX_SLICE, max(MIN_SLICE, wanted)))
 
     def blit(self) -> None:
         """Copy the picture into the frame being drawn (colour only)."""

@@ -78,7 +78,6 @@ class PathGLView(QOpenGLWidget):
         self._level_buffers: list[QOpenGLBuffer] = []
         self._full = FullFrame()
         self.direct_segments = SLICE_SEGMENTS  # up to this many, full detail in one frame
-        self._slice_started: float | None = None
         self._gl = None
         self._settle = QTimer(self, singleShot=True, interval=SETTLE_MS, timeout=self._settled)
         self._press: tuple[QPointF, Qt.MouseButton] | None = None
@@ -215,7 +214,6 @@ class PathGLView(QOpenGLWidget):
         moving = self._level(pixel * LOD_PIXELS, MOVING_BUDGET) if self.moving else None
         if moving is not None:
             self._draw_level(*moving)
-            self._slice_started = None
         elif mesh.segments <= self.direct_segments:
             f.glDrawArrays(GL_LINE_STRIP, 0, len(mesh.points))
             self.drawn = ("full", mesh.segments)
@@ -231,7 +229,11 @@ class PathGLView(QOpenGLWidget):
         full.prepare(f, (id(mesh), tuple(self.camera.matrix().ravel())), size, len(mesh.points) - 1,
                      self.done_vertex)
         strip = lambda first, last: f.glDrawArrays(GL_LINE_STRIP, first, last - first + 1)  # noqa: E731
-        full.advance(strip, self.done_vertex)
+        started = time.perf_counter()
+        sliced = full.advance(strip, self.done_vertex)
+        if sliced:
+            f.glFinish()  # the slice's own time (the frame's swap would wait for it anyway)
+            full.tune(time.perf_counter() - started, sliced)
         pixel = self.camera.pixel(self.height()) * LOD_PIXELS
         level = None if full.complete else self._level(pixel, MOVING_BUDGET)
         if level is None:
@@ -239,10 +241,6 @@ class PathGLView(QOpenGLWidget):
             self.drawn = ("full" if full.complete else "partial", full.next)
         else:
             self._draw_level(*level)
-        now = time.perf_counter()
-        if self._slice_started is not None:
-            full.tune(now - self._slice_started)  # the last frame, from its start to this one
-        self._slice_started = None if full.complete else now
         if not full.complete:
             QTimer.singleShot(0, self.update)
 
