@@ -136,17 +136,20 @@ def test_full_detail_in_slices_is_the_same_picture_and_progress_draws_only_what_
     gl = gl_view.gl
     whole = _frame(gl_view)
     gl.direct_segments = 0  # in slices however small
-    gl._full.slice_segments = 7  # the first slice: 7 of the star's segments
-    gl.update()
+    gl._full.slice_segments = 7  # the first slice: 7 of the star's segments, then sized to the renderer
+    slices = []
+    cut = gl._full.slice
+    gl._full.slice = lambda strip: slices.append(cut(strip)) or slices[-1]
     seen = []
     gl.frame_drawn.connect(lambda: seen.append(gl.drawn))
+    gl.update()
     qtbot.waitUntil(lambda: bool(seen) and seen[-1][0] == "full")
-    assert seen[0] == ("partial", 7)  # then slices sized to the renderer
+    assert seen[0] == ("partial", 0) and slices[:2] == [7, 29]  # drawn between frames
     differ = np.any(_frame(gl_view) != whole, axis=2)
     assert differ.sum() < 0.0005 * differ.size  # only where the box crosses the path (a copy has no depth)
     strips = []
-    draw = gl._full.advance
-    gl._full.advance = lambda strip, done: draw(lambda a, b: (strips.append((a, b)), strip(a, b)), done)
+    draw = gl._full.overdraw
+    gl._full.overdraw = lambda strip, done: draw(lambda a, b: (strips.append((a, b)), strip(a, b)), done)
     gl_view.set_done(8)
     qtbot.waitUntil(lambda: bool(strips))
     vertex = gl.done_vertex

@@ -1,15 +1,15 @@
 """Full detail a slice at a time: the whole path drawn into a frame buffer of its own
-over several frames, so no frame of the GUI thread draws millions of segments.
+between frames, so the GUI thread never draws millions of segments at once.
 
 A software renderer draws about ten million short segments a second; a frame of two
 million would hold the window for a fifth of a second, and a job's progress redraws
 it at the status rate. ``FullFrame`` keeps the picture of the whole path for one
 camera: ``prepare`` starts it again when the camera, the model, the size changed or
-the finished part shrank (a new run), ``advance`` draws the segments finished since
+the finished part shrank (a new run), ``overdraw`` draws the segments finished since
 the last frame over what is drawn already (O(new segments): progress never redraws
-the rest) and then the next slice of ``slice_segments``, sized so that the renderer
-takes about SLICE_S for it (``tune``); ``blit`` copies it to the widget. Until
-``complete``, the caller draws a level of detail instead.
+the rest), ``slice`` the next ``slice_segments``, sized so that the renderer takes
+about SLICE_S for one (``tune``); ``blit`` copies it to the widget. Until
+``complete``, the caller shows a level of detail instead.
 """
 
 from __future__ import annotations
@@ -49,22 +49,27 @@ class FullFrame:
         f.glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT)
         self.fbo.release()
 
-    def advance(self, draw_strip, done: int) -> int:
+    def overdraw(self, draw_strip, done: int) -> None:
         """``draw_strip(first, last)`` draws vertices first..last as a line strip with the
-        current uniforms: the newly finished segments already drawn, then the next slice.
-        Returns the segments of the slice (0 when the picture was whole)."""
-        self.fbo.bind()
+        current uniforms: here the segments finished since the last call, over what is
+        drawn already (the rest of them is drawn finished by the slices to come)."""
         if done > self.done:
             low, high = max(self.done, 0), min(done, self.next)
             if high > low:
+                self.fbo.bind()
                 draw_strip(low, high)
+                self.fbo.release()
             self.done = done
-        sliced = 0
-        if self.next < self.total:
-            end = min(self.next + self.slice_segments, self.total)
-            draw_strip(self.next, end)
-            sliced, self.next = end - self.next, end
+
+    def slice(self, draw_strip) -> int:
+        """Draw the next slice; returns its segments (0 when the picture is whole)."""
+        if self.next >= self.total:
+            return 0
+        end = min(self.next + self.slice_segments, self.total)
+        self.fbo.bind()
+        draw_strip(self.next, end)
         self.fbo.release()
+        sliced, self.next = end - self.next, end
         return sliced
 
     def tune(self, seconds: float, segments: int) -> None:

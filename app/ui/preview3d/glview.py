@@ -77,6 +77,7 @@ class PathGLView(QOpenGLWidget):
         self._measured_sent = (-1, 0, 0)  # version, rows, capacity on the GPU
         self._level_buffers: list[QOpenGLBuffer] = []
         self._full = FullFrame()
+        self._refiner = QTimer(self, singleShot=True, interval=0, timeout=self._refine)
         self.direct_segments = SLICE_SEGMENTS  # up to this many, full detail in one frame
         self._gl = None
         self._settle = QTimer(self, singleShot=True, interval=SETTLE_MS, timeout=self._settled)
@@ -203,13 +204,7 @@ class PathGLView(QOpenGLWidget):
         if mesh is None or not mesh.segments:
             self.drawn = ("none", 0)
             return
-        program = self._programs["path"]
-        program.bind()
-        program.setUniformValue("u_mvp", mvp)
-        program.setUniformValue1i("u_done", int(self.done_vertex))
-        program.setUniformValueArray("u_colours", sum(self._colours, []), 8, 4)
-        program.setUniformValue("u_done_colour", *_rgba(DONE_COLOUR))
-        self._vao["path"].bind()
+        self._bind_path(mvp)
         pixel = self.camera.pixel(self.height())
         moving = self._level(pixel * LOD_PIXELS, MOVING_BUDGET) if self.moving else None
         if moving is not None:
@@ -218,31 +213,67 @@ class PathGLView(QOpenGLWidget):
             f.glDrawArrays(GL_LINE_STRIP, 0, len(mesh.points))
             self.drawn = ("full", mesh.segments)
         else:
-            self._draw_full_in_slices(f)
+            self._draw_full_picture(f)
         self._vao["path"].release()
 
-    def _draw_full_in_slices(self, f) -> None:
-        """A slice more of the full picture each frame; a level of detail until it is whole."""
+    def _bind_path(self, mvp) -> None:
+        program = self._programs["path"]
+        program.bind()
+        program.setUniformValue("u_mvp", mvp)
+        program.setUniformValue1i("u_done", int(self.done_vertex))
+        program.setUniformValueArray("u_colours", sum(self._colours, []), 8, 4)
+        program.setUniformValue("u_done_colour", *_rgba(DONE_COLOUR))
+        self._vao["path"].bind()
+
+    def _full_key(self):
+        return id(self.mesh), tuple(self.camera.matrix().ravel())
+
+    def _draw_full_picture(self, f) -> None:
+        """The full picture when it is whole (with the newly finished segments drawn over
+        it); until then a level of detail, while ``_refine`` draws it between frames."""
         mesh, full = self.mesh, self._full
         ratio = self.devicePixelRatioF()
         size = QSize(round(self.width() * ratio), round(self.height() * ratio))
-        full.prepare(f, (id(mesh), tuple(self.camera.matrix().ravel())), size, len(mesh.points) - 1,
-                     self.done_vertex)
-        strip = lambda first, last: f.glDrawArrays(GL_LINE_STRIP, first, last - first + 1)  # noqa: E731
-        started = time.perf_counter()
-        sliced = full.advance(strip, self.done_vertex)
-        if sliced:
-            f.glFinish()  # the slice's own time (the frame's swap would wait for it anyway)
-            full.tune(time.perf_counter() - started, sliced)
-        pixel = self.camera.pixel(self.height()) * LOD_PIXELS
-        level = None if full.complete else self._level(pixel, MOVING_BUDGET)
+        full.prepare(f, self._full_key(), size, len(mesh.points) - 1, self.done_vertex)
+        full.overdraw(self._strip(f), self.done_vertex)
+        level = None if full.complete else self._level(self.camera.pixel(self.height()) * LOD_PIXELS,
+                                                       MOVING_BUDGET)
         if level is None:
             full.blit()
             self.drawn = ("full" if full.complete else "partial", full.next)
         else:
             self._draw_level(*level)
         if not full.complete:
-            QTimer.singleShot(0, self.update)
+            self._refiner.start()
+
+    def _refine(self) -> None:
+        """One slice of the full picture, outside any frame (no window to compose each
+        time); the widget repaints once it is whole."""
+        full, mesh = self._full, self.mesh
+        if self._gl is None or mesh is None or full.complete or full.key != self._full_key():
+            return  # the next frame starts it again for what is shown then
+        self.makeCurrent()
+        f = self._gl
+        self._bind_path(QMatrix4x4(*self.camera.matrix().ravel()))
+        f.glEnable(GL_DEPTH_TEST)
+        f.glDepthFunc(GL_LEQUAL)
+        f.glEnable(GL_BLEND)
+        f.glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA)
+        started = time.perf_counter()
+        sliced = full.slice(self._strip(f))
+        f.glFinish()  # the slice's own time
+        full.tune(time.perf_counter() - started, sliced)
+        self._vao["path"].release()
+        self.doneCurrent()
+        if full.complete:
+            self.update()
+        else:
+            self._refiner.start()
+
+    @staticmethod
+    def _strip(f):
+        """Draw vertices first..last as a line strip with the bound program."""
+        return lambda first, last: f.glDrawArrays(GL_LINE_STRIP, first, last - first + 1)
 
     def _level(self, pixel: float, budget: int) -> tuple[int, int] | None:
         """(level, segments) for this pixel size and budget; None without levels (or when the
