@@ -8,11 +8,11 @@ from __future__ import annotations
 
 import sys
 import tempfile
-import time
 from pathlib import Path
 
 import pytest
 
+from tests.ui.screens import _save, shot_window, start_on_simulator
 from tests.ui.test_preview3d_model import star_program
 
 
@@ -41,12 +41,7 @@ def measured_shot(window, wait, out: Path, speed: float = 20) -> Path:
     """The star run to the end on the simulator: finished path, measured path, largest deviation."""
     if window.loaded is None:
         star_shot(window, wait, out)
-    sd = Path(tempfile.mkdtemp(prefix="cnc-sd-"))
-    window.operator.connect_to(f"sim://?speed={speed:g}&sd={sd}")
-    wait(lambda: window.binder.status is not None, 30)
-    window.operator.home("NORMAL")
-    wait(lambda: window.binder.status.homed and window.binder.status.state == "IDLE", 120)
-    window.operator.start()
+    start_on_simulator(window, wait, speed)
     wait(lambda: window.binder.last_job_event is not None, 300)
     _show_3d(window, wait)
     view = window.preview3d
@@ -56,14 +51,6 @@ def measured_shot(window, wait, out: Path, speed: float = 20) -> Path:
     window.docks["plot"].raise_()
     window.plots.setCurrentWidget(window.diagnostics)
     return _save(window, wait, out / "preview3d-measured.png")
-
-
-def _save(window, wait, path: Path) -> Path:
-    end = time.monotonic() + 0.6  # the view's 30 Hz follow and the settle of full detail
-    wait(lambda: time.monotonic() > end, 5)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    window.grab().save(str(path))
-    return path
 
 
 def test_3d_screenshots(make_window, qtbot, tmp_path):
@@ -89,26 +76,7 @@ def test_3d_screenshots(make_window, qtbot, tmp_path):
 
 
 def main(out: str = "docs/screenshots", language: str = "en") -> int:
-    from app.ui.language import apply_language
-    from app.ui.main import make_app
-    from app.ui.main_window import MainWindow
-    from app.ui.notifier import Notifier
-
-    app = make_app()
-    apply_language(language)
-
-    def wait(predicate, timeout):
-        end = time.monotonic() + timeout
-        while not predicate():
-            if time.monotonic() > end:
-                raise TimeoutError("screenshot step timed out")
-            app.processEvents()
-            time.sleep(0.005)
-
-    config = Path(tempfile.mkdtemp(prefix="cnc-config-"))
-    window = MainWindow(config_dir=config, notifier=Notifier(show_boxes=False), restore=False)
-    window.resize(1600, 1000)
-    window.show()
+    window, wait = shot_window(language)
     work = Path(tempfile.mkdtemp(prefix="cnc-star-"))
     shots = [star_shot(window, wait, work), measured_shot(window, wait, work)]
     target = Path(out)
