@@ -77,6 +77,7 @@ class PathGLView(QOpenGLWidget):
         self._measured_sent = (-1, 0, 0)  # version, rows, capacity on the GPU
         self._level_buffers: list[QOpenGLBuffer] = []
         self._full = FullFrame()
+        self._mesh_serial = 0
         self._refiner = QTimer(self, singleShot=True, interval=0, timeout=self._refine)
         self.direct_segments = SLICE_SEGMENTS  # up to this many, full detail in one frame
         self._gl = None
@@ -90,6 +91,7 @@ class PathGLView(QOpenGLWidget):
 
     def set_mesh(self, mesh: PathMesh | None, fit: bool = True) -> None:
         self.mesh = mesh
+        self._mesh_serial += 1  # (an id() may come back for another mesh)
         self._pending["mesh"] = self._pending["levels"] = True
         if fit:
             self.fit()
@@ -226,7 +228,7 @@ class PathGLView(QOpenGLWidget):
         self._vao["path"].bind()
 
     def _full_key(self):
-        return id(self.mesh), tuple(self.camera.matrix().ravel())
+        return self._mesh_serial, tuple(self.camera.matrix().ravel())
 
     def _draw_full_picture(self, f) -> None:
         """The full picture when it is whole (with the newly finished segments drawn over
