@@ -18,7 +18,7 @@ from PySide6.QtCore import QSize
 from PySide6.QtOpenGL import QOpenGLFramebufferObject
 
 SLICE_SEGMENTS = 250_000  # the first slice; then sized to SLICE_S
-SLICE_S = 0.03  # rendering a slice (the window's stall budget is 50 ms, a frame costs more)
+SLICE_S = 0.02  # rendering a slice (the window's stall budget is 50 ms: room for a renderer that slows)
 MIN_SLICE, MAX_SLICE = 50_000, 4_000_000
 GL_COLOR_BUFFER_BIT, GL_DEPTH_BUFFER_BIT = 0x4000, 0x0100
 

@@ -122,6 +122,6 @@ def _representatives(points, origin, span, ends, cell) -> np.ndarray:
         q = ((np.take(points, vertex, axis=0) - origin) / np.float32(cell)).astype(np.int64)  # (a take
         key = key * _MIX + (q[:, 0] * side + q[:, 1]) * side + q[:, 2]  # lets the GIL go, indexing not)
     order = np.argsort(key, kind="stable")  # (its GIL holds are the shortest; np.unique's are long)
-    ordered = key[order]
+    ordered = np.take(key, order)
     runs = np.flatnonzero(np.concatenate([[True], ordered[1:] != ordered[:-1]]))
-    return ends[np.sort(np.minimum.reduceat(order, runs))]
+    return np.take(ends, np.sort(np.minimum.reduceat(order, runs)))
