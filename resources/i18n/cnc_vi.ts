@@ -871,6 +871,14 @@
         <translation>Kết nối</translation>
     </message>
     <message>
+        <source>2-D view</source>
+        <translation>Hình 2-D</translation>
+    </message>
+    <message>
+        <source>3-D view</source>
+        <translation>Hình 3-D</translation>
+    </message>
+    <message>
         <source>Position</source>
         <translation>Vị trí</translation>
     </message>
@@ -1178,6 +1186,17 @@ Nếu mất kết nối, máy giữ nguyên vị trí; kết nối lại và ch�
     </message>
 </context>
 <context>
+    <name>PathGLView</name>
+    <message>
+        <source>no OpenGL context could be created</source>
+        <translation>không tạo được ngữ cảnh OpenGL</translation>
+    </message>
+    <message>
+        <source>the OpenGL driver has no glDrawElements</source>
+        <translation>trình điều khiển OpenGL không có glDrawElements</translation>
+    </message>
+</context>
+<context>
     <name>PointImportDialog</name>
     <message>
         <source>Import points: %1</source>
@@ -1265,6 +1284,83 @@ Nếu mất kết nối, máy giữ nguyên vị trí; kết nối lại và ch�
     <message>
         <source>Move the work zero or fix the program; in check mode it may be overridden.</source>
         <translation>Hãy dời gốc phôi hoặc sửa chương trình; khi chạy thử có thể bỏ qua kiểm tra này.</translation>
+    </message>
+</context>
+<context>
+    <name>Preview3D</name>
+    <message>
+        <source>the %1 platform cannot show OpenGL widgets</source>
+        <translation>nền tảng %1 không hiển thị được widget OpenGL</translation>
+    </message>
+    <message>
+        <source>no OpenGL context could be created on this display</source>
+        <translation>không tạo được ngữ cảnh OpenGL trên màn hình này</translation>
+    </message>
+    <message>
+        <source>the OpenGL context could not be used</source>
+        <translation>không dùng được ngữ cảnh OpenGL</translation>
+    </message>
+    <message>
+        <source>OpenGL %1.%2 found, 3.3 needed</source>
+        <translation>có OpenGL %1.%2, cần 3.3</translation>
+    </message>
+    <message>
+        <source>Top</source>
+        <translation>Trên</translation>
+    </message>
+    <message>
+        <source>Front</source>
+        <translation>Trước</translation>
+    </message>
+    <message>
+        <source>Side</source>
+        <translation>Cạnh</translation>
+    </message>
+    <message>
+        <source>Isometric</source>
+        <translation>Đẳng cự</translation>
+    </message>
+    <message>
+        <source>Fit</source>
+        <translation>Vừa khung</translation>
+    </message>
+    <message>
+        <source>Largest deviation</source>
+        <translation>Sai lệch lớn nhất</translation>
+    </message>
+    <message>
+        <source>Show where the measured path strayed farthest from the programmed one</source>
+        <translation>Chỉ ra chỗ đường đo được lệch xa nhất khỏi đường đã lập trình</translation>
+    </message>
+    <message>
+        <source>drag: orbit · right drag or Shift+drag: pan · wheel: zoom at the cursor</source>
+        <translation>kéo: xoay quanh · kéo chuột phải hoặc Shift+kéo: dịch · con lăn: phóng to tại con trỏ</translation>
+    </message>
+    <message>
+        <source>The 3-D view starts when it is shown.</source>
+        <translation>Hình 3-D khởi động khi được hiển thị.</translation>
+    </message>
+    <message>
+        <source>The 3-D view cannot start: %1.
+The 2-D view shows the program.</source>
+        <translation>Hình 3-D không khởi động được: %1.
+Hình 2-D hiển thị chương trình.</translation>
+    </message>
+    <message>
+        <source>done</source>
+        <translation>đã xong</translation>
+    </message>
+    <message>
+        <source>measured:</source>
+        <translation>đo được:</translation>
+    </message>
+    <message>
+        <source>no cut measured yet</source>
+        <translation>chưa đo được lần cắt nào</translation>
+    </message>
+    <message>
+        <source>largest deviation %1 mm at X %2 Y %3 Z %4</source>
+        <translation>sai lệch lớn nhất %1 mm tại X %2 Y %3 Z %4</translation>
     </message>
 </context>
 <context>

@@ -26,12 +26,7 @@ def job_shot(window, wait, out: Path, speed: float = 10, fraction: float = 0.45)
     if window.loaded is None:
         window.open_file(SAMPLE)
         wait(lambda: window.loaded is not None, 30)
-    sd = Path(tempfile.mkdtemp(prefix="cnc-sd-"))
-    window.operator.connect_to(f"sim://?speed={speed:g}&sd={sd}")
-    wait(lambda: window.binder.status is not None, 30)
-    window.operator.home("NORMAL")
-    wait(lambda: window.binder.status.homed and window.binder.status.state == "IDLE", 120)
-    window.operator.start()
+    start_on_simulator(window, wait, speed)
     total = len(window.loaded.program.line_map)
     wait(lambda: window.binder.job_done >= fraction * total, 300)
     window.docks["plot"].raise_()
@@ -41,6 +36,16 @@ def job_shot(window, wait, out: Path, speed: float = 10, fraction: float = 0.45)
     shots.append(_save(window, wait, out / "job-diagnostics.png"))
     window.operator.stop()
     return shots
+
+
+def start_on_simulator(window, wait, speed: float) -> None:
+    """Connect to the built-in simulator at ``speed``, home, and start the open program."""
+    sd = Path(tempfile.mkdtemp(prefix="cnc-sd-"))
+    window.operator.connect_to(f"sim://?speed={speed:g}&sd={sd}")
+    wait(lambda: window.binder.status is not None, 30)
+    window.operator.home("NORMAL")
+    wait(lambda: window.binder.status.homed and window.binder.status.state == "IDLE", 120)
+    window.operator.start()
 
 
 def settings_shot(window, wait, out: Path) -> Path:
@@ -60,7 +65,9 @@ def _save(window, wait, path: Path) -> Path:
     return path
 
 
-def main(out: str = "docs/screenshots", language: str = "en") -> int:
+def shot_window(language: str = "en"):
+    """(window, wait): a 1600 x 1000 window in ``language`` with fresh settings, and a wait
+    that runs the event loop until a predicate holds (TimeoutError after its seconds)."""
     from app.ui.language import apply_language
     from app.ui.main import make_app
     from app.ui.main_window import MainWindow
@@ -81,6 +88,11 @@ def main(out: str = "docs/screenshots", language: str = "en") -> int:
     window = MainWindow(config_dir=config, notifier=Notifier(show_boxes=False), restore=False)
     window.resize(1600, 1000)
     window.show()
+    return window, wait
+
+
+def main(out: str = "docs/screenshots", language: str = "en") -> int:
+    window, wait = shot_window(language)
     shots = [preview_shot(window, wait, Path(out)), settings_shot(window, wait, Path(out))]
     shots += job_shot(window, wait, Path(out))
     window.close()
