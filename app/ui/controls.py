@@ -1,5 +1,5 @@
 """Machine controls: homing, job start / pause / resume / stop, spindle, work zero and
-check mode. Emits requests; ``set_state`` enables what makes sense now."""
+check mode. Emits requests; the window's state table (``app/ui/enabler.py``) enables them."""
 
 from __future__ import annotations
 
@@ -58,7 +58,8 @@ class MachineControls(QWidget):
         layout.addWidget(self._zero_box())
         layout.addStretch(1)
         self._rpm_measured: int | None = None
-        self.set_state(connected=False, busy=False, paused=False, has_program=False)
+        for widget in [*self.buttons.values(), *self.jog.buttons.values(), self.check_mode, self.override_travel]:
+            widget.setEnabled(False)  # until the window's state table says otherwise
         self.retranslate_ui()
 
     def retranslate_ui(self) -> None:
@@ -138,20 +139,6 @@ class MachineControls(QWidget):
 
     def _zero(self, axes: str) -> None:
         self.zero_requested.emit(axes)
-
-    def set_state(self, connected: bool, busy: bool, paused: bool, has_program: bool) -> None:
-        """Enable the buttons that make sense: ``busy`` = a job or upload is running."""
-        idle = connected and not busy
-        enable = {
-            "home": idle, "home_recover": idle, "start": idle and has_program,
-            "pause": connected and busy and not paused, "resume": connected and paused,
-            "stop": connected, "spindle_on": idle, "spindle_off": connected,
-        }
-        for key, button in self.buttons.items():
-            button.setEnabled(enable.get(key, idle))
-        self.jog.setEnabled(idle)
-        self.check_mode.setEnabled(idle)
-        self.override_travel.setEnabled(idle and self.check_mode.isChecked())
 
     def set_rpm(self, rpm: int | None) -> None:
         if rpm == self._rpm_measured and self.rpm_label.text():

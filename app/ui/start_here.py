@@ -33,7 +33,7 @@ class StartHere(QObject):
     def ask(self, source_line: int) -> None:
         """Show the confirmation for starting at ``source_line`` (if the program may start)."""
         loaded = self.w.loaded
-        if not self.w.operator.can_start():
+        if not self.w.operator.allowed("start_here") or not self.w.operator.can_start():
             return
         index = device_index_of(loaded.program.line_map.tolist(), source_line)
         if index is None:
@@ -50,6 +50,7 @@ class StartHere(QObject):
         box.addButton(QMessageBox.StandardButton.Cancel)
         box.buttonClicked.connect(self._answered)
         box.open()
+        self.w.binder.refresh_enabled()  # a dialog waits
 
     def _text(self, source_line: int, index: int, total: int) -> str:
         return _fill(self.tr("Start the job at line %1 (device line %2 of %3)?"), source_line, index, total)
@@ -70,7 +71,10 @@ class StartHere(QObject):
 
     def _answered(self, button) -> None:
         index, self.pending = self.pending, None
-        if button is not self.start_button or index is None or not self.w.operator.can_start():
+        self.w.binder.refresh_enabled()
+        if button is not self.start_button or index is None:
+            return
+        if not self.w.operator.allowed("start_here") or not self.w.operator.can_start():
             return
         self.w.binder.begin_job(self.w.loaded, index)
         self.w.link.call("start_job", self.w.loaded.program, index)
