@@ -58,7 +58,8 @@ class MachineControls(QWidget):
         layout.addWidget(self._zero_box())
         layout.addStretch(1)
         self._rpm_measured: int | None = None
-        for widget in [*self.buttons.values(), *self.jog.buttons.values(), self.check_mode, self.override_travel]:
+        widgets = [*self.buttons.values(), *self.jog.buttons.values(), self.check_mode, self.override_travel]
+        for widget in widgets:
             widget.setEnabled(False)  # until the window's state table says otherwise
         self.retranslate_ui()
 

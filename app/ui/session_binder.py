@@ -9,7 +9,6 @@ import time
 from collections import deque
 
 import numpy as np
-
 from PySide6.QtCore import QObject, Qt, QTimer
 
 from app.comm.listener import BUSY_STATES, JOB_STATES, RECOVERY_STATES, SessionState
@@ -250,7 +249,8 @@ class SessionBinder(QObject):
         self._drain_progress()
         self.job, self.sd_job, self._sd_seen = None, name, False
         self.job_done, self.last_job_event = -1, None
-        self.tracker = ProgressTracker(np.arange(1.0, lines + 1.0), lines, time.monotonic()) if lines else None
+        per_line = np.arange(1.0, lines + 1.0)  # no estimate of the file's time: lines count alike
+        self.tracker = ProgressTracker(per_line, lines, time.monotonic()) if lines else None
         self.w.status.clear_progress()
         self._progress_dirty = True
 

@@ -229,7 +229,7 @@ def machine_of(session_state: str, status_state: str | None, flags: str, check_m
         return Machine.RUN_SD
     if pending in PENDING and session_state == "READY" and status_state in ("IDLE", "RUN", pending):
         return PENDING[pending]
-    if session_state in JOB_SESSION_STATES or session_state in RECOVERY_SESSION_STATES or status_state == "RUN":
+    if session_state in JOB_SESSION_STATES | RECOVERY_SESSION_STATES or status_state == "RUN":
         return Machine.RUN_HOST
     if status_state == "HOMING":
         return Machine.HOMING
