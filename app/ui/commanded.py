@@ -37,3 +37,27 @@ def commanded_position(model, executing_seq: int, measured) -> np.ndarray:
     hi = int(np.searchsorted(geometry.move[1:], last, "right")) + 1
     points = geometry.points[lo:hi]
     return nearest_on_polyline(points, p) if len(points) else p
+
+
+class SpindleTrack:
+    """The commanded spindle speed along a job's device lines: where each ``M03 S``/``M05``
+    (or ``M02``/``M30``) line is, found once (lines starting with ``M`` only), then a
+    binary search per question. ``at(seq)`` is the speed in force while line ``seq`` runs."""
+
+    def __init__(self, lines, start_rpm: float = 0.0):
+        from app.comm.modal import ModalState
+
+        self.start_rpm = start_rpm
+        state = ModalState(spindle_rpm=start_rpm or None)
+        seqs, rpms = [], []
+        for seq, line in enumerate(lines):
+            if line.startswith(("M", "m")):  # the dialect's spindle words ride on M lines only
+                state.apply(line)
+                seqs.append(seq)
+                rpms.append(state.spindle_rpm or 0.0)
+        self.seqs = np.asarray(seqs, dtype=np.int64)
+        self.rpms = np.asarray(rpms, dtype=float)
+
+    def at(self, seq: int) -> float:
+        index = int(np.searchsorted(self.seqs, seq, "right")) - 1
+        return float(self.rpms[index]) if index >= 0 else self.start_rpm

@@ -144,6 +144,7 @@ class OperatorActions(QObject):
     def spindle(self, rpm: int) -> None:
         control = "spindle_on" if rpm > 0 else "spindle_off"
         if self._send(control, "send_command", f"SPINDLE {rpm}" if rpm > 0 else "SPINDLE OFF"):
+            self.w.binder.spindle_asked = float(max(rpm, 0))
             self._motion_sent("SPINDLE")
 
     def zero(self, axes: str) -> None:
@@ -200,7 +201,10 @@ class OperatorActions(QObject):
             return
         if line.command is not None:
             self.link.call("send_command", line.command)
-            verb = line.command.split()[0].upper()
+            words = line.command.upper().split()
+            verb = words[0]
+            if verb == "SPINDLE" and len(words) > 1:
+                self.w.binder.spindle_asked = 0.0 if words[1] == "OFF" else float(words[1])
             if verb in ("HOME", "JOG", "SPINDLE"):
                 self._motion_sent(verb)
             return

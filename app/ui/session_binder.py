@@ -14,7 +14,7 @@ from PySide6.QtCore import QObject, Qt, QTimer
 from app.comm.listener import BUSY_STATES, JOB_STATES, RECOVERY_STATES, SessionState
 from app.i18n import localize
 from app.ui.codes import alarm_text, refusal_text
-from app.ui.commanded import commanded_position
+from app.ui.commanded import SpindleTrack, commanded_position
 from app.ui.numbers import decimal
 from app.ui.program.summary import device_count
 from app.ui.progress import ProgressTracker, line_times
@@ -51,6 +51,8 @@ class SessionBinder(QObject):
         self._sd_seen = False  # a status of the SD run has arrived
         self._second = -1  # the whole second of the clock last shown (the timer ticks each second)
         self.pending_motion: str | None = None  # HOME, JOG or SPINDLE sent, its answer not yet in
+        self.spindle_asked: float | None = None  # the speed of the last spindle command (0: off)
+        self.spindle_track: SpindleTrack | None = None  # the running job's commanded speeds
         self.applied: Inputs | None = None  # the state table's inputs last applied
         self._connect(window.link.worker)
         window.loader.loaded.connect(window.operator.program_loaded)
@@ -118,6 +120,7 @@ class SessionBinder(QObject):
 
     def on_disconnected(self, reason: str) -> None:
         self.connected = False
+        self.history.break_line()
         self.pending_motion = None
         self.w.connection.set_connected(False)
         if "operator" in reason or "shut down" in reason:
@@ -135,6 +138,7 @@ class SessionBinder(QObject):
         self.w.connection.set_link(event.state, detail)
         self.w.console.set_resends(0, event.resend_rate, event.quality_warning)
         if event.state == "LOST":
+            self.history.break_line()
             self._alert("silence", event.reason)
         self.refresh_enabled(force=False)
 
@@ -267,6 +271,7 @@ class SessionBinder(QObject):
             return
         program = loaded.program
         count = device_count(program)
+        self.spindle_track = SpindleTrack(program.device_lines)
         self.tracker = ProgressTracker(line_times(program.toolpath, count), count, time.monotonic(), first)
         self.w.preview.set_done(first - 1)
         self._progress_dirty = True
@@ -316,9 +321,10 @@ class SessionBinder(QObject):
         elif result.verb == "SD" and result.args[:1] == ("DEL",) and result.ok:
             self.w.link.call("list_sd")
         if not result.ok and result.code not in ("SUPERSEDED",) and result.verb != "PING":
-            text = f"{result.verb} {' '.join(result.args)}: {result.code} {result.info}".strip()
+            command = " ".join((result.verb, *result.args))
+            text = f"{command}: {result.code} {result.info}".strip()
             self.w.console.add_log("error", text, "machine")
-            shown = f"{result.verb} {' '.join(result.args)}: {refusal_text(result.code, result.info)}"
+            shown = f"{command}: {refusal_text(result.code, result.info)}"
             self.w.status.showMessage(shown, 10000)
             if result.verb in ("HOME", "JOG", "SD", "ZERO", "SPINDLE", "SET"):
                 self.w.notifier.warning(self.tr("Machine refused"), shown)
@@ -334,7 +340,7 @@ class SessionBinder(QObject):
             self.w.status.set_position(s.x, s.y, s.z)
             self.w.preview.set_tool(s.x, s.y)
             self.w.connection.set_machine_state(s.state, s.flags)
-            self.w.controls.set_rpm(s.rpm)
+            self.w.controls.set_rpm(s.rpm, self.commanded_rpm())
         now = time.monotonic()
         if self.tracker is not None and self.tracker.ended is None and int(now) != self._second:
             self._second = int(now)  # the elapsed and remaining time tick every second
@@ -356,6 +362,13 @@ class SessionBinder(QObject):
         self.w.status.set_progress(view, "", (current, self.source_total()))
         self.w.preview.set_done(self.job_done)
         self._show_current_line()
+
+    def commanded_rpm(self) -> float | None:
+        """The speed commanded now: the job's spindle line in force, else the last
+        spindle command sent (None until one was)."""
+        if self.spindle_track is not None and self.state in JOB:
+            return self.spindle_track.at(self.job_done + 1)
+        return self.spindle_asked
 
     def _show_current_line(self) -> None:
         line_map = getattr(self.job.program, "line_map", None)
