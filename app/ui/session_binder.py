@@ -309,8 +309,7 @@ class SessionBinder(QObject):
         nxt = event.refused if event.refused >= 0 else event.done + 1
         if line_map is None or not 0 <= nxt < len(line_map):
             return ""
-        return self.tr(" (at source line %1; %2 device lines ran, see the console)").replace(
-            "%1", str(int(line_map[nxt]))).replace("%2", str(event.done + 1))
+        return self.tr(" (at line %1; the console has the details)").replace("%1", str(int(line_map[nxt])))
 
     def on_command(self, result) -> None:
         if result.verb == self.pending_motion:

@@ -22,12 +22,13 @@ from app.ui.state_table import (
     machine_of,
 )
 
+FRAME = Capabilities()
 GRBL_LIKE = Capabilities(sd_card=False, exact_resume=False, crc_link=False, oled_panel=False, cover=False)
 
 
-def every_input(capabilities=Capabilities()):
-    for link, machine, homed, dialog, program in itertools.product(Link, Machine, (False, True), (False, True),
-                                                                  (False, True)):
+def every_input(capabilities=FRAME):
+    both = (False, True)
+    for link, machine, homed, dialog, program in itertools.product(Link, Machine, both, both, both):
         yield Inputs(link, machine, homed, dialog, program, capabilities)
 
 
@@ -61,7 +62,8 @@ def test_stop_is_always_there_while_the_link_is_up_and_a_dialog_leaves_only_what
                                      Machine.HOLD, Machine.PROGRAM_STOP, Machine.UPLOAD])
 def test_nothing_that_moves_starts_while_the_machine_is_busy(machine):
     inputs = Inputs(Link.UP, machine, homed=True, has_program=True)
-    for control in ("home", "home_recover", "start", "start_here", "jog", "spindle_on", "zero", "sd_run", "mdi"):
+    moving = ("home", "home_recover", "start", "start_here", "jog", "spindle_on", "zero", "sd_run", "mdi")
+    for control in moving:
         verdict = decide(control, inputs)
         assert not verdict.allowed and verdict.reason, (control, machine)
 
@@ -78,7 +80,8 @@ def test_homing_is_needed_for_motion_but_not_for_the_spindle_or_a_jog_off_the_sw
     assert decide("mdi", idle).reason == "home the machine first"
     assert decide("spindle_on", idle).allowed and decide("jog", idle).allowed
     assert decide("start", Inputs(Link.UP, Machine.CHECK_MODE, homed=False, has_program=True)).allowed
-    assert decide("start", Inputs(Link.UP, Machine.IDLE, homed=True)).reason == "open a program that can run first"
+    no_program = Inputs(Link.UP, Machine.IDLE, homed=True)
+    assert decide("start", no_program).reason == "open a program that can run first"
 
 
 def test_a_missing_capability_disables_its_controls_with_a_word_why():

@@ -18,8 +18,8 @@ from tests.ui.untranslated import english_in_vietnamese, placeholders
 
 
 def states(capabilities=None):
-    for link, machine, homed, dialog, program in itertools.product(Link, Machine, (False, True), (False, True),
-                                                                  (False, True)):
+    both = (False, True)
+    for link, machine, homed, dialog, program in itertools.product(Link, Machine, both, both, both):
         inputs = Inputs(link, machine, homed, dialog, program)
         yield inputs if capabilities is None else Inputs(link, machine, homed, dialog, program, capabilities)
 
@@ -33,7 +33,8 @@ def requests(window):
         "jog": lambda: op.jog("X", 1.0, 300.0), "spindle_on": lambda: op.spindle(1000),
         "spindle_off": lambda: op.spindle(0), "zero": lambda: op.zero("XY"),
         "check_mode": lambda: op.set_check_mode(True), "sd_save": lambda: op.upload("a.nc"),
-        "sd_list": w.sd_panel.list_requested.emit, "sd_delete": lambda: w.sd_panel.delete_requested.emit("a.nc"),
+        "sd_list": w.sd_panel.list_requested.emit,
+        "sd_delete": lambda: w.sd_panel.delete_requested.emit("a.nc"),
         "sd_run": lambda: op.run_from_sd("a.nc"), "mdi": lambda: op.mdi("G0 X1"),
         "query": lambda: op.mdi("GET KP_X"),
     }
