@@ -48,6 +48,7 @@ class SessionBinder(QObject):
         self._gui_thread = threading.get_ident()
         self._progress_in: deque = deque()  # progress events from the worker, drained by tick()
         self.sd_job: str | None = None  # the card file the machine runs (its progress comes in S)
+        self.sd_name = ""  # the card file of the last SD run (its figures stay labelled after it)
         self._sd_seen = False  # a status of the SD run has arrived
         self._second = -1  # the whole second of the clock last shown (the timer ticks each second)
         self.pending_motion: str | None = None  # HOME, JOG or SPINDLE sent, its answer not yet in
@@ -251,7 +252,7 @@ class SessionBinder(QObject):
         """The machine runs ``name`` (``lines`` lines, as the card lists it) from its card:
         its own progress, by lines of that file (no estimate of its time is known here)."""
         self._drain_progress()
-        self.job, self.sd_job, self._sd_seen = None, name, False
+        self.job, self.sd_job, self.sd_name, self._sd_seen = None, name, name, False
         self.job_done, self.last_job_event = -1, None
         per_line = np.arange(1.0, lines + 1.0)  # no estimate of the file's time: lines count alike
         self.tracker = ProgressTracker(per_line, lines, time.monotonic()) if lines else None
@@ -262,7 +263,7 @@ class SessionBinder(QObject):
         """Called when the operator starts ``loaded``: fresh progress (None: an MDI line);
         ``first``: the device line a start-from-line run begins at."""
         self._drain_progress()
-        self.job, self.sd_job = loaded, None
+        self.job, self.sd_job, self.sd_name = loaded, None, ""
         self.job_done = first - 1
         self.last_job_event = None
         if loaded is None:
@@ -353,8 +354,8 @@ class SessionBinder(QObject):
 
     def _show_progress(self, now: float) -> None:
         view = self.tracker.view(now)
-        if self.sd_job is not None or self.job is None:
-            label = self.tr("SD %1 · ").replace("%1", self.sd_job) if self.sd_job else ""
+        if self.sd_name or self.job is None:
+            label = self.tr("SD %1 · ").replace("%1", self.sd_name) if self.sd_name else ""
             self.w.status.set_progress(view, label)
             return
         current = self.source_line(min(self.job_done + 1, view.total - 1))
