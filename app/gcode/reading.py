@@ -79,10 +79,7 @@ def read_source(path: str | Path) -> bytes:
 
 
 def read_checked(path: str | Path, max_bytes: int) -> bytes:
-    """The bytes of ``path`` if it is a regular file of at most ``max_bytes``; else SourceError
-    (FileNotFoundError passes through: a file not there yet is no damage)."""
-    if not os.path.lexists(path):
-        raise FileNotFoundError(path)
+    """The bytes of ``path`` if it is a regular file of at most ``max_bytes``; else SourceError."""
     problem = file_problem(path, max_bytes)
     if problem:
         raise SourceError(problem)
@@ -101,7 +98,10 @@ def read_checked(path: str | Path, max_bytes: int) -> bytes:
 
 
 def read_config(path: str | Path, max_bytes: int = CONFIG_MAX_BYTES) -> str:
-    """The UTF-8 text of a settings-like file (``read_checked``, then ``text_problem``)."""
+    """The UTF-8 text of a settings-like file (``read_checked``, then ``text_problem``);
+    FileNotFoundError when there is none (a file not there yet is no damage)."""
+    if not os.path.lexists(path):
+        raise FileNotFoundError(path)
     raw = clean_bytes(read_checked(path, max_bytes))
     problem = text_problem(raw)
     if problem:
