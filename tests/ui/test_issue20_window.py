@@ -195,3 +195,18 @@ def test_sentences_read_as_sentences(window):
 def test_start_here_names_the_tool_in_the_spindle():
     lines = ["M06 T1", "G00 X1", "M00", "M06 T2", "G01 X2 F100", "M06", "G01 X3"]
     assert [tool_before(lines, i) for i in (0, 1, 3, 4, 6)] == [None, 1, 1, 2, 0]
+
+
+def test_all_problems_at_once_even_past_a_line_that_does_not_compile(qtbot, window, tmp_path):
+    """A syntax error no longer hides the unsupported words, lathe codes and travel findings
+    after it, in an expanded program as in a plain one; the Problems list shows them all."""
+    for first in ("#1 = 5\nG21 G90\nG0 X#1 Y10\nG1 X[1 + ] F100\n", "G21 G90\nG0 X5 Y10\nG1 X20 Y$ F100\n"):
+        path = tmp_path / "bad.ngc"
+        path.write_text(first + "G1 Q5 X30\nG7 X40\nG1 X400 Y10 F100\nM2\n")
+        loaded = open_and_wait(qtbot, window, path)
+        program, n = loaded.program, len(first.splitlines())
+        errors = sorted((d.line, str(d.message)) for d in program.errors)
+        assert [line for line, _ in errors] == [n, n + 1, n + 2], errors
+        assert any(d.line == n + 3 and "beyond travel" in str(d.message) for d in program.warnings)
+        listed = window.program_panel.problems.topLevelItemCount()
+        assert listed == len(program.errors) + len(program.warnings)
