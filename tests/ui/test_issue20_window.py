@@ -210,3 +210,13 @@ def test_all_problems_at_once_even_past_a_line_that_does_not_compile(qtbot, wind
         assert any(d.line == n + 3 and "beyond travel" in str(d.message) for d in program.warnings)
         listed = window.program_panel.problems.topLevelItemCount()
         assert listed == len(program.errors) + len(program.warnings)
+
+
+def test_a_point_list_with_a_bad_word_names_its_word(qtbot, window, tmp_path):
+    path = tmp_path / "points.xyz"
+    path.write_text("1 2 3\n4 five 6\n7 8 9\n")
+    window.open_file(path)  # recognised as a point list, not read as G-code
+    dialog = window.import_dialog
+    qtbot.waitUntil(lambda: "five" in dialog.problem.text(), timeout=10_000)
+    assert "line 2, column 3" in dialog.problem.text() and "(y)" in dialog.problem.text()
+    dialog.close()
