@@ -34,15 +34,17 @@ def machine_action(job_running: bool, from_sd: bool, what: str = "silence", last
     carries on) and the last state it reported; only the machine's own report of a
     lost internal link says what it did."""
     said = QCoreApplication.translate("LinkAlert", "Last state seen: %1.").replace("%1", last_state or "—")
+    translate = QCoreApplication.translate
     if from_sd:
-        rule = _t("A job from the SD card carries on without this computer.")
+        rule = translate("LinkAlert", "A job from the SD card carries on without this computer.")
     elif job_running and what == "uart":
-        rule = _t("The main board holds the job: the motion board did not answer it.")
+        rule = translate("LinkAlert", "The main board holds the job: the motion board did not answer it.")
     elif job_running:
-        rule = _t("If the machine is still powered, it holds the job on the path once it has missed this "
-                  "computer for 3 s; it keeps its place unless it was reset.")
+        rule = translate("LinkAlert", "If the machine is still powered, it holds the job on the path once "
+                                      "it has missed this computer for 3 s; it keeps its place unless it "
+                                      "was reset.")
     else:
-        rule = _t("No job was running.")
+        rule = translate("LinkAlert", "No job was running.")
     return f"{rule} {said}"
 
 
