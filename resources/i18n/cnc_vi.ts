@@ -85,6 +85,10 @@
         <source>Cover closed: press Resume to go on</source>
         <translation>Nắp che đã đóng: nhấn Tiếp tục để chạy tiếp</translation>
     </message>
+    <message>
+        <source>Cover closed</source>
+        <translation>Nắp che đã đóng</translation>
+    </message>
 </context>
 <context>
     <name>DiagnosticsView</name>
