@@ -4,7 +4,8 @@ reason it is off, from ``app/ui/state_table.py``, in this one place.
 ``controls_of(window)`` lists the widgets and actions (buttons, menu actions and their
 shortcuts, panel controls) behind each control of the table; ``apply(window, inputs)``
 enables them per ``decide_all`` and appends the translated reason to the tooltip of
-those that are off ("not now: ..."), so the operator reads why.
+those that are off ("not now: ..."), so the operator reads why; the resend counters
+are hidden on a machine without a checked (CRC) link.
 """
 
 from __future__ import annotations
@@ -49,6 +50,7 @@ def controls_of(window) -> dict[str, list]:
 def apply(window, inputs: Inputs) -> dict[str, Verdict]:
     """Enable every control per the table; the reason goes into the tooltip of those off."""
     verdicts = decide_all(inputs)
+    window.console.counters.setVisible(inputs.capabilities.crc_link)  # resends mean nothing without CRC
     for name, targets in controls_of(window).items():
         verdict = verdicts[name]
         reason = reason_text(verdict)

@@ -160,7 +160,8 @@ class SessionBinder(QObject):
 
     def on_resume_offer(self, offer) -> None:
         line, lines = self.source_line(offer.from_seq), self.source_total()
-        self.w.alert.show_offer(offer.same_boot, line, lines)
+        exact = offer.same_boot and self.w.link.capabilities.exact_resume  # else: home, restart at the line
+        self.w.alert.show_offer(exact, line, lines)
         self.refresh_enabled(force=False)
 
     def source_line(self, seq: int) -> int:

@@ -93,6 +93,9 @@ def test_a_machine_without_sd_card_panel_or_cover(walked):
     window, sent = walked
     _walk(window, sent, (s for s in states(GRBL_LIKE) if s.link is Link.UP and s.machine is Machine.IDLE))
     assert "this machine has no SD card" in window.sd_panel.run.toolTip()
+    assert window.console.counters.isHidden()  # no CRC link: no resend figures
+    _walk(window, sent, [Inputs(Link.UP, Machine.IDLE, True)])
+    assert not window.console.counters.isHidden()
 
 
 @pytest.mark.slow
