@@ -273,7 +273,7 @@ class SessionBinder(QObject):
             return
         program = loaded.program
         count = device_count(program)
-        self.spindle_track = SpindleTrack(program.device_lines)
+        self.spindle_track = SpindleTrack(lambda: program.device_lines)
         self.tracker = ProgressTracker(line_times(program.toolpath, count), count, time.monotonic(), first)
         self.w.preview.set_done(first - 1)
         self._progress_dirty = True
