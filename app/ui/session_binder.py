@@ -301,8 +301,23 @@ class SessionBinder(QObject):
         if event.completed:
             self.w.status.showMessage(self.tr("Job finished"), 15000)
         else:
+            why = self._refused_line(event)
+            where = "" if why else self._where_it_stopped(event)
             self.w.notifier.warning(self.tr("Job ended"), self.tr("The job did not complete: %1")
-                                    .replace("%1", localize(event.reason)) + self._where_it_stopped(event))
+                                    .replace("%1", why or localize(event.reason)) + where)
+
+    def _refused_line(self, event) -> str:
+        """A refused line named by its source line with the refusal in words ("" when the
+        job ended otherwise): the session's reason names the machine's line, kept for the
+        console."""
+        args = getattr(event.reason, "args", None)
+        if event.refused < 0 or not isinstance(args, dict) or "code" not in args:
+            return ""
+        text = str(args.get("text", ""))
+        first, _, rest = text.partition(" ")
+        said = refusal_text(args["code"], rest if first.isdigit() else text)
+        line = self.source_line(event.refused)
+        return self.tr("line %1 was refused: %2").replace("%1", str(line)).replace("%2", said)
 
     def _where_it_stopped(self, event) -> str:
         """Which source line the job stopped at (the refused line, else the one after the

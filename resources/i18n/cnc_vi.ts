@@ -1618,6 +1618,10 @@ Nếu mất kết nối, máy giữ nguyên vị trí; kết nối lại và ch�
         <translation>Chương trình chưa chạy hết: %1</translation>
     </message>
     <message>
+        <source>line %1 was refused: %2</source>
+        <translation>dòng %1 bị máy từ chối: %2</translation>
+    </message>
+    <message>
         <source> (at line %1; the console has the details)</source>
         <translation> (tại dòng %1; chi tiết ở cửa sổ lệnh)</translation>
     </message>
