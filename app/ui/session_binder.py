@@ -201,6 +201,12 @@ class SessionBinder(QObject):
         self._dirty = True
         if self.sd_job is not None:
             self._sd_status(event)
+        elif "S" in event.flags and self.state == "READY" and not self._sd_seen:
+            self._sd_seen = True  # a card run started on the machine's own panel: no stale figures
+            self.job, self.tracker, self.sd_name = None, None, ""
+            self.w.status.clear_progress()
+        elif "S" not in event.flags:
+            self._sd_seen = self.sd_job is not None and self._sd_seen
         if self.applied is not None and (event.state, event.flags) != self._status_key:
             self.refresh_enabled(force=False)
         self._status_key = (event.state, event.flags)

@@ -126,3 +126,23 @@ def test_mdi_spindle_before_homing_follows_the_spindle_button(qtbot, connected):
     window.console.mdi.setText("M5")
     window.console.mdi.returnPressed.emit()
     qtbot.waitUntil(lambda: "P" not in _status(window).flags, timeout=60_000)
+
+
+def test_a_card_run_started_on_the_machine_shows_no_stale_figures(qtbot, connected, tmp_path):
+    from app.ui.progress import ProgressView
+
+    window = connected
+    _home(qtbot, window)
+    window.binder.begin_job(None)
+    window.status.set_progress(ProgressView(4, 10, 3.0, 12.0), "", (4, 10))  # an earlier job's figures
+    lines = "".join(f"G01 X{10 + 20 * (i % 2)} F150\n" for i in range(40))
+    (tmp_path / "card" / "panel.nc").write_text(lines)
+    window.link.call("run_from_sd", "panel.nc")  # as the machine's panel starts it: not through the window
+    qtbot.waitUntil(lambda: "S" in _status(window).flags, timeout=60_000)
+    qtbot.waitUntil(lambda: window.status.progress_text.text() == "no job", timeout=10_000)
+    qtbot.waitUntil(lambda: window.controls.buttons["pause"].isEnabled(), timeout=10_000)
+    buttons = window.controls.buttons
+    assert not buttons["start"].isEnabled() and not buttons["home"].isEnabled()
+    window.operator.stop()
+    qtbot.waitUntil(lambda: "S" not in _status(window).flags and _status(window).state == "IDLE",
+                    timeout=60_000)
