@@ -145,3 +145,16 @@ def test_two_writers_and_a_reader_never_see_a_half_or_empty_table(tmp_path):
         assert writer.exitcode == 0  # neither writer failed
     assert not [p.name for p in tmp_path.iterdir() if p.name != "tools.json"]  # no temporary file left
     assert json.loads(path.read_text())["tools"][0]["comment"].startswith("writer")
+
+
+def test_the_cli_reads_point_lists_and_contours_through_the_checked_reader(tmp_path, capsys):
+    from app.gcode.features.cli import main as feature
+    from app.gcode.pointlist.cli import main as import_points
+
+    fifo = tmp_path / "points.xyz"
+    os.mkfifo(fifo)
+    assert import_points([str(fifo)]) == 1  # a FIFO would block here for ever
+    assert "not a regular file" in capsys.readouterr().err
+    args = ["profile", "--contour", "/dev/zero", "--side", "outside", "--tool-diameter", "3", "--depth", "1"]
+    assert feature(args) == 2  # /dev/zero would fill the memory
+    assert "not a regular file" in capsys.readouterr().err
