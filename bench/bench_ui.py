@@ -7,8 +7,13 @@
    preview model and first draw), and the redraw time of pans and zooms. Targets:
    <= 2 s and <= 33 ms. The window is open and its helper process up before Open, as
    when an operator opens a file a few seconds after starting the program.
-
-3. The 3-D view (issue 22; under Xvfb with the xcb platform: ``main`` runs it again
+3. Opening in the window against ``cnc-gcode check`` (issue 20): per file (the samples,
+   a Fanuc macro program, the 1 M-line file) the check's wall time as an operator runs
+   it, and the window's time from Open to the program shown, less the first picture
+   (preview model + first draw, printed apart). Target: window <= 1.3 x check. The
+   window is up before the first file, so the first one also pays for what a window
+   loads on first use.
+4. The 3-D view (issue 22; under Xvfb with the xcb platform: ``main`` runs it again
    that way when this process cannot show an OpenGL widget; ``python -m bench.bench_ui
    3d`` runs it alone): the 1 M-line file's first 3-D frame after its 2-D picture, the
    longest GUI stall while the 3-D model builds, orbiting frames per second at 1600 x
@@ -463,6 +468,56 @@ def _bench_3d_somewhere(config: Path) -> None:
         subprocess.run([*xvfb, *command], cwd=ROOT, env=env, check=False)
     else:
         print(f"3-D view: no OpenGL widget here ({gl_problem()}) and no xvfb-run")
+def macro_file() -> Path:
+    """A Fanuc 21 macro program of a rectangular pocket, written by ``cnc-gcode feature``."""
+    import subprocess
+    import sys
+
+    path = DATA / "pocket_fanuc21.nc"
+    if not path.exists():
+        DATA.mkdir(parents=True, exist_ok=True)
+        args = ["feature", "pocket-rect", "--x", "20", "--y", "20", "--width", "90", "--height", "60",
+                "--tool-diameter", "3", "--depth", "6", "--stepdown", "0.5", "--macro", "fanuc21"]
+        text = subprocess.run([sys.executable, "-m", "app.gcode", *args], capture_output=True, text=True,
+                              check=True, cwd=ROOT).stdout
+        path.write_text(text)
+    return path
+
+
+def _check_time(path: Path) -> float:
+    """Wall seconds of ``cnc-gcode check FILE``, as an operator runs it (a new process)."""
+    import subprocess
+    import sys
+
+    started = time.perf_counter()
+    subprocess.run([sys.executable, "-m", "app.gcode", "check", str(path)], capture_output=True, cwd=ROOT)
+    return time.perf_counter() - started
+
+
+def bench_open_against_check(config: Path, files: list[Path]) -> None:
+    from app.gcode import workers
+
+    app, window = _window(config)
+    workers.warm_up(wait=10)
+    print(f"open in the window against cnc-gcode check (target: window without the first picture <= 1.3 x "
+          f"check); load average {_load()}")
+    for path in files:
+        check = _check_time(path)
+        window.loaded = None
+        started = time.perf_counter()
+        window.open_file(path)
+        _wait(app, lambda: window.loaded is not None, 300)
+        drawn = time.perf_counter()
+        window.preview.plot.viewport().repaint()
+        shown = time.perf_counter() - started
+        loaded = window.loaded
+        picture = loaded.model_s + (started + shown - drawn)  # the preview model and the first draw
+        without = shown - picture
+        lines = len(loaded.program.lines)
+        print(f"  {path.name} ({lines:,} lines): check {check:.2f} s; window {shown:.2f} s, of which the "
+              f"first picture {picture:.2f} s (model {loaded.model_s:.2f} s); without it {without:.2f} s = "
+              f"{without / check:.2f} x check; load average {_load()}")
+    window.close()
 
 
 def main() -> None:
@@ -472,9 +527,11 @@ def main() -> None:
         if sys.argv[1:] == ["3d"]:
             bench_3d(Path(tmp) / "c")
             return
+        samples = sorted((ROOT / "resources" / "samples").glob("*.ngc"))
+        bench_open_against_check(Path(tmp) / "c", [*samples, macro_file(), big_file()])
         bench_big_file(Path(tmp) / "a")
         bench_streaming(Path(tmp) / "b")
-        _bench_3d_somewhere(Path(tmp) / "c")
+        _bench_3d_somewhere(Path(tmp) / "d")
 
 
 if __name__ == "__main__":

@@ -67,7 +67,7 @@ class JobControl(StreamFrames, Recovery):
         self.stream = Stream.job(lines, self.rtt, free, start, pre, boot=self.boot or "",
                                  max_window=self.max_window)
         self._set_state(S.STARTING)
-        self.submit("JOB", len(lines), then=self._job_opened)
+        self.submit("JOB", self.stream.window.total, then=self._job_opened)  # the lines this stream sends
         return True
 
     def upload_to_sd(self, name: str, lines) -> bool:

@@ -99,7 +99,7 @@ class MainWindow(QMainWindow):
         self.preflight = Preflight(self)
         self.start_here = StartHere(self)
         self.actions_by_name = build_menus(self)
-        self.retranslate_ui()
+        self.retranslate_ui()  # applies the state table too
         if restore:
             self.restore_state()
         for problem in (prefs_problem, loaded.problem):
@@ -202,6 +202,7 @@ class MainWindow(QMainWindow):
             from app.ui.menus import retranslate_menus
 
             retranslate_menus(self)
+            self.binder.refresh_enabled()  # the state table's reasons, in the new language
 
     def changeEvent(self, event) -> None:  # noqa: N802 (Qt override)
         if event.type() == QEvent.Type.LanguageChange:

@@ -54,6 +54,13 @@ def legend_entries(model: PreviewModel) -> list[tuple[int, str]]:
     return entries
 
 
+def rectangle_pairs(x0: float, y0: float, x1: float, y1: float) -> tuple[list[float], list[float]]:
+    """The four sides of a rectangle as point pairs (the curves here draw ``connect="pairs"``:
+    a 5-point outline would draw two sides of four)."""
+    xs = [x0, x1, x1, x1, x1, x0, x0, x0]
+    ys = [y0, y0, y0, y1, y1, y1, y1, y0]
+    return xs, ys
+
 class PreviewWidget(QWidget):
     """``show_program(toolpath)``, ``fit()``, ``set_tool(x, y)``, ``set_done(seq)``."""
 
@@ -124,7 +131,7 @@ class PreviewWidget(QWidget):
         """The machine's travel rectangle, drawn in work coordinates (shifted by -offset)."""
         x0, y0 = -offset[0], -offset[1]
         x1, y1 = x0 + travel[0], y0 + travel[1]
-        self.travel_item.setData([x0, x1, x1, x0, x0], [y0, y0, y1, y1, y0])
+        self.travel_item.setData(*rectangle_pairs(x0, y0, x1, y1))
 
     def show_program(self, toolpath, tolerance: float = 0.01) -> None:
         self.show_model(PreviewModel(toolpath, tolerance) if toolpath is not None else None)
@@ -139,7 +146,7 @@ class PreviewWidget(QWidget):
             self._refill_now()
             return
         xmin, xmax, ymin, ymax = model.bounds()
-        self.bounds_item.setData([xmin, xmax, xmax, xmin, xmin], [ymin, ymin, ymax, ymax, ymin])
+        self.bounds_item.setData(*rectangle_pairs(xmin, ymin, xmax, ymax))
         self.fit()
         self._refill_now()
 
