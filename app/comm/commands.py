@@ -87,9 +87,12 @@ class CommandQueue:
             self._next = self.ids()
         return self._next
 
-    def _take_id(self) -> int:
+    def take_id(self) -> int:
+        """The next id of this queue's sequence, for a frame sent outside it (an ``R``)."""
         cid, self._next = self.next_id, None
         return cid
+
+    _take_id = take_id
 
     def submit(self, verb: str, args: tuple[str, ...] = (), urgent: bool = False) -> Command:
         """Queue a command and return its frame (with its id)."""
