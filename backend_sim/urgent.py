@@ -119,4 +119,7 @@ class LegacyCounter:
         return Log(f"ignored {count} real-time byte(s) (use R frames)")
 
     def next_due(self) -> float | None:
-        return self._said_at + LOG_EVERY_S if self._unsaid else None
+        """When the next ``L`` may go (0.0: at once), None while nothing is unsaid."""
+        if not self._unsaid:
+            return None
+        return max(0.0, self._said_at + LOG_EVERY_S)
