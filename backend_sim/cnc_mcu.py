@@ -19,6 +19,7 @@ about the host or the SD card.
 from __future__ import annotations
 
 import random
+from collections import Counter
 from collections.abc import Callable
 from dataclasses import dataclass
 
@@ -71,6 +72,7 @@ class CncMcu:
         self.stops = program_stops.StopSettings()
         self.answers = AnswerCache()
         self.legacy = LegacyCounter()
+        self.taken: Counter = Counter()  # verbs carried out since power-up (``R HOLD`` for R frames)
         self.boot()
 
     # ------------------------------------------------------------------ life cycle
@@ -203,6 +205,7 @@ class CncMcu:
                 self.tx.write(raw, self.clock.now)
             return
         self.answers.start(cmd)
+        self.taken[cmd.verb] += 1
         cnc_commands.dispatch(self, cmd)
 
     def _on_realtime_command(self, frame: RealtimeCommand) -> None:
@@ -212,6 +215,7 @@ class CncMcu:
                 self.tx.write(raw, self.clock.now)
             return
         self.recent.start(frame.id)
+        self.taken[f"R {frame.verb}"] += 1
         cnc_commands.realtime(self, frame)
 
     def _on_data(self, frame: Data) -> None:

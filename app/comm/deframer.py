@@ -8,9 +8,13 @@ taken off it and counted, never a command (docs/protocol.md, "Real-time commands
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 
 from app.comm.frame import LEGACY_BYTES, MAX_FRAME, PARTIAL_TIMEOUT, Frame, FrameError, decode
+
+
+_FRAME_START = re.compile(rb"[A-Z] ")
 
 
 @dataclass
@@ -22,6 +26,7 @@ class DeframerStats:
     overlength: int = 0
     timeouts: int = 0
     legacy: int = 0
+    resynced: int = 0  # frames found at the end of a line that began with noise
 
 
 @dataclass(frozen=True)
@@ -48,6 +53,10 @@ class Deframer:
     ``PARTIAL_TIMEOUT`` seconds is dropped. With ``legacy=True`` (the machine's
     side) a ``!`` or 0x18 that begins a line (nothing of it buffered) is taken off and
     reported as ``Legacy``; anywhere else it is a byte of the line like any other.
+    A line that is no frame is searched for one at its end (``resync``): the longest
+    tail that starts with a kind letter and a space and checks out (CRC and grammar)
+    is taken, so noise glued in front of a frame costs nothing but its own bytes;
+    an over-length line keeps its last 96 bytes for that search.
     """
 
     legacy: bool = False
@@ -76,7 +85,7 @@ class Deframer:
         if b"\r" in line:
             line = line.replace(b"\r", b"")
         if line:
-            out.append(self._classify(line[:MAX_FRAME], len(line) >= MAX_FRAME))
+            out.append(self._classify(line[-MAX_FRAME:], len(line) >= MAX_FRAME))
 
     def poll(self, now: float) -> list[Frame | Dropped | Legacy]:
         """Drop a partial frame that has waited too long for its newline."""
@@ -108,11 +117,10 @@ class Deframer:
             return
         if self._started is None:
             self._started = now
-        if len(self._buf) + len(data) >= MAX_FRAME:
+        self._buf += data
+        if len(self._buf) >= MAX_FRAME:  # keep the tail: a frame may still end it
             self._overlong = True
-            self._buf = self._buf[:MAX_FRAME]
-        else:
-            self._buf += data
+            del self._buf[:-MAX_FRAME]
 
     def _finish(self) -> Frame | Dropped:
         raw, overlong = bytes(self._buf), self._overlong
@@ -120,17 +128,38 @@ class Deframer:
         return self._classify(raw, overlong)
 
     def _classify(self, raw: bytes, overlong: bool) -> Frame | Dropped:
-        """Decode one complete line, counting what is dropped and why."""
+        """Decode one complete line (or a frame at its end), counting what is dropped and why."""
+        reason = "over-length frame"
+        if not overlong:
+            try:
+                frame = decode(raw)
+            except FrameError as exc:
+                reason = str(exc)
+            else:
+                self.stats.frames += 1
+                return frame
+        frame = self._resync(raw)
+        if frame is not None:
+            self.stats.frames += 1
+            self.stats.resynced += 1
+            return frame
         if overlong:
             self.stats.overlength += 1
-            return Dropped("over-length frame", raw)
-        try:
-            frame = decode(raw)
-        except FrameError as exc:
+        else:
             self.stats.bad += 1
-            return Dropped(str(exc), raw)
-        self.stats.frames += 1
-        return frame
+        return Dropped(reason, raw)
+
+    @staticmethod
+    def _resync(raw: bytes) -> Frame | None:
+        """The frame that ends ``raw`` after bytes of noise, if one checks out."""
+        if b"*" not in raw[-6:]:  # no CRC field at the end: nothing to find
+            return None
+        for match in _FRAME_START.finditer(raw, 1):
+            try:
+                return decode(raw[match.start():])
+            except FrameError:
+                continue
+        return None
 
     def _reset(self) -> None:
         self._buf = bytearray()

@@ -25,12 +25,15 @@ def test_deframer_reassembles_any_split(cuts):
     assert out == [f for f, _ in GOLDEN]
 
 
-def test_noise_between_frames_costs_only_the_next_frame():
+def test_noise_in_front_of_a_frame_costs_nothing_but_its_bytes():
     deframer = dfr.Deframer()
-    out = deframer.feed(b"\x00\xff~~" + fr.encode(fr.Ack(1, 3)) + fr.encode(fr.Ack(2, 3)), 0.0)
-    assert isinstance(out[0], dfr.Dropped)
-    assert out[1:] == [fr.Ack(2, 3)]
-    assert deframer.stats.bad == 1
+    out = deframer.feed(b"\x00\xff~~A " + fr.encode(fr.Ack(1, 3)) + fr.encode(fr.Ack(2, 3)), 0.0)
+    assert out == [fr.Ack(1, 3), fr.Ack(2, 3)]
+    assert deframer.stats.resynced == 1 and deframer.stats.bad == 0
+    noise = bytes(range(256)).replace(b"\n", b"")  # over-length: the tail is searched
+    out = deframer.feed(noise + fr.encode(fr.Finished(4)) + b"junk*12\n", 0.0)
+    assert out[0] == fr.Finished(4) and isinstance(out[1], dfr.Dropped)
+    assert deframer.stats.resynced == 2 and deframer.stats.bad == 1
 
 
 def test_machine_side_takes_legacy_bytes_off_the_start_of_a_line_only():
@@ -47,7 +50,7 @@ def test_machine_side_takes_legacy_bytes_off_the_start_of_a_line_only():
 def test_host_side_keeps_legacy_bytes_in_the_line():
     deframer = dfr.Deframer()
     out = deframer.feed(b"!" + fr.encode(fr.Ack(1, 3)), 0.0)
-    assert isinstance(out[0], dfr.Dropped) and deframer.stats.legacy == 0
+    assert out == [fr.Ack(1, 3)] and deframer.stats.legacy == 0 and deframer.stats.resynced == 1
 
 
 def _bit_errors(wire: bytes, count: int):
