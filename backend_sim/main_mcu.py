@@ -23,8 +23,8 @@ Contract:
   ``SimClock.link_now``: wall-clock seconds at any speed factor, so a host needs no
   knowledge of the factor) -> flag ``L``, ``X HOST_LOST``, LED blinks fast, buzzer
   beeps, a host job feed-holds (its own ``R HOLD LINK``; an SD job carries on). The UART hop likewise (it sends
-  the CNC MCU a ``PING`` after every second without sending anything, and every 0.25 s
-  while nothing has come back for a second): ``U``, ``X UART_LOST``; both ends of the
+  the CNC MCU a ``PING`` after 0.25 s without sending anything, and every 0.25 s
+  while nothing has come back for 0.25 s): ``U``, ``X UART_LOST``; both ends of the
   UART are the machine's, so it runs on machine time. Until the host has sent one
   valid frame nothing goes up (as USB CDC with no host reading).
 """
@@ -65,7 +65,7 @@ class LinkState(enum.Enum):
     LOST = "lost"
 
 
-PING_PERIOD_S = 1.0
+PING_PERIOD_S = 0.25  # docs/protocol.md: a lost ping must not make the CNC MCU hold as UART_LOST
 SILENT_PING_S = 0.25
 HOUSEKEEPING_S = 0.1
 

@@ -12,7 +12,7 @@ are the process's sequence (``commands.next_command_id``).
 Everything observable goes to the ``SessionListener`` as frozen events. Streams
 (``stream.py``) use the selective-repeat credit window of ``window.py``; commands
 (``commands.py``) carry one outstanding id retried with the same id; the link
-monitor (``heartbeat.py``) pings every second (also while a command is outstanding)
+monitor (``heartbeat.py``) pings every 0.25 s (also while a command is outstanding)
 and calls the link degraded after 2 s and lost after 3 s of silence; real-time
 commands (``R`` frames, ``realtime.py``) go out twice, then every 10 ms until answered;
 the resend rate of the last minute (``link_health.py``) rides on every ``LinkEvent``

@@ -198,6 +198,11 @@ def hold_latency(seed: int, rate: float, sd_dir) -> float | None:
     return rig.now - clicked
 
 
+def fuzz_job_lines(total: int) -> int:
+    """Lines of a ``zigzag`` job that runs (about 1.4 s a line) while ``total`` bytes come."""
+    return int(total / (BURST_MAX / 2) * BURST_EVERY_S / 1.2) + 20
+
+
 def fuzz_run(total: int, seed: int, sd_dir, job_lines: int = 0) -> FuzzOutcome:
     """Throw ``total`` random bytes in bursts of 1-``BURST_MAX`` onto both downward wires,
     every ``BURST_EVERY_S``, at an idle homed machine (``job_lines`` 0) or while a
@@ -223,7 +228,8 @@ def fuzz_run(total: int, seed: int, sd_dir, job_lines: int = 0) -> FuzzOutcome:
 
     thrown_all = lambda: state["thrown"] >= total  # noqa: E731
     job_over = lambda: bool(rig.tally.jobs) or not lines  # noqa: E731
-    rig.run_until(lambda: thrown_all() and job_over(), total / 100 * BURST_EVERY_S * 3 + 600.0, every=throw)
+    rig.run_until(lambda: thrown_all() and job_over(), total / 100 * BURST_EVERY_S * 2 + 5.0 * len(lines) + 60.0,
+                  every=throw)
     rig.run_until(lambda: False, 1.0)
     pinged = rig.command("PING", timeout=5.0) == ""
     job = rig.tally.jobs[-1] if rig.tally.jobs else None
