@@ -55,7 +55,7 @@ from app.comm.frame import (
 from backend_sim import main_sd
 from backend_sim.answer_cache import AnswerCache
 from backend_sim.outgoing import encode_fit
-from backend_sim.relay import DataRelay
+from backend_sim.relay import DataRelay, Reforward
 from backend_sim.sd_card import SdCard
 from backend_sim.urgent import LegacyCounter, UrgentRelay
 from backend_sim.wire import Wire, to_ms
@@ -73,8 +73,6 @@ class LinkState(enum.Enum):
 
 PING_PERIOD_S = 0.1  # docs/protocol.md: lost pings must not make the CNC MCU hold as UART_LOST
 SILENT_PING_S = 0.1
-REFORWARD_S = 0.05  # a forwarded host command goes down again this often while unanswered,
-REFORWARD_FOR_S = 0.5  # for this long (the CNC MCU deduplicates; the host's retries go on)
 HOUSEKEEPING_S = 0.1
 
 
@@ -115,7 +113,7 @@ class MainMcu:
         self.sd_job = None
         self.own_id = OWN_ID0
         self.own_pending: dict[int, object] = {}
-        self.reforward: tuple[Command, float, float] | None = None  # command, until, last sent
+        self.reforward = Reforward()
         self.notice = "ready"
 
     # ------------------------------------------------------------------ time
@@ -127,7 +125,7 @@ class MainMcu:
         if self.uart_link is LinkState.OK:
             due = min(due, self.last_uart + self.lost_s)
         job_due = self.sd_job.next_due() if self.sd_job is not None else None
-        for other in (job_due, self.urgent.next_due(), self.legacy.next_due(), self._reforward_due(),
+        for other in (job_due, self.urgent.next_due(), self.legacy.next_due(), self.reforward.next_due(self._answered),
                       self.relay.next_due()):
             if other is not None and other < due:
                 due = other
@@ -159,11 +157,9 @@ class MainMcu:
         for raw in self.urgent.due(now):
             self.uart_tx.write_urgent(raw, now)
         self._down_again(self.relay.probe(now))
-        due = self._reforward_due()
-        if due is not None and now >= due - 1e-9:
-            cmd, until, _ = self.reforward
-            self.to_cnc(cmd)
-            self.reforward = (cmd, until, now)
+        again = self.reforward.take(now, self._answered)
+        if again is not None:
+            self.to_cnc(again)
         said = self.legacy.report(now)
         if said is not None:
             self.to_host(said)
@@ -309,18 +305,11 @@ class MainMcu:
         if hook is not None and hook(self, cmd) is False:
             return
         self.to_cnc(cmd)
-        now = self.clock.now
-        self.reforward = (cmd, now + REFORWARD_FOR_S, now)
+        self.reforward.start(cmd, self.clock.now)
 
-    def _reforward_due(self) -> float | None:
-        """When the unanswered forwarded command goes down again (None: it does not)."""
-        if self.reforward is None:
-            return None
-        cmd, until, last = self.reforward
-        if self.answers.id != cmd.id or self.answers.answered or last + REFORWARD_S > until:
-            self.reforward = None
-            return None
-        return last + REFORWARD_S
+    def _answered(self, cmd: Command) -> bool:
+        """``cmd`` is answered, or no longer the remembered command."""
+        return self.answers.id != cmd.id or self.answers.answered
 
     def _before_job(self, cmd: Command) -> bool:
         if self.sd_job is not None or self.upload is not None:

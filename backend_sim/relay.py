@@ -1,4 +1,5 @@
-"""The main MCU's own care of a host stream's ``D`` frames on the UART hop.
+"""The main MCU's own care of the UART hop: a host stream's ``D`` frames (``DataRelay``)
+and forwarded commands (``Reforward``).
 
 docs/protocol.md, machine conventions: the main MCU keeps the ``D`` frames it relayed
 until the CNC MCU acknowledges them (``A``), so the noisier hop is repaired on its
@@ -76,3 +77,35 @@ class DataRelay:
         if gap:
             self.gap_named_at = now
         return [self.last_ack] + ([Nak(self.acked + 1)] if gap else [])
+
+
+REFORWARD_S = 0.05
+REFORWARD_FOR_S = 0.5
+
+
+class Reforward:
+    """A forwarded host command sent down again every ``REFORWARD_S`` while the CNC MCU
+    has not answered it, for ``REFORWARD_FOR_S`` (the CNC MCU deduplicates by id; the
+    host's own retries go on after that)."""
+
+    def __init__(self) -> None:
+        self.command = None
+        self._until = self._last = 0.0
+
+    def start(self, command, now: float) -> None:
+        self.command, self._until, self._last = command, now + REFORWARD_FOR_S, now
+
+    def next_due(self, answered) -> float | None:
+        """When it goes again (None: it does not); ``answered(command)`` ends it."""
+        if self.command is None or answered(self.command) or self._last + REFORWARD_S > self._until:
+            self.command = None
+            return None
+        return self._last + REFORWARD_S
+
+    def take(self, now: float, answered):
+        """The command to send again at ``now``, if due."""
+        due = self.next_due(answered)
+        if due is None or now < due - 1e-9:
+            return None
+        self._last = now
+        return self.command
