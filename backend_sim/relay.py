@@ -31,7 +31,7 @@ class DataRelay:
 
     def reset(self) -> None:
         """A new stream (``JOB``, ``RESUME FROM``): nothing kept, nothing acknowledged."""
-        self.kept: dict[int, list] = {}  # seq -> [raw, last sent]
+        self.kept: dict[int, list] = {}  # seq -> [raw, last resent by the main MCU]
         self.acked = -1
         self.last_ack: Ack | None = None
         self.progress_at = 0.0
@@ -40,7 +40,7 @@ class DataRelay:
     def relayed(self, seq: int, raw: bytes, now: float) -> None:
         if not self.kept:
             self.progress_at = now
-        self.kept[seq] = [raw, now]
+        self.kept[seq] = [raw, float("-inf")]
 
     def on_ack(self, ack: Ack, now: float) -> None:
         self.last_ack = ack
