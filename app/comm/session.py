@@ -45,7 +45,7 @@ from app.comm.events import (
     StatusEvent,
 )
 from app.comm.heartbeat import LinkMonitor, LinkState
-from app.comm.holds import HoldWatch
+from app.comm.holds import HoldWatch, source_words
 from app.comm.jobs import UNKNOWN_BOOT, JobControl
 from app.comm.link_health import ResendMeter
 from app.comm.listener import JOB_STATES, SENDING_STATES, TRANSITIONS, SessionListener, SessionState
@@ -282,7 +282,7 @@ class Session(JobControl):
         if hold.why and not hold.asked:
             template = ("the machine holds ({source}): {reason}" if hold.state == "HOLD"
                         else "the machine stopped ({source}): {reason}")
-            self._log("warning", msg(template, source=hold.source, reason=hold.text))
+            self._log("warning", msg(template, source=source_words(hold.source), reason=hold.text))
         self.listener.on_hold(hold)
 
     # ------------------------------------------------------------------ link

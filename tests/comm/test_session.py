@@ -225,7 +225,7 @@ def test_a_hold_the_host_did_not_ask_for_is_reported_with_its_reason():
     hold = h.rec.last("on_hold")
     assert (hold.why, hold.source, hold.asked) == ("LINK", "link", False)
     assert "lost the link" in hold.text
-    assert any("the machine holds (link)" in e.text for e in h.rec.of("on_log"))
+    assert any("the machine holds (the link)" in e.text for e in h.rec.of("on_log"))
     h.reply(fr.Status(BOOT, "HOLD", 0, 0, 10, 7, 2, 8, 0, "HL", "LINK"))
     assert len(h.rec.of("on_hold")) == 1  # once per cause
     h.reply(Harness.status("RUN", acc=7, done=3))
