@@ -27,9 +27,10 @@ Contract:
 - heartbeat: 3 s without a valid host frame while connected (in link time,
   ``SimClock.link_now``: wall-clock seconds at any speed factor, so a host needs no
   knowledge of the factor) -> flag ``L``, ``X HOST_LOST``, LED blinks fast, buzzer
-  beeps, a host job feed-holds (its own ``R HOLD LINK``; an SD job carries on). The UART hop likewise (it sends
-  the CNC MCU a ``PING`` after 0.1 s without sending anything, and every 0.1 s
-  while nothing has come back for 0.1 s): ``U``, ``X UART_LOST``; both ends of the
+  beeps, a host job feed-holds (its own ``R HOLD LINK``; an SD job carries on). The
+  UART hop likewise (it sends the CNC MCU a ``PING`` after 0.1 s without sending
+  anything, and every 0.1 s while nothing has come back for 0.1 s): ``U``,
+  ``X UART_LOST``; both ends of the
   UART are the machine's, so it runs on machine time. Until the host has sent one
   valid frame nothing goes up (as USB CDC with no host reading).
 """
@@ -125,8 +126,9 @@ class MainMcu:
         if self.uart_link is LinkState.OK:
             due = min(due, self.last_uart + self.lost_s)
         job_due = self.sd_job.next_due() if self.sd_job is not None else None
-        for other in (job_due, self.urgent.next_due(), self.legacy.next_due(), self.reforward.next_due(self._answered),
-                      self.relay.next_due()):
+        others = (job_due, self.urgent.next_due(), self.legacy.next_due(),
+                  self.reforward.next_due(self._answered), self.relay.next_due())
+        for other in others:
             if other is not None and other < due:
                 due = other
         due_ms = to_ms(due)

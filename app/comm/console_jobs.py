@@ -24,7 +24,6 @@ from app.comm.console_client import ConsoleClient, ConsoleError, load_lines, loa
 from app.comm.listener import SessionState
 from app.comm.modal import device_index_of, restart_preamble
 
-
 HELD_EXIT = 4
 """Exit status of ``run`` when ``--at-stops stop`` ended a job the machine held on its own."""
 
@@ -91,8 +90,8 @@ class JobCommands(ConsoleClient):
         held = None
         self.printer.holds.clear()
         while not ended():
-            self.wait(lambda: ended() or bool(self.printer.stops or self.printer.holds), what="the job to end",
-                      through_loss=True)
+            asked = lambda: ended() or bool(self.printer.stops or self.printer.holds)  # noqa: E731
+            self.wait(asked, what="the job to end", through_loss=True)
             if self.printer.stops:
                 self.answer_stop(self.printer.stops.pop(0))
             if self.printer.holds:
