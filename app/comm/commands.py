@@ -32,10 +32,10 @@ from app.comm.frame import Command, Error, Info, Ok
 
 RETRY_S = 0.25
 MAX_RETRY_S = RETRY_S
-DEFAULT_DEADLINE = 4.0
+DEFAULT_DEADLINE = 10.0  # at 3 % bad bytes a try crosses both ways one time in four: 40 tries
 DEADLINES = {
     "HOME": 240.0, "JOG": 600.0, "PAUSE": 120.0, "STOP": 60.0, "SD": 60.0,
-    "RESET": 10.0, "RESUME": 10.0, "JOB": 6.0,
+    "RESET": 10.0, "RESUME": 10.0, "JOB": 10.0,
 }
 STATUS_VERBS = frozenset({"PING", "STATUS"})
 ID_START_MAX = 1_000_000  # ids from 1,000,000,000 are the main MCU's own (docs/protocol.md)
