@@ -21,12 +21,17 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .estimate_passes import (entry_speeds_sq, helix_tangents, junction_speeds, line_tangents,
+from .estimate_passes import (entry_speeds_sq, helix_tangents, junction_speeds, line_tangents, queue_horizons,
                               reached_speeds_sq, trapezoid_times)
 from .estimate_spindle import spin_wait_ms
 from .ops import ARC_CCW, ARC_CW, DWELL, RAPID
 
 QUEUE_BLOCKS = 16  # the CNC MCU's motion queue (MotionController capacity)
+HORIZON_ROUNDS = 6
+# The simulated CNC MCU reports finished blocks when it services its link (at the latest
+# every 50 ms motion chunk) and the next line then crosses the UART: the queue is refilled
+# this late on average, measured on the simulator (tests/gcode/test_estimate.py).
+REFILL_S = 0.025
 ZERO_MM = 1e-6  # the planner's zero-length move: transparent, no stop
 
 
@@ -76,8 +81,7 @@ def estimate(toolpath, device_lines, profile) -> Estimate:
     chain_len = np.zeros(len(order))
     chain_len[is_move] = length[item[is_move]]
     junction_sq = _junctions_sq(is_move, item, v_nom, start_dir, end_dir, accel, mo.junction_deviation_mm)
-    entry = entry_speeds_sq(chain_len, junction_sq, accel, QUEUE_BLOCKS - 1)
-    reached = np.sqrt(reached_speeds_sq(chain_len, entry, accel))
+    reached = _planned_speeds(chain_len, junction_sq, accel, window_s)
     v_out = np.append(reached[1:], 0.0)
     times = trapezoid_times(chain_len[is_move], reached[is_move], v_out[is_move], v_nom[item[is_move]], accel)
     # the S-curve settles for its window where the path stops before a barrier
@@ -101,6 +105,23 @@ def estimate(toolpath, device_lines, profile) -> Estimate:
         dwell=spent["dwell"], spin_up=spent["spindle"], stops=len(stops),
         tool_changes=sum(1 for b in stops if _is_tool_change(device_lines[b.line])),
         stop_seconds=stop_settle + sum(b.stop_ms for b in stops) / 1000.0)
+
+
+def _planned_speeds(length, junction_sq, accel: float, window_s: float) -> np.ndarray:
+    """Speed at each block's entry. The look-ahead depends on the speed (``queue_horizons``)
+    and the speed on the look-ahead: the passes run a few rounds from the full queue, each
+    round moving the horizon half way to what the last speeds imply (undamped, it swings)."""
+    trail_s = (window_s - 0.001) / 2.0 + REFILL_S  # a moving average of n ms trails by (n - 1) / 2 ms
+    horizon, queue_end = np.full(len(length), QUEUE_BLOCKS - 1), None
+    for _ in range(HORIZON_ROUNDS):
+        entry = entry_speeds_sq(length, junction_sq, accel, horizon, queue_end)
+        reached = np.sqrt(reached_speeds_sq(length, entry, accel))
+        implied, end = queue_horizons(length, reached, trail_s, QUEUE_BLOCKS)
+        if queue_end is not None and np.array_equal(implied, horizon) and np.allclose(end, queue_end):
+            break
+        horizon = (horizon + implied + 1) // 2
+        queue_end = end if queue_end is None else (queue_end + end) / 2.0
+    return reached
 
 
 def _chain(move_lines: np.ndarray, barrier_lines: list[int]):

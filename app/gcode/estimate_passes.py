@@ -11,7 +11,6 @@ a block is the fastest from which the path can still stop by the end of that hor
 from __future__ import annotations
 
 import numpy as np
-from numpy.lib.stride_tricks import sliding_window_view
 
 STRAIGHT = 0.999999  # the planner's cosine beyond which a corner is straight on / a reversal
 
@@ -43,22 +42,32 @@ def junction_speeds(end_dir: np.ndarray, start_dir: np.ndarray, accel: float, de
     return np.where(cos_theta > STRAIGHT, 0.0, v)
 
 
-def entry_speeds_sq(length: np.ndarray, junction_sq: np.ndarray, accel: float, horizon: int) -> np.ndarray:
+def entry_speeds_sq(length: np.ndarray, junction_sq: np.ndarray, accel: float, horizon,
+                    queue_end: np.ndarray | None = None) -> np.ndarray:
     """Squared entry speed of each block as the planner's backward pass gives it while the
-    previous block runs with ``horizon`` blocks queued after it (the last of them stops).
+    previous block runs with ``horizon`` blocks (an int, or one per block) queued from this
+    one on, the last of them stopping.
 
     With S the path length before each block, the backward recursion ``e[k]^2 =
     min(vj[k]^2, e[k+1]^2 + 2 a L[k])`` unrolls to ``min over j in [k, k+h) of (vj[j]^2 +
-    2a S[j]) - 2a S[k]``, the queue's end adding ``2a S[k+h]``: a sliding minimum."""
+    2a S[j]) - 2a S[k]``, the queue's end adding ``2a S[k+h]`` (or ``2a queue_end[k]``
+    when given, a path position within the last block): a sliding minimum, grown one
+    block at a time up to the largest horizon."""
     n = len(length)
     two_a = 2.0 * accel
     s = np.concatenate(([0.0], np.cumsum(length)))  # s[k]: path before block k
-    q = junction_sq + two_a * s[:n]
-    h = max(1, int(horizon))
-    padded = np.concatenate((q, np.full(h - 1, np.inf)))
-    window_min = sliding_window_view(padded, h).min(axis=1) if h > 1 else q
-    tail = two_a * s[np.minimum(np.arange(n) + h, n)]
-    return np.maximum(np.minimum(window_min, tail) - two_a * s[:n], 0.0)
+    q = np.concatenate((junction_sq + two_a * s[:n], [np.inf]))
+    h_of = np.clip(np.broadcast_to(np.asarray(horizon, dtype=np.int64), (n,)), 1, None)
+    index = np.arange(n)
+    window_min = np.full(n, np.inf)
+    out = np.empty(n)
+    for h in range(1, int(h_of.max(initial=1)) + 1):
+        np.minimum(window_min, q[np.minimum(index + h - 1, n)], out=window_min)
+        here = h_of == h if h < h_of.max() else h_of >= h
+        out[here] = np.minimum(window_min[here], two_a * s[np.minimum(index[here] + h, n)])
+    if queue_end is not None:
+        np.minimum(out, two_a * queue_end, out=out)
+    return np.maximum(out - two_a * s[:n], 0.0)
 
 
 def reached_speeds_sq(length: np.ndarray, entry_sq: np.ndarray, accel: float) -> np.ndarray:
@@ -83,3 +92,22 @@ def trapezoid_times(length, v_in, v_out, v_nom, accel: float) -> np.ndarray:
     with np.errstate(divide="ignore", invalid="ignore"):
         cruise = np.where(peak > 0, np.maximum(cruise_mm, 0.0) / peak, 0.0)
     return np.where(length > 0, ramps + cruise, 0.0)
+
+
+def queue_horizons(length: np.ndarray, speed: np.ndarray, trail_s: float, capacity: int):
+    """Where the look-ahead ends when the path enters each block at ``speed``: the queue
+    holds ``capacity`` blocks from the one the machine last reported finished, which trails
+    the path by ``speed * trail_s`` mm (the S-curve's moving average, the refill), so every
+    block it trails by takes a place from the look-ahead. Returns the blocks queued from
+    each block on (int) and, the trailing point taken within its block, the path position
+    (mm) where the queue ends."""
+    n = len(length)
+    s = np.concatenate(([0.0], np.cumsum(length)))
+    trail = s[:n] - speed * trail_s
+    head = np.minimum(np.searchsorted(s[1:], trail, side="right"), max(n - 1, 0))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        frac = np.clip(np.where(length[head] > 0, (trail - s[head]) / length[head], 0.0), 0.0, 1.0)
+    end = np.minimum(head + frac + capacity, n)
+    whole = np.floor(end).astype(np.int64)
+    queue_end = s[whole] + (end - whole) * np.append(length, 0.0)[whole]
+    return np.clip(whole - np.arange(n), 1, capacity - 1), queue_end
