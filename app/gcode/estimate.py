@@ -112,13 +112,14 @@ def _planned_speeds(length, junction_sq, accel: float, window_s: float) -> np.nd
     and the speed on the look-ahead: the passes run a few rounds from the full queue, each
     round moving the horizon half way to what the last speeds imply (undamped, it swings)."""
     trail_s = (window_s - 0.001) / 2.0 + REFILL_S  # a moving average of n ms trails by (n - 1) / 2 ms
-    horizon, queue_end = np.full(len(length), QUEUE_BLOCKS - 1), None
+    horizon, queue_end, before = QUEUE_BLOCKS - 1, None, None
     for _ in range(HORIZON_ROUNDS):
         entry = entry_speeds_sq(length, junction_sq, accel, horizon, queue_end)
         reached = np.sqrt(reached_speeds_sq(length, entry, accel))
+        if before is not None and np.allclose(reached, before, rtol=1e-4, atol=1e-6):
+            break  # the look-ahead no longer changes the speeds
+        before = reached
         implied, end = queue_horizons(length, reached, trail_s, QUEUE_BLOCKS)
-        if queue_end is not None and np.array_equal(implied, horizon) and np.allclose(end, queue_end):
-            break
         horizon = (horizon + implied + 1) // 2
         queue_end = end if queue_end is None else (queue_end + end) / 2.0
     return reached

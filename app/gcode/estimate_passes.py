@@ -56,15 +56,19 @@ def entry_speeds_sq(length: np.ndarray, junction_sq: np.ndarray, accel: float, h
     n = len(length)
     two_a = 2.0 * accel
     s = np.concatenate(([0.0], np.cumsum(length)))  # s[k]: path before block k
-    q = np.concatenate((junction_sq + two_a * s[:n], [np.inf]))
-    h_of = np.clip(np.broadcast_to(np.asarray(horizon, dtype=np.int64), (n,)), 1, None)
-    index = np.arange(n)
-    window_min = np.full(n, np.inf)
+    q = junction_sq + two_a * s[:n]
+    h_of = np.clip(np.broadcast_to(np.asarray(horizon, dtype=np.int64), (n,)), 1, max(n, 1))
+    top = int(h_of.max(initial=1))
+    by_h = np.argsort(h_of, kind="stable")
+    bounds = np.searchsorted(h_of[by_h], np.arange(1, top + 2))
+    window_min = q.copy()  # min of q[k .. k+h-1] (blocks past the end: none)
     out = np.empty(n)
-    for h in range(1, int(h_of.max(initial=1)) + 1):
-        np.minimum(window_min, q[np.minimum(index + h - 1, n)], out=window_min)
-        here = h_of == h if h < h_of.max() else h_of >= h
-        out[here] = np.minimum(window_min[here], two_a * s[np.minimum(index[here] + h, n)])
+    for h in range(1, top + 1):
+        if h > 1:
+            np.minimum(window_min[: n - h + 1], q[h - 1:], out=window_min[: n - h + 1])
+        group = by_h[bounds[h - 1]:bounds[h]]
+        if len(group):
+            out[group] = np.minimum(window_min[group], two_a * s[np.minimum(group + h, n)])
     if queue_end is not None:
         np.minimum(out, two_a * queue_end, out=out)
     return np.maximum(out - two_a * s[:n], 0.0)
