@@ -40,6 +40,7 @@ class Estimate:
     """See the module docstring; seconds throughout."""
 
     line_seconds: np.ndarray  # per device line, stops excluded
+    row_seconds: np.ndarray  # per toolpath row (a barrier's wait on the row before it)
     motion: float
     dwell: float
     spin_up: float
@@ -86,21 +87,26 @@ def estimate(toolpath, device_lines, profile) -> Estimate:
     times = trapezoid_times(chain_len[is_move], reached[is_move], v_out[is_move], v_nom[item[is_move]], accel)
     # the S-curve settles for its window where the path stops before a barrier
     settles = np.flatnonzero(~is_move[1:] & is_move[:-1]) + 1
-    line_seconds = np.bincount(toolpath.device_index[moves][item[is_move]], weights=times,
-                               minlength=len(device_lines)).astype(float)
+    row_seconds = np.zeros(len(toolpath))
+    row_seconds[moves[item[is_move]]] = times
+    waits = np.zeros(len(barriers))  # seconds each barrier holds the path (stops: 0)
+    np.add.at(waits, item[settles], window_s)
     spent = {"dwell": 0.0, "spindle": 0.0, "stop": 0.0}
-    settle_lines = [barriers[item[k]].line for k in settles]
-    np.add.at(line_seconds, settle_lines, window_s)
-    for b in barriers:
+    for k, b in enumerate(barriers):
         if b.kind in spent:
             spent[b.kind] += b.ms / 1000.0
-        if b.kind != "stop":
-            line_seconds[b.line] += b.ms / 1000.0
+        waits[k] = 0.0 if b.kind == "stop" else waits[k] + b.ms / 1000.0
     stop_settle = sum(window_s for k in settles if barriers[item[k]].kind == "stop")
-    line_seconds[[b.line for b in barriers if b.kind == "stop"]] = 0.0
+    lines = np.array([b.line for b in barriers], dtype=np.int64)
+    rows = np.clip(np.searchsorted(toolpath.device_index, lines, side="right") - 1, 0, max(len(toolpath) - 1, 0))
+    if len(toolpath):
+        np.add.at(row_seconds, rows, waits)  # a dwell row is its own line's row
+    line_seconds = np.bincount(toolpath.device_index[moves][item[is_move]], weights=times,
+                               minlength=len(device_lines)).astype(float)
+    np.add.at(line_seconds, lines, waits)
     stops = [b for b in barriers if b.kind == "stop"]
     return Estimate(
-        line_seconds=line_seconds[: len(device_lines)],
+        line_seconds=line_seconds[: len(device_lines)], row_seconds=row_seconds,
         motion=float(times.sum()) + window_s * len(settles) - stop_settle,
         dwell=spent["dwell"], spin_up=spent["spindle"], stops=len(stops),
         tool_changes=sum(1 for b in stops if _is_tool_change(device_lines[b.line])),

@@ -100,6 +100,7 @@ def test_the_estimate_agrees_with_the_simulated_machine(name):
     assert est.stops == 0 and est.stop_seconds == 0.0
     assert est.total == pytest.approx(real, rel=0.02)
     assert est.line_seconds.sum() == pytest.approx(est.total)
+    assert est.row_seconds.sum() == pytest.approx(est.total)
     assert est.remaining(len(program.device_lines)) == pytest.approx(0.0, abs=1e-9)
 
 
@@ -115,3 +116,21 @@ def test_a_tool_change_is_excluded_and_reported_apart():
     assert est.total < real - 1.0
     stop_line = next(k for k, text in enumerate(program.device_lines) if text.startswith("M06"))
     assert est.line_seconds[stop_line] == 0.0
+
+
+def test_the_queue_trails_the_path_by_the_moving_average():
+    from app.gcode.estimate_passes import queue_horizons
+
+    length = np.full(50, 0.1)
+    still, queue_end = queue_horizons(length, np.zeros(50), 0.05, 16)
+    assert still[10] == 15  # at most the queue less the block running
+    moving, queue_end = queue_horizons(length, np.full(50, 10.0), 0.05, 16)  # trails 0.5 mm: 5 blocks
+    assert moving[10] == 11 and queue_end[10] == pytest.approx(0.1 * 21)  # blocks 5..20 queued
+    assert queue_horizons(length, np.full(50, 100.0), 0.05, 16)[0].min() == 1  # never below one
+
+
+def test_the_queue_end_caps_the_entry_speed():
+    length = np.full(20, 1.0)
+    straight = np.full(20, np.inf)
+    capped = entry_speeds_sq(length, straight, A, 15, queue_end=np.arange(20) + 2.5)
+    assert capped[5] == pytest.approx(2 * A * 2.5)  # can stop 2.5 mm after block 5's start
