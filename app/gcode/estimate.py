@@ -183,18 +183,15 @@ def _barriers(tp, device_lines, profile) -> list[_Barrier]:
     """The non-motion device lines in order, each with how long it holds the path."""
     taken = np.zeros(len(device_lines), bool)
     taken[tp.device_index[tp.kind != DWELL]] = True
-    dwell_rows = np.flatnonzero(tp.kind == DWELL)
-    dwell_ms = dict(zip(tp.device_index[dwell_rows].tolist(), np.round(tp.time[dwell_rows] * 1000).tolist()))
     out: list[_Barrier] = []
     rpm = 0.0
     z_at = _z_before(tp, len(device_lines), profile)
     for line in np.flatnonzero(~taken).tolist():
-        if line in dwell_ms:
-            out.append(_Barrier(line, "dwell", dwell_ms[line]))
-            continue
         text = device_lines[line]
         code = text.split(" ", 1)[0]
-        if code in ("M03", "M3", "M04", "M4", "M05", "M5"):
+        if code in ("G04", "G4"):
+            out.append(_Barrier(line, "dwell", float(round(max(_word(text, "P", 0.0), 0.0) * 1000))))
+        elif code in ("M03", "M3", "M04", "M4", "M05", "M5"):
             new = _word(text, "S", rpm) if code[-1] != "5" else 0.0
             out.append(_Barrier(line, "spindle", spin_wait_ms(profile, rpm, new) - 1.0))
             rpm = new
