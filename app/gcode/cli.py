@@ -40,6 +40,7 @@ def _summary(p: Program) -> str:
     """The ``check`` report in the language of LANG / LC_MESSAGES (``app.i18n``)."""
     tp = p.toolpath
     low, high = tp.bounds
+    p.planned  # noqa: B018 (the planner's time becomes the toolpath's)
     minutes, seconds = divmod(tp.estimated_time, 60)
     bounds = "  ".join(f"{a} {localize(msg('{lo:.3f}..{hi:.3f}', lo=float(lo), hi=float(hi)))}"
                        for a, lo, hi in zip("XYZ", low, high, strict=True))

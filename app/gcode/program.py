@@ -32,6 +32,7 @@ from .reading import SourceError, clean_bytes, clean_text, read_source, text_pro
 from .render import render
 from .source import Lines
 from .state import State
+from .estimate import Estimate, estimate
 from .toolpath import Toolpath, build
 
 TRIM_BYTES = 8 << 20  # after the scan of a file this big, free heap pages go back to the system
@@ -108,6 +109,15 @@ class Program:
     def moves_per_line(self) -> np.ndarray:
         """Number of moves each 1-based line of the main program produced (index 0 unused)."""
         return np.bincount(self.toolpath.source_line, minlength=len(self.lines) + 1)
+
+    @cached_property
+    def planned(self) -> Estimate:
+        """The machine planner's time (``estimate.py``; about 0.5 s for a million lines, so
+        in the background). From then on the toolpath's ``time``, and with it
+        ``estimated_time`` and the progress per line, are the planner's figures."""
+        est = estimate(self.toolpath, self.device_lines, self.profile)
+        self.toolpath.time = est.row_seconds
+        return est
 
     @cached_property
     def moves(self) -> list[dict]:
