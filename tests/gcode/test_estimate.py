@@ -134,3 +134,14 @@ def test_the_queue_end_caps_the_entry_speed():
     straight = np.full(20, np.inf)
     capped = entry_speeds_sq(length, straight, A, 15, queue_end=np.arange(20) + 2.5)
     assert capped[5] == pytest.approx(2 * A * 2.5)  # can stop 2.5 mm after block 5's start
+
+
+def test_the_programs_planned_time_becomes_its_toolpaths():
+    program = load_text(PROGRAMS["dwell and spindle"])
+    before = program.toolpath.estimated_time
+    planned = program.planned
+    assert program.toolpath.estimated_time == pytest.approx(planned.total) != pytest.approx(before)
+    per_line = np.bincount(program.toolpath.device_index, weights=program.toolpath.time,
+                           minlength=program.device_count)
+    assert per_line.sum() == pytest.approx(planned.line_seconds.sum())
+    assert planned.remaining(3) == pytest.approx(planned.total - planned.line_seconds[:3].sum())
