@@ -26,8 +26,9 @@ PREFIX_LINES = 20_000
 BIG_LINES = 1_000_000
 
 
-def real_seconds(lines: list[str], profile=None, timeout_s: float = 36000.0) -> float:
-    """Simulated seconds from the job's first move until its last line has finished."""
+def real_run(lines: list[str], profile=None, timeout_s: float = 36000.0) -> tuple[float, tuple]:
+    """Simulated seconds from the job's first move until its last line has finished, and
+    where the job started (work mm: the homed position less the work offset)."""
     with tempfile.TemporaryDirectory() as sd:
         (Path(sd) / "job.nc").write_text("\n".join(lines) + "\n", encoding="ascii")
         sim = Simulator(profile=profile, sd_dir=sd, seed=1)
@@ -35,6 +36,8 @@ def real_seconds(lines: list[str], profile=None, timeout_s: float = 36000.0) -> 
         sim.host_port.write(seal("C 1 HOME"))
         if not sim.run_until(lambda: mc.homed and mc.state == "IDLE", 300):
             raise RuntimeError("the simulator did not home")
+        offset = sim.cnc.offset
+        start = tuple(p - o for p, o in zip(mc.planner.pos, offset, strict=True))
         sim.host_port.write(seal("C 2 SD RUN job.nc"))
         if not sim.run_until(lambda: mc.state == "RUN", 10):
             raise RuntimeError("the job did not start")
@@ -45,7 +48,7 @@ def real_seconds(lines: list[str], profile=None, timeout_s: float = 36000.0) -> 
                 raise RuntimeError(f"not done after {timeout_s} simulated s")
             if mc.waiting is not None:
                 mc.resume()  # the operator's wait at a stop is not the machine's time
-        return sim.clock.now - started
+        return sim.clock.now - started, start
 
 
 def big_program(n_lines: int) -> str:
@@ -73,10 +76,10 @@ def short_segments(step_mm: float, feed: float, n: int = 600) -> str:
 
 
 def compare(name: str, program, prefix_note: str = "") -> None:
+    real, start = real_run(list(program.device_lines), program.profile)
     t0 = time.perf_counter()
-    est = estimate(program.toolpath, program.device_lines, program.profile)
+    est = estimate(program.toolpath, program.device_lines, program.profile, start=start)
     took = time.perf_counter() - t0
-    real = real_seconds(list(program.device_lines), program.profile)
     figure = est.total + est.stop_seconds
     error = 100.0 * (figure - real) / real if real else 0.0
     old = program.toolpath.estimated_time

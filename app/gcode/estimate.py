@@ -70,15 +70,23 @@ class _Barrier:
     stop_ms: float = 0.0  # what a program stop makes the machine do (reported apart)
 
 
-def estimate(toolpath, device_lines, profile) -> Estimate:
-    """The planner's time for ``toolpath`` whose rows come from ``device_lines``."""
+def estimate(toolpath, device_lines, profile, start=None) -> Estimate:
+    """The planner's time for ``toolpath`` whose rows come from ``device_lines``; ``start``
+    (work mm), where the machine is when the job starts, if known: the first move is a
+    straight one from there rather than from where the program assumed."""
     mo = profile.motion
     accel = mo.accel_mm_s2
     window_s = max(1, round(accel / mo.jerk_mm_s3 * 1000)) / 1000.0
-    moves = np.flatnonzero((toolpath.kind != DWELL) & (toolpath.length >= ZERO_MM))
+    row_length = toolpath.length
+    first = _first_line_row(toolpath) if start is not None else None
+    if first is not None:
+        row_length = row_length.copy()
+        row_length[first] = float(np.linalg.norm(toolpath.end[first] - np.asarray(start, float)))
+    moves = np.flatnonzero((toolpath.kind != DWELL) & (row_length >= ZERO_MM))
     barriers = _barriers(toolpath, device_lines, profile)
     order, is_move, item = _chain(toolpath.device_index[moves], [b.line for b in barriers])
-    length, v_nom, start_dir, end_dir = _geometry(toolpath, moves, accel)
+    length, v_nom, start_dir, end_dir = _geometry(toolpath, moves, accel, row_length,
+                                                  None if first is None else (first, start))
     chain_len = np.zeros(len(order))
     chain_len[is_move] = length[item[is_move]]
     junction_sq = _junctions_sq(is_move, item, v_nom, start_dir, end_dir, accel, mo.junction_deviation_mm)
@@ -140,10 +148,19 @@ def _chain(move_lines: np.ndarray, barrier_lines: list[int]):
     return order, is_move, item
 
 
-def _geometry(tp, moves: np.ndarray, accel: float):
-    """Per move: length, nominal speed (mm/s) and unit tangents at its start and end."""
+def _first_line_row(tp) -> int | None:
+    """The first row that moves, if it is a straight move (an arc's start is its own)."""
+    rows = np.flatnonzero(tp.kind[: 1000] != DWELL)
+    return int(rows[0]) if len(rows) and tp.kind[rows[0]] not in (ARC_CW, ARC_CCW) else None
+
+
+def _geometry(tp, moves: np.ndarray, accel: float, row_length: np.ndarray, first=None):
+    """Per move: length, nominal speed (mm/s) and unit tangents at its start and end;
+    ``first``: (row, start) that row starts from instead."""
     start, end, kind = tp.start[moves], tp.end[moves], tp.kind[moves]
-    length = tp.length[moves].astype(float)
+    if first is not None and len(moves) and moves[0] == first[0]:
+        start[0] = first[1]
+    length = row_length[moves].astype(float)
     v_nom = tp.feed[moves] / 60.0
     start_dir = line_tangents(start, end)
     end_dir = start_dir.copy()

@@ -10,7 +10,7 @@ from app.gcode import load_text
 from app.gcode.estimate import QUEUE_BLOCKS, estimate
 from app.gcode.estimate_passes import (entry_speeds_sq, junction_speeds, reached_speeds_sq,
                                        trapezoid_times)
-from bench.bench_estimate import real_seconds
+from bench.bench_estimate import real_run
 
 A = 50.0
 
@@ -95,8 +95,8 @@ PROGRAMS = {
 def test_the_estimate_agrees_with_the_simulated_machine(name):
     program = load_text(PROGRAMS[name])
     assert not program.errors
-    est = estimate(program.toolpath, program.device_lines, program.profile)
-    real = real_seconds(list(program.device_lines), program.profile)
+    real, start = real_run(list(program.device_lines), program.profile)
+    est = estimate(program.toolpath, program.device_lines, program.profile, start=start)
     assert est.stops == 0 and est.stop_seconds == 0.0
     assert est.total == pytest.approx(real, rel=0.02)
     assert est.line_seconds.sum() == pytest.approx(est.total)
@@ -108,8 +108,8 @@ def test_a_tool_change_is_excluded_and_reported_apart():
     program = load_text("M03 S3000\nG00 X20 Y20 Z2\nG01 Z-1 F200\nG01 X40 F400\n"
                         "M06 T2\nG01 X60 F400\nG00 Z5\nM05\nM02\n")
     assert not program.errors
-    est = estimate(program.toolpath, program.device_lines, program.profile)
-    real = real_seconds(list(program.device_lines), program.profile)
+    real, start = real_run(list(program.device_lines), program.profile)
+    est = estimate(program.toolpath, program.device_lines, program.profile, start=start)
     assert (est.stops, est.tool_changes) == (1, 1)
     assert est.stop_seconds > 1.0  # lift to the top of Z and back, spindle off and back up
     assert est.total + est.stop_seconds == pytest.approx(real, rel=0.02)
