@@ -86,7 +86,8 @@ def compare(name: str, program, prefix_note: str = "") -> None:
     print(f"{name:22s} est {est.total:8.2f} s (motion {est.motion:.2f}, dwell {est.dwell:.2f}, "
           f"spin-up {est.spin_up:.2f}; stops {est.stops}, tool changes {est.tool_changes}, "
           f"{est.stop_seconds:.2f} s apart)  real {real:8.2f} s  error {error:+5.2f} %  "
-          f"(length/feed {100.0 * (old - real) / real:+5.1f} %)  computed in {took * 1000:.0f} ms{prefix_note}",
+          f"(length/feed {100.0 * (old - real) / real:+5.1f} %)  computed in {took * 1000:.0f} ms"
+          f"{prefix_note}",
           flush=True)
 
 

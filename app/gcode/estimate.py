@@ -21,8 +21,15 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .estimate_passes import (entry_speeds_sq, helix_tangents, junction_speeds, line_tangents, queue_horizons,
-                              reached_speeds_sq, trapezoid_times)
+from .estimate_passes import (
+    entry_speeds_sq,
+    helix_tangents,
+    junction_speeds,
+    line_tangents,
+    queue_horizons,
+    reached_speeds_sq,
+    trapezoid_times,
+)
 from .estimate_spindle import spin_wait_ms
 from .ops import ARC_CCW, ARC_CW, DWELL, RAPID
 
@@ -106,7 +113,8 @@ def estimate(toolpath, device_lines, profile, start=None) -> Estimate:
         waits[k] = 0.0 if b.kind == "stop" else waits[k] + b.ms / 1000.0
     stop_settle = sum(window_s for k in settles if barriers[item[k]].kind == "stop")
     lines = np.array([b.line for b in barriers], dtype=np.int64)
-    rows = np.clip(np.searchsorted(toolpath.device_index, lines, side="right") - 1, 0, max(len(toolpath) - 1, 0))
+    rows = np.searchsorted(toolpath.device_index, lines, side="right") - 1
+    rows = np.clip(rows, 0, max(len(toolpath) - 1, 0))
     if len(toolpath):
         np.add.at(row_seconds, rows, waits)  # a dwell row is its own line's row
     line_seconds = np.bincount(toolpath.device_index[moves][item[is_move]], weights=times,
@@ -213,7 +221,8 @@ def _barriers(tp, device_lines, profile) -> list[_Barrier]:
             out.append(_Barrier(line, "spindle", spin_wait_ms(profile, rpm, new) - 1.0))
             rpm = new
         elif code in ("M00", "M0", "M01", "M1", "M06", "M6"):
-            out.append(_Barrier(line, "stop", stop_ms=_stop_ms(profile, rpm, z_at(line), _is_tool_change(text))))
+            tool_change = _is_tool_change(text)
+            out.append(_Barrier(line, "stop", stop_ms=_stop_ms(profile, rpm, z_at(line), tool_change)))
         elif code in ("M02", "M2", "M30"):
             out.append(_Barrier(line, "end"))
     return out

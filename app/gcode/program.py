@@ -24,6 +24,7 @@ from app.profile import MachineProfile
 
 from . import bulk, checks, normalize, runner, sniff
 from .diagnostics import ERROR, WARNING, Diagnostic, Report
+from .estimate import Estimate, estimate
 from .limits import program_checks
 from .moves import moves_of
 from .offsets import ACTIVE_SYSTEM
@@ -32,7 +33,6 @@ from .reading import SourceError, clean_bytes, clean_text, read_source, text_pro
 from .render import render
 from .source import Lines
 from .state import State
-from .estimate import Estimate, estimate
 from .toolpath import Toolpath, build
 
 TRIM_BYTES = 8 << 20  # after the scan of a file this big, free heap pages go back to the system

@@ -8,9 +8,8 @@ import pytest
 
 from app.gcode import load_text
 from app.gcode.estimate import QUEUE_BLOCKS, estimate
-from app.gcode.estimate_passes import (entry_speeds_sq, junction_speeds, reached_speeds_sq,
-                                       trapezoid_times)
-from bench.bench_estimate import real_run
+from app.gcode.estimate_passes import entry_speeds_sq, junction_speeds, reached_speeds_sq, trapezoid_times
+from bench.bench_estimate import real_run, short_segments
 
 A = 50.0
 
@@ -84,8 +83,7 @@ PROGRAMS = {
                + "".join(f"G01 X{10 + 30 * (k % 2)} Y{10 + 3 * k} F500\n" for k in range(12)) + "M05\nM02\n",
     "arcs": "G00 X20 Y20 Z2\nG01 Z0 F200\nG02 X40 Y20 I10 J0 F400\nG03 X60 Y20 I10 J0\n"
             "G02 X60 Y20 I-5 J0\nG03 X50 Y30 Z-1 I-10 J0 F600\nM02\n",
-    "short segments": "G00 X20 Y20 Z2\nG01 Z0 F200\n" + "".join(
-        f"G01 X{20 + 10 * math.cos(k / 400):.4f} Y{20 + 10 * math.sin(k / 400):.4f} F600\n" for k in range(600)) + "M02\n",
+    "short segments": short_segments(0.025, 600),  # 0.025 mm chords: the look-ahead is short
     "dwell and spindle": "M03 S2000\nG04 P1.5\nG00 X30 Y30 Z2\nM03 S4000\nG01 X40 F300\nG04 P0.25\n"
                          "G01 X50\nM05\nG00 Z5\nM02\n",
 }
