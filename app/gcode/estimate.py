@@ -9,7 +9,8 @@ operator's wait). Pure numpy over the toolpath's arrays, no Qt, no simulator imp
 
 The rules are the CNC MCU's planner's (``backend_sim/motion/planner.py``): nominal speed
 (feed or rapid, arcs at most sqrt(a r)), junction deviation between blocks, a backward
-pass over the queue the machine holds (``QUEUE_BLOCKS`` blocks, the end of the queue
+pass over the queue the machine holds (``QUEUE_BLOCKS`` blocks from the last one it
+reported finished, which trails the path: ``queue_horizons``; the end of the queue
 stops), a forward pass from rest, trapezoids at ``accel``. The S-curve is a moving average
 of the path distance over ``accel/jerk`` seconds: it delays every stop before a barrier
 (dwell, spindle, stop, end) by that window and otherwise leaves the time unchanged.
