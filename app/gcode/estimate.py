@@ -27,6 +27,7 @@ from .estimate_passes import (
     helix_tangents,
     junction_speeds,
     line_tangents,
+    look_ahead_binds,
     queue_horizons,
     reached_speeds_sq,
     trapezoid_times,
@@ -143,6 +144,8 @@ def _planned_speeds(length, junction_sq, accel: float, window_s: float) -> np.nd
             break  # the look-ahead no longer changes the speeds
         before = reached
         implied, end = queue_horizons(length, reached, trail_s, QUEUE_BLOCKS)
+        if queue_end is None and not look_ahead_binds(length, entry, accel, implied, end):
+            break  # the queue is long enough everywhere: the full look-ahead's speeds hold
         horizon = (horizon + implied + 1) // 2
         queue_end = end if queue_end is None else (queue_end + end) / 2.0
     return reached

@@ -115,3 +115,15 @@ def queue_horizons(length: np.ndarray, speed: np.ndarray, trail_s: float, capaci
     whole = np.floor(end).astype(np.int64)
     queue_end = s[whole] + (end - whole) * np.append(length, 0.0)[whole]
     return np.clip(whole - np.arange(n), 1, capacity - 1), queue_end
+
+
+def look_ahead_binds(length, entry_sq, accel: float, horizon, queue_end) -> bool:
+    """Whether a look-ahead of ``horizon`` blocks ending at ``queue_end`` (mm) would lower
+    any of ``entry_sq`` (computed with a longer one). A shorter queue only drops terms of
+    the backward pass that are at least its new end's, so it changes nothing unless the
+    path cannot stop from the entry speed by that end."""
+    n = len(length)
+    s = np.concatenate(([0.0], np.cumsum(length)))
+    need = entry_sq * (1.0 - 1e-9) + 2.0 * accel * s[:n]
+    end = np.minimum(s[np.minimum(np.arange(n) + horizon, n)], queue_end)
+    return bool((2.0 * accel * end < need).any())

@@ -143,3 +143,14 @@ def test_the_programs_planned_time_becomes_its_toolpaths():
                            minlength=program.device_count)
     assert per_line.sum() == pytest.approx(planned.line_seconds.sum())
     assert planned.remaining(3) == pytest.approx(planned.total - planned.line_seconds[:3].sum())
+
+
+def test_the_look_ahead_binds_only_where_the_path_cannot_stop_in_it():
+    from app.gcode.estimate_passes import look_ahead_binds
+
+    straight = np.full(40, np.inf)
+    for step, binds in ((1.0, False), (0.01, True)):
+        length = np.full(40, step)
+        entry = entry_speeds_sq(length, straight, A, 15)
+        entry = np.minimum(entry, 100.0)  # 10 mm/s at most
+        assert look_ahead_binds(length, entry, A, 5, np.cumsum(length) + 4 * step) is binds
