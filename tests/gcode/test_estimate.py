@@ -102,18 +102,19 @@ def test_the_estimate_agrees_with_the_simulated_machine(name):
     assert est.remaining(len(program.device_lines)) == pytest.approx(0.0, abs=1e-9)
 
 
-def test_a_tool_change_is_excluded_and_reported_apart():
+def test_a_tool_change_and_a_stop_are_excluded_and_reported_apart():
     program = load_text("M03 S3000\nG00 X20 Y20 Z2\nG01 Z-1 F200\nG01 X40 F400\n"
-                        "M06 T2\nG01 X60 F400\nG00 Z5\nM05\nM02\n")
+                        "M06 T2\nG01 X60 F400\nM00\nG01 Y30\nG00 Z5\nM05\nM02\n")
     assert not program.errors
     real, start = real_run(list(program.device_lines), program.profile)
     est = estimate(program.toolpath, program.device_lines, program.profile, start=start)
-    assert (est.stops, est.tool_changes) == (1, 1)
+    assert (est.stops, est.tool_changes) == (2, 1)
     assert est.stop_seconds > 1.0  # lift to the top of Z and back, spindle off and back up
     assert est.total + est.stop_seconds == pytest.approx(real, rel=0.02)
     assert est.total < real - 1.0
-    stop_line = next(k for k, text in enumerate(program.device_lines) if text.startswith("M06"))
-    assert est.line_seconds[stop_line] == 0.0
+    for k, text in enumerate(program.device_lines):
+        if text.startswith(("M06", "M00")):
+            assert est.line_seconds[k] == 0.0
 
 
 def test_the_queue_trails_the_path_by_the_moving_average():
