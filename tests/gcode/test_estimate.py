@@ -155,3 +155,24 @@ def test_the_look_ahead_binds_only_where_the_path_cannot_stop_in_it():
         entry = entry_speeds_sq(length, straight, A, 15)
         entry = np.minimum(entry, 100.0)  # 10 mm/s at most
         assert look_ahead_binds(length, entry, A, 5, np.cumsum(length) + 4 * step) is binds
+
+
+def test_the_programs_own_events_stand_for_its_rendered_lines():
+    from app.gcode.estimate_lines import EventLines
+
+    text = PROGRAMS["dwell and spindle"] + "G01 X10 F300\nM01\nM06 T4\nG04 P2\nM30\n"
+    program = load_text(text.replace("M02\n", ""))
+    lines = EventLines(program.ops, program.plan)
+    rendered = program.device_lines
+    assert len(lines) == len(rendered)
+    for k, line in enumerate(rendered):
+        if line[:1] == "M" or line.startswith("G04"):
+            assert lines[k].split()[0] == line.split()[0] and _words(lines[k]) == _words(line), (k, line)
+    by_events = estimate(program.toolpath, lines, program.profile)
+    by_render = estimate(program.toolpath, rendered, program.profile)
+    assert by_events.total == pytest.approx(by_render.total)
+    assert by_events.stop_seconds == pytest.approx(by_render.stop_seconds) and by_events.stops == 2
+
+
+def _words(line: str) -> dict:
+    return {word[0]: float(word[1:]) for word in line.split()[1:]}
