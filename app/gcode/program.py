@@ -25,6 +25,7 @@ from app.profile import MachineProfile
 from . import bulk, checks, normalize, runner, sniff
 from .diagnostics import ERROR, WARNING, Diagnostic, Report
 from .estimate import Estimate, estimate
+from .estimate_lines import EventLines
 from .limits import program_checks
 from .moves import moves_of
 from .offsets import ACTIVE_SYSTEM
@@ -113,9 +114,10 @@ class Program:
     @cached_property
     def planned(self) -> Estimate:
         """The machine planner's time (``estimate.py``; about 0.5 s for a million lines, so
-        in the background). From then on the toolpath's ``time``, and with it
-        ``estimated_time`` and the progress per line, are the planner's figures."""
-        est = estimate(self.toolpath, self.device_lines, self.profile)
+        in the background; the device lines need not be rendered). From then on the
+        toolpath's ``time``, and with it ``estimated_time`` and the progress per line, are
+        the planner's figures."""
+        est = estimate(self.toolpath, EventLines(self.ops, self.plan), self.profile)
         self.toolpath.time = est.row_seconds
         return est
 
