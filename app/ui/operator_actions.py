@@ -241,6 +241,11 @@ class OperatorActions(QObject):
                            len(errors))
             self.w.notifier.warning(self.tr("Program has errors"), text.replace("%1", loaded.path.name))
 
+    def program_prepared(self, loaded) -> None:
+        """The device lines and the planner's time estimate are ready: the summary says it."""
+        if self.w.program_panel.program is loaded.program:
+            self.w.program_panel.show_program(loaded.program, loaded.path.name, keep_tab=True)
+
     def program_refined(self, loaded) -> None:
         """The preview of the open program at the real tolerance (the first was coarser)."""
         if self.w.loaded is not None and self.w.loaded.program is loaded.program:

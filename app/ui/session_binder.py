@@ -58,6 +58,7 @@ class SessionBinder(QObject):
         self._connect(window.link.worker)
         window.loader.loaded.connect(window.operator.program_loaded)
         window.loader.refined.connect(window.operator.program_refined)
+        window.loader.prepared.connect(window.operator.program_prepared)
         window.loader.failed.connect(self.on_load_failed)
         self.timer = QTimer(self, interval=UI_TICK_MS, timeout=self.tick)
         self.timer.start()
