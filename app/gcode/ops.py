@@ -108,6 +108,11 @@ class OpBuffer:
         plane = np.zeros(n, np.int8)
         self.blocks.append((line, kind, end, center, plane, turn, value))
 
+    def flush(self) -> None:
+        """Turn the single rows gathered so far into one array block (a caller that adds
+        many rows one at a time keeps its memory in arrays, not tuples of floats)."""
+        self._flush()
+
     def _flush(self) -> None:
         if not self.rows:
             return
