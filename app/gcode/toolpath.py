@@ -181,13 +181,13 @@ def build(ops: Ops, device_first: np.ndarray, profile: MachineProfile) -> Toolpa
     start, end = _ends(ops, rows, pick) if len(rows) and not views else (pick(ops.starts()), pick(ops.end))
     center = pick(ops.center)
     kind, plane, turn = pick(ops.kind), pick(ops.plane), pick(ops.turn)
-    value = pick(ops.value)
     motion = profile.motion
     feed, length, time = (np.empty(len(rows)) for _ in range(3))
     for a in range(0, len(rows), BLOCK):  # a block at a time: small temporaries
         part = slice(a, a + BLOCK)
+        value = ops.value.take(rows[part])
         feed[part], length[part], time[part] = _timing(start[part], end[part], center[part], kind[part],
-                                                       plane[part], turn[part], value[part], motion)
+                                                       plane[part], turn[part], value, motion)
     source, device = pick(ops.main_lines()), pick(device_first)
     return Toolpath(start, end, kind, center, plane, turn, source, device, feed, length, time)
 
