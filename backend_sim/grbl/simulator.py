@@ -161,12 +161,12 @@ class GrblSimulator:
                 if not self._running:
                     return
                 target = self.clock.target_ms()
-                if target is None:
-                    self._step_to(self.clock.now_ms + THREAD_SLICE_MS)
-                elif target > self.clock.now_ms:
-                    self._step_to(min(target, self.clock.now_ms + THREAD_SLICE_MS))
-                self.condition.notify_all()
-                if target is not None:
-                    wait = self.clock.wall_until(self._next_due(FAR_MS))
-                    self.condition.wait(min(max(wait, 0.002), 0.05))
+                now = self.clock.now_ms
+                if target is None or target > now:
+                    end = now + THREAD_SLICE_MS if target is None else min(target, now + THREAD_SLICE_MS)
+                    self._step_to(end)
+                    self.condition.notify_all()
+                if target is not None and self.clock.now_ms >= self.clock.target_ms():
+                    wait = self.clock.wall_until(min(self._next_due(FAR_MS), self.clock.now_ms + THREAD_SLICE_MS))
+                    self.condition.wait(min(max(wait, 0.001), 0.05))
             time.sleep(0)

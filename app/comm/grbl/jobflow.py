@@ -61,7 +61,7 @@ class GrblJobControl:
             return msg("the machine is not connected")
         if self.state not in (S.READY, S.RESTART_REQUIRED):
             return msg("the machine is not ready ({state})", state=self.state.name)
-        if self.status.state == "ALARM" and not self.check_mode:
+        if self.alarm is not None and not self.check_mode:
             return msg("the machine is in alarm: home ($H) or unlock ($X) first")
         if not 0 <= start < len(device_lines):
             return msg("no line {start} to start from", start=start)

@@ -16,8 +16,10 @@ settings).
 - Status is polled with ``?`` every 0.2 s (0.1 s while a job or jog runs). No report for
   2 s is DEGRADED, 3 s LOST (while homing or after a critical alarm GRBL sends none:
   the silence timer waits).
-- The welcome line (``Grbl 1.1h [...]``, ``GrblHAL ...``) is a reset: the receive buffer
-  is empty, lines in flight are gone, a job in progress was cut off.
+- Nothing but ``?`` goes out before the machine's first welcome or report (a board that
+  resets when the port opens loses what comes before its welcome). A welcome line
+  (``Grbl 1.1h [...]``, ``GrblHAL ...``) is a reset: the receive buffer is empty, lines
+  in flight are gone, a job in progress was cut off.
 """
 
 from __future__ import annotations
@@ -93,6 +95,7 @@ class GrblSession(GrblJobControl, GrblOperations):
         self._then: dict[int, Callable[[CommandResult], None]] = {}
         self._next_id = 1
         self._next_poll = 0.0
+        self._contact = False
         self._settings_rows: list[tuple[int, str]] = []
         self._handlers = {p.Ok: self._on_ok, p.Error: self._on_error, p.Alarm: self._on_alarm,
                           p.Welcome: self._on_welcome, p.Report: self._on_report,
@@ -106,6 +109,7 @@ class GrblSession(GrblJobControl, GrblOperations):
         self._write = write
         self._rx.clear()
         self.counter.clear()
+        self._contact = False  # no line goes out before the machine has spoken
         self.link.attach(self.clock())
         self._emit_link()
         if self.state is S.DISCONNECTED:
@@ -188,7 +192,13 @@ class GrblSession(GrblJobControl, GrblOperations):
             self.tick()
         return cid
 
+    def send_command(self, text: str) -> int | None:
+        """A line typed by the operator (``$H``, ``G0 X10``); None if empty."""
+        return self.command(text) if text.strip() else None
+
     def _pump(self) -> None:
+        if not self._contact:
+            return  # a board that resets on open would lose lines sent before its welcome
         while True:
             oldest = self.counter.oldest()
             if oldest is not None and oldest.exclusive:
@@ -280,6 +290,7 @@ class GrblSession(GrblJobControl, GrblOperations):
             self._end_job(False, msg("alarm {code}: {what}", code=item.code, what=text))
 
     def _on_welcome(self, item: p.Welcome) -> None:
+        self._contact = True
         self.boots += 1
         lost = self.counter.clear()
         self._queue = [o for o in self._queue if o.text not in REFRESH]
@@ -300,6 +311,7 @@ class GrblSession(GrblJobControl, GrblOperations):
         self.refresh()
 
     def _on_report(self, item: p.Report) -> None:
+        self._contact = True
         status = self.merger.merge(item, self.clock())
         self.grbl_status = status
         if item.rx_free is not None and not len(self.counter) and self.fixed_rx is None \

@@ -22,12 +22,14 @@ class Recorder(GrblListener):
 
 
 class Harness:
-    def __init__(self, rx_size: int | None = None) -> None:
+    def __init__(self, rx_size: int | None = None, greet: bool = True) -> None:
         self.now = 0.0
         self.wire = bytearray()
         self.rec = Recorder()
         self.session = GrblSession(None, self.rec, lambda: self.now, rx_size=rx_size)
         self.session.attach(self.wire.extend)
+        if greet:
+            self.session.feed(WELCOME)
 
     def take(self) -> bytes:
         out = bytes(self.wire)

@@ -12,6 +12,14 @@ from app.comm.listener import SessionState
 from tests.comm.grbl.harness import WELCOME, Harness
 
 
+def test_nothing_but_status_queries_before_the_machine_speaks():
+    h = Harness(greet=False)
+    h.advance(1.0)
+    assert set(h.take()) == {ord("?")}
+    h.feed("<Idle|MPos:0,0,0|FS:0,0>")
+    assert h.lines() == ["$I", "$$", "$#", "$G"]
+
+
 def test_connect_reads_machine_and_becomes_ready():
     h = Harness()
     assert h.lines() == ["$I", "$$", "$#", "$G"]
@@ -29,7 +37,7 @@ def test_connect_reads_machine_and_becomes_ready():
     ("GrblHAL 1.1f ['$' or '$HELP' for help]", "grblhal", "1.1f"),
 ])
 def test_welcome_names_the_flavour(line, flavour, version):
-    h = Harness()
+    h = Harness(greet=False)
     h.feed(line)
     info = h.rec.of("on_machine_info")[-1]
     assert (info.flavour, info.version) == (flavour, version)
@@ -190,7 +198,7 @@ def test_override_bytes(current, target, expected):
 
 
 def test_grblhal_buffer_size_from_its_build_info():
-    h = Harness()
+    h = Harness(greet=False)
     h.take()
     h.feed("GrblHAL 1.1f ['$' or '$HELP' for help]")
     h.take()
