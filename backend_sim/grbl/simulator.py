@@ -167,6 +167,7 @@ class GrblSimulator:
                     self._step_to(end)
                     self.condition.notify_all()
                 if target is not None and self.clock.now_ms >= self.clock.target_ms():
-                    wait = self.clock.wall_until(min(self._next_due(FAR_MS), self.clock.now_ms + THREAD_SLICE_MS))
+                    due = min(self._next_due(FAR_MS), self.clock.now_ms + THREAD_SLICE_MS)
+                    wait = self.clock.wall_until(due)
                     self.condition.wait(min(max(wait, 0.001), 0.05))
             time.sleep(0)
