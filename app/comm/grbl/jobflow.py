@@ -129,8 +129,11 @@ class GrblJobControl:
         job = self.job
         if job.errors:
             first = job.errors[0]
-            self._end_job(False, msg("check found {count} refused line(s); the first: {first}",
-                                     count=len(job.errors), first=first))
+            if len(job.errors) == 1:
+                self._end_job(False, msg("the check found 1 refused line: {first}", first=first))
+            else:
+                self._end_job(False, msg("the check found {count} refused lines; the first: {first}",
+                                         count=len(job.errors), first=first))
         else:
             self._end_job(True, msg("completed"))
 

@@ -15,6 +15,8 @@ import math
 import re
 from dataclasses import dataclass
 
+from app.i18n import msg
+
 Vec = tuple[float, ...]
 
 # Real-time commands (interface documentation, "Real-time commands").
@@ -123,7 +125,9 @@ def parse_line(text: str) -> Line:
         return parse_report(text)
     if text.startswith("["):
         match = _FEEDBACK.match(text)
-        return Feedback(match[1].upper(), match[2]) if match else Unknown(text, "malformed [..] message")
+        if match is None:
+            return Unknown(text, msg("a [ ] message without its end"))
+        return Feedback(match[1].upper(), match[2])
     if text.startswith(">"):
         line, _, result = text[1:].rpartition(":")
         if line.endswith(":error"):
@@ -184,6 +188,8 @@ def _field_ln(value):
     return {"line": int(value)}
 
 
+_SUBSTATE = lambda v: {"substate": int(v)}  # noqa: E731
+
 _FIELDS = {"MPos": _field_mpos, "WPos": _field_wpos, "WCO": _field_wco, "FS": _field_fs,
            "F": _field_f, "Ov": _field_ov, "Bf": _field_bf, "Ln": _field_ln,
            "Pn": lambda v: {"pins": v}, "A": lambda v: {"accessories": v}}
@@ -192,20 +198,18 @@ _FIELDS = {"MPos": _field_mpos, "WPos": _field_wpos, "WCO": _field_wco, "FS": _f
 def parse_report(text: str) -> Report | Unknown:
     """A ``<State[:sub]|Field:values|...>`` report; unknown fields are skipped."""
     if not (text.startswith("<") and text.endswith(">")) or len(text) < 3:
-        return Unknown(text, "status report without its < >")
+        return Unknown(text, msg("a status report without its < >"))
     fields = text[1:-1].split("|")
     state, _, sub = fields[0].partition(":")
     if not state.isalpha():
-        return Unknown(text, "status report without a state")
+        return Unknown(text, msg("a status report without a state"))
     values: dict = {"state": state}
-    try:
-        if sub:
-            values["substate"] = int(sub)
-        for field in fields[1:]:
-            name, _, value = field.partition(":")
-            handler = _FIELDS.get(name)
+    for field in ([f"state:{sub}"] if sub else []) + fields[1:]:
+        name, _, value = field.partition(":")
+        handler = _SUBSTATE if name == "state" else _FIELDS.get(name)
+        try:
             if handler is not None:
                 values.update(handler(value))
-    except ValueError as exc:
-        return Unknown(text, f"bad status field: {exc}")
+        except ValueError:
+            return Unknown(text, msg("the status field {field} is not what GRBL sends", field=field[:40]))
     return Report(**values)

@@ -212,3 +212,18 @@ def test_garbage_lines_are_named_not_fatal():
     h.session.feed(b"<Idle|MPos:nan,0,0>\r\n\xff\xfe\r\n")
     assert any("unreadable" in e.text for e in h.rec.of("on_log"))
     assert isinstance(parse_line("<Idle|MPos:nan,0,0>"), p.Unknown)
+
+
+def test_every_grbl_code_and_setting_reads_in_vietnamese():
+    from app.comm.grbl.codes import ALARMS, ERRORS, SETTINGS, alarm_text, setting_info
+    from app.i18n import gettext, localize, set_language
+
+    set_language("vi")
+    try:
+        untranslated = [t for t in [*ERRORS.values(), *ALARMS.values()] if gettext(t) == t]
+        untranslated += [t for s in SETTINGS.values() for t in (s.name, s.meaning) if gettext(t) == t]
+        assert not untranslated
+        assert localize(alarm_text(1)).startswith("chạm công tắc hành trình")
+        assert localize(setting_info(131).name) == "hành trình tối đa trục Y"
+    finally:
+        set_language(None)
