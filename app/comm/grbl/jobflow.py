@@ -36,9 +36,14 @@ class GrblJobControl:
     # ------------------------------------------------------------------ calls
 
     def start_job(self, device_lines, start: int = 0, name: str = "", line_map=None) -> bool:
-        """Stream ``device_lines`` from index ``start``; False (with an error event) if
-        the machine cannot take a job now. ``line_map`` (device index -> source line)
-        lets messages name the source line."""
+        """Stream ``device_lines`` (or a ``Program``: its device lines and line map) from
+        index ``start``; False (with an error event) if the machine cannot take a job now.
+        ``line_map`` (device index -> source line) lets messages name the source line."""
+        if hasattr(device_lines, "device_lines"):
+            program = device_lines
+            device_lines = list(program.device_lines)
+            line_map = line_map if line_map is not None else program.line_map.tolist()
+            name = name or getattr(program, "name", "")
         why = self._job_refusal(device_lines, start)
         if why:
             self._error("REFUSED", why)

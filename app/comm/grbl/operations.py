@@ -96,7 +96,8 @@ class GrblOperations:
 
     # ------------------------------------------------------------------ machine commands
 
-    def home(self, then=None) -> int:
+    def home(self, mode: str = "NORMAL", then=None) -> int:
+        """``$H`` (GRBL has one homing cycle: ``mode`` is the frame protocol's and ignored)."""
         return self.command("$H", then=then)
 
     def unlock_advice(self):

@@ -46,6 +46,7 @@ from app.comm.grbl.job import GrblJob, Outgoing
 from app.comm.grbl.jobflow import GrblJobControl
 from app.comm.grbl.operations import GrblOperations
 from app.comm.grbl.status import ReportMerger, to_status_event
+from app.comm.grbl.verbs import FrameVerbs
 from app.comm.heartbeat import LinkMonitor, LinkState
 from app.comm.listener import TRANSITIONS, SessionState
 from app.i18n import msg
@@ -58,7 +59,7 @@ REFRESH = ("$I", "$$", "$#", "$G")  # read at connect and after every reset
 MAX_LINE_BYTES = 1024  # a line from the machine longer than this is noise
 
 
-class GrblSession(GrblJobControl, GrblOperations):
+class GrblSession(GrblJobControl, GrblOperations, FrameVerbs):
     """One connection to a GRBL machine; see the module docstring for the contract."""
 
     def __init__(self, write: Callable[[bytes], object] | None = None,
@@ -191,10 +192,6 @@ class GrblSession(GrblJobControl, GrblOperations):
         if self.attached:
             self.tick()
         return cid
-
-    def send_command(self, text: str) -> int | None:
-        """A line typed by the operator (``$H``, ``G0 X10``); None if empty."""
-        return self.command(text) if text.strip() else None
 
     def _pump(self) -> None:
         if not self._contact:

@@ -227,3 +227,27 @@ def test_every_grbl_code_and_setting_reads_in_vietnamese():
         assert localize(setting_info(131).name) == "hành trình tối đa trục Y"
     finally:
         set_language(None)
+
+
+@pytest.mark.parametrize("verb, line", [
+    ("SPINDLE 1200", "M3 S1200"), ("SPINDLE OFF", "M5"), ("ZERO XY", "G10 L20 P1 X0 Y0"),
+    ("HOME", "$H"), ("JOG Z -1 300", "$J=G91 G21 Z-1.000 F300"), ("G0 X10", "G0 X10"), ("$$", "$$"),
+])
+def test_frame_protocol_verbs_become_grbl_lines(verb, line):
+    h = Harness()
+    h.answer_refresh()
+    h.session.send_command(verb)
+    assert h.lines() == [line]
+
+
+def test_frame_protocol_queries_answered_from_what_grbl_reported():
+    h = Harness()
+    h.answer_refresh()  # WCO -150,-150,-10 with $130-$132 150/150/30 and $23=3
+    h.session.send_command("GET OFFSET_Z")
+    h.session.send_command("SET KP_X 2")
+    h.session.send_command("SET OPTSTOP 0")
+    results = h.rec.of("on_command_done")[-3:]
+    assert results[0].info == "OFFSET_Z 20.000" and results[1].code == "UNSUPPORTED"
+    assert not h.session.optional_stop and h.lines() == []
+    h.session.list_sd()
+    assert h.rec.of("on_command_done")[-1].code == "UNSUPPORTED"

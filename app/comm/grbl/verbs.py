@@ -1,0 +1,107 @@
+"""The frame protocol's machine commands on a GRBL machine, so the window and the console
+can send the same words to either driver (a mixin of ``GrblSession``).
+
+``send_command(text)``: ``SPINDLE <rpm>`` / ``SPINDLE OFF`` -> ``M3 S<rpm>`` / ``M5``;
+``ZERO X Y Z`` (any of them) -> ``G10 L20 P1 X0 ..`` (work zero here, in G54);
+``SET CHECK 1|0`` -> ``$C`` when the mode differs; ``SET OPTSTOP 1|0`` is the host's own
+switch; ``GET OFFSET_X|Y|Z`` is answered from the live ``WCO``, as machine millimetres
+from the near end of GRBL's travel (the frame protocol's machine frame); ``HOME``
+``$H``; ``JOG X 10 300`` a ``$J=`` jog; ``STATUS``/``PING`` answered by the next report;
+other ``SET``/``GET`` and the SD verbs are refused with ``UNSUPPORTED`` (no such thing on
+GRBL). Any other line goes to the machine as it is (``G0 X10``, ``$$``, ``$H``).
+"""
+
+from __future__ import annotations
+
+from app.comm.events import CommandResult, JobEvent
+from app.comm.grbl.dialect import axis_range
+from app.i18n import msg
+
+_AXES = ("X", "Y", "Z")
+
+
+class FrameVerbs:
+    """See the module docstring."""
+
+    def send_command(self, text: str) -> int | None:
+        """A line typed by the operator or a frame-protocol verb (see the module); None if empty."""
+        words = text.strip().split()
+        if not words:
+            return None
+        handler = getattr(self, f"_verb_{words[0].lower()}", None)
+        if handler is None or not (words[0].isalpha() and words[0].isupper()):
+            return self.command(text)
+        return handler(words[0].upper(), [w.upper() for w in words[1:]])
+
+    def _local(self, verb: str, args, ok: bool = True, info: str = "", code: str = "") -> int:
+        cid = self._next_id
+        self._next_id += 1
+        self._command_done(CommandResult(cid, verb, tuple(args), ok, info, code))
+        return cid
+
+    def _unsupported(self, verb: str, args) -> int:
+        what = " ".join([verb, *args])
+        return self._local(verb, args, False, msg("a GRBL machine has no {what}", what=what), "UNSUPPORTED")
+
+    def _verb_spindle(self, verb: str, args) -> int:
+        if not args or args[0] == "OFF":
+            return self.command("M5")
+        return self.command(f"M3 S{float(args[0]):g}")
+
+    def _verb_zero(self, verb: str, args) -> int:
+        axes = "".join(args) or "XYZ"
+        words = " ".join(f"{a}0" for a in _AXES if a in axes)
+        return self.command(f"G10 L20 P1 {words}")
+
+    def _verb_home(self, verb: str, args) -> int:
+        return self.home()
+
+    def _verb_jog(self, verb: str, args) -> int:
+        return self.jog(args[0], float(args[1]), float(args[2]))
+
+    def _verb_status(self, verb: str, args) -> int:
+        return self._local(verb, args, info=self.status.state if self.status else "")
+
+    _verb_ping = _verb_status
+
+    def _verb_set(self, verb: str, args) -> int:
+        if args[:1] == ["CHECK"] and len(args) > 1:
+            cid = self.set_check_mode(args[1] not in ("0", "OFF"))
+            return cid if cid is not None else self._local(verb, args, info=f"CHECK {args[1]}")
+        if args[:1] == ["OPTSTOP"] and len(args) > 1:
+            self.optional_stop = args[1] not in ("0", "OFF")
+            return self._local(verb, args, info=f"OPTSTOP {int(self.optional_stop)}")
+        return self._unsupported(verb, args)
+
+    def _verb_get(self, verb: str, args) -> int:
+        name = args[0] if args else ""
+        if name in ("OFFSET_X", "OFFSET_Y", "OFFSET_Z") and self.grbl_status is not None:
+            k = "XYZ".index(name[-1])
+            low = axis_range(self.settings, k)[0] if 130 + k in self.settings else 0.0
+            return self._local(verb, args, info=f"{name} {self.grbl_status.wco[k] - low:.3f}")
+        return self._unsupported(verb, args)
+
+    def _verb_sd(self, verb: str, args) -> int:
+        return self._unsupported(verb, args)
+
+    # ------------------------------------------------------------------ the SD calls
+
+    def list_sd(self) -> int:
+        return self._unsupported("SD", ["LIST"])
+
+    def delete_sd(self, name: str) -> int:
+        return self._unsupported("SD", ["DEL", name])
+
+    def run_from_sd(self, name: str) -> int:
+        return self._unsupported("SD", ["RUN", name])
+
+    def upload_to_sd(self, name: str, lines) -> bool:
+        self._error("UNSUPPORTED", msg("a GRBL machine has no SD card"))
+        self.listener.on_job_finished(JobEvent("upload", False, msg("a GRBL machine has no SD card"), -1, 0,
+                                               name))
+        return False
+
+    def resume_after_reconnect(self) -> bool:
+        """GRBL cannot resume exactly: the offer is always a restart (``confirm_restart``)."""
+        self._error("REFUSED", msg("GRBL cannot resume exactly: start again at the offered line"))
+        return False
