@@ -26,7 +26,7 @@ from app.comm.listener import SessionState
 from app.comm.modal import device_index_of
 from app.i18n import localize
 
-QUIET_KINDS = frozenset({"job", "preamble", "sync", "<"})
+QUIET_KINDS = frozenset({"job", "preamble", "sync", "<", "ok"})
 
 
 class GrblPrinter(Printer, GrblListener):
@@ -34,7 +34,7 @@ class GrblPrinter(Printer, GrblListener):
     and the reports."""
 
     def on_frame(self, event):
-        quiet = self.quiet and (event.kind in QUIET_KINDS or (event.direction == "rx" and event.text == "ok"))
+        quiet = self.quiet and event.kind in QUIET_KINDS
         if not quiet:
             print(("> " if event.direction == "tx" else "< ") + event.text, file=self.out)
 

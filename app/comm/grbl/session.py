@@ -243,7 +243,7 @@ class GrblSession(GrblJobControl, GrblOperations, FrameVerbs):
             self.link.heard(self.clock())
             if self.link.update(self.clock()):
                 self._emit_link()
-        kind = "<" if isinstance(item, p.Report) else "rx"
+        kind = "<" if isinstance(item, p.Report) else "ok" if isinstance(item, p.Ok) else "rx"
         self.listener.on_frame(FrameEvent("rx", kind, text, ok=not isinstance(item, p.Unknown)))
         self._handlers[type(item)](item)
 
@@ -301,7 +301,7 @@ class GrblSession(GrblJobControl, GrblOperations, FrameVerbs):
         if self.fixed_rx is None:
             self.counter.capacity = GRBL_RX_BUFFER
         self.info = MachineInfo(item.flavour, item.version, rx_size=self.counter.capacity)
-        self.listener.on_machine_info(self.info)
+        self._notify("on_machine_info", self.info)
         self._log("info", msg("machine: {text}", text=item.text), "machine")
         if self.job is not None:
             self._job_reset()
@@ -334,7 +334,7 @@ class GrblSession(GrblJobControl, GrblOperations, FrameVerbs):
         acc = job.acked if job else -1
         done = job.done if job else -1
         self.status = to_status_event(status, f"grbl-{self.boots}", acc, done, self.homed, waiting)
-        self.listener.on_grbl_status(status)
+        self._notify("on_grbl_status", status)
         self.listener.on_status(self.status)
 
     def _on_setting(self, item: p.SettingLine) -> None:
@@ -396,7 +396,7 @@ class GrblSession(GrblJobControl, GrblOperations, FrameVerbs):
             self.counter.capacity = int(parts[2])
         base = self.info or MachineInfo("grbl", "")
         self.info = MachineInfo(base.flavour, base.version, base.build, text, self.counter.capacity, blocks)
-        self.listener.on_machine_info(self.info)
+        self._notify("on_machine_info", self.info)
 
     # ------------------------------------------------------------------ results, state, log
 
@@ -412,7 +412,7 @@ class GrblSession(GrblJobControl, GrblOperations, FrameVerbs):
         if result.verb == "$$":
             self.settings = dict(self._settings_rows)
             self.merger.inches = self.settings.get(13) == "1"
-            self.listener.on_settings(SettingsEvent(tuple(self._settings_rows)))
+            self._notify("on_settings", SettingsEvent(tuple(self._settings_rows)))
         elif result.verb == "$H":
             self.homed, self.alarm = True, None
         elif result.verb == "$X":
@@ -443,6 +443,13 @@ class GrblSession(GrblJobControl, GrblOperations, FrameVerbs):
             raise RuntimeError(f"session state {old.name} -> {new.name} is not allowed")
         self.state = new
         self.listener.on_state_changed(StateEvent(old.name, new.name))
+
+    def _notify(self, name: str, event) -> None:
+        """A GRBL-only event, for a listener that has its method (a plain
+        ``SessionListener`` does not)."""
+        method = getattr(self.listener, name, None)
+        if method is not None:
+            method(event)
 
     def _log(self, level: str, text: str, source: str = "host") -> None:
         self.listener.on_log(LogEvent(level, text, source))
