@@ -37,6 +37,8 @@ def default_motion(profile: MachineProfile):
 class GrblSimulator:
     """See the module docstring."""
 
+    panel = None  # no OLED and buttons: a GRBL board has none
+
     def __init__(self, profile: MachineProfile | None = None, clock: SimClock | None = None,
                  baud: int = 115200, seed: int | None = None,
                  motion_factory: Callable | None = None) -> None:
