@@ -11,10 +11,10 @@ rest (``G00``-``G03`` with absolute XYZ, IJ relative to the start as GRBL's defa
 ``line_problems(lines)`` names lines GRBL's buffers cannot take (longer than
 ``MAX_LINE`` bytes).
 
-``grbl_travel(settings, wco)`` turns ``$130``-``$132``, ``$23`` and the live ``WCO``
-into a ``Travel`` and the work offset the preflight (``app.gcode.checks.preflight``)
-expects: GRBL's machine space is ``[-max, 0]`` per axis, or ``[0, max]`` for an axis
-whose homing direction is inverted.
+``grbl_travel(settings, wco)`` turns ``$130``-``$132`` and the live ``WCO`` into a
+``Travel`` and the work offset the preflight (``app.gcode.checks.preflight``) expects:
+GRBL's machine space is ``[-max, 0]`` per axis (GRBL's documentation: the machine
+coordinates are negative; builds that force the origin at home differ).
 """
 
 from __future__ import annotations
@@ -66,10 +66,10 @@ def line_problems(lines) -> list[str]:
 
 
 def axis_range(settings: dict[int, str], k: int) -> tuple[float, float]:
-    """(min, max) machine position of axis ``k`` (0 X, 1 Y, 2 Z) from ``$13k`` and ``$23``."""
+    """(min, max) machine position of axis ``k`` (0 X, 1 Y, 2 Z) from ``$13k``: GRBL's
+    machine space is negative, ``[-max travel, 0]``, whichever end each axis homes to."""
     travel = abs(float(settings.get(130 + k, "0") or 0))
-    inverted = int(float(settings.get(23, "0") or 0)) >> k & 1
-    return (0.0, travel) if inverted else (-travel, 0.0)
+    return (-travel, 0.0)
 
 
 def grbl_travel(settings: dict[int, str], wco, profile: MachineProfile | None = None):

@@ -42,17 +42,17 @@ def test_long_lines_are_named():
     assert len(problems) == 1 and "device line 1" in problems[0]
 
 
-def test_axis_ranges_follow_the_homing_direction():
-    assert axis_range(SETTINGS, 0) == (0.0, 150.0)  # $23 bit 0: X homes to its negative end
+def test_machine_space_is_negative_whichever_end_an_axis_homes_to():
+    assert axis_range(SETTINGS, 0) == (-150.0, 0.0)  # $23 bit 0: X homes to its negative end
     assert axis_range(SETTINGS, 2) == (-30.0, 0.0)
 
 
 def test_preflight_with_grbl_travel_and_live_work_offset():
     program = load_text("G0 X10 Y10 Z5\nG1 Z-1 F100\nG1 X140\n")
-    profile, offset = grbl_travel(SETTINGS, wco=(5.0, 5.0, -10.0))
+    profile, offset = grbl_travel(SETTINGS, wco=(-145.0, -145.0, -10.0))
     assert offset == (5.0, 5.0, 20.0)
     assert not preflight(program.ops, profile, program.source_lines, offset)
-    profile, offset = grbl_travel(SETTINGS, wco=(20.0, 5.0, -10.0))  # X140 + 20 > 150
+    profile, offset = grbl_travel(SETTINGS, wco=(-130.0, -145.0, -10.0))  # X140 - 130 > 0
     errors = preflight(program.ops, profile, program.source_lines, offset)
     assert len(errors) == 1 and errors[0].line == 3 and "X" in errors[0].message
 
