@@ -1,4 +1,5 @@
-"""Port discovery for the connection bar: the simulator first, then serial ports."""
+"""Port discovery for the connection bar: the simulators first (the mill's, then a GRBL
+machine's), then serial ports."""
 
 from __future__ import annotations
 
@@ -9,6 +10,10 @@ from app.i18n import localize
 
 def _simulator() -> tuple[str, str]:
     return "sim://", QCoreApplication.translate("Ports", "Built-in simulator (sim://)")
+
+
+def _grbl_simulator() -> tuple[str, str]:
+    return "sim://grbl", QCoreApplication.translate("Ports", "Built-in GRBL 1.1 simulator (sim://grbl)")
 
 
 def available_ports() -> list[tuple[str, str]]:
@@ -22,6 +27,8 @@ def available_ports() -> list[tuple[str, str]]:
     ports = [_pair(entry) for entry in found]
     if not any(url.startswith("sim://") for url, _ in ports):
         ports.insert(0, _simulator())
+    if not any(url.startswith("sim://grbl") for url, _ in ports):
+        ports.insert(1, _grbl_simulator())
     return ports
 
 
