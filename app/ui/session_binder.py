@@ -264,8 +264,9 @@ class SessionBinder(QObject):
             self.w.console.add_log("error", text, "machine")
             shown = f"{result.verb} {' '.join(result.args)}: {refusal_text(result.code, result.info)}"
             self.w.status.showMessage(shown, 10000)
-            if result.verb in ("HOME", "JOG", "SD", "ZERO", "SPINDLE", "SET") and result.code != "UNSUPPORTED":
-                self.w.notifier.warning(self.tr("Machine refused"), shown)  # not what a GRBL lacks
+            lacks = result.code == "UNSUPPORTED"  # what a GRBL machine has not: logged, no box
+            if result.verb in ("HOME", "JOG", "SD", "ZERO", "SPINDLE", "SET") and not lacks:
+                self.w.notifier.warning(self.tr("Machine refused"), shown)
 
     # -- the ~30 Hz refresh -----------------------------------------------------------
 
