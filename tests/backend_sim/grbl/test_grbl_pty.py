@@ -173,7 +173,7 @@ def test_the_real_firmware_simulator(tmp_path):
         pytest.skip("socat is needed to put grbl-sim on a pty")
     link = tmp_path / "grbl"
     proc = subprocess.Popen([socat, f"PTY,raw,echo=0,link={link}",
-                             f"EXEC:{exe} -n -s /dev/null,pty,raw,echo=0"])
+                             f"EXEC:{exe} -n -s /dev/null,pty,raw,echo=0"], cwd=tmp_path)  # its EEPROM.DAT
     try:
         for _ in range(100):
             if link.exists():
