@@ -21,6 +21,7 @@ from app.profile import MachineProfile
 from backend_sim.clock import SimClock
 from backend_sim.grbl.machine import PLANNER_BLOCKS, GrblMachine
 from backend_sim.host_port import HostPort
+from backend_sim.simulator import Simulator
 from backend_sim.wire import Wire, to_ms, uart_byte_time
 
 FAR_MS = 1 << 62
@@ -68,36 +69,16 @@ class GrblSimulator:
             self.machine.motion.trip_limit(axis)
             self.wake()
 
-    # ------------------------------------------------------------------ as fast as possible
-
-    def run_for(self, seconds: float) -> None:
-        with self.lock:
-            end = self.clock.now_ms + round(seconds * 1000)
-            if self._running:
-                self._wait_running(lambda: False, end)
-            else:
-                self._step_to(end)
-
-    def run_until(self, predicate: Callable[[], bool], timeout: float = 60.0) -> bool:
-        with self.lock:
-            return self.run_until_locked(predicate, self.clock.now_ms + round(timeout * 1000))
-
-    def run_until_locked(self, predicate: Callable[[], bool], end_ms: int | None) -> bool:
-        if self._running:
-            return self._wait_running(predicate, end_ms)
-        end = FAR_MS if end_ms is None else end_ms
-        while not predicate():
-            if self.clock.now_ms >= end:
-                return False
-            self._step_to(min(end, self.clock.now_ms + 1000), predicate)
-        return True
-
-    def _wait_running(self, predicate, end_ms) -> bool:
-        while not predicate():
-            if end_ms is not None and self.clock.now_ms >= end_ms:
-                return False
-            self.condition.wait(0.05)
-        return True
+    # ------------------------------------------------------------------ runners
+    # The mill's simulator's, unchanged: they need only the clock, the lock, the
+    # condition, ``_running``/``_thread`` and ``_step_to``/``_thread_main`` below.
+    run_for = Simulator.run_for
+    run_until = Simulator.run_until
+    run_until_locked = Simulator.run_until_locked
+    _wait_running = Simulator._wait_running
+    running = Simulator.running
+    start = Simulator.start
+    stop = Simulator.stop
 
     def _step_to(self, end_ms: int, predicate: Callable[[], bool] | None = None) -> None:
         clock, machine = self.clock, self.machine
@@ -129,30 +110,6 @@ class GrblSimulator:
         if data:
             self.host_port.deliver(data)
             self.condition.notify_all()
-
-    # ------------------------------------------------------------------ own thread
-
-    @property
-    def running(self) -> bool:
-        return self._running
-
-    def start(self, speed: float | None = 1.0) -> None:
-        if self._running:
-            self.clock.set_speed(speed)
-            return
-        with self.lock:
-            self.clock.set_speed(speed)
-            self._running = True
-        self._thread = threading.Thread(target=self._thread_main, name="grbl-sim", daemon=True)
-        self._thread.start()
-
-    def stop(self) -> None:
-        with self.lock:
-            self._running = False
-            self.condition.notify_all()
-        if self._thread is not None and self._thread is not threading.current_thread():
-            self._thread.join(timeout=5)
-        self._thread = None
 
     def wake(self) -> None:
         self.condition.notify_all()

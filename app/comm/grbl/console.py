@@ -18,6 +18,7 @@ import time
 from pathlib import Path
 
 from app.comm.console_client import ConsoleClient, ConsoleError, load_program
+from app.comm.console_jobs import JobCommands
 from app.comm.console_printer import Printer
 from app.comm.grbl.events import GrblListener
 from app.comm.grbl.session import GrblSession
@@ -224,7 +225,7 @@ class GrblConsole(ConsoleClient):
         while not ended():
             self.wait(lambda: ended() or bool(self.printer.stops), what="the job to end", through_loss=True)
             if self.printer.stops:
-                self._answer_stop(self.printer.stops.pop(0))
+                self.answer_stop(self.printer.stops.pop(0))
         job = self.printer.jobs[-1] if len(self.printer.jobs) > jobs else None
         if job is None:
             raise ConsoleError("job cut off: the link was lost or the machine reset", 3)
@@ -234,15 +235,4 @@ class GrblConsole(ConsoleClient):
             raise ConsoleError(f"job failed: {localize(job.reason)}")
         print(f"job completed: {job.total} lines", file=self.out)
 
-    def _answer_stop(self, event) -> None:
-        print(f"program stop at device line {event.index}: {event.line}", file=self.out)
-        answer = self.at_stops
-        if answer == "ask":
-            try:
-                answer = input("Enter continues, 'stop' ends the job: ").strip().lower() or "continue"
-            except EOFError:
-                answer = "stop"
-        if answer.startswith("s"):
-            self.session.stop()
-        else:
-            self.session.resume()
+    answer_stop = JobCommands.answer_stop  # the mill's console's prompt, as it is

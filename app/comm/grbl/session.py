@@ -30,13 +30,10 @@ from collections.abc import Callable
 from app.comm.events import (
     AlarmEvent,
     CommandResult,
-    ErrorEvent,
     FrameEvent,
     JobEvent,
     LinkEvent,
-    LogEvent,
     ResumeOffer,
-    StateEvent,
 )
 from app.comm.grbl import protocol as p
 from app.comm.grbl.charcount import GRBL_RX_BUFFER, CharCounter
@@ -49,6 +46,7 @@ from app.comm.grbl.status import ReportMerger, to_status_event
 from app.comm.grbl.verbs import FrameVerbs
 from app.comm.heartbeat import LinkMonitor, LinkState
 from app.comm.listener import TRANSITIONS, SessionState
+from app.comm.session import Session
 from app.i18n import msg
 
 S = SessionState
@@ -226,14 +224,13 @@ class GrblSession(GrblJobControl, GrblOperations, FrameVerbs):
             self.listener.on_frame(FrameEvent("tx", "^", name))
         self._flush()
 
-    def _flush(self) -> None:
-        if not self._out or self._write is None:
-            return
-        data, self._out = bytes(self._out), bytearray()
-        try:
-            self._write(data)
-        except OSError as exc:
-            self.detach(f"write failed: {exc}")
+    # The frame protocol's session's own helpers, as they are: write out (a failed write
+    # is a link loss), the one place the state changes (checked against TRANSITIONS),
+    # the log and errors.
+    _flush = Session._flush
+    _set_state = Session._set_state
+    _log = Session._log
+    _error = Session._error
 
     # ------------------------------------------------------------------ lines in
 
@@ -435,28 +432,12 @@ class GrblSession(GrblJobControl, GrblOperations, FrameVerbs):
         silent = self.link.silent_for(self.clock()) if self.attached else 0.0
         self.listener.on_link_changed(LinkEvent(self.link.state.value, silent, 0.0, False, reason))
 
-    def _set_state(self, new: SessionState) -> None:
-        old = self.state
-        if new is old:
-            return
-        if new not in TRANSITIONS[old]:
-            raise RuntimeError(f"session state {old.name} -> {new.name} is not allowed")
-        self.state = new
-        self.listener.on_state_changed(StateEvent(old.name, new.name))
-
     def _notify(self, name: str, event) -> None:
         """A GRBL-only event, for a listener that has its method (a plain
         ``SessionListener`` does not)."""
         method = getattr(self.listener, name, None)
         if method is not None:
             method(event)
-
-    def _log(self, level: str, text: str, source: str = "host") -> None:
-        self.listener.on_log(LogEvent(level, text, source))
-
-    def _error(self, code: str, text: str) -> None:
-        self.listener.on_error(ErrorEvent(code, text))
-        self._log("error", text)
 
     def _offer(self, offer: ResumeOffer) -> None:
         self._set_state(S.RESTART_REQUIRED)
