@@ -7,8 +7,8 @@ preceded by ``preamble`` texts that belong to no program line. The session asks
 stop or at the end, or None while it must wait) and reports back with ``sent``,
 ``acked``, ``synced`` and ``planner_report``. Indices are program line indices;
 ``done`` is the last line known finished: every line answered before an idle report or
-a sync, or (while running, with ``Bf:`` in the reports) the line before the last
-``used`` motion blocks still in the planner.
+a sync, or, while running, the answered motion line before the last ``used`` ones
+(``Bf:``'s blocks in use, else the planner's size: never more lines than blocks wait).
 """
 
 from __future__ import annotations

@@ -198,9 +198,12 @@ class GrblJobControl:
         self._progress()
 
     def _blocks_used(self, status) -> int | None:
-        if status.planner_free is None:
-            return None
+        """Planner blocks that may still hold answered lines: ``Bf:``'s count when the
+        report has it, else the whole planner (``[OPT:]``: GRBL answers a motion line
+        only once it is in the planner, so older answered lines have finished)."""
         size = self.info.planner_blocks if self.info and self.info.planner_blocks else None
+        if status.planner_free is None:
+            return size
         self._planner_max = max(getattr(self, "_planner_max", 0), status.planner_free)
         return (size or self._planner_max) - status.planner_free
 

@@ -251,3 +251,16 @@ def test_frame_protocol_queries_answered_from_what_grbl_reported():
     assert not h.session.optional_stop and h.lines() == []
     h.session.list_sd()
     assert h.rec.of("on_command_done")[-1].code == "UNSUPPORTED"
+
+
+def test_done_follows_the_planner_size_without_buffer_reports():
+    h = Harness()
+    h.answer_refresh()  # [OPT:V,15,128]; $10=1: no Bf in the reports
+    lines = [f"G01 X{i % 10} F100" for i in range(40)]
+    h.session.start_job(lines)
+    for _ in range(31):  # the preamble and 30 lines answered
+        h.take()
+        h.feed("ok")
+    h.feed("<Run|MPos:0,0,0|FS:100,0>")
+    progress = h.session.job.progress()
+    assert progress.acked == 29 and progress.done == 29 - 15
