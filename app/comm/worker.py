@@ -72,6 +72,7 @@ SLOT_NAMES = frozenset({
 MACHINE_CALLS = frozenset({"set_feed_override", "set_rapid_override", "set_spindle_override", "jog_cancel",
                            "jog_to_limit", "unlock", "reset", "read_settings", "write_setting"})
 PUMP_MS = 5
+GRBL_PUMP_MS = 2  # GRBL's only window is its 128-byte buffer (11 ms at 115200): answer its oks sooner
 IDLE_PUMP_MS = 50  # with no port open: nothing arrives, the session's timers are coarse
 READ_CHUNK = 65536
 QUIET_KINDS = frozenset({*"DAFS", "job", "preamble", "sync", "<", "ok"})  # GRBL's stream kinds too
@@ -222,7 +223,7 @@ class SerialWorker(QObject):
         early = getattr(self.transport, "probe_bytes", b"")
         if early:
             self.session.feed(early)
-        self._pump_every(PUMP_MS)
+        self._pump_every(GRBL_PUMP_MS if kind == "grbl" else PUMP_MS)
         self.capabilities_changed.emit(getattr(self.session, "capabilities", FRAME_CAPABILITIES))
         self.connected.emit(url)
 
