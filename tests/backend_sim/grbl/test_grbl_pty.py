@@ -191,3 +191,26 @@ def test_the_real_firmware_simulator(tmp_path):
     finally:
         proc.terminate()
         proc.wait(5)
+
+
+def test_link_loss_mid_job_offers_start_here_and_finishes(rig):
+    rig.cmd_home()  # unhomed, the machine does not know where it stands
+    lines = ["G01 X10 Y10 F600"] + [f"G01 X{10 + (i % 2) * 30} Y{10 + i}" for i in range(60)]
+    rig.session.start_job(lines)
+    rig.wait(lambda: rig.session.job is not None and rig.session.job.acked >= 20, 60.0, "some lines")
+    path = rig.transport.port
+    rig.transport.close()
+    rig.session.detach("unplugged")
+    assert rig.session.state.name == "INTERRUPTED"
+    rig.transport = serial.Serial(path, 115200, timeout=0)
+    rig.session.attach(rig.transport.write)
+    rig.wait(lambda: rig.session.state.name == "RESTART_REQUIRED", 60.0, "the offer", through_loss=True)
+    start = rig.session.last_job.done + 1
+    assert 0 < start <= 61
+    rig.wait(lambda: rig.session.grbl_status.state == "Idle", 120.0, "the machine to finish its buffer")
+    jobs = len(rig.printer.jobs)
+    assert rig.session.confirm_restart()
+    rig._wait_job(jobs)
+    executed = _executed(rig.sim)
+    assert executed[-(len(lines) - start):] == lines[start:]  # the restart ran each line once
+    assert all(line in executed for line in lines)
