@@ -102,6 +102,11 @@ if __name__ == "__main__":
     main()
 
 
+def _step(ok: bool, what: str) -> None:
+    if not ok:
+        raise RuntimeError(f"bench_grbl: no {what} from the GRBL simulator")
+
+
 def bench_window(lines_limit: int = 100_000) -> None:
     """The window streaming bench_ui's 100,000-line job to ``cnc-sim --grbl --pty`` (real
     time, 115200 baud, check mode): the 10 ms timer's lateness (GUI stall, goal <= 50 ms)
@@ -123,11 +128,11 @@ def bench_window(lines_limit: int = 100_000) -> None:
         try:
             window.connection.driver.setCurrentIndex(2)  # GRBL
             window.operator.connect_to(pty)
-            _wait(app, lambda: binder.status is not None, 30)
+            _step(_wait(app, lambda: binder.status is not None, 30), "a status report")
             window.link.call("send_command", "$X")
-            _wait(app, lambda: binder.status.state == "IDLE", 10)
+            _step(_wait(app, lambda: binder.status.state == "IDLE", 30), "the unlock")
             window.controls.check_mode.setChecked(True)
-            _wait(app, lambda: window.link.worker.session.check_mode, 10)
+            _step(_wait(app, lambda: window.link.worker.session.check_mode, 30), "check mode")
             idle = _lateness(app, 5.0)
             started = time.monotonic()
             window.operator.start()
