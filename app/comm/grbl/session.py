@@ -96,6 +96,8 @@ class GrblSession(GrblJobControl, GrblOperations, FrameVerbs):
         self._next_poll = 0.0
         self._contact = False
         self._settings_rows: list[tuple[int, str]] = []
+        self._deferred: list[tuple] = []  # local answers waiting for a report (verbs.py)
+        self.reports = 0  # status reports received
         self._handlers = {p.Ok: self._on_ok, p.Error: self._on_error, p.Alarm: self._on_alarm,
                           p.Welcome: self._on_welcome, p.Report: self._on_report,
                           p.SettingLine: self._on_setting, p.Feedback: self._on_feedback,
@@ -333,6 +335,8 @@ class GrblSession(GrblJobControl, GrblOperations, FrameVerbs):
         self.status = to_status_event(status, f"grbl-{self.boots}", acc, done, self.homed, waiting)
         self._notify("on_grbl_status", status)
         self.listener.on_status(self.status)
+        self.reports += 1
+        self.answer_deferred()
 
     def _on_setting(self, item: p.SettingLine) -> None:
         self._settings_rows.append((item.number, item.value))
@@ -408,6 +412,7 @@ class GrblSession(GrblJobControl, GrblOperations, FrameVerbs):
     def _after_command(self, result: CommandResult) -> None:
         if result.verb == "$$":
             self.settings = dict(self._settings_rows)
+            self.answer_deferred()
             self.merger.inches = self.settings.get(13) == "1"
             self._notify("on_settings", SettingsEvent(tuple(self._settings_rows)))
         elif result.verb == "$H":
@@ -423,6 +428,9 @@ class GrblSession(GrblJobControl, GrblOperations, FrameVerbs):
         self._error("LINK_LOST", msg("link to the machine lost: {reason}", reason=reason))
         for out in [o for o in self.counter.clear() if o.kind == "command"] + self._queue:
             self._command_done(CommandResult(out.index, out.text, ok=False, info=reason, code="LINK_LOST"))
+        for cid, verb, args, _answer in self._deferred:
+            self._command_done(CommandResult(cid, verb, args, ok=False, info=reason, code="LINK_LOST"))
+        self._deferred.clear()
         self._queue.clear()
         self._job_link_lost(reason)
         if self.job is None and not self.attached and self.state in (S.READY, S.CONNECTING):

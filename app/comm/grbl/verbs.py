@@ -2,10 +2,12 @@
 can send the same words to either driver (a mixin of ``GrblSession``).
 
 ``send_command(text)``: ``SPINDLE <rpm>`` / ``SPINDLE OFF`` -> ``M3 S<rpm>`` / ``M5``;
-``ZERO X Y Z`` (any of them) -> ``G10 L20 P1 X0 ..`` (work zero here, in G54);
+``ZERO X Y Z`` (any of them) -> ``G10 L20 P1 X0 ..`` (work zero here, in G54), answered
+with the new zero once a report carries it;
 ``SET CHECK 1|0`` -> ``$C`` when the mode differs; ``SET OPTSTOP 1|0`` is the host's own
 switch; ``GET OFFSET_X|Y|Z`` is answered from the live ``WCO``, as machine millimetres
-from the near end of GRBL's travel (the frame protocol's machine frame); ``HOME``
+from the near end of GRBL's travel (the frame protocol's machine frame), once ``$$`` and a
+report have come; ``HOME``
 ``$H``; ``JOG X 10 300`` a ``$J=`` jog; ``STATUS``/``PING`` answered by the next report;
 other ``SET``/``GET`` and the SD verbs are refused with ``UNSUPPORTED`` (no such thing on
 GRBL). Any other line goes to the machine as it is (``G0 X10``, ``$$``, ``$H``).
@@ -34,8 +36,7 @@ class FrameVerbs:
         return handler(words[0].upper(), [w.upper() for w in words[1:]])
 
     def _local(self, verb: str, args, ok: bool = True, info: str = "", code: str = "") -> int:
-        cid = self._next_id
-        self._next_id += 1
+        cid = self._reserve_id()
         self._command_done(CommandResult(cid, verb, tuple(args), ok, info, code))
         return cid
 
@@ -49,9 +50,24 @@ class FrameVerbs:
         return self.command(f"M3 S{float(args[0]):g}")
 
     def _verb_zero(self, verb: str, args) -> int:
+        """``G10 L20 P1`` here; answered (as the frame protocol does, with the new work zero
+        ``X.. Y.. Z..`` in machine millimetres) once a report after it carries the new WCO."""
         axes = "".join(args) or "XYZ"
         words = " ".join(f"{a}0" for a in _AXES if a in axes)
-        return self.command(f"G10 L20 P1 {words}")
+        cid = self._reserve_id()
+        after: list = []
+
+        def written(result) -> None:
+            if not result.ok:
+                self._deferred = [d for d in self._deferred if d[0] != cid]
+                self._command_done(CommandResult(cid, verb, tuple(args), False, result.info, result.code))
+            else:
+                after.append(self.reports)
+
+        self._deferred.append((cid, verb, tuple(args), lambda: self._work_zero_text() if after and
+                               self.reports > after[0] else None))
+        self.command(f"G10 L20 P1 {words}", then=written)
+        return cid
 
     def _verb_home(self, verb: str, args) -> int:
         return self.home()
@@ -74,12 +90,42 @@ class FrameVerbs:
         return self._unsupported(verb, args)
 
     def _verb_get(self, verb: str, args) -> int:
+        """``GET OFFSET_X|Y|Z``: answered once the machine has reported its travel ($$) and a
+        WCO; anything else is not on GRBL."""
         name = args[0] if args else ""
-        if name in ("OFFSET_X", "OFFSET_Y", "OFFSET_Z") and self.grbl_status is not None:
-            k = "XYZ".index(name[-1])
-            low = axis_range(self.settings, k)[0] if 130 + k in self.settings else 0.0
-            return self._local(verb, args, info=f"{name} {self.grbl_status.wco[k] - low:.3f}")
-        return self._unsupported(verb, args)
+        if name not in ("OFFSET_X", "OFFSET_Y", "OFFSET_Z"):
+            return self._unsupported(verb, args)
+        k = "XYZ".index(name[-1])
+        cid = self._reserve_id()
+        self._deferred.append((cid, verb, tuple(args), lambda: f"{name} {self._work_zero()[k]:.3f}"
+                               if self._work_zero() is not None else None))
+        self.answer_deferred()
+        return cid
+
+    def _work_zero(self):
+        """The work zero in millimetres from the near end of GRBL's travel (the frame
+        protocol's machine frame), or None before ``$$`` and a report."""
+        if self.grbl_status is None or any(130 + k not in self.settings for k in range(3)):
+            return None
+        return tuple(self.grbl_status.wco[k] - axis_range(self.settings, k)[0] for k in range(3))
+
+    def _work_zero_text(self):
+        zero = self._work_zero()
+        return None if zero is None else " ".join(f"{a}{v:.3f}" for a, v in zip(_AXES, zero, strict=True))
+
+    def answer_deferred(self) -> None:
+        """Answer the local commands that were waiting for what the machine reports."""
+        for item in list(self._deferred):
+            cid, verb, args, answer = item
+            info = answer()
+            if info is not None:
+                self._deferred.remove(item)
+                self._command_done(CommandResult(cid, verb, args, True, info))
+
+    def _reserve_id(self) -> int:
+        cid = self._next_id
+        self._next_id += 1
+        return cid
 
     def _verb_sd(self, verb: str, args) -> int:
         return self._unsupported(verb, args)

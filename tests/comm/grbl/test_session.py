@@ -264,3 +264,19 @@ def test_done_follows_the_planner_size_without_buffer_reports():
     h.feed("<Run|MPos:0,0,0|FS:100,0>")
     progress = h.session.job.progress()
     assert progress.acked == 29 and progress.done == 29 - 15
+
+
+def test_frame_protocol_get_and_zero_wait_for_what_grbl_reports():
+    h = Harness()
+    h.session.send_command("GET OFFSET_X")  # nothing known yet: answered later, not guessed
+    assert not [r for r in h.rec.of("on_command_done") if r.verb == "GET"]
+    h.answer_refresh()  # $$ and a report with WCO -150,-150,-10
+    got = [r for r in h.rec.of("on_command_done") if r.verb == "GET"]
+    assert len(got) == 1 and got[0].info == "OFFSET_X 0.000"
+    h.session.send_command("ZERO X")
+    assert h.lines() == ["G10 L20 P1 X0"]
+    h.feed("ok")
+    assert not [r for r in h.rec.of("on_command_done") if r.verb == "ZERO"]
+    h.feed("<Idle|MPos:-100.000,-100.000,-5.000|FS:0,0|WCO:-100.000,-150.000,-10.000>")
+    zero = [r for r in h.rec.of("on_command_done") if r.verb == "ZERO"]
+    assert len(zero) == 1 and zero[0].info == "X50.000 Y0.000 Z20.000"
