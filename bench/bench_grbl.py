@@ -9,8 +9,8 @@ Printed: lines, bytes, simulated seconds, the character-counting ceiling (the by
 at 115200 baud, 10 bits a byte: the fastest any sender can go) and the share of it
 reached (goal >= 95 %), and the wall time the run took. Then the window streaming
 100,000 lines to ``cnc-sim --grbl --pty`` in real time: the GUI's longest stall (goal
-<= 50 ms) and the share reached through a real pty. ``python -m bench bench_grbl
-[LINES] [stream|window]`` limits the lines or runs one part. Figures only.
+<= 50 ms) and the share reached through a real pty. ``BENCH_GRBL="[LINES] [stream|window]"
+python -m bench bench_grbl`` limits the lines or runs one part. Figures only.
 """
 
 from __future__ import annotations
@@ -73,7 +73,7 @@ def stream(lines: list[str]) -> dict:
 
 
 def main(argv: list[str] | None = None) -> None:
-    argv = sys.argv[1:] if argv is None else argv
+    argv = os.environ.get("BENCH_GRBL", "").split() if argv is None else argv
     limit = next((int(a) for a in argv if a.isdigit()), None)
     if "window" not in argv:
         bench_stream(limit)
