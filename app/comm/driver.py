@@ -17,6 +17,8 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Protocol
 
+from app.capabilities import Capabilities as BaseCapabilities
+
 DRIVERS = ("frame", "grbl")
 _GRBL_SIGNS = re.compile(rb"(?im)^(grbl|grblhal) \d|^<[A-Za-z]+[|:]|^\[(MSG|GC|VER|OPT):"
                          rb"|^(ok|error:\d+|ALARM:\d+)\r?$")
@@ -24,28 +26,23 @@ _FRAME_SIGNS = re.compile(rb"(?m)^[SAFONEILX] [^\r\n]*\*[0-9A-Fa-f]+\r?$")
 
 
 @dataclass(frozen=True)
-class Capabilities:
-    """What a machine offers; the window's state table hides or disables the rest."""
+class Capabilities(BaseCapabilities):
+    """``app.capabilities.Capabilities`` (what the window's state table reads: ``sd_card``,
+    ``exact_resume``, ``crc_link``, ``oled_panel``, ``cover``, ``overrides``) plus what a
+    driver adds; the defaults are the frame protocol's student mill."""
 
-    sd_card: bool
-    exact_resume: bool  # resume at the next line after a link loss, none twice
-    crc_link: bool  # frames carry a check: noise cannot forge a command
-    oled_panel: bool
-    cover: bool  # a cover / safety-door interlock the machine reports
-    overrides: bool  # feed, rapid and spindle overrides
     check_mode: bool = True
     settings_table: bool = False  # GRBL's $$ table (name, unit, meaning; backup/restore)
     unlock: bool = False  # an alarm lock the operator lifts ($X)
     hold_to_jog: bool = False  # a jog that is cancelled on key release
-    home_recover: bool = False  # HOME RECOVER after a fault
+    home_recover: bool = True  # HOME RECOVER after a fault
     driver: str = "frame"
 
 
-FRAME_CAPABILITIES = Capabilities(sd_card=True, exact_resume=True, crc_link=True, oled_panel=True,
-                                  cover=True, overrides=False, home_recover=True, driver="frame")
+FRAME_CAPABILITIES = Capabilities()
 GRBL_CAPABILITIES = Capabilities(sd_card=False, exact_resume=False, crc_link=False, oled_panel=False,
                                  cover=True, overrides=True, settings_table=True, unlock=True,
-                                 hold_to_jog=True, driver="grbl")
+                                 hold_to_jog=True, home_recover=False, driver="grbl")
 
 
 class Machine(Protocol):

@@ -14,7 +14,7 @@ Signals (all carry one frozen dataclass of ``app.comm.events`` unless said other
 ``status_changed``            ``StatusEvent``: every ``S`` frame (position, state, flags, ...)
 ``progress_changed``          ``ProgressEvent``: job/upload progress in program line indices
 ``link_changed``              ``LinkEvent``: CONNECTED / DEGRADED / LOST / DISCONNECTED,
-                              resend rate and link-quality warning
+                              resend rate of the last minute and link-quality warning
 ``alarm_raised``              ``AlarmEvent``: an ``X`` frame (LIMIT, HOST_LOST, BOOT, ...)
 ``log_added``                 ``LogEvent``: a line for the log (host or machine)
 ``frame_logged``              ``FrameEvent``: console traffic; D/A/F/S only when verbose
@@ -23,6 +23,7 @@ Signals (all carry one frozen dataclass of ``app.comm.events`` unless said other
 ``error_occurred``            ``ErrorEvent``: LINK_LOST, RETRIES_EXHAUSTED, MACHINE_RESET, ...
 ``resume_offered``            ``ResumeOffer``: after a reconnect mid-job (same or new boot)
 ``program_stopped``           ``ProgramStopEvent``: the machine holds at M00/M01/M06 (RESUME goes on)
+``hold_reported``             ``HoldEvent``: why the machine holds or stopped (status ``why``), once
 ``connected``                 ``str``: the URL just opened
 ``capabilities_changed``      ``driver.Capabilities`` of the machine just connected
 ``machine_info_changed``      ``grbl.events.MachineInfo``: a GRBL machine's welcome and ``$I``
@@ -121,6 +122,9 @@ class _Relay(SessionListener):
     def on_program_stop(self, event):
         self.w.program_stopped.emit(event)
 
+    def on_hold(self, event):
+        self.w.hold_reported.emit(event)
+
     def on_machine_info(self, event):
         self.w.machine_info_changed.emit(event)
 
@@ -140,6 +144,7 @@ class SerialWorker(QObject):
     error_occurred = Signal(object)
     resume_offered = Signal(object)
     program_stopped = Signal(object)
+    hold_reported = Signal(object)
     connected = Signal(str)
     capabilities_changed = Signal(object)  # driver.Capabilities of the session just connected
     machine_info_changed = Signal(object)  # grbl.events.MachineInfo: welcome and $I

@@ -2,13 +2,14 @@
 check mode, settings and the ``$#``/``$G`` reads. A mixin of ``GrblSession``.
 
 - ``jog(axis, distance, feed)``: ``$J=G91 G21 <axis><distance> F<feed>`` (a jog never
-  changes the parser's modes); ``jog_to_limit(axis, direction, feed)`` jogs towards the
-  end of the travel for hold-to-jog (needs ``$13x`` and homing, else ``jog_span``
-  millimetres), ``jog_cancel()`` sends 0x85 (on key release).
+  changes the parser's modes), answered as ``JOG`` as the frame protocol does;
+  ``jog_to_limit(axis, direction, feed)`` jogs towards the end of the travel for
+  hold-to-jog (needs ``$13x`` and homing, else ``JOG_SPAN_MM``), ``jog_cancel()`` sends
+  0x85 (on key release).
 - ``set_feed_override(percent)`` / ``set_spindle_override`` send the fewest
   0x90-0x94 / 0x99-0x9D bytes from the value of the last report;
   ``set_rapid_override(100|50|25)``.
-- ``home()`` ``$H``; ``unlock_advice()`` says why the machine is locked (say it before
+- ``home()`` ``$H`` (answered as ``HOME``); ``unlock_advice()`` says why the machine is locked (say it before
   ``unlock()``, ``$X``); ``set_check_mode(on)`` toggles ``$C``.
 - Settings: ``read_settings()`` ``$$``; ``write_setting(n, value)`` send-and-wait;
   ``settings_diff(wanted)`` and ``restore_settings(wanted)`` for a backup file
@@ -56,7 +57,8 @@ class GrblOperations:
                                  axis=axis, distance=distance_mm))
         if not (math.isfinite(feed_mm_min) and feed_mm_min > 0):
             raise ValueError(msg("jog feed must be above 0 mm/min, not {feed}", feed=feed_mm_min))
-        return self.command(f"$J=G91 G21 {axis}{distance_mm:.3f} F{feed_mm_min:.0f}")
+        return self.as_verb("JOG", (axis, f"{distance_mm:g}", f"{feed_mm_min:g}"),
+                            f"$J=G91 G21 {axis}{distance_mm:.3f} F{feed_mm_min:.0f}")
 
     def jog_to_limit(self, axis: str, direction: int, feed_mm_min: float) -> int:
         """Hold-to-jog: jog towards the end of the travel (``jog_cancel`` on release)."""
@@ -97,8 +99,9 @@ class GrblOperations:
     # ------------------------------------------------------------------ machine commands
 
     def home(self, mode: str = "NORMAL", then=None) -> int:
-        """``$H`` (GRBL has one homing cycle: ``mode`` is the frame protocol's and ignored)."""
-        return self.command("$H", then=then)
+        """``$H``, answered as ``HOME mode`` (GRBL has one homing cycle: ``mode`` is the
+        frame protocol's and changes nothing)."""
+        return self.as_verb("HOME", (mode,), "$H", then)
 
     def unlock_advice(self):
         """Why the machine is locked, to show before ``unlock``."""

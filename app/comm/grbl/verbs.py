@@ -44,10 +44,25 @@ class FrameVerbs:
         what = " ".join([verb, *args])
         return self._local(verb, args, False, msg("a GRBL machine has no {what}", what=what), "UNSUPPORTED")
 
+    def as_verb(self, verb: str, args, text: str, then=None) -> int:
+        """Send the GRBL line ``text`` and answer it as the frame protocol's ``verb args``
+        (what the window waits for), with the line's own outcome."""
+        cid = self._reserve_id()
+        args = tuple(str(a) for a in args)
+
+        def answered(result) -> None:
+            mine = CommandResult(cid, verb, args, result.ok, result.info, result.code, result.rows)
+            self._command_done(mine)
+            if then is not None:
+                then(mine)
+
+        self.command(text, then=answered)
+        return cid
+
     def _verb_spindle(self, verb: str, args) -> int:
         if not args or args[0] == "OFF":
-            return self.command("M5")
-        return self.command(f"M3 S{float(args[0]):g}")
+            return self.as_verb(verb, args, "M5")
+        return self.as_verb(verb, args, f"M3 S{float(args[0]):g}")
 
     def _verb_zero(self, verb: str, args) -> int:
         """``G10 L20 P1`` here; answered (as the frame protocol does, with the new work zero
@@ -70,7 +85,7 @@ class FrameVerbs:
         return cid
 
     def _verb_home(self, verb: str, args) -> int:
-        return self.home()
+        return self.home(*args[:1])
 
     def _verb_jog(self, verb: str, args) -> int:
         return self.jog(args[0], float(args[1]), float(args[2]))
