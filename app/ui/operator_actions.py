@@ -78,7 +78,7 @@ class OperatorActions(QObject):
 
     def connect_to(self, url: str, baud: int = 115200) -> None:
         self.w.connection.set_link("CONNECTING")
-        self.link.connect_to(url)
+        self.link.connect_to(url, self.w.connection.driver_choice())
 
     def disconnect(self) -> None:
         self.link.call("disconnect_from")
