@@ -27,7 +27,7 @@ O_KEYWORDS = ("sub", "endsub", "call", "return", "if", "elseif", "else", "endif"
               "endwhile", "do", "repeat", "endrepeat", "break", "continue")
 WITH_VALUE = {"if", "elseif", "while", "repeat"}  # keywords that need one [value]
 MAY_VALUE = {"return", "endsub"}  # keywords that may carry one [value]
-LETTERS = set("abcdefghijklmnpqrstuvwxyz")
+LETTERS = set("abcdefghijklmnpqrstuvwxyz@^")  # @ ^: LinuxCNC's polar radius and angle
 _COMMENT = re.compile(r"\(([^()]*)\)")
 _CALLS = {("M", 98.0), ("M", 99.0), ("G", 65.0)}  # a word's letter ('o' is a statement)
 
