@@ -130,9 +130,11 @@ def _empty(name: str, message: str, profile: MachineProfile) -> Program:
     return program
 
 
-def _start_state(profile: MachineProfile, tools: dict | None) -> State:
-    """The interpreter's state before the first line: LinuxCNC's, in G54, with the tool table."""
-    start = State(tools=dict(tools or {}), arc_tolerance=profile.motion.arc_tolerance_mm)
+def _start_state(profile: MachineProfile, tools: dict | None, block_delete: bool = False) -> State:
+    """The interpreter's state before the first line: LinuxCNC's, in G54, with the tool table
+    and the operator's block delete switch."""
+    start = State(tools=dict(tools or {}), arc_tolerance=profile.motion.arc_tolerance_mm,
+                  block_delete=block_delete)
     start.params.set(ACTIVE_SYSTEM, 1)  # G54, as LinuxCNC starts
     return start
 
@@ -164,10 +166,10 @@ def _expanded(lines: Lines, name: str, folder: Path | None, start: State, report
 
 
 def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfile,
-               tools: dict | None = None, folder: Path | None = None) -> Program:
+               tools: dict | None = None, folder: Path | None = None, block_delete: bool = False) -> Program:
     """Interpret ``lines``: the expander when the bytes in ``data`` need it, else the fast path."""
     report = Report()
-    start = _start_state(profile, tools)
+    start = _start_state(profile, tools, block_delete)
     if sniff.needs_expander(data[0]):
         data.clear()
         ops = _expanded(lines, name, folder, start, report)
@@ -222,21 +224,24 @@ class _in_thread(threading.Thread):
 
 
 def load_text(text: str, name: str = "<text>", profile: MachineProfile | None = None,
-              tools: dict | None = None, folder: Path | None = None) -> Program:
+              tools: dict | None = None, folder: Path | None = None, block_delete: bool = False) -> Program:
     """Interpret G-code ``text``; errors and warnings are in the result, never raised.
     ``tools`` is the tool table (``tools.Tool`` by number) for T, G43 H and G41 D;
-    ``folder`` is where its subprogram files are looked for (none when ``None``)."""
+    ``folder`` is where its subprogram files are looked for (none when ``None``);
+    ``block_delete``: the operator's switch (on: lines starting with ``/`` are skipped;
+    off, the default as on LinuxCNC and Fanuc controls: they run)."""
     profile = profile or MachineProfile()
     if "\x00" in text:
         return _empty(name, msg("not a text file (it contains NUL bytes)"), profile)
     text = clean_text(text)
     data = [text.encode("utf-8", "replace")]  # a \r is a space to the fast path
-    return _interpret(Lines(_split(text)), data, name, profile, tools, folder)
+    return _interpret(Lines(_split(text)), data, name, profile, tools, folder, block_delete)
 
 
-def load(path: str | Path, profile: MachineProfile | None = None, tools: dict | None = None) -> Program:
+def load(path: str | Path, profile: MachineProfile | None = None, tools: dict | None = None,
+         block_delete: bool = False) -> Program:
     """Read and interpret a G-code file; unreadable or non-UTF-8 files give an error.
-    ``tools`` is the tool table, as for ``load_text``; subprogram files are looked for
+    ``tools`` and ``block_delete`` as for ``load_text``; subprogram files are looked for
     in the file's folder."""
     path = Path(path)
     profile = profile or MachineProfile()
@@ -250,4 +255,4 @@ def load(path: str | Path, profile: MachineProfile | None = None, tools: dict | 
     lines = Lines(data=raw)  # split on first use, not here
     data = [raw]  # valid UTF-8: the bytes the fast path reads
     del raw
-    return _interpret(lines, data, str(path), profile, tools, path.parent)
+    return _interpret(lines, data, str(path), profile, tools, path.parent, block_delete)

@@ -56,6 +56,7 @@ class State:
     params: Params = field(default_factory=Params)
     tools: dict = field(default_factory=dict)  # tool number -> tools.Tool
     pending: dict[int, float] = field(default_factory=dict)
+    block_delete: bool = False  # the operator's switch: lines starting with "/" are skipped
 
     @property
     def scale(self) -> float:
@@ -73,6 +74,7 @@ class State:
         other.arc_not_allowed = self.arc_not_allowed
         other.comp = self.comp.copy() if self.comp is not None else None
         other.arc_tolerance, other.params, other.tools = self.arc_tolerance, self.params, self.tools
+        other.block_delete = self.block_delete
         return other
 
     def param(self, number: int) -> float:

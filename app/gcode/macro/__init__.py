@@ -55,7 +55,7 @@ def _no_cycle_collection():
 def expand(lines, name: str, folder: Path | None, state, ops: OpBuffer, report: Report) -> Trace:
     """Expand the program ``lines`` into ``ops`` (see the module docstring)."""
     fanuc = is_fanuc("\n".join(lines))
-    unit = Unit(name, lines, fanuc)
+    unit = Unit(name, lines, fanuc, getattr(state, "block_delete", False))
     for exc in unit.errors:
         report.add(exc.line, exc.column, ERROR, exc.message)
     params = getattr(state, "params", None)

@@ -1,7 +1,7 @@
 """One source line compiled once into a ``Block`` the walker runs as often as needed.
 
 Kinds: ``WORDS`` (G-code words whose values are functions, and assignments applied
-after the line is read), ``SKIP`` (empty, ``%``, block delete), ``OWORD`` (a
+after the line is read), ``SKIP`` (empty, ``%``, block delete with the switch on), ``OWORD`` (a
 LinuxCNC o-word statement: ``keyword``, o-name, optional value functions), and the
 Fanuc macro B statements ``PROGRAM`` (``O1234``), ``IF_GOTO``, ``IF_THEN``, ``GOTO``,
 ``WHILE`` (``WHILE [c] DO m``), ``DO`` (``DO m``) and ``END`` (``END m``). A Fanuc
@@ -72,6 +72,7 @@ class Block:
     call_only: bool = False  # Fanuc: the line is only that call and its P/L/arguments
     context: str = ""  # LinuxCNC call: the trace's name of the subroutine it runs
     plan: tuple | None = None  # Fanuc G65 line: where its P, L and arguments are (fanuc.g65_plan)
+    deleted: bool = False  # the line starts with "/" (block delete)
     comment: str = ""  # Fanuc: the text of the line's first comment (a #3000 alarm's message)
     called: dict = field(default_factory=dict)  # o-word call: caller's file id -> (unit, start, file id)
 
@@ -248,12 +249,11 @@ def _read_line(line: str, line_no: int, fanuc: bool) -> Block:
 
         block.kind, block.skip = SKIP, "%"
         return block
-    if text[0] == "/":
-        block.kind, block.skip = SKIP, "block delete"
-        return block
     reader = Reader(sq, line_no, fanuc)
-    if text[0] == "n" and len(text) > 1 and text[1].isdigit():
-        reader.pos = 1
+    if text[0] == "/":  # block delete: the rest is read; ``Unit`` skips it when the switch is on
+        block.deleted, reader.pos = True, 1
+    if text.startswith("n", reader.pos) and text[reader.pos + 1:reader.pos + 2].isdigit():
+        reader.pos += 1
         block.label = _integer(reader, "N")
     if reader.peek() == "o":
         return _oword(reader, block)

@@ -70,7 +70,8 @@ class Library:
     def _load(self, path: Path) -> int:
         file_id = self._by_path.get(path)
         if file_id is None:
-            unit = Unit(str(path), read_lines(path), self.units[0].fanuc)
+            main = self.units[0]
+            unit = Unit(str(path), read_lines(path), main.fanuc, main.block_delete)
             if unit.errors:
                 raise unit.errors[0]
             file_id = len(self.units)
