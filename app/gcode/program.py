@@ -28,6 +28,7 @@ from .limits import program_checks
 from .moves import moves_of
 from .offsets import ACTIVE_SYSTEM
 from .ops import OpBuffer, Ops, Source
+from .percent import percent_lines, report_tail
 from .reading import SourceError, clean_bytes, clean_text, read_source, text_problem
 from .render import render
 from .source import Lines
@@ -139,30 +140,33 @@ def _start_state(profile: MachineProfile, tools: dict | None, block_delete: bool
     return start
 
 
-def _plain(lines: Lines, data: list[bytes], start: State, report: Report) -> Ops:
-    """The fast path; ``data`` holds the bytes, handed over (emptied) to free them early."""
+def _plain(lines: Lines, data: list[bytes], start: State, report: Report, stop: int) -> tuple[Ops, int]:
+    """The fast path over the lines before index ``stop``; ``data`` holds the bytes,
+    handed over (emptied) to free them early. (ops, line of M2/M30 or 0)"""
     raw = data.pop()
     n = len(lines)  # reuse the chunks Lines already counted; otherwise scan makes its own
     buffer = OpBuffer()
     interpreter = runner.Runner(lines, buffer, report, start)
     for scan, ready in bulk.scan_stream(raw, n, lines.chunks or None):  # interpret as lines come
-        interpreter.advance(scan, ready)
+        interpreter.advance(scan, min(ready, stop))
     del raw, scan
-    interpreter.finish()
-    return buffer.finish()
+    ended = interpreter.finish().ended
+    return buffer.finish(), ended
 
 
-def _expanded(lines: Lines, name: str, folder: Path | None, start: State, report: Report) -> Ops:
-    """The expander's path (parameters, control flow, calls), rows traced to their source."""
+def _expanded(lines: Lines, name: str, folder: Path | None, start: State, report: Report,
+              stop: int) -> tuple[Ops, int]:
+    """The expander's path (parameters, control flow, calls) over the lines before index
+    ``stop``, rows traced to their source; (ops, line of M2/M30 or 0)."""
     from . import macro  # only for a program that needs it: a plain load never imports it
 
     buffer = OpBuffer()
-    trace = macro.expand(lines.as_list(), name, folder, start, buffer, report)
+    trace = macro.expand(lines.as_list()[:stop], name, folder, start, buffer, report)
     ops = buffer.finish()
     ops.source = Source(trace.file.array(np.int32), trace.call_line.array(np.int64),
                         trace.context.array(np.int32), trace.iteration.array(np.int32),
                         trace.files, trace.names)
-    return ops
+    return ops, trace.state.ended
 
 
 def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfile,
@@ -170,14 +174,18 @@ def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfi
     """Interpret ``lines``: the expander when the bytes in ``data`` need it, else the fast path."""
     report = Report()
     start = _start_state(profile, tools, block_delete)
+    percent = percent_lines(data[0])
+    closing = percent[1]
+    stop = closing - 1 if closing else len(lines)  # nothing after the closing % runs
     if sniff.needs_expander(data[0]):
         data.clear()
-        ops = _expanded(lines, name, folder, start, report)
+        ops, ended = _expanded(lines, name, folder, start, report, stop)
     else:
         big = len(data[0]) >= TRIM_BYTES
-        ops = _plain(lines, data, start, report)
+        ops, ended = _plain(lines, data, start, report, stop)
         if big:
             _give_back_free_memory()  # the scan's many chunk-sized temporaries
+    report_tail(lines, percent, ended, report)
     ops.starts()  # computed once, before two threads read it
     checking = _in_thread(checks.run, ops, profile, lines, report)  # numpy lets both run at once
     the_plan = normalize.plan(ops, profile.motion.arc_tolerance_mm)
