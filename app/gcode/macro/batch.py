@@ -21,6 +21,7 @@ from app.gcode.bulk import Scan
 from app.gcode.interp import interpret_line
 from app.gcode.lexer import Word
 
+from .errors import Stopped
 from .expr import NAMESPACE
 
 LETTERS = "XYZIJF"
@@ -139,11 +140,13 @@ class Batch:
         state, stop = vector.run(scan, 0, n, state, ops)
         if len(ops.blocks) > before:
             self._trace_block(ops, trace, table)
-        for i in range(stop, n):
-            state = self._one(self.blocks[i], table[i].tolist(), state, ops, trace)
-            if state.ended:
-                break
-        self.blocks.clear()
+        try:
+            for i in range(stop, n):
+                state = self._one(self.blocks[i], table[i].tolist(), state, ops, trace)
+                if state.ended:
+                    break
+        finally:
+            self.blocks.clear()
         return state
 
     def _where_columns(self) -> np.ndarray:
@@ -171,6 +174,8 @@ class Batch:
             if v == v and not (w.letter == "G" and v == -1.0):  # NaN, or -1 for G: a vacant word
                 words.append(Word(w.letter, v, w.column))
         before = len(ops.rows)
-        state, _ = interpret_line(state, words, block.line, ops, report)
+        state, refused = interpret_line(state, words, block.line, ops, report)
         trace.repeat(len(ops.rows) - before, file_id, context, int(row[9]), call_line or block.line)
+        if refused:
+            raise Stopped(block.line)
         return state

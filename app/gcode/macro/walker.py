@@ -8,7 +8,8 @@ file they came from, the main program's line that caused them, the subprogram an
 the loop iteration (``Trace``). Limits: a loop jumped back to more than
 ``LOOP_LIMIT`` times, calls nested deeper than ``DEPTH_LIMIT``, more than
 ``MOVE_LIMIT`` rows or ``BLOCK_LIMIT`` blocks run: an error naming the line. The
-first error stops the walk (rs274ngc stops too); it is reported with its file, and the
+first error stops the walk at once (rs274ngc stops too), a block the interpreter
+refused as much as the expander's own errors; it is reported with its file, and the
 rows before it stay, except after the move limit (``TooLarge``: none are kept).
 """
 
@@ -25,7 +26,7 @@ from . import block as bk
 from . import fanuc_system, predefined
 from .batch import Batch
 from .calls import Library
-from .errors import MacroError, TooLarge
+from .errors import MacroError, Stopped, TooLarge
 from .frame import Frame, Scope
 from .trace import FileReport, Trace
 
@@ -142,6 +143,8 @@ class Walker:
                 self._run_frame(f, frames)
             self.flush()
             self._finish_program()
+        except Stopped:
+            pass  # reported by the interpreter; the rows before it stay
         except TooLarge as exc:
             self.report.add(exc.line, exc.column, ERROR, exc.message, file=exc.file)
             self._drop_rows()
@@ -239,9 +242,11 @@ class Walker:
         self.flush()
         ops = self.ops
         before = len(ops.rows)
-        self.state, _ = interpret_line(self.state, words, b.line, ops, self.reports[f.file_id])
+        self.state, refused = interpret_line(self.state, words, b.line, ops, self.reports[f.file_id])
         self.fast_ok = self.state.fast_path_ok()
         self._trace_rows(f, self._call_line(f, b), before, b.line)
+        if refused:
+            raise Stopped(b.line)
         if self.state.ended:
             if f is self.frames[0]:
                 self._after_end(f)
