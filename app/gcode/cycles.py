@@ -16,6 +16,7 @@ import math
 from app.i18n import msg
 
 from .errors import LineError
+from .limits import dwell_problem
 from .ops import DWELL, FEED, RAPID, OpBuffer
 
 PECK_CLEARANCE_INCH = 0.010  # G73 retract / G83 re-entry clearance of rs274 2.9 (no ini)
@@ -93,6 +94,21 @@ def _drill(e: _Emitter, code, x, y, r, clear, bottom, p, q) -> None:
         e.rapid(x, y, clear)
 
 
+def _spend(state, code: int, line_no: int, repeats: int, rr: float, bottom: float, q: float) -> None:
+    """Count the moves of the block before making any (``limits.Budget``): a hole is at
+    most 5 moves and each peck 3 (G83) or 2 (G73)."""
+    pecks = 0
+    if code in (73, 83) and q > 0:
+        pecks = max(0, math.ceil(min((rr - bottom) / q, 1e15)) - 1)
+    moves = repeats * (5 + pecks * (3 if code == 83 else 2))
+    what = msg("{pecks:,} pecks", pecks=repeats * pecks) if pecks else (
+        msg("{repeats:,} repeats", repeats=repeats) if repeats > 1 else "")
+    try:
+        state.budget.spend(moves, f"G{code}", line_no, what)
+    except ValueError as exc:
+        raise LineError(0, exc.args[0]) from None
+
+
 def run_cycle(state, code: int, params, line_no: int, ops: OpBuffer) -> None:
     """Expand one cycle block (``state.motion`` is still the mode before this line)."""
     if state.plane != 0:
@@ -110,6 +126,9 @@ def run_cycle(state, code: int, params, line_no: int, ops: OpBuffer) -> None:
     if code in (82, 89):
         missing = msg("Dwell time P word missing with {code}", code=f"G{code}")
         p = _sticky(state, params, code, "P", "p", missing)
+        problem = dwell_problem(p)
+        if problem:
+            raise LineError(params["P"].column if "P" in params else 0, problem)
     if code in (73, 83):
         q = _sticky(state, params, code, "Q", "q", msg("Q word missing with {code}", code=f"G{code}"))
     repeats = 1
@@ -145,6 +164,7 @@ def run_cycle(state, code: int, params, line_no: int, ops: OpBuffer) -> None:
     if rr < bottom:
         column = params["R"].column if "R" in params else 0
         raise LineError(column, msg("R less than Z in cycle in XY plane"))
+    _spend(state, code, line_no, repeats, rr, bottom, q)
     e = _Emitter(state, line_no, ops)
     if initial < rr:
         e.rapid(prog[0], prog[1], rr)

@@ -3,7 +3,9 @@
 Most blocks a loop emits are ``G0``-``G3`` with X Y Z I J F: the walker collects
 their values here instead of calling ``interpret_line`` for each one, and
 ``flush()`` runs them through the numpy fast path (``vector.run``) as the loader
-does for a plain file, then gives the rows their own source line and trace. A
+does for a plain file, then gives the rows their own source line and trace (a
+batch of fewer than ``SMALL`` blocks, as when a macro reads the position after each
+move, goes through ``interpret_line`` at once: a numpy pass costs more). A
 block the fast path refuses (and every block after it in the batch) goes through
 ``interpret_line`` one at a time, which reports it exactly as it would otherwise.
 The walker flushes before any other block, so the interpreter's state is never
@@ -28,6 +30,7 @@ LETTERS = "XYZIJF"
 SIMPLE_LETTERS = frozenset("GXYZIJF")
 ROW = 10  # per block: G X Y Z I J F, source line, where id, loop pass
 MAX_ROWS = 1 << 16
+SMALL = 24  # a batch this short goes through ``interpret_line``: numpy's set-up costs more
 _NAN = float("nan")
 _MOTION = (0.0, 1.0, 2.0, 3.0)
 
@@ -98,6 +101,7 @@ class Batch:
     def __init__(self) -> None:
         self.flat = bytearray()  # ROW doubles per block, one block after the other, NaN when absent
         self.blocks: list = []  # the compiled block of each row
+        self.interpreted = 0  # blocks that went through ``interpret_line`` one at a time
         self.wheres: list[tuple] = []  # where id -> (file id, calling line or 0, subprogram id, report)
         self._where_ids: dict[tuple, int] = {}
         self._where_table: np.ndarray | None = None
@@ -134,12 +138,15 @@ class Batch:
         self.flat.clear()  # the same object for a caller that holds ``extend`` across a sync
         values = {c: table[:, i + 1] for i, c in enumerate(LETTERS)}
         values["M"] = values["S"] = np.full(n, np.nan)
-        g = table[:, 0].astype(np.int8)
-        scan = Scan(np.ones(n, bool), g, np.full(n, -1, np.int8), values)
-        before = len(ops.blocks)
-        state, stop = vector.run(scan, 0, n, state, ops)
-        if len(ops.blocks) > before:
-            self._trace_block(ops, trace, table)
+        stop = 0
+        if n >= SMALL:
+            g = table[:, 0].astype(np.int8)
+            scan = Scan(np.ones(n, bool), g, np.full(n, -1, np.int8), values)
+            before = len(ops.blocks)
+            state, stop = vector.run(scan, 0, n, state, ops)
+            if len(ops.blocks) > before:
+                self._trace_block(ops, trace, table)
+        self.interpreted += n - stop
         try:
             for i in range(stop, n):
                 state = self._one(self.blocks[i], table[i].tolist(), state, ops, trace)

@@ -92,7 +92,7 @@ def test_recursion_past_64_levels_stops_naming_the_call():
 
 
 def test_an_expansion_past_the_move_limit_stops(monkeypatch):
-    assert walker.MOVE_LIMIT == 20_000_000
+    assert walker.MOVE_LIMIT == 2_000_000
     monkeypatch.setattr(walker, "MOVE_LIMIT", 500)
     program = load_text("#1 = 0\no1 while [#1 LT 100000]\n  G1 X[#1 MOD 7] F100\n  #1 = [#1 + 1]\n"
                         "o1 endwhile\nM2\n")
