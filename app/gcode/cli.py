@@ -139,7 +139,8 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("file")
     parser.add_argument("--trace", action="store_true", help="expand: each line's source line as a comment")
     parser.add_argument("--block-delete", action="store_true",
-                        help="the block delete switch on: lines starting with '/' are skipped (off: they run)")
+                        help="the block delete switch on: lines starting with '/' are skipped "
+                             "(off: they run)")
     args = parser.parse_args(argv)
     if args.trace and args.command != "expand":
         parser.error("--trace goes with expand")

@@ -4,8 +4,9 @@ Every number a program holds is finite and below ``MAX_NUMBER`` (the lexer says 
 with the line and column); feeds and spindle speeds are not negative, and a feed is
 either 0 or at least ``MIN_FEED`` (the machine's resolution: smaller would be sent
 as ``F0``); a dwell lasts at most ``MAX_DWELL_S``; an arc turns at most
-``MAX_TURNS`` times; one line expands to at most ``MAX_LINE_MOVES`` moves and all such
-lines of a program to ``MAX_MOVES`` (``Budget``); a file is at most ``MAX_FILE_BYTES``; ``program_checks`` looks
+``MAX_TURNS`` times; one line expands to at most ``MAX_LINE_MOVES`` moves and all
+such lines of a program to ``MAX_MOVES`` (``Budget``); a file is at most
+``MAX_FILE_BYTES``; ``program_checks`` looks
 at the whole program (no moves; wider than the travel). ``word_problem`` is the
 word-level rule both the general lexer and the numpy fast path (``bad_rows``) apply.
 """

@@ -18,7 +18,6 @@ from app.i18n import msg
 from . import block as bk
 from . import fanuc
 from .batch import MAX_ROWS
-from .errors import MacroError
 from .frame import Frame
 from .owords import handler as oword_handler
 from .runs import run_handler, runs
@@ -90,7 +89,7 @@ def return_only(w, f: Frame, b: bk.Block) -> None:
     """``call_words`` for a line that is only ``M99`` (no P, L, nor assignments)."""
     f.pc += 1
     if len(w.frames) == 1:
-        raise MacroError(msg("M99 outside a subprogram (the main program ends with M30)"))
+        raise fanuc.main_m99()
     fanuc.leave(w, f, None)
 
 

@@ -58,6 +58,11 @@ class Unit:
         if self.fanuc:
             self._programs()
             self._fanuc_loops()
+            for b in self.blocks:
+                if b.kind == OWORD:  # Fanuc O numbers and M98/M99 beside LinuxCNC o-words
+                    self.fail(msg("o{name} {keyword}: a LinuxCNC o-word statement in a program of Fanuc "
+                                  "O numbers (O0001 ... M99, M98 P): one style per program",
+                                  name=b.oname, keyword=b.keyword), b)
         else:
             self._owords()
 

@@ -3,8 +3,7 @@ timed, or is refused with a message naming the line and the limit."""
 
 import pytest
 
-from app.gcode import load_text
-from app.gcode import limits
+from app.gcode import limits, load_text
 from app.gcode.macro import walker
 
 
@@ -57,8 +56,8 @@ def test_reading_the_position_after_every_move_gives_rs274s_values():
 
 
 @pytest.mark.parametrize("line, found", [
-    ("G91 G81 X0.001 Y0 Z-1 R1 L100000000", "G81 at line 3 would make 500,000,000 moves (100,000,000 repeats); "
-                                             "the limit is 500,000"),
+    ("G91 G81 X0.001 Y0 Z-1 R1 L100000000",
+     "G81 at line 3 would make 500,000,000 moves (100,000,000 repeats); the limit is 500,000"),
     ("G83 X1 Y1 Z-90 R1 Q0.00001", "G83 at line 3 would make 27,300,002 moves (9,099,999 pecks); "
                                    "the limit is 500,000"),
     ("G73 X1 Y1 Z-90 R1 Q0.0001", "G73 at line 3 would make 1,820,003 moves (909,999 pecks)"),

@@ -44,7 +44,7 @@ def test_division_by_zero_only_when_the_line_runs():
     ("#1 = 1\nIF [#1 EQ 1] GOTO 7\nM30\n", 2, "no block N7"),
     ("O0001\nM98 P1234\nM30\n", 2, "subprogram O1234 is not defined"),
     ("O0001\nG65 P1234 A1\nM30\n", 2, "subprogram O1234 is not defined"),
-    ("O0001\nM99\n", 2, "M99 outside a subprogram"),
+    ("O0001\nM99\n", 2, "M99 ends the main program"),
     ("o<nowhere> call\nM2\n", 1, "subroutine o<nowhere> is not defined"),
     ("o1 if [1]\nG1 X1 F100\nM2\n", 1, "'if' is never closed"),
     ("o1 endwhile\nM2\n", 1, "o1 endwhile without o1 while"),

@@ -41,7 +41,8 @@ def test_a_plain_program_expands_to_what_the_fast_path_reads(text):
     # as rs274ngc does (issue 19): the same first error, the same moves before it.
     first = fast.errors[0]
     assert slow.errors == [first]
-    assert [m for m in slow.moves if m["line"] < first.line] == [m for m in fast.moves if m["line"] < first.line]
+    before = [m for m in fast.moves if m["line"] < first.line]
+    assert [m for m in slow.moves if m["line"] < first.line] == before
 
 
 macro_line = st.one_of(
