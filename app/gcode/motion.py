@@ -185,6 +185,9 @@ def _arc(state: State, params, target, line_no: int, ops: OpBuffer, clockwise: b
 def _straight_or_arc(state: State, motion: int, groups, params, line_no: int, ops: OpBuffer) -> None:
     machine = groups.get("nonmodal", (None,))[0] == 53
     target = _target(state, params, machine)
+    if motion in (1, 2, 3) and state.feed == 0:  # rs274ngc and Fanuc controls refuse it alike
+        raise LineError(0, msg("Cannot do G{code} with zero feed rate (no F word yet, or F0)", code=motion)
+                        if motion == 1 else msg("Cannot make arc with zero feed rate (no F word yet, or F0)"))
     if motion in (0, 1):
         state.arc_not_allowed = False
     if motion in (5, 5.1):
