@@ -2,7 +2,8 @@
 
 A program whose first line holding anything is ``%`` ends at the next ``%`` line:
 the lines after it are never run (``percent_lines``); a ``%`` line anywhere else is
-refused. Such a program that reaches the
+refused. An ``(ABORT, text)`` comment ends a plain program there with an error
+holding the text (``abort_line``; the expander runs its own when the flow reaches it). Such a program that reaches the
 end of the file with neither a closing ``%`` nor M2/M30 is refused on its last line
 ("File ended with no percent sign", rs274ngc). Found on the bytes with ``find`` (no
 line split), so a plain program pays a scan at memory speed, and nothing when it
@@ -11,12 +12,31 @@ holds no ``%``.
 
 from __future__ import annotations
 
+import re
+
 from app.i18n import msg
 
 from .diagnostics import Report
 from .lexer import lex_line
 
 _BLANK = b" \t\r\n"
+_ABORT = re.compile(rb"(?i)\(\s*abort\s*,([^)\n]*)\)")
+
+
+def abort_message(text: str) -> str:
+    """The operator's message of an ``(ABORT, text)`` comment."""
+    return msg("(ABORT) the program stops here: {text}", text=text.strip())
+
+
+def abort_line(raw: bytes) -> tuple[int, str]:
+    """(1-based line, text) of the first ``(ABORT, text)`` comment of a plain program (it
+    stops there, as LinuxCNC stops with the text), or (0, "")."""
+    if raw.find(b"bort") < 0 and raw.find(b"BORT") < 0:  # memchr speed: nearly every file
+        return 0, ""
+    found = _ABORT.search(raw)
+    if found is None:
+        return 0, ""
+    return raw.count(b"\n", 0, found.start()) + 1, found.group(1).decode("utf-8", "replace")
 
 
 def _line_start(raw: bytes, pos: int) -> int:

@@ -28,7 +28,7 @@ from .limits import program_checks
 from .moves import moves_of
 from .offsets import ACTIVE_SYSTEM
 from .ops import OpBuffer, Ops, Source
-from .percent import percent_lines, report_tail
+from .percent import abort_line, abort_message, percent_lines, report_tail
 from .reading import SourceError, clean_bytes, clean_text, read_source, text_problem
 from .render import render
 from .source import Lines
@@ -177,7 +177,13 @@ def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfi
     percent = percent_lines(data[0])
     closing = percent[1]
     stop = closing - 1 if closing else len(lines)  # nothing after the closing % runs
-    if sniff.needs_expander(data[0]):
+    expander = sniff.needs_expander(data[0])
+    if not expander:  # the expander stops at an ABORT when its flow reaches it
+        aborted, text = abort_line(data[0])
+        if aborted and aborted <= stop:
+            stop = aborted - 1
+            report.error(aborted, 0, abort_message(text))
+    if expander:
         data.clear()
         ops, ended = _expanded(lines, name, folder, start, report, stop)
     else:

@@ -29,6 +29,7 @@ WITH_VALUE = {"if", "elseif", "while", "repeat"}  # keywords that need one [valu
 MAY_VALUE = {"return", "endsub"}  # keywords that may carry one [value]
 LETTERS = set("abcdefghijklmnpqrstuvwxyz@^")  # @ ^: LinuxCNC's polar radius and angle
 _COMMENT = re.compile(r"\(([^()]*)\)")
+_ABORT = re.compile(r"(?i)\(\s*abort\s*,([^)]*)\)")
 _CALLS = {("M", 98.0), ("M", 99.0), ("G", 65.0)}  # a word's letter ('o' is a statement)
 
 
@@ -73,6 +74,7 @@ class Block:
     context: str = ""  # LinuxCNC call: the trace's name of the subroutine it runs
     plan: tuple | None = None  # Fanuc G65 line: where its P, L and arguments are (fanuc.g65_plan)
     deleted: bool = False  # the line starts with "/" (block delete)
+    abort: str | None = None  # the text of an (ABORT, text) comment: the walk stops there
     comment: str = ""  # Fanuc: the text of the line's first comment (a #3000 alarm's message)
     called: dict = field(default_factory=dict)  # o-word call: caller's file id -> (unit, start, file id)
 
@@ -226,6 +228,9 @@ def compile_line(line: str, line_no: int, fanuc: bool) -> Block:
     """The ``Block`` of one source line (``fanuc``: the dialect's assignment rule)."""
     block = _read_line(line, line_no, fanuc)
     block.vacant = fanuc
+    if "(" in line:
+        aborted = _ABORT.search(line)
+        block.abort = aborted.group(1) if aborted else None
     if fanuc and "(" in line:
         found = _COMMENT.search(line)
         block.comment = found.group(1).strip() if found else ""

@@ -29,7 +29,7 @@ def _may_join(b) -> bool:
 
 def _empty(unit, i: int) -> bool:
     b = unit.blocks[i]
-    return b.kind == SKIP and not b.skip and i not in unit.bad
+    return b.kind == SKIP and not b.skip and b.abort is None and i not in unit.bad
 
 
 def runs(unit) -> dict[int, tuple]:

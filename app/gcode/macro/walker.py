@@ -228,6 +228,11 @@ class Walker:
                 f = frames[-1]
         except MacroError as exc:
             raise exc.at(b.line if b is not None else 0, f.unit.name if f.file_id else "") from None
+        except (ArithmeticError, LookupError, TypeError, ValueError, OSError, RecursionError) as exc:
+            # a fault of the expander itself: the operator gets the line, never a traceback
+            failed = MacroError(msg("the expander failed on this line ({error}); the program cannot "
+                                    "be previewed", error=f"{type(exc).__name__}: {exc}"[:200]))
+            raise failed.at(b.line if b is not None else 0, f.unit.name if f.file_id else "") from None
         finally:
             self.blocks_run += ran
 

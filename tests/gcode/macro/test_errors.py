@@ -116,3 +116,19 @@ def test_the_moves_before_an_error_stay():
 def test_a_computed_g65_on_a_motion_line_is_a_call_and_is_refused_there():
     text = "O1000\n#1 = 65\nG1 X0 F100\nG#1 X1\nG1 X2\nM30\n"
     assert errors(text) == [("", 4, 1, "G65 needs P (the program number)")]
+
+
+def test_an_ini_value_is_read_only():
+    (error,) = load_text("G21 F100\nG1 X1\n#<_ini[axis_x]max_limit> = 3\nG1 X2\nM2\n").errors
+    assert error.line == 3 and "ini file: it can be read, not set" in error.message
+
+
+def test_abort_stops_with_its_text_where_the_flow_reaches_it():
+    text = "G21 F100\n#1 = 7\no1 if [#1 GT 9]\n(ABORT, never)\no1 endif\nG1 X1\n(Abort, #1 is #<_x>)\nG1 X2\nM2\n"
+    program = load_text(text)
+    assert [(d.line, d.message) for d in program.errors] == [
+        (7, "(ABORT) the program stops here: 7.000000 is 1.000000")]
+    assert [m["end"][0] for m in program.moves] == [1.0]
+    plain = load_text("G21 F100\nG1 X1\n ( abort , stop ) \nG1 X2\nM2\n")
+    assert [(d.line, d.message) for d in plain.errors] == [(3, "(ABORT) the program stops here: stop")]
+    assert [m["end"][0] for m in plain.moves] == [1.0]
