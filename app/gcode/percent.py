@@ -2,11 +2,12 @@
 
 A program whose first line holding anything is ``%`` ends at the next ``%`` line:
 the lines after it are never run (``percent_lines``); a ``%`` line anywhere else is
-refused. Such a program that reaches the
-end of the file with neither a closing ``%`` nor M2/M30 is refused on its last line
-("File ended with no percent sign", rs274ngc). Found on the bytes with ``find`` (no
-line split), so a plain program pays a scan at memory speed, and nothing when it
-holds no ``%``.
+refused. Such a program that reaches the end of the file with neither a closing
+``%`` nor M2/M30 is refused on its last line ("File ended with no percent sign",
+rs274ngc). Found on the bytes with ``find`` (no line split), so a plain program pays
+a scan at memory speed, and nothing when it holds no ``%``. An ``(ABORT, text)``
+comment ends a plain program there with an error holding the text (``abort_line``;
+the expander stops where its flow reaches one).
 """
 
 from __future__ import annotations

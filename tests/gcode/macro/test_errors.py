@@ -124,7 +124,8 @@ def test_an_ini_value_is_read_only():
 
 
 def test_abort_stops_with_its_text_where_the_flow_reaches_it():
-    text = "G21 F100\n#1 = 7\no1 if [#1 GT 9]\n(ABORT, never)\no1 endif\nG1 X1\n(Abort, #1 is #<_x>)\nG1 X2\nM2\n"
+    text = ("G21 F100\n#1 = 7\no1 if [#1 GT 9]\n(ABORT, never)\no1 endif\nG1 X1\n(Abort, #1 is #<_x>)\n"
+            "G1 X2\nM2\n")
     program = load_text(text)
     assert [(d.line, d.message) for d in program.errors] == [
         (7, "(ABORT) the program stops here: 7.000000 is 1.000000")]
