@@ -271,7 +271,7 @@ def _radius(state, code: float, params, column: int) -> float:
             raise LineError(d.column, msg("{code} requires D word to be a whole number", code=name))
         if d.value < 0:
             raise LineError(d.column, msg("Negative D word tool radius index used"))
-        number = int(round(d.value))
+        number = int(round(d.value)) or state.tool  # D0: the tool in the spindle, as rs274ngc
     if number == 0:
         return 0.0
     tool = state.tools.get(number)

@@ -54,6 +54,7 @@ class Block:
     label: int | None = None
     keyword: str = ""
     oname: str = ""
+    onumber: object = None  # o[expr] call: the number's code, then its compiled function
     args: list = field(default_factory=list)  # codes, then compiled functions ``fn(S)``
     number: int = 0  # O program number, GOTO label, DO/END loop number
     column: int = 0
@@ -109,6 +110,9 @@ class Block:
             self.values = compile_locals(self.args)
             self.context = f"o{self.oname}" if self.oname.isdigit() else f"o<{self.oname}>"
         self.args = [compile_code(a) for a in self.args]
+        if self.onumber is not None:
+            self.onumber = compile_code(self.onumber)
+            self.context = "o[]"
         return self
 
 
@@ -122,17 +126,20 @@ def _integer(reader: Reader, what: str) -> int:
     return int(v)
 
 
-def _oname(reader: Reader) -> str:
+def _oname(reader: Reader, block: Block) -> str:
     reader.expect("o", "")
     if reader.peek() == "<":
         reader.pos += 1
         return reader.name()
+    if reader.peek() == "[":  # o[expression]: a number computed when the statement runs
+        block.onumber = reader.value()
+        return "[]"
     return str(_integer(reader, msg("an o-word")))
 
 
 def _oword(reader: Reader, block: Block) -> Block:
     block.kind, block.column = OWORD, reader.sq.column(reader.pos)
-    block.oname = _oname(reader)
+    block.oname = _oname(reader, block)
     block.keyword = next((k for k in sorted(O_KEYWORDS, key=len, reverse=True)
                           if reader.text.startswith(k, reader.pos)), "")
     if not block.keyword:
@@ -153,6 +160,8 @@ def _oword(reader: Reader, block: Block) -> Block:
         raise reader.error(msg("'{keyword}' takes no value", keyword=block.keyword))
     if block.keyword == "call" and len(block.args) > 30:
         raise reader.error(msg("a call takes at most 30 arguments"))
+    if block.onumber is not None and block.keyword != "call":
+        raise reader.error(msg("only a call may compute its o-word number (o[...] call)"), block.column)
     if not reader.at_end():
         raise reader.error(msg("unexpected {rest!r} after the o-word statement",
                                rest=reader.text[reader.pos:].upper()))
