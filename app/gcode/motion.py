@@ -19,8 +19,8 @@ import math
 
 from app.i18n import msg
 
-from .arcs import ijk_error, r_center
 from . import offsets
+from .arcs import ijk_error, r_center
 from .cycles import run_cycle
 from .errors import LineError
 from .limits import dwell_problem, turns_problem
