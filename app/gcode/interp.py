@@ -4,8 +4,8 @@
 (unknown and refused words, two codes of one modal group, words with nothing to use
 them), then applies it in rs274ngc's order: F, S, T, tool change (a pause), spindle,
 modal state save/restore (M70-M73), dwell, plane, units, cutter compensation, tool
-length offset, coordinate system, distance modes, retract mode, G10/G92/G52, motion,
-stop codes (G28/G30 move with G10/G92/G52). A refused line changes nothing: the state is copied and only committed
+length offset, coordinate system, distance modes, retract mode, G10/G92/G52/G28/G30,
+motion, stop codes. A refused line changes nothing: the state is copied and only committed
 (parameters included) when the line succeeds, so a file with errors still loads as
 far as it can. Arcs are in ``motion.py``, cycles in ``cycles.py``, offsets in
 ``offsets.py``, tools in ``tooling.py``, compensation in ``comp.py``.
