@@ -275,6 +275,8 @@ def _radius(state, code: float, params, column: int) -> float:
     if number == 0:
         return 0.0
     tool = state.tools.get(number)
+    if tool is None and state.fanuc and "D" in params:
+        return 0.0  # a Fanuc offset register never written reads 0 (G10 L12 writes it)
     if tool is None:
         raise LineError(params["D"].column if "D" in params else column,
                         msg("Requested tool {number} not found in the tool table", number=number))

@@ -55,6 +55,7 @@ def _no_cycle_collection():
 def expand(lines, name: str, folder: Path | None, state, ops: OpBuffer, report: Report) -> Trace:
     """Expand the program ``lines`` into ``ops`` (see the module docstring)."""
     fanuc = is_fanuc("\n".join(lines))
+    state.fanuc = fanuc  # offset registers (G10 L12, D) exist without a tool table
     unit = Unit(name, lines, fanuc, getattr(state, "block_delete", False))
     for exc in unit.errors:
         report.add(exc.line, exc.column, ERROR, exc.message)
