@@ -233,8 +233,14 @@ def _fanuc(reader: Reader, block: Block) -> Block | None:
     return block
 
 
+MAX_LINE = 255  # characters of a line (rs274ngc refuses longer ones: "Command too long")
+
+
 def compile_line(line: str, line_no: int, fanuc: bool) -> Block:
     """The ``Block`` of one source line (``fanuc``: the dialect's assignment rule)."""
+    if len(line) > MAX_LINE:
+        raise MacroError(msg("the line is {length:,} characters long; the limit is {limit} (as LinuxCNC's)",
+                             length=len(line), limit=MAX_LINE), line_no)
     block = _read_line(line, line_no, fanuc)
     block.vacant = fanuc
     if "(" in line:
