@@ -14,6 +14,7 @@ read out of order.
 
 from __future__ import annotations
 
+import functools
 import struct
 
 import numpy as np
@@ -65,11 +66,17 @@ def _is_number(code: str) -> bool:
 def row_maker(letters: list[str], vacant: bool, line: int):
     """A compiled ``fn(values, where, iteration) -> row or None`` for a block of these words
     (``None`` when its G word is not G0-G3; ``vacant``: a ``None`` value leaves a word out).
-    A row is ``ROW`` doubles packed as bytes (``_packer``)."""
-    body, g = _row_codes(letters, [f"v[{i}]" for i in range(len(letters))], vacant, line)
+    A row is ``ROW`` doubles packed as bytes (``_packer``). Compiled once per shape of
+    block (its letters), the line bound after: a long program compiles a few shapes."""
+    return _row_factory(tuple(letters), vacant)(line)
+
+
+@functools.lru_cache(maxsize=256)
+def _row_factory(letters: tuple[str, ...], vacant: bool):
+    body, g = _row_codes(list(letters), [f"v[{i}]" for i in range(len(letters))], vacant, "line")
     check = "" if "G" not in letters else f" if {g} in MOTION else None"
     namespace = {"nan": _NAN, "MOTION": _MOTION, "pack": _packer(1)}
-    return eval(f"lambda v, w, it: pack{body}{check}", namespace)  # noqa: S307
+    return eval(f"lambda line: lambda v, w, it: pack{body}{check}", namespace)  # noqa: S307
 
 
 def _packer(rows: int):
@@ -88,8 +95,33 @@ def fast_row_code(letters: list[str], codes: list[str], vacant: bool, line: int)
     return _row_codes(letters, codes, vacant, line)[0]
 
 
+@functools.lru_cache(maxsize=1 << 16)  # a block's row is part of up to RUN_LIMIT runs
+def _literal_row(code: str) -> bytes | None:
+    """The packed constant part (G X Y Z I J F, line) of a row code that reads no
+    parameter, or None."""
+    parts = code[1:-1].split(", ")
+    if parts[-2:] != ["w", "it"]:
+        return None
+    try:
+        return _CONSTANT_PART.pack(*(float(p) for p in parts[:-2]))
+    except (ValueError, struct.error):
+        return None
+
+
+_CONSTANT_PART, _WHERE_PART = struct.Struct(f"<{ROW - 2}d"), struct.Struct("<2d")
+
+
 def compile_rows(row_codes: list[str]):
-    """``fn(S, where, iteration)`` -> the rows of ``row_codes`` one after the other, packed."""
+    """``fn(S, where, iteration)`` -> the rows of ``row_codes`` one after the other, packed.
+    Rows of constants only (nearly every line of a long program) need no compiling: their
+    bytes are packed once and the where and loop pass added at each call."""
+    literal = [_literal_row(code) for code in row_codes]
+    if None not in literal:
+        tail = _WHERE_PART.pack
+        if len(literal) == 1:
+            head = literal[0]
+            return lambda S, w, it: head + tail(w, it)
+        return lambda S, w, it: b"".join([head + tail(w, it) for head in literal])
     flat = ", ".join(code[1:-1] for code in row_codes)
     namespace = {**NAMESPACE, "nan": _NAN, "pack": _packer(len(row_codes))}
     return eval(f"lambda S, w, it: pack({flat})", namespace)  # noqa: S307

@@ -33,7 +33,7 @@ _ABORT = re.compile(r"(?i)\(\s*abort\s*,([^)]*)\)")
 _CALLS = {("M", 98.0), ("M", 99.0), ("G", 65.0)}  # a word's letter ('o' is a statement)
 
 
-@dataclass
+@dataclass(slots=True)
 class Word:
     """A G-code word: letter (upper case), 1-based column, value code, bare #param?"""
 
@@ -43,7 +43,7 @@ class Word:
     bare: bool  # a lone parameter: a vacant one drops the word (Fanuc)
 
 
-@dataclass
+@dataclass(slots=True, eq=False)
 class Block:
     """A compiled line (see the module docstring)."""
 
@@ -89,14 +89,14 @@ class Block:
                 codes.append(target)
             else:
                 self.targets.append(target)
-        self.values = compile_codes(codes) if codes else None
+        self.values = _lazy(self, "values", compile_codes, codes) if codes else None
         self.simple = self.kind == WORDS and simple_shape([w.letter for w in self.words])
         if self.simple:
             letters = [w.letter for w in self.words]
             self.row = row_maker(letters, self.vacant, self.line)
             if not self.sets:
                 self.fast_code = fast_row_code(letters, [w.code for w in self.words], self.vacant, self.line)
-                self.fast = compile_rows([self.fast_code]) if self.fast_code else None
+                self.fast = _lazy(self, "fast", compile_rows, [self.fast_code]) if self.fast_code else None
         if self.vacant and self.kind == WORDS:  # Fanuc: a call line read without building words
             self.call = next((w for w in self.words if (w.letter, constant(w.code)) in _CALLS), None)
             self.call_only = self.call is not None and (
@@ -114,6 +114,18 @@ class Block:
             self.onumber = compile_code(self.onumber)
             self.context = "o[]"
         return self
+
+
+def _lazy(owner, attr: str, compile_, source):
+    """A function that compiles ``source`` on its first call, puts the result in
+    ``owner.attr`` and runs it: a line inside a run of moves, or never reached, is never
+    compiled (a long program compiles what it runs)."""
+    def first_call(*args):
+        fn = compile_(source)
+        setattr(owner, attr, fn)
+        return fn(*args)
+
+    return first_call
 
 
 def _integer(reader: Reader, what: str) -> int:
