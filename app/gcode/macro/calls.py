@@ -81,6 +81,15 @@ def check_name(name: str, what: str) -> None:
                              limit=MAX_NAME))
 
 
+MAX_LINES = 50_000  # lines the expander compiles, every file together (about 2 s and 250 MB)
+
+
+def too_many_lines(count: int) -> MacroError:
+    return MacroError(msg("the program and its subprogram files have {count:,} lines; a program with "
+                          "parameters, o-words or Fanuc macros may have at most {limit:,}", count=count,
+                          limit=MAX_LINES))
+
+
 class Library:
     """The compiled files of one expansion: file id -> ``Unit`` (0 is the main file)."""
 
@@ -93,7 +102,11 @@ class Library:
         file_id = self._by_path.get(path)
         if file_id is None:
             main = self.units[0]
-            unit = Unit(str(path), read_lines(path), main.fanuc, main.block_delete)
+            lines = read_lines(path)
+            count = len(lines) + sum(len(u.blocks) for u in self.units)
+            if count > MAX_LINES:
+                raise too_many_lines(count)
+            unit = Unit(str(path), lines, main.fanuc, main.block_delete)
             if unit.errors:
                 raise unit.errors[0]
             file_id = len(self.units)

@@ -93,3 +93,15 @@ def test_the_count_of_pecks_is_the_pecks_made(monkeypatch, code, per_peck):
     error = _only_error(load_text(f"G21 G90 F100\nG0 Z5\nG{code} X1 Y1 Z-10.5 R1 Q1 L3\nG80\nM2\n"))
     assert f"({3 * 11} pecks)" in error.message
     assert 3 * 11 * per_peck < made <= 3 * (11 * per_peck + 5)
+
+
+def test_a_program_too_long_for_the_expander_is_refused_at_once(monkeypatch, tmp_path):
+    monkeypatch.setattr(calls, "MAX_LINES", 40)
+    monkeypatch.setattr(macro, "MAX_LINES", 40)
+    program = load_text("#1 = 1\n" + "G1 X#1 F100\n" * 45)
+    ((line, message),) = [(d.line, d.message) for d in program.errors]
+    assert line == 41 and "have 46 lines" in message and "at most 40" in message
+    (tmp_path / "sub.ngc").write_text("o<sub> sub\n" + "G1 X1\n" * 30 + "o<sub> endsub\n")
+    (tmp_path / "main.ngc").write_text("G21 F100\n" + "G1 X2\n" * 10 + "o<sub> call\nM2\n")
+    ((line, message),) = [(d.line, d.message) for d in load(tmp_path / "main.ngc").errors]
+    assert line == 12 and "have 46 lines" in message
