@@ -3,8 +3,9 @@ timed, or is refused with a message naming the line and the limit."""
 
 import pytest
 
-from app.gcode import limits, load_text
-from app.gcode.macro import walker
+import app.gcode.macro as macro
+from app.gcode import limits, load, load_text
+from app.gcode.macro import calls, walker
 
 
 def _only_error(program):
