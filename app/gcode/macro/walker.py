@@ -38,11 +38,12 @@ DEPTH_LIMIT = 64
 # block run costs 1, a move made ``ROW_COST``, a read of the machine's state (#5000 and
 # up, ``#<_x>``) ``SYNC_COST``, or ``PUBLISH_COST`` when the state changed since the last
 # read, a block the general interpreter reads one at a time (not a plain G0-G3 move of
-# the batch) ``LINE_COST``. About 3 s of CPU and at most 1 GB (``MOVE_LIMIT`` rows);
-# the 1 M-move expansions of ``bench_macro`` spend about half.
+# the batch) ``LINE_COST``. About 3 s of CPU on a busy 2-core machine and at most 1 GB
+# (``MOVE_LIMIT`` rows); the 1 M-move expansions of ``bench_macro`` spend 3.3 M
+# (``bench_hostile`` prints what the hostile programs take).
 MOVE_LIMIT = 2_000_000
-ROW_COST, SYNC_COST, PUBLISH_COST, LINE_COST = 1, 2, 40, 40
-WORK_LIMIT = 9_000_000
+ROW_COST, SYNC_COST, PUBLISH_COST, LINE_COST = 1, 2, 55, 50
+WORK_LIMIT = 7_500_000
 
 
 class Walker:
