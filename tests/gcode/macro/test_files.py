@@ -82,3 +82,12 @@ def test_a_main_program_ended_by_m99_is_stopped_after_one_pass_saying_why(text):
     ((line, message),) = _errors(program)
     assert text.splitlines()[line - 1] == "M99"
     assert "starts it again, for ever" in message and len(program.moves) == 1
+
+
+def test_a_numbered_main_program_ended_by_the_closing_percent_runs(tmp_path):
+    """No M30: the closing % ends it (the subprogram in its own file beside it)."""
+    (tmp_path / "O0002.nc").write_text("O0002\nG1 Y4\nM99\n")
+    (tmp_path / "main.nc").write_text("%\nO0001\nG21 G90 G17 F100\nG1 X1 Y1\nM98 P2\nG1 X3\n%\n")
+    program = load(tmp_path / "main.nc")
+    assert not program.errors
+    assert [m["end"][:2] for m in program.moves] == [[1.0, 1.0], [1.0, 4.0], [3.0, 4.0]]
