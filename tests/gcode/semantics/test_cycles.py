@@ -52,7 +52,6 @@ def test_cycle_mode_leaves_the_fast_path(run):
     ("F10 G18 G81 X1 Z-1 R1", "Y value unspecified in XZ plane canned cycle"),
     ("F10 G19 G81 Y1 Z-1 R1", "X value unspecified in YZ plane canned cycle"),
     ("F10 G18 G81 X1 Y-1 R-2", "R less than Y in cycle in XZ plane"),
-    ("F10 G18 G81 @1 ^2 Y-1 R1", "need the XY plane"),
     ("F10 G84 X1 Z-1 R1", "reverses"),
     ("F10 G86 X1 Z-1 R1 P1", "spindle stop"),
     ("F10 G87 X1 Z-1 R1", "orientation"),
