@@ -20,7 +20,7 @@ from .diagnostics import Report
 from .lexer import lex_line
 
 _BLANK = b" \t\r\n"
-_ABORT = re.compile(rb"(?i)\(\s*abort\s*,([^)\n]*)\)")
+_ABORT = re.compile(rb"\((?i:\s*abort\s*,([^)\n]*))\)")  # one pass from each "("
 
 
 def abort_message(text: str) -> str:
@@ -31,8 +31,6 @@ def abort_message(text: str) -> str:
 def abort_line(raw: bytes) -> tuple[int, str]:
     """(1-based line, text) of the first ``(ABORT, text)`` comment of a plain program (it
     stops there, as LinuxCNC stops with the text), or (0, "")."""
-    if raw.find(b"bort") < 0 and raw.find(b"BORT") < 0:  # memchr speed: nearly every file
-        return 0, ""
     found = _ABORT.search(raw)
     if found is None:
         return 0, ""
