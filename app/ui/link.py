@@ -13,6 +13,7 @@ import threading
 
 from PySide6.QtCore import QObject, QTimer
 
+from app.capabilities import FRAME_PROTOCOL, Capabilities
 from app.comm.transport import is_sim, open_transport
 from app.comm.worker import SerialController, SerialWorker
 
@@ -69,6 +70,12 @@ class MachineLink(QObject):
     def set_link_timing(self, link) -> None:
         """New heartbeat / degraded / lost periods, applied in the worker's thread."""
         QTimer.singleShot(0, self.worker, lambda: _apply_link_timing(self.worker, link))
+
+    @property
+    def capabilities(self) -> Capabilities:
+        """What the connected machine can do, as its driver says (the frame protocol's
+        mill until a driver provides its own ``capabilities``)."""
+        return getattr(self.worker.session, "capabilities", FRAME_PROTOCOL)
 
     @property
     def sim(self):
