@@ -134,6 +134,7 @@ class Batch:
         self.flat = bytearray()  # ROW doubles per block, one block after the other, NaN when absent
         self.blocks: list = []  # the compiled block of each row
         self.interpreted = 0  # blocks that went through ``interpret_line`` one at a time
+        self.refused: set[tuple[int, int]] = set()  # (file id, line) the interpreter refused
         self.wheres: list[tuple] = []  # where id -> (file id, calling line or 0, subprogram id, report)
         self._where_ids: dict[tuple, int] = {}
         self._where_table: np.ndarray | None = None
@@ -188,6 +189,16 @@ class Batch:
             self.blocks.clear()
         return state
 
+    def refused_again(self, file_id: int, line: int, report) -> None:
+        """The interpreter refused the block of ``line`` (reported already): the walk goes
+        on, so that the lines after it are checked too, until a block is refused a second
+        time (a loop repeating an error): then that report is taken back and the walk
+        stops at once (``Stopped``)."""
+        if (file_id, line) in self.refused:
+            report.take_back(line)
+            raise Stopped(line)
+        self.refused.add((file_id, line))
+
     def _where_columns(self) -> np.ndarray:
         if self._where_table is None:
             self._where_table = np.array([w[:3] for w in self.wheres], np.int64).reshape(-1, 3)
@@ -216,5 +227,5 @@ class Batch:
         state, refused = interpret_line(state, words, block.line, ops, report)
         trace.repeat(len(ops.rows) - before, file_id, context, int(row[9]), call_line or block.line)
         if refused:
-            raise Stopped(block.line)
+            self.refused_again(file_id, block.line, report)
         return state

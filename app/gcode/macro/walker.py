@@ -8,10 +8,12 @@ file they came from, the main program's line that caused them, the subprogram an
 the loop iteration (``Trace``). Limits: a loop jumped back to more than
 ``LOOP_LIMIT`` times, calls nested deeper than ``DEPTH_LIMIT``, more than
 ``MOVE_LIMIT`` rows, or more work than ``WORK_LIMIT`` (blocks, moves and reads of the
-machine's state, counted): an error naming the line. The
-first error stops the walk at once (rs274ngc stops too), a block the interpreter
-refused as much as the expander's own errors; it is reported with its file, and the
-rows before it stay, except after the move limit (``TooLarge``: none are kept).
+machine's state, counted): an error naming the line. An error of the expander stops
+the walk at once (rs274ngc stops too); a block the interpreter refuses is reported and
+the walk goes on, so that the lines after it are checked too (issue 20), until a block
+is refused a second time (a loop repeating an error: issue 19), which stops it at
+once (``Batch.refused_again``). Errors are reported with their file, and the rows
+before them stay, except after the move limit (``TooLarge``: none are kept).
 """
 
 from __future__ import annotations
@@ -298,7 +300,7 @@ class Walker:
         self.fast_ok = self.state.fast_path_ok()
         self._trace_rows(f, self._call_line(f, b), before, b.line)
         if refused:
-            raise Stopped(b.line)
+            self.batch.refused_again(f.file_id, b.line, self.reports[f.file_id])
         if self.state.ended:
             if f is self.frames[0]:
                 self._after_end(f)

@@ -133,3 +133,13 @@ def test_abort_stops_with_its_text_where_the_flow_reaches_it():
     plain = load_text("G21 F100\nG1 X1\n ( abort , stop ) \nG1 X2\nM2\n")
     assert [(d.line, d.message) for d in plain.errors] == [(3, "(ABORT) the program stops here: stop")]
     assert [m["end"][0] for m in plain.moves] == [1.0]
+
+
+def test_a_loop_repeating_an_interpreter_error_stops_at_its_second_pass():
+    """Issue 19: a refused G38.3 in a loop of a million passes is one error, and the walk
+    ends there (the lines after a first refusal are still checked, issue 20)."""
+    text = ("G21 F100\n#1 = 0\no1 while [#1 LT 1000000]\nG1 X[#1 + 1]\nG38.3 Z-1\n#1 = [#1 + 1]\n"
+            "o1 endwhile\nM2\n")
+    program = load_text(text)
+    assert [(d.line, d.column) for d in program.errors] == [(5, 1)]
+    assert len(program.moves) == 2  # the first pass's move, the second pass's, then the stop
