@@ -9,7 +9,9 @@
 - ``expand``: the device lines of any program (parametric ones expanded), with
   ``--trace`` each followed by the source line it came from as a comment:
   ``(line 12)``, or ``(O0010.nc line 3, called at line 7)`` for a subprogram file.
-Exit status 2 for a usage error. Diagnostics go to standard error for
+``--block-delete`` turns the operator's block delete switch on: lines starting with
+``/`` are skipped (without it they run, as on LinuxCNC and Fanuc controls with the
+switch off). Exit status 2 for a usage error. Diagnostics go to standard error for
 ``normalize`` and ``moves``, to standard output for ``check``.
 """
 
@@ -112,14 +114,14 @@ def _expand(p: Program, trace: bool = False) -> int:
 SEVERITIES = (N_("error"), N_("warning"))
 
 
-def _load(path: str) -> Program:
+def _load(path: str, block_delete: bool = False) -> Program:
     """``load`` without the helper process: for a one-shot run its start-up costs more
     than the part of the scan it would take over (the setting is restored after)."""
     was = workers.enabled()
     workers.set_enabled(False)
     try:
         with forked.allowed():  # a big file's scan shared with a forked child (forked.py)
-            return load(path)
+            return load(path, block_delete=block_delete)
     finally:
         workers.set_enabled(was)
 
@@ -140,11 +142,14 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("command", choices=sorted(COMMANDS))
     parser.add_argument("file")
     parser.add_argument("--trace", action="store_true", help="expand: each line's source line as a comment")
+    parser.add_argument("--block-delete", action="store_true",
+                        help="the block delete switch on: lines starting with '/' are skipped "
+                             "(off: they run)")
     args = parser.parse_args(argv)
     if args.trace and args.command != "expand":
         parser.error("--trace goes with expand")
     try:
-        program = _load(args.file)
+        program = _load(args.file, args.block_delete)
         return _expand(program, args.trace) if args.command == "expand" else COMMANDS[args.command](program)
     except BrokenPipeError:
         return 0

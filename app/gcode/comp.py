@@ -271,10 +271,12 @@ def _radius(state, code: float, params, column: int) -> float:
             raise LineError(d.column, msg("{code} requires D word to be a whole number", code=name))
         if d.value < 0:
             raise LineError(d.column, msg("Negative D word tool radius index used"))
-        number = int(round(d.value))
+        number = int(round(d.value)) or state.tool  # D0: the tool in the spindle, as rs274ngc
     if number == 0:
         return 0.0
     tool = state.tools.get(number)
+    if tool is None and state.fanuc and "D" in params:
+        return 0.0  # a Fanuc offset register never written reads 0 (G10 L12 writes it)
     if tool is None:
         raise LineError(params["D"].column if "D" in params else column,
                         msg("Requested tool {number} not found in the tool table", number=number))

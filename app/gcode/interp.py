@@ -4,8 +4,8 @@
 (unknown and refused words, two codes of one modal group, words with nothing to use
 them), then applies it in rs274ngc's order: F, S, T, tool change (a pause), spindle,
 modal state save/restore (M70-M73), dwell, plane, units, cutter compensation, tool
-length offset, coordinate system, distance modes, retract mode, G10/G92/G52, motion,
-stop codes. A refused line changes nothing: the state is copied and only committed
+length offset, coordinate system, distance modes, retract mode, G10/G92/G52/G28/G30,
+motion, stop codes. A refused line changes nothing: the state is copied and only committed
 (parameters included) when the line succeeds, so a file with errors still loads as
 far as it can. Arcs are in ``motion.py``, cycles in ``cycles.py``, offsets in
 ``offsets.py``, tools in ``tooling.py``, compensation in ``comp.py``.
@@ -20,7 +20,7 @@ from .diagnostics import Report
 from .errors import LineError
 from .lexer import Word
 from .limits import word_problem
-from .motion import do_motion
+from .motion import do_motion, go_stored
 from .ops import END, PAUSE, SPINDLE, OpBuffer
 from .state import State
 from .stops import stop_value
@@ -185,8 +185,8 @@ def _offset_modes(state: State, groups, params, ops: OpBuffer) -> None:
             setattr(state, name, value)
 
 
-def _nonmodal(state: State, groups, params) -> None:
-    """G10 (offsets and tool table), G92 family, G52."""
+def _nonmodal(state: State, groups, params, line_no: int, ops: OpBuffer) -> None:
+    """G10 (offsets and tool table), G92 family, G52, G28/G30 and their stores."""
     code, word = groups.get("nonmodal", (None, None))
     if code == 10:
         level = params["L"].value if "L" in params else None
@@ -199,6 +199,10 @@ def _nonmodal(state: State, groups, params) -> None:
                             msg("Line with G10 does not have L1, L10, L11, L12, L13, L2, or L20"))
     elif code in (92, 92.1, 92.2, 92.3, 52):
         offsets.axis_offsets(state, code, params, word.column)
+    elif code in (28.1, 30.1):
+        offsets.store_position(state, int(code))
+    elif code in (28, 30):
+        go_stored(state, int(code), params, line_no, ops, word.column)
 
 
 class _LineOps(OpBuffer):
@@ -245,7 +249,7 @@ def _apply(new: State, words, line_no, line_ops: OpBuffer, report) -> None:
         modal_state.apply(new, M_CODES[int(code)][1], word.column, line_no, line_ops)
     _modes(new, groups)
     _offset_modes(new, groups, params, line_ops)
-    _nonmodal(new, groups, params)
+    _nonmodal(new, groups, params, line_no, line_ops)
     try:
         do_motion(new, groups, params, line_no, line_ops, axes_taken)
     except LineError as exc:

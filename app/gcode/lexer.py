@@ -4,8 +4,9 @@ Accepted (as LinuxCNC's rs274ngc reads it): words of one letter and a number, in
 either case (``g1x10Y-2.5``), and LinuxCNC's polar words ``@`` (radius) and ``^``
 (angle); spaces and tabs anywhere outside comments, even inside
 a number (``X1 0.5`` is ``X10.5``); numbers ``1``, ``.5``, ``-0.``, ``+3``; comments
-``( ... )`` anywhere (not nested) and ``; ...`` to the end of the line; a ``%`` line; a leading
-``/`` (block delete: the line is skipped); a ``*checksum`` suffix (ignored).
+``( ... )`` anywhere (not nested) and ``; ...`` to the end of the line; a ``%`` line; a
+leading ``/`` (block delete: the words after it, ``skip`` "block delete": the interpreter
+runs them unless the operator's block delete switch is on); a ``*checksum`` suffix (ignored).
 
 Refused with the line and the 1-based column: ``#`` parameters, ``[`` expressions,
 o-words, an unclosed or nested comment, a letter without a number, any other character, and a
@@ -102,7 +103,12 @@ def _lead(text: str, line_no: int) -> tuple[int, LexedLine | None]:
     """Handle a leading ``/`` or ``%``; return where words start or a finished result."""
     i = _skip_space(text, 0)
     if i < len(text) and text[i] == "/":
-        return i, LexedLine(skip="block delete")
+        rest = lex_line(text[i + 1 :], line_no)
+        if rest.error is not None:
+            column = rest.error.column + i + 1
+            return i, LexedLine(error=Diagnostic(line_no, column, rest.error.severity, rest.error.message))
+        return i, LexedLine(words=[Word(w.letter, w.value, w.column + i + 1) for w in rest.words],
+                            skip="block delete")
     if i < len(text) and text[i] == "%":
         rest = lex_line(text[i + 1 :], line_no)
         if rest.error is None and not rest.words:

@@ -4,7 +4,9 @@ Every number a program holds is finite and below ``MAX_NUMBER`` (the lexer says 
 with the line and column); feeds and spindle speeds are not negative, and a feed is
 either 0 or at least ``MIN_FEED`` (the machine's resolution: smaller would be sent
 as ``F0``); a dwell lasts at most ``MAX_DWELL_S``; an arc turns at most
-``MAX_TURNS`` times; a file is at most ``MAX_FILE_BYTES``; ``program_checks`` looks
+``MAX_TURNS`` times; one line expands to at most ``MAX_LINE_MOVES`` moves and all
+such lines of a program to ``MAX_MOVES`` (``Budget``); a file is at most
+``MAX_FILE_BYTES``; ``program_checks`` looks
 at the whole program (no moves; wider than the travel). ``word_problem`` is the
 word-level rule both the general lexer and the numpy fast path (``bad_rows``) apply.
 """
@@ -20,6 +22,34 @@ MIN_FEED = 0.001
 MAX_DWELL_S = 3600
 MAX_TURNS = 1000
 MAX_FILE_BYTES = 256 << 20
+MAX_LINE_MOVES = 500_000  # the moves one line may expand to (a canned cycle's repeats and pecks, a spline)
+MAX_MOVES = 1_000_000  # the moves all such lines of a program may make (about 3 s with the checks)
+
+
+class Budget:
+    """The moves that lines expanding to many (cycles, splines) have made in the whole
+    program: shared by every copy of the interpreter's state. Counted, never timed, so a
+    program is refused the same way on every machine."""
+
+    __slots__ = ("made",)
+
+    def __init__(self) -> None:
+        self.made = 0
+
+    def spend(self, moves: int, code: str, line_no: int, what: str = "") -> None:
+        """Refuse the line (``ValueError`` with the message) before it makes ``moves``
+        moves past ``MAX_LINE_MOVES`` or the program's ``MAX_MOVES``; ``what`` names what
+        the count is of when it is not moves (pecks, repeats)."""
+        counted = msg(" ({what})", what=what) if what else ""
+        if moves > MAX_LINE_MOVES:
+            raise ValueError(msg("{code} at line {line} would make {moves:,} moves{counted}; the limit "
+                                 "is {limit:,}", code=code, line=line_no, moves=moves, counted=counted,
+                                 limit=MAX_LINE_MOVES))
+        if self.made + moves > MAX_MOVES:
+            raise ValueError(msg("{code} at line {line} would bring the moves that cycles and splines "
+                                 "make to {moves:,}; the limit for a program is {limit:,}", code=code,
+                                 line=line_no, moves=self.made + moves, limit=MAX_MOVES))
+        self.made += moves
 
 
 def plain(value: float) -> str:

@@ -19,6 +19,7 @@ import math
 
 from app.i18n import msg
 
+from . import offsets
 from .arcs import ijk_error, r_center
 from .cycles import run_cycle
 from .errors import LineError
@@ -185,6 +186,9 @@ def _arc(state: State, params, target, line_no: int, ops: OpBuffer, clockwise: b
 def _straight_or_arc(state: State, motion: int, groups, params, line_no: int, ops: OpBuffer) -> None:
     machine = groups.get("nonmodal", (None,))[0] == 53
     target = _target(state, params, machine)
+    if motion in (1, 2, 3) and state.feed == 0:  # rs274ngc and Fanuc controls refuse it alike
+        raise LineError(0, msg("Cannot do G{code} with zero feed rate (no F word yet, or F0)", code=motion)
+                        if motion == 1 else msg("Cannot make arc with zero feed rate (no F word yet, or F0)"))
     if motion in (0, 1):
         state.arc_not_allowed = False
     if motion in (5, 5.1):
@@ -197,6 +201,30 @@ def _straight_or_arc(state: State, motion: int, groups, params, line_no: int, op
     else:
         ops.add(line_no, RAPID if motion == 0 else FEED, target, value=state.feed)
     state.pos = target
+
+
+def go_stored(state: State, code: int, params, line_no: int, ops: OpBuffer, column: int) -> None:
+    """G28 / G30: a rapid to the point the axis words give (as G0 in the current
+    distance mode), then a rapid of those axes (all three without axis words) to the
+    stored position (``offsets.stored_position``, machine frame), as rs274ngc moves:
+    the axes are replaced in program coordinates (under a rotated system the others
+    follow the rotation).
+    (rs274ngc also issues the first rapid when no axis is named: it goes nowhere.)"""
+    if state.comp is not None:
+        raise LineError(column, msg("Cannot use G28 or G30 with cutter radius compensation"))
+    named = [i for i, c in enumerate(AXES) if c in params]
+    if named or "@" in params or "^" in params:
+        target = _target(state, params)
+        ops.add(line_no, RAPID, target, value=state.feed)
+        state.pos = target
+    off = state.offsets
+    home = off.to_program(offsets.stored_position(state, code))
+    end = off.to_program(state.pos)  # the named axes in program coordinates, as rs274ngc
+    for i in named or range(3):
+        end[i] = home[i]
+    end = off.to_frame(end)
+    ops.add(line_no, RAPID, end, value=state.feed)
+    state.pos = end
 
 
 def do_motion(state: State, groups, params, line_no: int, ops: OpBuffer, axes_taken: bool = False) -> None:

@@ -9,6 +9,12 @@ adds its axis offset, turns the XY plane by the work offset's rotation (``G10 L2
 degrees about Z), then adds its origin offset and tool offset. Without rotation that
 is the translation ``Offsets.total()``.
 
+G28 and G30 go to the positions stored in #5161-#5163 and #5181-#5183 (G28.1, G30.1,
+or a program writing them), held in the machine frame, so no offset moves them: a
+row of the frame is a machine position (rs274ngc subtracts the offsets from the
+stored position to get a program point, and adds them back to move). All these
+parameters hold millimetres, as LinuxCNC configured for a metric machine.
+
 The nine work offsets live in the numbered parameters (#5221.. for G54, 20 apart,
 the rotation at #5230..), in millimetres; the G92 offset in #5211-#5213 (#5210 = 1 while applied); the active
 system in #5220. Only a line that succeeds writes them (``State.set_param``). The
@@ -25,6 +31,7 @@ from app.i18n import msg
 from .errors import LineError
 
 SYSTEM_BASE = 5201  # #5201 + 20 * n + axis: work offset n (1 = G54 .. 9 = G59.3)
+STORED_BASE = {28: 5161, 30: 5181}  # G28 / G30 positions, X Y Z (machine frame, mm)
 G92_APPLIED, G92_BASE, ACTIVE_SYSTEM = 5210, 5211, 5220
 
 
@@ -171,3 +178,15 @@ def axis_offsets(state, code: float, params, column: int) -> None:
 def set_tool_offset(state, values: list[float]) -> None:
     """The tool length offset (mm, X Y Z) becomes ``values``."""
     state.offsets.tool = list(values)
+
+
+def store_position(state, code: int) -> None:
+    """G28.1 / G30.1: the current point, in the machine frame, becomes the stored
+    position (#5161-#5163 / #5181-#5183)."""
+    for i in range(3):
+        state.set_param(STORED_BASE[code] + i, state.pos[i])
+
+
+def stored_position(state, code: int) -> list[float]:
+    """The position G28 / G30 go to, in the machine frame (mm; machine zero unless set)."""
+    return [state.param(STORED_BASE[code] + i) for i in range(3)]

@@ -30,6 +30,7 @@ from .limits import program_checks
 from .moves import moves_of
 from .offsets import ACTIVE_SYSTEM
 from .ops import OpBuffer, Ops, Source
+from .percent import abort_line, abort_message, percent_lines, report_tail
 from .reading import SourceError, clean_bytes, clean_text, read_source, text_problem
 from .render import render
 from .source import Lines
@@ -142,52 +143,67 @@ def _empty(name: str, message: str, profile: MachineProfile) -> Program:
     return program
 
 
-def _start_state(profile: MachineProfile, tools: dict | None) -> State:
-    """The interpreter's state before the first line: LinuxCNC's, in G54, with the tool table."""
-    start = State(tools=dict(tools or {}), arc_tolerance=profile.motion.arc_tolerance_mm)
+def _start_state(profile: MachineProfile, tools: dict | None, block_delete: bool = False) -> State:
+    """The interpreter's state before the first line: LinuxCNC's, in G54, with the tool table
+    and the operator's block delete switch."""
+    start = State(tools=dict(tools or {}), arc_tolerance=profile.motion.arc_tolerance_mm,
+                  block_delete=block_delete)
     start.params.set(ACTIVE_SYSTEM, 1)  # G54, as LinuxCNC starts
     return start
 
 
-def _plain(lines: Lines, data: list[bytes], start: State, report: Report) -> Ops:
-    """The fast path; ``data`` holds the bytes, handed over (emptied) to free them early."""
+def _plain(lines: Lines, data: list[bytes], start: State, report: Report, stop: int) -> tuple[Ops, int]:
+    """The fast path over the lines before index ``stop``; ``data`` holds the bytes,
+    handed over (emptied) to free them early. (ops, line of M2/M30 or 0)"""
     raw = data.pop()
     n = len(lines)  # reuse the chunks Lines already counted; otherwise scan makes its own
     buffer = OpBuffer()
     interpreter = runner.Runner(lines, buffer, report, start)
     for scan, ready in bulk.scan_stream(raw, n, lines.chunks or None):  # interpret as lines come
-        interpreter.advance(scan, ready)
+        interpreter.advance(scan, min(ready, stop))
     del raw, scan
-    interpreter.finish()
-    return buffer.finish()
+    ended = interpreter.finish().ended
+    return buffer.finish(), ended
 
 
-def _expanded(lines: Lines, name: str, folder: Path | None, start: State, report: Report) -> Ops:
-    """The expander's path (parameters, control flow, calls), rows traced to their source."""
+def _expanded(lines: Lines, name: str, folder: Path | None, start: State, report: Report,
+              stop: int) -> tuple[Ops, int]:
+    """The expander's path (parameters, control flow, calls) over the lines before index
+    ``stop``, rows traced to their source; (ops, line of M2/M30 or 0)."""
     from . import macro  # only for a program that needs it: a plain load never imports it
 
     buffer = OpBuffer()
-    trace = macro.expand(lines.as_list(), name, folder, start, buffer, report)
+    trace = macro.expand(lines.as_list()[:stop], name, folder, start, buffer, report)
     ops = buffer.finish()
     ops.source = Source(trace.file.array(np.int32), trace.call_line.array(np.int64),
                         trace.context.array(np.int32), trace.iteration.array(np.int32),
                         trace.files, trace.names)
-    return ops
+    return ops, trace.state.ended
 
 
 def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfile,
-               tools: dict | None = None, folder: Path | None = None) -> Program:
+               tools: dict | None = None, folder: Path | None = None, block_delete: bool = False) -> Program:
     """Interpret ``lines``: the expander when the bytes in ``data`` need it, else the fast path."""
     report = Report()
-    start = _start_state(profile, tools)
-    if sniff.needs_expander(data[0]):
+    start = _start_state(profile, tools, block_delete)
+    percent = percent_lines(data[0])
+    closing = percent[1]
+    stop = closing - 1 if closing else len(lines)  # nothing after the closing % runs
+    expander = sniff.needs_expander(data[0])
+    if not expander:  # the expander stops at an ABORT when its flow reaches it
+        aborted, text = abort_line(data[0])
+        if aborted and aborted <= stop:
+            stop = aborted - 1
+            report.error(aborted, 0, abort_message(text))
+    if expander:
         data.clear()
-        ops = _expanded(lines, name, folder, start, report)
+        ops, ended = _expanded(lines, name, folder, start, report, stop)
     else:
         big = len(data[0]) >= TRIM_BYTES
-        ops = _plain(lines, data, start, report)
+        ops, ended = _plain(lines, data, start, report, stop)
         if big:
             _give_back_free_memory()  # the scan's many chunk-sized temporaries
+    report_tail(lines, percent, ended, report)
     ops.starts()  # computed once, before two threads read it
     checking = _in_thread(checks.run, ops, profile, lines, report)  # numpy lets both run at once
     the_plan = normalize.plan(ops, profile.motion.arc_tolerance_mm)
@@ -234,21 +250,24 @@ class _in_thread(threading.Thread):
 
 
 def load_text(text: str, name: str = "<text>", profile: MachineProfile | None = None,
-              tools: dict | None = None, folder: Path | None = None) -> Program:
+              tools: dict | None = None, folder: Path | None = None, block_delete: bool = False) -> Program:
     """Interpret G-code ``text``; errors and warnings are in the result, never raised.
     ``tools`` is the tool table (``tools.Tool`` by number) for T, G43 H and G41 D;
-    ``folder`` is where its subprogram files are looked for (none when ``None``)."""
+    ``folder`` is where its subprogram files are looked for (none when ``None``);
+    ``block_delete``: the operator's switch (on: lines starting with ``/`` are skipped;
+    off, the default as on LinuxCNC and Fanuc controls: they run)."""
     profile = profile or MachineProfile()
     if "\x00" in text:
         return _empty(name, msg("not a text file (it contains NUL bytes)"), profile)
     text = clean_text(text)
     data = [text.encode("utf-8", "replace")]  # a \r is a space to the fast path
-    return _interpret(Lines(_split(text)), data, name, profile, tools, folder)
+    return _interpret(Lines(_split(text)), data, name, profile, tools, folder, block_delete)
 
 
-def load(path: str | Path, profile: MachineProfile | None = None, tools: dict | None = None) -> Program:
+def load(path: str | Path, profile: MachineProfile | None = None, tools: dict | None = None,
+         block_delete: bool = False) -> Program:
     """Read and interpret a G-code file; unreadable or non-UTF-8 files give an error.
-    ``tools`` is the tool table, as for ``load_text``; subprogram files are looked for
+    ``tools`` and ``block_delete`` as for ``load_text``; subprogram files are looked for
     in the file's folder."""
     path = Path(path)
     profile = profile or MachineProfile()
@@ -262,4 +281,4 @@ def load(path: str | Path, profile: MachineProfile | None = None, tools: dict | 
     lines = Lines(data=raw)  # split on first use, not here
     data = [raw]  # valid UTF-8: the bytes the fast path reads
     del raw
-    return _interpret(lines, data, str(path), profile, tools, path.parent)
+    return _interpret(lines, data, str(path), profile, tools, path.parent, block_delete)

@@ -35,9 +35,10 @@ def _general(state: State, text: str, line_no: int, ops: OpBuffer, report: Repor
     if lexed.error is not None:
         report.add(lexed.error.line, lexed.error.column, lexed.error.severity, lexed.error.message)
         return state, True
-    if lexed.skip == "block delete":
+    if lexed.skip == "block delete" and state.block_delete:
         report.warning(line_no, 0, msg("block delete '/': line skipped"), "block delete")
-    if lexed.skip or not lexed.words:
+        return state, False
+    if lexed.skip == "%" or not lexed.words:
         return state, False
     return interpret_line(state, lexed.words, line_no, ops, report)
 

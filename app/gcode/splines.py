@@ -84,9 +84,14 @@ def run_spline(state, code: float, params, target, line_no: int, ops: OpBuffer, 
     start, end = tuple(state.pos[:2]), tuple(target[:2])
     points = _points(state, code, params, column, start, end)
     n = chord_count(points, state.arc_tolerance)
+    try:
+        state.budget.spend(n, f"G{code:g}", line_no)
+    except ValueError as exc:
+        raise LineError(column, exc.args[0]) from None
     t = np.arange(1, n + 1) / n
     xy = bezier(points, t)
     xy[-1] = end
     z = state.pos[2] + (target[2] - state.pos[2]) * t
-    for (x, y), zz in zip(xy, z, strict=True):
-        ops.add(line_no, FEED, (float(x), float(y), float(zz)), value=state.feed)
+    feed = state.feed
+    for (x, y), zz in zip(xy.tolist(), z.tolist(), strict=True):  # Python floats: no numpy scalars
+        ops.add(line_no, FEED, (x, y, zz), value=feed)

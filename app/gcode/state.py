@@ -13,6 +13,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+from .limits import Budget
 from .offsets import Offsets
 from .params import Params
 
@@ -56,6 +57,9 @@ class State:
     params: Params = field(default_factory=Params)
     tools: dict = field(default_factory=dict)  # tool number -> tools.Tool
     pending: dict[int, float] = field(default_factory=dict)
+    block_delete: bool = False  # the operator's switch: lines starting with "/" are skipped
+    budget: Budget = field(default_factory=Budget)  # shared: moves of cycles and splines so far
+    fanuc: bool = False  # a Fanuc program: D and H name offset registers, which exist without tools
 
     @property
     def scale(self) -> float:
@@ -73,6 +77,7 @@ class State:
         other.arc_not_allowed = self.arc_not_allowed
         other.comp = self.comp.copy() if self.comp is not None else None
         other.arc_tolerance, other.params, other.tools = self.arc_tolerance, self.params, self.tools
+        other.block_delete, other.budget, other.fanuc = self.block_delete, self.budget, self.fanuc
         return other
 
     def param(self, number: int) -> float:

@@ -104,7 +104,10 @@ def set_entry(state, level: int, params, column: int) -> None:
     if "P" not in params:
         raise LineError(column, msg("{code} needs a P word (the tool number)", code=f"G10 L{level}"))
     number = _number(params["P"], "P")
-    old = find(state, number, params["P"].column)
+    if state.fanuc and _fanuc(level, params) and number not in state.tools and number > 0:
+        old = Tool(number, 0.0, 0.0, "")  # a Fanuc offset register: it exists whatever tools do
+    else:
+        old = find(state, number, params["P"].column)
     if number == 0:
         raise LineError(params["P"].column, msg("{code}: P0 is no tool", code=f"G10 L{level}"))
     diameter, length = old.diameter, old.length

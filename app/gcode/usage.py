@@ -2,8 +2,8 @@
 
 Every letter other than G, M, N, F, S, T must have a code on the line (or a modal
 motion) that uses it; otherwise the line is refused with the word's column and
-rs274's reason. Returns whether the axis words belong to G10, G92, G52 or G43.1
-(then the line makes no move).
+rs274's reason. Returns whether the axis words belong to G10, G92, G52, G28, G30 or
+G43.1 (then the line makes no move of its motion mode).
 """
 
 from __future__ import annotations
@@ -13,7 +13,7 @@ from app.i18n import N_, msg
 from .errors import LineError
 from .words import CYCLES, MOVE_WORDS
 
-_AXIS_USERS = {10: "G10", 52: "G52", 92: "G92"}
+_AXIS_USERS = {10: "G10", 52: "G52", 92: "G92", 28: "G28", 30: "G30"}
 
 
 def _motion_to_be(state, groups, params, axes_taken: bool):

@@ -142,6 +142,10 @@ def run(scan: Scan, a: int, b: int, state: State, ops: OpBuffer) -> tuple[State,
     f_word = r.v["F"][:stop]
     feed = _ffill(f_word if r.metric else f_word * r.scale_before[:stop], state.feed)
     to_be = r.to_be[rows]
+    zero_feed = (to_be >= 1) & (feed[rows] == 0) & ~event[rows]  # refused: the general path says so
+    if zero_feed.any():
+        cut = _first(zero_feed)
+        stop, rows, ends, center, to_be = int(rows[cut]), rows[:cut], ends[:cut], center[:cut], to_be[:cut]
     kind = np.where(event[rows], SPINDLE, np.where(to_be >= 2, to_be - 2 + ARC_CW, to_be)).astype(np.int8)
     turn = np.where(to_be == 2, -1, np.where(to_be == 3, 1, 0)).astype(np.int32)
     turn[event[rows]] = 0

@@ -58,6 +58,7 @@ class ProgramLoader(QObject):
         super().__init__(parent)
         self.tolerance = tolerance
         self.tools: dict = {}  # the tool table (app.gcode.tools), as the window last saved it
+        self.block_delete = False  # the operator's switch: lines starting with "/" are skipped
         self.busy = False
         self.view_size: tuple[float, float] | None = None  # the preview's, in pixels
         self._shown = threading.Event()
@@ -79,7 +80,7 @@ class ProgramLoader(QObject):
 
     def _run(self, path: Path, view_size, defer: bool) -> None:
         try:
-            result = load_program(path, self.tolerance, view_size, self.tools)
+            result = load_program(path, self.tolerance, view_size, self.tools, self.block_delete)
         except LoadError as exc:
             self.busy = False
             self.failed.emit(str(path), str(exc))
@@ -129,15 +130,16 @@ class LoadError(Exception):
     """A file that cannot be shown as a program; the message says why."""
 
 
-def load_program(path: Path, tolerance: float = 0.01, view_size=None, tools=None) -> LoadedProgram:
+def load_program(path: Path, tolerance: float = 0.01, view_size=None, tools=None,
+                 block_delete: bool = False) -> LoadedProgram:
     """The program and its preview model, with what the first picture of a preview of
-    ``view_size`` pixels needs already computed."""
+    ``view_size`` pixels needs already computed (``block_delete``: the operator's switch)."""
     _sniff(path)
     from app.gcode import load
 
     started = time.perf_counter()
     try:
-        program = load(path, tools=tools)
+        program = load(path, tools=tools, block_delete=block_delete)
     except (OSError, UnicodeError, ValueError) as exc:
         said = QCoreApplication.translate("Loader", "%1 could not be read as G-code: %2")
         raise LoadError(fill(said, path.name, exc)) from None

@@ -78,6 +78,10 @@ def _file_menu(w, menu: QMenu, actions) -> None:
                                   QT_TRANSLATE_NOOP("Menus", "pockets, slots, islands, hole patterns"))
     actions["reload"] = _action(w, menu, QT_TRANSLATE_NOOP("Menus", "&Reload"),
                                 lambda: w.loaded and w.open_file(w.loaded.path), "F5")
+    skip = _action(w, menu, QT_TRANSLATE_NOOP("Menus", "&Block delete: skip lines starting with /"),
+                   lambda: _set_block_delete(w, skip.isChecked()))
+    skip.setCheckable(True)
+    actions["block_delete"] = skip
     menu.addSeparator()
     actions["save_sd"] = _action(w, menu, QT_TRANSLATE_NOOP("Menus", "&Save to SD card…"),
                                  lambda: _show_dock(w, "sd"), "Ctrl+Shift+S")
@@ -193,6 +197,14 @@ def _fill_recent(w, menu: QMenu) -> None:
         menu.addAction(path, lambda p=path: w.open_file(p))
     if not files:
         menu.addAction(QCoreApplication.translate("Menus", "(none yet)")).setEnabled(False)
+
+
+def _set_block_delete(w, on: bool) -> None:
+    """The block delete switch (off: "/" lines run, as on LinuxCNC and Fanuc controls);
+    the open program is loaded again with it."""
+    w.loader.block_delete = on
+    if w.loaded:
+        w.open_file(w.loaded.path)
 
 
 def _show_dock(w, name: str) -> None:

@@ -977,6 +977,10 @@
         <translation>&amp;Tải lại</translation>
     </message>
     <message>
+        <source>&amp;Block delete: skip lines starting with /</source>
+        <translation>&amp;Xóa khối: bỏ qua các dòng bắt đầu bằng /</translation>
+    </message>
+    <message>
         <source>&amp;Save to SD card…</source>
         <translation>&amp;Lưu vào thẻ SD…</translation>
     </message>

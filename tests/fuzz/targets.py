@@ -1,8 +1,9 @@
-"""Fuzz targets of issue 14 (point 10), shared by the suite and ``bench/bench_fuzz.py``.
+"""Fuzz targets of issue 14 (point 10) and 19, shared by the suite and ``bench/bench_fuzz.py``.
 
 Each target takes one generated input and checks that nothing but the documented
 error type comes out: the G-code loader (text and bytes: never raises, diagnostics
-name a line), the deframer and the codec (host and machine side: ``Frame``,
+name a line; the hostile programs of issue 19, each with a line of words put in
+somewhere, within small budgets), the deframer and the codec (host and machine side: ``Frame``,
 ``Dropped`` or ``Legacy`` items; ``decode`` raises only ``FrameError`` and what it
 returns encodes back to the same body), the machine's command parser (frames fed to a
 running simulator: it answers and never raises), the CNC MCU's dialect parser (only
@@ -25,10 +26,12 @@ from hypothesis import strategies as st
 
 from app.comm import frame as fr
 from app.comm.deframer import Deframer, Dropped, Legacy
-from app.gcode import load, load_text
+from app.gcode import limits, load, load_text
+from app.gcode.macro import walker
 from app.profile import MachineProfile, read_profile
 from app.ui.settings.store import load_settings
 from backend_sim.motion.dialect import DialectError, DialectParser
+from tests.fuzz import hostile
 
 GCODE_ALPHABET = "GMXYZIJKFRPSTNgmxyz0123456789.-+ \t()%;*/#[]\r\n\ufeffé_eE"
 GCODE_WORDS = ["G0", "G1", "G2", "G3", "G4", "G20", "G21", "G90", "G91", "G17", "G18", "G19", "M3", "M5",
@@ -113,6 +116,33 @@ def gcode_bytes_load(data: bytes) -> None:
     assert all(d.line >= 0 and d.message for d in program.diagnostics)
 
 
+HOSTILE_NAMES = sorted(n for n, (_, files) in hostile.PROGRAMS.items() if not files and len(n) < 200)
+hostile_edits = st.tuples(st.sampled_from(HOSTILE_NAMES), st.integers(0, 10**6),
+                          st.lists(st.sampled_from(GCODE_WORDS), max_size=6).map(" ".join))
+
+
+@contextlib.contextmanager
+def _small_budgets():
+    """The expander's and the interpreter's budgets made small (a fuzzer runs thousands)."""
+    saved = walker.WORK_LIMIT, walker.MOVE_LIMIT, limits.MAX_MOVES
+    walker.WORK_LIMIT, walker.MOVE_LIMIT, limits.MAX_MOVES = 200_000, 20_000, 10_000
+    try:
+        yield
+    finally:
+        walker.WORK_LIMIT, walker.MOVE_LIMIT, limits.MAX_MOVES = saved
+
+
+def gcode_hostile_loads(edit: tuple[str, int, str]) -> None:
+    """A hostile program of issue 19 with one line of words put in somewhere: it loads
+    (refused or not) naming lines, within the budgets."""
+    name, where, words = edit
+    lines = hostile.PROGRAMS[name][0].splitlines()
+    lines.insert(where % (len(lines) + 1), words)
+    with _small_budgets():
+        program = load_text("\n".join(lines) + "\n")
+    assert all(1 <= d.line <= len(lines) + 1 and d.message for d in program.errors)
+
+
 def deframer_both_sides(data: bytes) -> None:
     for legacy in (False, True):
         deframer = Deframer(legacy=legacy)
@@ -193,6 +223,7 @@ def profile_loader(text: str) -> None:
 
 TARGETS = {
     "gcode text": (gcode_text, gcode_text_loads),
+    "gcode hostile": (hostile_edits, gcode_hostile_loads),
     "gcode bytes": (st.one_of(st.binary(max_size=300),
                               gcode_text.map(lambda t: t.encode("utf-8", "replace"))), gcode_bytes_load),
     "deframer": (frame_bytes, deframer_both_sides),

@@ -6,8 +6,8 @@ from hypothesis import HealthCheck, given, settings
 
 from tests.fuzz.targets import TARGETS
 
-BUDGET = {"gcode text": 150, "gcode bytes": 100, "deframer": 300, "codec": 300, "machine commands": 60,
-          "dialect parser": 300, "settings loader": 150, "profile loader": 100}
+BUDGET = {"gcode text": 150, "gcode hostile": 60, "gcode bytes": 100, "deframer": 300, "codec": 300,
+          "machine commands": 60, "dialect parser": 300, "settings loader": 150, "profile loader": 100}
 
 
 @pytest.mark.parametrize("name", sorted(TARGETS))

@@ -169,13 +169,14 @@ def test_linuxcnc_arc_tolerance_is_in_inches_for_g20():
     assert load_text(text.format(1.0029)).errors
 
 
-def test_envelope_and_feed_zero_warnings():
+def test_envelope_warnings_and_feed_zero_refused():
+    """A feed move at feed 0 is refused, as rs274ngc and Fanuc controls refuse it (issue 19)."""
     program = load_text("G21\nG0 X10 Y10\nG1 X152.3 F100\nG1 Y-1\nG1 F0 X5")
     messages = [str(d) for d in program.warnings]
     assert "line 3, column 4: X+ beyond travel (152.300 > 150)" in messages
     assert any(m.startswith("line 4") and "Y- beyond travel" in m for m in messages)
-    assert any(m.startswith("line 5") and "feed 0" in m for m in messages)
-    assert not program.errors
+    assert [(d.line, d.message) for d in program.errors] == [
+        (5, "Cannot do G1 with zero feed rate (no F word yet, or F0)")]
 
 
 def test_arc_bulge_beyond_travel_warns():

@@ -41,6 +41,13 @@ def test_skipped_lines(text, skip):
     assert lex_line(text, 1).skip == skip
 
 
+def test_a_block_delete_line_keeps_its_words_and_columns():
+    """The interpreter runs them unless the operator's switch is on (``runner``)."""
+    lexed = lex_line(" / G1 X5", 2)
+    assert [(w.letter, w.value, w.column) for w in lexed.words] == [("G", 1.0, 4), ("X", 5.0, 7)]
+    assert lex_line("/G1 X#1", 2).error.column == 6
+
+
 @pytest.mark.parametrize(
     "text, column, fragment",
     [

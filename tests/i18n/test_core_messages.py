@@ -39,9 +39,10 @@ def test_localize_in_vietnamese_with_decimal_comma(vietnamese):
 
 
 def test_program_diagnostics_in_vietnamese(vietnamese):
-    program = load_text("G0 X10\nG1 E5 F100\nG2 X1 Y1\n")
-    said = [d.localized() for d in program.errors]
-    assert said == ["dòng 2, cột 4: chưa hỗ trợ từ lệnh E", "dòng 3, cột 1: cung tròn thiếu cả R, I, J và K"]
+    program = load_text("G0 X10 F100\nG1 E5 F100\n")  # (a program stops at its first error)
+    arc = load_text("G0 X10 F100\nG2 X1 Y1\n")
+    said = [d.localized() for d in program.errors + arc.errors]
+    assert said == ["dòng 2, cột 4: chưa hỗ trợ từ lệnh E", "dòng 2, cột 1: cung tròn thiếu cả R, I, J và K"]
     assert [str(d) for d in program.errors][0] == "line 2, column 4: E words are not supported"
 
 
@@ -52,7 +53,7 @@ def test_a_bad_translation_never_hides_the_message(vietnamese, monkeypatch):
 
 def _check(tmp_path, **env) -> subprocess.CompletedProcess:
     path = tmp_path / "bad.ngc"
-    path.write_text("G0 X10\nG1 E5 F100\nG1 X200 F100\n")
+    path.write_text("G0 X10 F100\nG1 X200\nG1 E5 F100\n")  # (a program stops at its first error)
     clean = {k: v for k, v in os.environ.items() if k not in ("LANGUAGE", "LC_ALL", "LC_MESSAGES", "LANG")}
     return subprocess.run([sys.executable, "-m", "app.gcode", "check", str(path)], env=clean | env,
                           capture_output=True, text=True, encoding="utf-8")
@@ -61,16 +62,16 @@ def _check(tmp_path, **env) -> subprocess.CompletedProcess:
 def test_cli_check_speaks_vietnamese_with_lang(tmp_path):
     result = _check(tmp_path, LANG="vi_VN.UTF-8")
     assert result.returncode == 1
-    assert "lỗi: dòng 2, cột 4: chưa hỗ trợ từ lệnh E" in result.stdout
-    assert "cảnh báo: dòng 3, cột 4: vượt hành trình trục X theo chiều + (200,000 > 150)" in result.stdout
+    assert "lỗi: dòng 3, cột 4: chưa hỗ trợ từ lệnh E" in result.stdout
+    assert "cảnh báo: dòng 2, cột 4: vượt hành trình trục X theo chiều + (200,000 > 150)" in result.stdout
     assert "quãng cắt: 190,0 mm" in result.stdout
 
 
 def test_cli_check_stays_english_otherwise(tmp_path):
     result = _check(tmp_path, LANG="C.UTF-8")
-    assert "error: line 2, column 4: E words are not supported" in result.stdout
+    assert "error: line 3, column 4: E words are not supported" in result.stdout
     assert "cut length: 190.0 mm" in result.stdout
-    assert "lỗi: dòng 2, cột 4" in _check(tmp_path, LANG="en_US.UTF-8", LC_MESSAGES="vi_VN.UTF-8").stdout
+    assert "lỗi: dòng 3, cột 4" in _check(tmp_path, LANG="en_US.UTF-8", LC_MESSAGES="vi_VN.UTF-8").stdout
 
 
 CASES = sorted((Path(__file__).resolve().parents[1] / "oracle" / "cases").glob("*.ngc"))

@@ -238,9 +238,11 @@ def drop_axisless_moves(moves: list[dict], source_lines: list[str]) -> list[dict
     LinuxCNC turns a block such as ``G1 F300`` (motion mode and feed, no X/Y/Z) into a
     zero-length ``STRAIGHT_FEED`` to where the tool already is. That moves nothing and is
     not a move of the ``cnc-gcode moves`` format, so it is dropped before comparing. A
-    zero-length move that does name an axis (Gcodetools closes each path with one) stays.
+    zero-length move that does name an axis (Gcodetools closes each path with one) stays,
+    and so does a move of a block without axis words that goes somewhere (G28, G30).
     """
     out = []
+    here = None
     for move in moves:
         line = move.get("line")
         if (
@@ -248,8 +250,10 @@ def drop_axisless_moves(moves: list[dict], source_lines: list[str]) -> list[dict
             and line is not None
             and 1 <= line <= len(source_lines)
             and not has_axis_word(source_lines[line - 1])
+            and (here is None or all(abs(a - b) < 0.002 for a, b in zip(move["end"], here, strict=True)))
         ):
             continue
+        here = move.get("end", here)
         out.append(move)
     return out
 

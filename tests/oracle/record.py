@@ -28,7 +28,8 @@ How rs274 is run, for each source:
   other meaning to the interpreter; to prove it, the original source is run too and its
   output must be identical apart from the ``N`` column.
 * On an error rs274 prints the message and the text of the failing line on stderr and
-  exits 1; the ``N<k>`` at the start of that text gives the error line.
+  exits 1; the ``N<k>`` at the start of that text gives the error line (a refused ``%``
+  line has none: the source's one ``%`` line after its first is that line).
 
 Each ``.canon`` file starts with ``#`` header lines (rs274's version and the command
 first), then rs274's stdout verbatim.
@@ -159,14 +160,22 @@ def record(source: Path, extra: tuple[str, ...] = ()) -> str:
         if not err_lines:
             raise SystemExit(f"{source}: rs274 failed with no message")
         m = _ERROR_LINE.match(err_lines[-1])
-        if len(err_lines) < 2 or not m:
+        line = m.group(1) if m else _percent_error_line(text, err_lines[-1])
+        if len(err_lines) < 2 or not line:
             raise SystemExit(f"{source}: cannot find the error line in {err_lines!r}")
-        head.append(f"# error_line: {m.group(1)}")
+        head.append(f"# error_line: {line}")
         head.append(f"# error: {' | '.join(err_lines[:-1])}")
         head.append(f"# error_text: {err0_lines[-1] if err0_lines else ''}")
     elif err_lines:
         head.extend(f"# stderr: {line}" for line in err_lines)
     return "\n".join(head) + "\n" + out.rstrip("\n") + "\n"
+
+
+def _percent_error_line(text: str, failing: str) -> str:
+    """rs274 refused a ``%`` line (it has no ``N`` word): its line, when the source has
+    exactly one ``%`` line after the first line; else ""."""
+    found = [k for k, line in enumerate(text.splitlines(), start=1) if k > 1 and line.strip() == "%"]
+    return str(found[0]) if failing.strip() == "%" and len(found) == 1 else ""
 
 
 def sources() -> list[Path]:

@@ -18,7 +18,7 @@ from tests.ui.untranslated import english_in_vietnamese, placeholders
 from tests.ui.visible import all_texts
 
 SPEED = 40
-BAD = "G0 X10 Y10\nG1 Z-1 F100\nG1 X155 Y10\nG1 E5\nG2 X20 Y20\n"  # one travel warning, two errors
+BAD = "G0 X10 Y10\nG1 Z-1 F100\nG1 X155 Y10\nG1 A5\nG2 X20 Y20\n"  # one travel warning, two errors
 
 
 def _click(qtbot, button):
@@ -140,7 +140,8 @@ def test_switching_language_relabels_menus_panels_and_problems(qtbot, window, tm
     assert window.controls.buttons["home"].text() == "Về gốc máy"
     assert window.program_panel.tabs.tabText(1) == "Sự cố (2 lỗi, 1 cảnh báo)"
     vietnamese = [window.program_panel.problems.topLevelItem(i).text(3) for i in range(3)]
-    assert vietnamese[0] == "chưa hỗ trợ từ lệnh E" and "vượt hành trình trục X" in vietnamese[2]
+    assert vietnamese[0] == "máy này không có trục A (chỉ có X, Y và Z)"
+    assert "vượt hành trình trục X" in vietnamese[2]
     assert "dòng" in window.program_panel.summary.text() and "0.00" not in window.program_panel.summary.text()
     assert window.qsettings.value("language") == "vi" and saved_language(window.qsettings) == "vi"
     window.set_language("en")

@@ -25,7 +25,7 @@ from app.gcode.diagnostics import ERROR, Report
 from app.gcode.ops import OpBuffer
 from app.gcode.params import Params
 
-from .calls import Library
+from .calls import MAX_LINES, Library, too_many_lines
 from .structure import Unit
 from .walker import Trace, Walker
 
@@ -54,8 +54,14 @@ def _no_cycle_collection():
 
 def expand(lines, name: str, folder: Path | None, state, ops: OpBuffer, report: Report) -> Trace:
     """Expand the program ``lines`` into ``ops`` (see the module docstring)."""
+    if len(lines) > MAX_LINES:
+        report.add(MAX_LINES + 1, 0, ERROR, too_many_lines(len(lines)).message)
+        refused = Trace([name])
+        refused.state = state
+        return refused
     fanuc = is_fanuc("\n".join(lines))
-    unit = Unit(name, lines, fanuc)
+    state.fanuc = fanuc  # offset registers (G10 L12, D) exist without a tool table
+    unit = Unit(name, lines, fanuc, getattr(state, "block_delete", False))
     for exc in unit.errors:
         report.add(exc.line, exc.column, ERROR, exc.message)
     params = getattr(state, "params", None)

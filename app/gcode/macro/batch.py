@@ -3,7 +3,9 @@
 Most blocks a loop emits are ``G0``-``G3`` with X Y Z I J F: the walker collects
 their values here instead of calling ``interpret_line`` for each one, and
 ``flush()`` runs them through the numpy fast path (``vector.run``) as the loader
-does for a plain file, then gives the rows their own source line and trace. A
+does for a plain file, then gives the rows their own source line and trace (a
+batch of fewer than ``SMALL`` blocks, as when a macro reads the position after each
+move, goes through ``interpret_line`` at once: a numpy pass costs more). A
 block the fast path refuses (and every block after it in the batch) goes through
 ``interpret_line`` one at a time, which reports it exactly as it would otherwise.
 The walker flushes before any other block, so the interpreter's state is never
@@ -12,6 +14,7 @@ read out of order.
 
 from __future__ import annotations
 
+import functools
 import struct
 
 import numpy as np
@@ -21,12 +24,14 @@ from app.gcode.bulk import Scan
 from app.gcode.interp import interpret_line
 from app.gcode.lexer import Word
 
+from .errors import Stopped
 from .expr import NAMESPACE
 
 LETTERS = "XYZIJF"
 SIMPLE_LETTERS = frozenset("GXYZIJF")
 ROW = 10  # per block: G X Y Z I J F, source line, where id, loop pass
 MAX_ROWS = 1 << 16
+SMALL = 24  # a batch this short goes through ``interpret_line``: numpy's set-up costs more
 _NAN = float("nan")
 _MOTION = (0.0, 1.0, 2.0, 3.0)
 
@@ -61,11 +66,17 @@ def _is_number(code: str) -> bool:
 def row_maker(letters: list[str], vacant: bool, line: int):
     """A compiled ``fn(values, where, iteration) -> row or None`` for a block of these words
     (``None`` when its G word is not G0-G3; ``vacant``: a ``None`` value leaves a word out).
-    A row is ``ROW`` doubles packed as bytes (``_packer``)."""
-    body, g = _row_codes(letters, [f"v[{i}]" for i in range(len(letters))], vacant, line)
+    A row is ``ROW`` doubles packed as bytes (``_packer``). Compiled once per shape of
+    block (its letters), the line bound after: a long program compiles a few shapes."""
+    return _row_factory(tuple(letters), vacant)(line)
+
+
+@functools.lru_cache(maxsize=256)
+def _row_factory(letters: tuple[str, ...], vacant: bool):
+    body, g = _row_codes(list(letters), [f"v[{i}]" for i in range(len(letters))], vacant, "line")
     check = "" if "G" not in letters else f" if {g} in MOTION else None"
     namespace = {"nan": _NAN, "MOTION": _MOTION, "pack": _packer(1)}
-    return eval(f"lambda v, w, it: pack{body}{check}", namespace)  # noqa: S307
+    return eval(f"lambda line: lambda v, w, it: pack{body}{check}", namespace)  # noqa: S307
 
 
 def _packer(rows: int):
@@ -84,8 +95,33 @@ def fast_row_code(letters: list[str], codes: list[str], vacant: bool, line: int)
     return _row_codes(letters, codes, vacant, line)[0]
 
 
+@functools.lru_cache(maxsize=1 << 16)  # a block's row is part of up to RUN_LIMIT runs
+def _literal_row(code: str) -> bytes | None:
+    """The packed constant part (G X Y Z I J F, line) of a row code that reads no
+    parameter, or None."""
+    parts = code[1:-1].split(", ")
+    if parts[-2:] != ["w", "it"]:
+        return None
+    try:
+        return _CONSTANT_PART.pack(*(float(p) for p in parts[:-2]))
+    except (ValueError, struct.error):
+        return None
+
+
+_CONSTANT_PART, _WHERE_PART = struct.Struct(f"<{ROW - 2}d"), struct.Struct("<2d")
+
+
 def compile_rows(row_codes: list[str]):
-    """``fn(S, where, iteration)`` -> the rows of ``row_codes`` one after the other, packed."""
+    """``fn(S, where, iteration)`` -> the rows of ``row_codes`` one after the other, packed.
+    Rows of constants only (nearly every line of a long program) need no compiling: their
+    bytes are packed once and the where and loop pass added at each call."""
+    literal = [_literal_row(code) for code in row_codes]
+    if None not in literal:
+        tail = _WHERE_PART.pack
+        if len(literal) == 1:
+            head = literal[0]
+            return lambda S, w, it: head + tail(w, it)
+        return lambda S, w, it: b"".join([head + tail(w, it) for head in literal])
     flat = ", ".join(code[1:-1] for code in row_codes)
     namespace = {**NAMESPACE, "nan": _NAN, "pack": _packer(len(row_codes))}
     return eval(f"lambda S, w, it: pack({flat})", namespace)  # noqa: S307
@@ -97,6 +133,8 @@ class Batch:
     def __init__(self) -> None:
         self.flat = bytearray()  # ROW doubles per block, one block after the other, NaN when absent
         self.blocks: list = []  # the compiled block of each row
+        self.interpreted = 0  # blocks that went through ``interpret_line`` one at a time
+        self.refused: set[tuple[int, int]] = set()  # (file id, line) the interpreter refused
         self.wheres: list[tuple] = []  # where id -> (file id, calling line or 0, subprogram id, report)
         self._where_ids: dict[tuple, int] = {}
         self._where_table: np.ndarray | None = None
@@ -133,18 +171,33 @@ class Batch:
         self.flat.clear()  # the same object for a caller that holds ``extend`` across a sync
         values = {c: table[:, i + 1] for i, c in enumerate(LETTERS)}
         values["M"] = values["S"] = np.full(n, np.nan)
-        g = table[:, 0].astype(np.int8)
-        scan = Scan(np.ones(n, bool), g, np.full(n, -1, np.int8), values)
-        before = len(ops.blocks)
-        state, stop = vector.run(scan, 0, n, state, ops)
-        if len(ops.blocks) > before:
-            self._trace_block(ops, trace, table)
-        for i in range(stop, n):
-            state = self._one(self.blocks[i], table[i].tolist(), state, ops, trace)
-            if state.ended:
-                break
-        self.blocks.clear()
+        stop = 0
+        if n >= SMALL:
+            g = table[:, 0].astype(np.int8)
+            scan = Scan(np.ones(n, bool), g, np.full(n, -1, np.int8), values)
+            before = len(ops.blocks)
+            state, stop = vector.run(scan, 0, n, state, ops)
+            if len(ops.blocks) > before:
+                self._trace_block(ops, trace, table)
+        self.interpreted += n - stop
+        try:
+            for i in range(stop, n):
+                state = self._one(self.blocks[i], table[i].tolist(), state, ops, trace)
+                if state.ended:
+                    break
+        finally:
+            self.blocks.clear()
         return state
+
+    def refused_again(self, file_id: int, line: int, report) -> None:
+        """The interpreter refused the block of ``line`` (reported already): the walk goes
+        on, so that the lines after it are checked too, until a block is refused a second
+        time (a loop repeating an error): then that report is taken back and the walk
+        stops at once (``Stopped``)."""
+        if (file_id, line) in self.refused:
+            report.take_back(line)
+            raise Stopped(line)
+        self.refused.add((file_id, line))
 
     def _where_columns(self) -> np.ndarray:
         if self._where_table is None:
@@ -171,6 +224,8 @@ class Batch:
             if v == v and not (w.letter == "G" and v == -1.0):  # NaN, or -1 for G: a vacant word
                 words.append(Word(w.letter, v, w.column))
         before = len(ops.rows)
-        state, _ = interpret_line(state, words, block.line, ops, report)
+        state, refused = interpret_line(state, words, block.line, ops, report)
         trace.repeat(len(ops.rows) - before, file_id, context, int(row[9]), call_line or block.line)
+        if refused:
+            self.refused_again(file_id, block.line, report)
         return state

@@ -1,7 +1,7 @@
 """One source line compiled once into a ``Block`` the walker runs as often as needed.
 
 Kinds: ``WORDS`` (G-code words whose values are functions, and assignments applied
-after the line is read), ``SKIP`` (empty, ``%``, block delete), ``OWORD`` (a
+after the line is read), ``SKIP`` (empty, ``%``, block delete with the switch on), ``OWORD`` (a
 LinuxCNC o-word statement: ``keyword``, o-name, optional value functions), and the
 Fanuc macro B statements ``PROGRAM`` (``O1234``), ``IF_GOTO``, ``IF_THEN``, ``GOTO``,
 ``WHILE`` (``WHILE [c] DO m``), ``DO`` (``DO m``) and ``END`` (``END m``). A Fanuc
@@ -27,12 +27,13 @@ O_KEYWORDS = ("sub", "endsub", "call", "return", "if", "elseif", "else", "endif"
               "endwhile", "do", "repeat", "endrepeat", "break", "continue")
 WITH_VALUE = {"if", "elseif", "while", "repeat"}  # keywords that need one [value]
 MAY_VALUE = {"return", "endsub"}  # keywords that may carry one [value]
-LETTERS = set("abcdefghijklmnpqrstuvwxyz")
+LETTERS = set("abcdefghijklmnpqrstuvwxyz@^")  # @ ^: LinuxCNC's polar radius and angle
 _COMMENT = re.compile(r"\(([^()]*)\)")
+_ABORT = re.compile(r"(?i)\(\s*abort\s*,([^)]*)\)")
 _CALLS = {("M", 98.0), ("M", 99.0), ("G", 65.0)}  # a word's letter ('o' is a statement)
 
 
-@dataclass
+@dataclass(slots=True)
 class Word:
     """A G-code word: letter (upper case), 1-based column, value code, bare #param?"""
 
@@ -42,7 +43,7 @@ class Word:
     bare: bool  # a lone parameter: a vacant one drops the word (Fanuc)
 
 
-@dataclass
+@dataclass(slots=True, eq=False)
 class Block:
     """A compiled line (see the module docstring)."""
 
@@ -53,6 +54,7 @@ class Block:
     label: int | None = None
     keyword: str = ""
     oname: str = ""
+    onumber: object = None  # o[expr] call: the number's code, then its compiled function
     args: list = field(default_factory=list)  # codes, then compiled functions ``fn(S)``
     number: int = 0  # O program number, GOTO label, DO/END loop number
     column: int = 0
@@ -72,6 +74,8 @@ class Block:
     call_only: bool = False  # Fanuc: the line is only that call and its P/L/arguments
     context: str = ""  # LinuxCNC call: the trace's name of the subroutine it runs
     plan: tuple | None = None  # Fanuc G65 line: where its P, L and arguments are (fanuc.g65_plan)
+    deleted: bool = False  # the line starts with "/" (block delete)
+    abort: str | None = None  # the text of an (ABORT, text) comment: the walk stops there
     comment: str = ""  # Fanuc: the text of the line's first comment (a #3000 alarm's message)
     called: dict = field(default_factory=dict)  # o-word call: caller's file id -> (unit, start, file id)
 
@@ -85,14 +89,14 @@ class Block:
                 codes.append(target)
             else:
                 self.targets.append(target)
-        self.values = compile_codes(codes) if codes else None
+        self.values = _lazy(self, "values", compile_codes, codes) if codes else None
         self.simple = self.kind == WORDS and simple_shape([w.letter for w in self.words])
         if self.simple:
             letters = [w.letter for w in self.words]
             self.row = row_maker(letters, self.vacant, self.line)
             if not self.sets:
                 self.fast_code = fast_row_code(letters, [w.code for w in self.words], self.vacant, self.line)
-                self.fast = compile_rows([self.fast_code]) if self.fast_code else None
+                self.fast = _lazy(self, "fast", compile_rows, [self.fast_code]) if self.fast_code else None
         if self.vacant and self.kind == WORDS:  # Fanuc: a call line read without building words
             self.call = next((w for w in self.words if (w.letter, constant(w.code)) in _CALLS), None)
             self.call_only = self.call is not None and (
@@ -106,7 +110,22 @@ class Block:
             self.values = compile_locals(self.args)
             self.context = f"o{self.oname}" if self.oname.isdigit() else f"o<{self.oname}>"
         self.args = [compile_code(a) for a in self.args]
+        if self.onumber is not None:
+            self.onumber = compile_code(self.onumber)
+            self.context = "o[]"
         return self
+
+
+def _lazy(owner, attr: str, compile_, source):
+    """A function that compiles ``source`` on its first call, puts the result in
+    ``owner.attr`` and runs it: a line inside a run of moves, or never reached, is never
+    compiled (a long program compiles what it runs)."""
+    def first_call(*args):
+        fn = compile_(source)
+        setattr(owner, attr, fn)
+        return fn(*args)
+
+    return first_call
 
 
 def _integer(reader: Reader, what: str) -> int:
@@ -119,17 +138,20 @@ def _integer(reader: Reader, what: str) -> int:
     return int(v)
 
 
-def _oname(reader: Reader) -> str:
+def _oname(reader: Reader, block: Block) -> str:
     reader.expect("o", "")
     if reader.peek() == "<":
         reader.pos += 1
         return reader.name()
+    if reader.peek() == "[":  # o[expression]: a number computed when the statement runs
+        block.onumber = reader.value()
+        return "[]"
     return str(_integer(reader, msg("an o-word")))
 
 
 def _oword(reader: Reader, block: Block) -> Block:
     block.kind, block.column = OWORD, reader.sq.column(reader.pos)
-    block.oname = _oname(reader)
+    block.oname = _oname(reader, block)
     block.keyword = next((k for k in sorted(O_KEYWORDS, key=len, reverse=True)
                           if reader.text.startswith(k, reader.pos)), "")
     if not block.keyword:
@@ -150,6 +172,8 @@ def _oword(reader: Reader, block: Block) -> Block:
         raise reader.error(msg("'{keyword}' takes no value", keyword=block.keyword))
     if block.keyword == "call" and len(block.args) > 30:
         raise reader.error(msg("a call takes at most 30 arguments"))
+    if block.onumber is not None and block.keyword != "call":
+        raise reader.error(msg("only a call may compute its o-word number (o[...] call)"), block.column)
     if not reader.at_end():
         raise reader.error(msg("unexpected {rest!r} after the o-word statement",
                                rest=reader.text[reader.pos:].upper()))
@@ -221,10 +245,19 @@ def _fanuc(reader: Reader, block: Block) -> Block | None:
     return block
 
 
+MAX_LINE = 255  # characters of a line (rs274ngc refuses longer ones: "Command too long")
+
+
 def compile_line(line: str, line_no: int, fanuc: bool) -> Block:
     """The ``Block`` of one source line (``fanuc``: the dialect's assignment rule)."""
+    if len(line) > MAX_LINE:
+        raise MacroError(msg("the line is {length:,} characters long; the limit is {limit} (as LinuxCNC's)",
+                             length=len(line), limit=MAX_LINE), line_no)
     block = _read_line(line, line_no, fanuc)
     block.vacant = fanuc
+    if "(" in line:
+        aborted = _ABORT.search(line)
+        block.abort = aborted.group(1) if aborted else None
     if fanuc and "(" in line:
         found = _COMMENT.search(line)
         block.comment = found.group(1).strip() if found else ""
@@ -248,12 +281,11 @@ def _read_line(line: str, line_no: int, fanuc: bool) -> Block:
 
         block.kind, block.skip = SKIP, "%"
         return block
-    if text[0] == "/":
-        block.kind, block.skip = SKIP, "block delete"
-        return block
     reader = Reader(sq, line_no, fanuc)
-    if text[0] == "n" and len(text) > 1 and text[1].isdigit():
-        reader.pos = 1
+    if text[0] == "/":  # block delete: the rest is read; ``Unit`` skips it when the switch is on
+        block.deleted, reader.pos = True, 1
+    if text.startswith("n", reader.pos) and text[reader.pos + 1:reader.pos + 2].isdigit():
+        reader.pos += 1
         block.label = _integer(reader, "N")
     if reader.peek() == "o":
         return _oword(reader, block)

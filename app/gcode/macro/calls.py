@@ -1,20 +1,26 @@
 """Finding what a call names: LinuxCNC subroutines and Fanuc subprograms.
 
 A LinuxCNC ``o<name> call`` (or ``o100 call``) runs the ``sub`` of that name in the
-calling file, else in the main file, else in ``name.ngc`` in the program's folder.
-A Fanuc ``M98 Pn`` / ``G65 Pn`` runs program ``On`` of the calling file, else of the
-main file, else the file ``Onnnn.nc``, ``onnnn.nc`` or ``nnnn.nc`` (four digits, or
-the number as written) in the program's folder. ``Library`` compiles each file once.
+calling file, else in the main file, else in ``name.ngc`` in the program's folder or
+its ``subs`` folder (a name with a path is refused). A Fanuc ``M98 Pn`` / ``G65 Pn``
+runs program ``On`` of the calling file, else of the main file, else the file
+``Onnnn.nc``, ``onnnn.nc`` or ``nnnn.nc`` (four digits, or the number as written) in
+the same folders. Every file read passes the main file's checks (``reading.py``).
+``Library`` compiles each file once.
 """
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 
+from app.gcode.reading import SourceError, clean_bytes, read_source, text_problem
 from app.i18n import msg
 
 from .errors import MacroError
 from .structure import Unit
+
+SUBS = "subs"  # the folder beside the program where subprogram files are looked for too
 
 # Fanuc argument specification I: address -> local number
 FANUC_ARGUMENTS = {"A": 1, "B": 2, "C": 3, "I": 4, "J": 5, "K": 6, "D": 7, "E": 8, "F": 9, "H": 11,
@@ -48,15 +54,40 @@ def fanuc_arguments(pairs) -> dict[int, float]:
 
 
 def read_lines(path: Path) -> list[str]:
-    """The lines of a subprogram file, or a ``MacroError`` saying why not."""
+    """The lines of a subprogram file, or a ``MacroError`` saying why not: the main file's
+    checks (``reading.py``: a regular file, the size limit, UTF-8 text without NUL bytes)."""
     try:
-        text = path.read_bytes().decode("utf-8")
-    except OSError as exc:
-        raise MacroError(msg("cannot read {path}: {error}", path=str(path),
-                             error=str(exc.strerror or exc))) from None
-    except UnicodeDecodeError:
-        raise MacroError(msg("{path} is not a UTF-8 text file", path=str(path))) from None
+        raw = clean_bytes(read_source(path))
+    except SourceError as exc:
+        raise MacroError(exc.args[0]) from None
+    problem = text_problem(raw)
+    if problem:
+        raise MacroError(msg("{path}: {problem}", path=str(path), problem=problem))
+    text = raw.decode("utf-8")
     return [line[:-1] if line.endswith("\r") else line for line in text.split("\n")]
+
+
+MAX_NAME = 128  # characters of a subprogram's name (its file name must fit the system's limit)
+
+
+def check_name(name: str, what: str) -> None:
+    """Refuse a name that is not a plain file name: a path (``../x``, ``/abs``) would read
+    files outside the program's folders."""
+    if "/" in name or "\\" in name or name in (".", "..") or "\x00" in name:
+        raise MacroError(msg("{what}: a subprogram's name cannot hold a path (its file is looked for "
+                             "only beside the program and in its subs folder)", what=what))
+    if len(name) > MAX_NAME:
+        raise MacroError(msg("{what}: the name is longer than {limit} characters", what=what[:40] + "...",
+                             limit=MAX_NAME))
+
+
+MAX_LINES = 50_000  # lines the expander compiles, every file together (about 2 s and 250 MB)
+
+
+def too_many_lines(count: int) -> MacroError:
+    return MacroError(msg("the program and its subprogram files have {count:,} lines; a program with "
+                          "parameters, o-words or Fanuc macros may have at most {limit:,}", count=count,
+                          limit=MAX_LINES))
 
 
 class Library:
@@ -70,7 +101,12 @@ class Library:
     def _load(self, path: Path) -> int:
         file_id = self._by_path.get(path)
         if file_id is None:
-            unit = Unit(str(path), read_lines(path), self.units[0].fanuc)
+            main = self.units[0]
+            lines = read_lines(path)
+            count = len(lines) + sum(len(u.blocks) for u in self.units)
+            if count > MAX_LINES:
+                raise too_many_lines(count)
+            unit = Unit(str(path), lines, main.fanuc, main.block_delete)
             if unit.errors:
                 raise unit.errors[0]
             file_id = len(self.units)
@@ -82,18 +118,23 @@ class Library:
         if self.folder is None:
             raise MacroError(msg("{what} is not defined (a program without a folder cannot use other files)",
                                  what=what))
-        for name in names:
-            if (self.folder / name).is_file():
-                return self._load(self.folder / name)
-        raise MacroError(msg("{what} is not defined in this file nor in {file} beside it", what=what,
-                             file=names[0]))
+        folders = (self.folder, self.folder / SUBS)
+        for folder in folders:
+            for name in names:
+                if (folder / name).exists():
+                    return self._load(folder / name)
+        raise MacroError(msg("{what} is not defined in this file, nor as {file} in {folder} or {subs}",
+                             what=what, file=names[0], folder=os.path.abspath(folders[0]),
+                             subs=os.path.abspath(folders[1])))
 
     def subroutine(self, name: str, caller: int) -> tuple[int, int]:
         """(file id, index of the ``sub`` block) of the LinuxCNC subroutine ``name``."""
         for file_id in (caller, 0):
             if name in self.units[file_id].subs:
                 return file_id, self.units[file_id].subs[name]
-        file_id = self._find_file([f"{name}.ngc"], msg("subroutine o<{name}>", name=name))
+        what = msg("subroutine o<{name}>", name=name)
+        check_name(name, what)
+        file_id = self._find_file([f"{name}.ngc"], what)
         if name not in self.units[file_id].subs:
             raise MacroError(msg("{file} does not define o<{name}> sub", file=self.units[file_id].name,
                                  name=name))

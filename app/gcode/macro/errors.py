@@ -29,3 +29,11 @@ class MacroError(Exception):
 class TooLarge(MacroError):
     """The expansion passed the move limit: the walk stops and its rows are dropped
     (the program is refused; keeping millions of rows would only fill the memory)."""
+
+
+class Stopped(MacroError):
+    """The interpreter refused a block and reported it already: the walk stops there at
+    once (rs274ngc stops at its first error), whatever loop or call it was in."""
+
+    def __init__(self, line: int = 0) -> None:
+        super().__init__("", line)

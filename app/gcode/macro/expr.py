@@ -128,7 +128,11 @@ _COMPARE = {"gt": ">", "ge": ">=", "lt": "<", "le": "<="}
 
 
 def compile_codes(codes: list[str]):
-    """One function ``fn(S) -> tuple`` computing every code of a line at once."""
+    """One function ``fn(S) -> tuple`` computing every code of a line at once (constants
+    need no compiling)."""
+    values = tuple(constant(c) for c in codes)
+    if None not in values:
+        return lambda S: values
     return eval("lambda S: (" + "".join(c + ", " for c in codes) + ")", NAMESPACE)  # noqa: S307
 
 
@@ -138,7 +142,10 @@ def compile_locals(codes: list[str]):
 
 
 def compile_code(code: str):
-    """A function ``fn(S) -> value`` computing ``code``."""
+    """A function ``fn(S) -> value`` computing ``code`` (a constant needs no compiling)."""
+    value = constant(code)
+    if value is not None:
+        return lambda S: value
     return eval("lambda S: " + code, NAMESPACE)  # noqa: S307
 
 

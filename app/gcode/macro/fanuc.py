@@ -30,12 +30,18 @@ def dwell_words(words: list) -> list:
             else Word("P", word.value, word.column) if word.letter == "X" else word for word in words]
 
 
+def main_m99() -> MacroError:
+    """M99 reached in the main program."""
+    return MacroError(msg("M99 ends the main program: a Fanuc control starts it again, for ever "
+                          "(the loop is stopped here after one pass; end the program with M30)"))
+
+
 def call(w, f: Frame, b, letter: str, code: float, column: int, by_letter: dict, pairs=None) -> None:
     """Run ``M98``/``G65`` (a call) or ``M99`` (a return); ``by_letter``: the other words
     (``pairs``: all of them as (letter, value) in line order, when a letter may repeat)."""
     if letter == "M" and code == 99.0:
         if len(w.frames) == 1:
-            raise MacroError(msg("M99 outside a subprogram (the main program ends with M30)"))
+            raise main_m99()
         leave(w, f, by_letter.get("P"))
         return
     if "P" not in by_letter:

@@ -86,7 +86,7 @@ class Scope:
     def assign(self, target, value) -> None:
         """Set ``#target`` (a number or a name) to ``value`` (``None``: vacant)."""
         if isinstance(target, str):
-            if target in predefined.READ_ONLY:
+            if target in predefined.READ_ONLY or target.startswith("_ini["):
                 raise predefined.refuse_write(target)
             if value is None:
                 value = 0.0

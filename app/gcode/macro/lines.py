@@ -12,11 +12,14 @@ A block that starts a straight run of moves runs the whole run (``runs.py``).
 
 from __future__ import annotations
 
+import re
+
 from app.gcode.lexer import Word
+from app.gcode.percent import abort_message
 from app.i18n import msg
 
 from . import block as bk
-from . import fanuc
+from . import fanuc, predefined
 from .batch import MAX_ROWS
 from .errors import MacroError
 from .frame import Frame
@@ -90,7 +93,7 @@ def return_only(w, f: Frame, b: bk.Block) -> None:
     """``call_words`` for a line that is only ``M99`` (no P, L, nor assignments)."""
     f.pc += 1
     if len(w.frames) == 1:
-        raise MacroError(msg("M99 outside a subprogram (the main program ends with M30)"))
+        raise fanuc.main_m99()
     fanuc.leave(w, f, None)
 
 
@@ -158,8 +161,26 @@ HANDLERS = {
 }
 
 
+_PARAMETER = re.compile(r"#(\d+)|#<([^>]+)>")
+
+
+def abort(w, f: Frame, b: bk.Block) -> None:
+    """An ``(ABORT, text)`` line: the program stops with the text, its parameters
+    (``#1``, ``#<name>``) replaced by their values as LinuxCNC prints them (``%f``)."""
+    def value(found) -> str:
+        number, name = found.groups()
+        name = (name or "").lower().replace(" ", "")
+        v = w.scope.num(int(number)) if number else (
+            w.scope.system(name) if name in predefined.FROM_STATE else w.scope.named(name))
+        return found.group(0) if v is None else f"{v:f}"
+
+    raise MacroError(abort_message(_PARAMETER.sub(value, b.abort)))
+
+
 def handler(b: bk.Block):
     """The function that runs block ``b`` (chosen once per block)."""
+    if b.abort is not None:
+        return abort
     if b.kind == bk.OWORD:
         return oword_handler(b)
     if b.kind == bk.WORDS and not b.words and b.values is not None:

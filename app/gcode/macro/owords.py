@@ -20,17 +20,28 @@ def _sub(w, f: Frame, b) -> None:
     f.pc = f.unit.jump[f.pc]
 
 
+def _computed_name(w, b) -> str:
+    """The o-word number of ``o[expr] call``, computed now."""
+    value = b.onumber(w.scope)
+    if value is None or value != int(value) or value < 0:
+        raise MacroError(msg("o[...] call: {value} is not an o-word number", value=value))
+    return str(int(value))
+
+
 def _call(w, f: Frame, b) -> None:
     locals_ = b.values(w.scope)
-    target = b.called.get(f.file_id)
+    name = b.oname if b.onumber is None else _computed_name(w, b)
+    key = f.file_id if b.onumber is None else (f.file_id, name)
+    target = b.called.get(key)
     if target is None:
-        file_id, start = w.library.subroutine(b.oname, f.file_id)
-        target = b.called[f.file_id] = (w.library.units[file_id], start + 1, file_id)
+        file_id, start = w.library.subroutine(name, f.file_id)
+        target = b.called[key] = (w.library.units[file_id], start + 1, file_id)
     f.pc += 1
     if None in locals_.values():
         locals_ = {i: (0.0 if v is None else v) for i, v in locals_.items()}
     unit, start, file_id = target
-    w._push(Frame(unit, start, locals_, b.context, file_id, caller_line=b.line))
+    context = b.context if b.onumber is None else f"o{name}"
+    w._push(Frame(unit, start, locals_, context, file_id, caller_line=b.line))
 
 
 def _return(w, f: Frame, b) -> None:

@@ -35,6 +35,9 @@ _SYSTEMS = {7: 591.0, 8: 592.0, 9: 593.0}
 
 
 def refuse_write(name: str) -> MacroError:
+    if name.startswith("_ini["):
+        return MacroError(msg("#<{name}> is a value of the machine's ini file: it can be read, not set",
+                              name=name))
     return MacroError(msg("#<{name}> is a predefined parameter: it can be read, not set", name=name))
 
 

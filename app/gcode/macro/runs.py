@@ -29,7 +29,7 @@ def _may_join(b) -> bool:
 
 def _empty(unit, i: int) -> bool:
     b = unit.blocks[i]
-    return b.kind == SKIP and not b.skip and i not in unit.bad
+    return b.kind == SKIP and not b.skip and b.abort is None and i not in unit.bad
 
 
 def runs(unit) -> dict[int, tuple]:
@@ -46,7 +46,7 @@ def runs(unit) -> dict[int, tuple]:
             elif not _empty(unit, j):
                 break
             j += 1
-        while j - 1 > i and blocks[j - 1] not in members:  # end the span at its last move
+        while j - 1 > i and all(m is not blocks[j - 1] for m in members):  # end the span at its last move
             j -= 1
         if len(members) > 1:
             found[i] = (tuple(members), j - i)
@@ -56,13 +56,15 @@ def runs(unit) -> dict[int, tuple]:
 def run_handler(members: tuple, span: int, one):
     """The handler of a run (see the module docstring); ``one``: the single-block handler
     used while the fast path is off."""
-    rows = compile_rows([m.fast_code for m in members])
+    compiled = []  # on the first run: a run the walk never starts is never compiled
 
     def run(w, f, b):
         if not w.fast_ok:
             return one(w, f, b)
+        if not compiled:
+            compiled.append(compile_rows([m.fast_code for m in members]))
         try:
-            made = rows(w.scope, f.wid, f.iteration)
+            made = compiled[0](w.scope, f.wid, f.iteration)
         except MacroError:
             return one(w, f, b)
         f.pc += span

@@ -1,6 +1,7 @@
 """A source file compiled into blocks, with every jump target found before running.
 
-``Unit(name, lines, fanuc)`` compiles each line once (``block.py``) and records what
+``Unit(name, lines, fanuc, block_delete)`` compiles each line once (``block.py``; a
+line starting with ``/`` is skipped when ``block_delete``, the operator's switch, is on) and records what
 the walker needs: ``jump[i]`` (where a LinuxCNC ``if``/``elseif`` goes when false,
 where ``else``/``elseif`` go after a taken branch, where a loop exits),
 ``back[i]`` (the head a loop end or ``continue`` returns to), ``subs`` (o-name ->
@@ -24,14 +25,17 @@ LOOP_HEADS = {"while", "do"}  # break/continue work in these (not in repeat, as 
 class Unit:
     """One compiled source file (see the module docstring)."""
 
-    def __init__(self, name: str, lines, fanuc: bool):
-        self.name, self.fanuc = name, fanuc
+    def __init__(self, name: str, lines, fanuc: bool, block_delete: bool = False):
+        self.name, self.fanuc, self.block_delete = name, fanuc, block_delete
         self.blocks: list[Block] = []
         self.errors: list[MacroError] = []
         self.bad: set[int] = set()
         for i, text in enumerate(lines):
             try:
-                self.blocks.append(compile_line(text, i + 1, fanuc))
+                block = compile_line(text, i + 1, fanuc)
+                if block.deleted and block_delete:  # the operator's switch is on: skipped
+                    block = Block(i + 1, SKIP, skip="block delete")
+                self.blocks.append(block)
             except MacroError as exc:
                 self.errors.append(exc.at(i + 1, name))
                 self.bad.add(i)
@@ -54,6 +58,11 @@ class Unit:
         if self.fanuc:
             self._programs()
             self._fanuc_loops()
+            for b in self.blocks:
+                if b.kind == OWORD:  # Fanuc O numbers and M98/M99 beside LinuxCNC o-words
+                    self.fail(msg("o{name} {keyword}: a LinuxCNC o-word statement in a program of Fanuc "
+                                  "O numbers (O0001 ... M99, M98 P): one style per program",
+                                  name=b.oname, keyword=b.keyword), b)
         else:
             self._owords()
 

@@ -84,3 +84,9 @@ class FileReport:
 
     def warning(self, line, column, message, key=""):
         self.report.add(line, column, WARNING, message, key, file=self.file)
+
+    def take_back(self, line: int) -> None:
+        """Drop the error just reported for ``line`` (a repeat of one already listed)."""
+        items = self.report.items
+        if items and items[-1].line == line and items[-1].severity == ERROR:
+            items.pop()

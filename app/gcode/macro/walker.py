@@ -7,9 +7,13 @@ flow of both dialects: each block has its handler (``lines.py`` for word lines,
 file they came from, the main program's line that caused them, the subprogram and
 the loop iteration (``Trace``). Limits: a loop jumped back to more than
 ``LOOP_LIMIT`` times, calls nested deeper than ``DEPTH_LIMIT``, more than
-``MOVE_LIMIT`` rows or ``BLOCK_LIMIT`` blocks run: an error naming the line. The
-first error stops the walk (rs274ngc stops too); it is reported with its file, and the
-rows before it stay, except after the move limit (``TooLarge``: none are kept).
+``MOVE_LIMIT`` rows, or more work than ``WORK_LIMIT`` (blocks, moves and reads of the
+machine's state, counted): an error naming the line. An error of the expander stops
+the walk at once (rs274ngc stops too); a block the interpreter refuses is reported and
+the walk goes on, so that the lines after it are checked too (issue 20), until a block
+is refused a second time (a loop repeating an error: issue 19), which stops it at
+once (``Batch.refused_again``). Errors are reported with their file, and the rows
+before them stay, except after the move limit (``TooLarge``: none are kept).
 """
 
 from __future__ import annotations
@@ -25,14 +29,23 @@ from . import block as bk
 from . import fanuc_system, predefined
 from .batch import Batch
 from .calls import Library
-from .errors import MacroError, TooLarge
+from .errors import MacroError, Stopped, TooLarge
 from .frame import Frame, Scope
 from .trace import FileReport, Trace
 
 LOOP_LIMIT = 1_000_000
 DEPTH_LIMIT = 64
-MOVE_LIMIT = 20_000_000
-BLOCK_LIMIT = 50_000_000
+# The budget of one expansion, counted in work done (never in wall-clock time, so that a
+# result does not depend on the machine's load), in units of about 0.35 us of CPU: a
+# block run costs 1, a move made ``ROW_COST``, a read of the machine's state (#5000 and
+# up, ``#<_x>``) ``SYNC_COST``, or ``PUBLISH_COST`` when the state changed since the last
+# read, a block the general interpreter reads one at a time (not a plain G0-G3 move of
+# the batch) ``LINE_COST``. About 3 s of CPU on a busy 2-core machine and at most 1 GB
+# (``MOVE_LIMIT`` rows); the 1 M-move expansions of ``bench_macro`` spend 3.3 M
+# (``bench_hostile`` prints what the hostile programs take).
+MOVE_LIMIT = 2_000_000
+ROW_COST, SYNC_COST, PUBLISH_COST, LINE_COST = 1, 2, 55, 50
+WORK_LIMIT = 7_500_000
 
 
 class Walker:
@@ -49,6 +62,9 @@ class Walker:
         self.trace = Trace([main.name])
         self.reports = [FileReport(report, "")]
         self.blocks_run = 0
+        self.syncs = self.publishes = 0
+        self.interpreted = 0  # blocks through ``emit`` (the batch counts its own)
+        self._published: tuple = (None, ())  # (state, (rows, call depth)) of the last sync
         self.batch = Batch()
         self._names: dict[str, int] = {"": 0}
         self._wheres: dict[tuple, tuple] = {}  # (file id, calling line, name) -> (where, its id)
@@ -98,7 +114,14 @@ class Walker:
         ``#<_name>``: the rows so far interpreted, and the parameters the interpreter
         derives (tool, position; Fanuc's system variables or LinuxCNC's predefined
         named parameters) written."""
+        self.syncs += 1
+        self._spend()
         self.flush()
+        key = (len(self.trace.file), len(self.frames))
+        if self.state is self._published[0] and key == self._published[1]:
+            return  # nothing changed since the last sync: the parameters already say it
+        self._published = (self.state, key)  # the state is held: its identity stays unique
+        self.publishes += 1
         tooling.publish(self.state)
         if self.fanuc:
             fanuc_system.publish(self.state)
@@ -115,6 +138,7 @@ class Walker:
         self.flush()
         before = len(self.ops.rows)
         line = frame.unit.blocks[max(0, min(frame.pc, len(frame.unit.blocks)) - 1)].line
+        self._published = (None, ())  # the state is changed in place
         if modal_state.restore_on_return(self.state, line, self.ops):
             self.fast_ok = self.state.fast_path_ok()
             main = self.frames[0]
@@ -130,6 +154,10 @@ class Walker:
         self.trace.repeat(len(rows), 0, 0, 0, [int(row[0]) for row in rows])
 
     # --- the loop --------------------------------------------------------------------
+    def work_done(self) -> int:
+        """The budget spent so far (``bench_hostile`` prints it)."""
+        return WORK_LIMIT - self.work_left()
+
     def run(self) -> None:
         """Walk to the end of the main program or the first error (reported)."""
         frames = self.frames
@@ -142,6 +170,8 @@ class Walker:
                 self._run_frame(f, frames)
             self.flush()
             self._finish_program()
+        except Stopped:
+            pass  # reported by the interpreter; the rows before it stay
         except TooLarge as exc:
             self.report.add(exc.line, exc.column, ERROR, exc.message, file=exc.file)
             self._drop_rows()
@@ -158,10 +188,29 @@ class Walker:
         self.ops.clear()
         self.trace = Trace(self.trace.files, self.trace.names)
 
+    def work_left(self) -> int:
+        """What is left of ``WORK_LIMIT`` (the blocks of a ``_run_frame`` in progress not counted)."""
+        lines = self.interpreted + self.batch.interpreted
+        return (WORK_LIMIT - self.blocks_run - ROW_COST * len(self.trace.file) - SYNC_COST * self.syncs
+                - PUBLISH_COST * self.publishes - LINE_COST * lines)
+
+    def _over_budget(self) -> MacroError:
+        return MacroError(msg("the program does more work than the limit of {limit:,} (a block run "
+                              "counts 1, a move {row}, a read of the machine's state {sync} or {publish}, "
+                              "a block that is not a plain move {line}): a loop that never ends?",
+                              limit=WORK_LIMIT, row=ROW_COST, sync=SYNC_COST, publish=PUBLISH_COST,
+                              line=LINE_COST))
+
+    def _spend(self) -> None:
+        """Refuse the program once the budget is spent (checked where work is done besides
+        running blocks, which ``_run_frame`` counts)."""
+        if self.work_left() < 0:
+            raise self._over_budget()
+
     def _run_frame(self, f: Frame, frames: list[Frame]) -> None:
         """Run blocks of frame ``f``, then of the frame it calls or returns to, until
         the walk ends or a frame reaches the end of its file (``run`` handles that)."""
-        left = BLOCK_LIMIT - self.blocks_run
+        left = self.work_left()  # rows and reads only lower it: checked again when passed
         ran, b = 0, None
         try:
             while True:
@@ -173,14 +222,20 @@ class Walker:
                     b = blocks[f.pc]
                     ran += 1
                     if ran > left:
-                        too_many = msg("the program runs more than {limit:,} blocks", limit=BLOCK_LIMIT)
-                        raise MacroError(too_many, b.line)
+                        left = self.work_left()
+                        if ran > left:
+                            raise self._over_budget()
                     b.run(self, f, b)
                 if not frames or frames[-1].pc >= len(frames[-1].unit.blocks):
                     return
                 f = frames[-1]
         except MacroError as exc:
             raise exc.at(b.line if b is not None else 0, f.unit.name if f.file_id else "") from None
+        except (ArithmeticError, LookupError, TypeError, ValueError, OSError, RecursionError) as exc:
+            # a fault of the expander itself: the operator gets the line, never a traceback
+            failed = MacroError(msg("the expander failed on this line ({error}); the program cannot "
+                                    "be previewed", error=f"{type(exc).__name__}: {exc}"[:200]))
+            raise failed.at(b.line if b is not None else 0, f.unit.name if f.file_id else "") from None
         finally:
             self.blocks_run += ran
 
@@ -236,12 +291,16 @@ class Walker:
                 raise TooLarge(msg("the expansion makes more than {limit:,} moves", limit=MOVE_LIMIT))
 
     def emit(self, f: Frame, b: bk.Block, words: list[Word]) -> None:
+        self.interpreted += 1
+        self._spend()
         self.flush()
         ops = self.ops
         before = len(ops.rows)
-        self.state, _ = interpret_line(self.state, words, b.line, ops, self.reports[f.file_id])
+        self.state, refused = interpret_line(self.state, words, b.line, ops, self.reports[f.file_id])
         self.fast_ok = self.state.fast_path_ok()
         self._trace_rows(f, self._call_line(f, b), before, b.line)
+        if refused:
+            self.batch.refused_again(f.file_id, b.line, self.reports[f.file_id])
         if self.state.ended:
             if f is self.frames[0]:
                 self._after_end(f)

@@ -34,3 +34,24 @@ def test_trace_needs_expand(tmp_path, capsys):
     except SystemExit as exc:
         assert exc.code == 2
     assert "--trace goes with expand" in capsys.readouterr().err
+
+
+def _moved_x(capsys) -> list[float]:
+    return [json.loads(line)["end"][0] for line in capsys.readouterr().out.splitlines()]
+
+
+def test_block_delete_lines_run_unless_the_switch_is_on(tmp_path, capsys):
+    """Plain and expanded programs alike, in a subroutine file too: "/" lines run with the
+    switch off (the default); ``--block-delete`` skips them."""
+    (tmp_path / "plain.ngc").write_text("G1 X1 F100\n/G1 X2\n / G1 X3\nG1 X4\n")
+    (tmp_path / "macro.ngc").write_text("#1 = 2\nG1 X1 F100\n/G1 X#1\n/o1 if [1]\nG1 X3\n/o1 endif\n"
+                                        "o<bd> call\nM2\n")
+    (tmp_path / "bd.ngc").write_text("o<bd> sub\n/G1 X5\nG1 X6\no<bd> endsub\n")
+    assert main(["moves", str(tmp_path / "plain.ngc")]) == 0
+    assert _moved_x(capsys) == [1, 2, 3, 4]
+    assert main(["moves", "--block-delete", str(tmp_path / "plain.ngc")]) == 0
+    assert _moved_x(capsys) == [1, 4]
+    assert main(["moves", str(tmp_path / "macro.ngc")]) == 0
+    assert _moved_x(capsys) == [1, 2, 3, 5, 6]
+    assert main(["moves", "--block-delete", str(tmp_path / "macro.ngc")]) == 0
+    assert _moved_x(capsys) == [1, 3, 6]

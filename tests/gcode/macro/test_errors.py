@@ -44,7 +44,7 @@ def test_division_by_zero_only_when_the_line_runs():
     ("#1 = 1\nIF [#1 EQ 1] GOTO 7\nM30\n", 2, "no block N7"),
     ("O0001\nM98 P1234\nM30\n", 2, "subprogram O1234 is not defined"),
     ("O0001\nG65 P1234 A1\nM30\n", 2, "subprogram O1234 is not defined"),
-    ("O0001\nM99\n", 2, "M99 outside a subprogram"),
+    ("O0001\nM99\n", 2, "M99 ends the main program"),
     ("o<nowhere> call\nM2\n", 1, "subroutine o<nowhere> is not defined"),
     ("o1 if [1]\nG1 X1 F100\nM2\n", 1, "'if' is never closed"),
     ("o1 endwhile\nM2\n", 1, "o1 endwhile without o1 while"),
@@ -92,7 +92,7 @@ def test_recursion_past_64_levels_stops_naming_the_call():
 
 
 def test_an_expansion_past_the_move_limit_stops(monkeypatch):
-    assert walker.MOVE_LIMIT == 20_000_000
+    assert walker.MOVE_LIMIT == 2_000_000
     monkeypatch.setattr(walker, "MOVE_LIMIT", 500)
     program = load_text("#1 = 0\no1 while [#1 LT 100000]\n  G1 X[#1 MOD 7] F100\n  #1 = [#1 + 1]\n"
                         "o1 endwhile\nM2\n")
@@ -116,3 +116,30 @@ def test_the_moves_before_an_error_stay():
 def test_a_computed_g65_on_a_motion_line_is_a_call_and_is_refused_there():
     text = "O1000\n#1 = 65\nG1 X0 F100\nG#1 X1\nG1 X2\nM30\n"
     assert errors(text) == [("", 4, 1, "G65 needs P (the program number)")]
+
+
+def test_an_ini_value_is_read_only():
+    (error,) = load_text("G21 F100\nG1 X1\n#<_ini[axis_x]max_limit> = 3\nG1 X2\nM2\n").errors
+    assert error.line == 3 and "ini file: it can be read, not set" in error.message
+
+
+def test_abort_stops_with_its_text_where_the_flow_reaches_it():
+    text = ("G21 F100\n#1 = 7\no1 if [#1 GT 9]\n(ABORT, never)\no1 endif\nG1 X1\n(Abort, #1 is #<_x>)\n"
+            "G1 X2\nM2\n")
+    program = load_text(text)
+    assert [(d.line, d.message) for d in program.errors] == [
+        (7, "(ABORT) the program stops here: 7.000000 is 1.000000")]
+    assert [m["end"][0] for m in program.moves] == [1.0]
+    plain = load_text("G21 F100\nG1 X1\n ( abort , stop ) \nG1 X2\nM2\n")
+    assert [(d.line, d.message) for d in plain.errors] == [(3, "(ABORT) the program stops here: stop")]
+    assert [m["end"][0] for m in plain.moves] == [1.0]
+
+
+def test_a_loop_repeating_an_interpreter_error_stops_at_its_second_pass():
+    """Issue 19: a refused G38.3 in a loop of a million passes is one error, and the walk
+    ends there (the lines after a first refusal are still checked, issue 20)."""
+    text = ("G21 F100\n#1 = 0\no1 while [#1 LT 1000000]\nG1 X[#1 + 1]\nG38.3 Z-1\n#1 = [#1 + 1]\n"
+            "o1 endwhile\nM2\n")
+    program = load_text(text)
+    assert [(d.line, d.column) for d in program.errors] == [(5, 1)]
+    assert len(program.moves) == 2  # the first pass's move, the second pass's, then the stop

@@ -13,7 +13,7 @@ def test_harmless_codes_are_accepted(run):
 
 
 def test_m70_m72_restore_units_and_distance(run):
-    program = run("M70\nG20 G91\nG1 X1 F10\nM72\nG1 X3\n")
+    program = run("F100\nM70\nG20 G91\nG1 X1 F10\nM72\nG1 X3\n")  # M72 restores F100 too
     assert not program.errors and ends(program) == [[25.4, 0, 0], [3, 0, 0]]
 
 

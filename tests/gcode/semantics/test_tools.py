@@ -2,10 +2,13 @@
 
 from __future__ import annotations
 
+import contextlib
+import io
 import json
 
 import pytest
 
+from app.gcode import load, load_text
 from app.gcode.tools import (
     FILE_NAME,
     Tool,
@@ -101,3 +104,30 @@ def test_fanuc_g10_l10_l12_set_length_and_radius(run):
 def test_fanuc_wear_offsets_are_refused(run):
     program = run("G10 L13 P2 R0.1\n")
     assert "wear" in program.errors[0].message
+
+
+def test_fanuc_offset_registers_exist_without_a_tool_table():
+    """Issue 19: on a Fanuc, G10 L12 P1 R5. writes register D1 whatever tools exist and
+    G41 D1 reads it; a LinuxCNC program keeps rs274's rule (the tool must be in the table)."""
+    body = "G21 G17 G90 F100\nG10 L12 P1 R5.\nG0 X0 Y0\nG41 D1 G1 X20 Y0\nG1 X20 Y20\nG40 G1 X30 Y30\n"
+    fanuc = load_text(f"O0001\n{body}M30\n")
+    assert not fanuc.errors
+    assert fanuc.moves[1]["end"][:2] == pytest.approx([15.0, 5.0])  # R5 to the left: inside the corner
+    linuxcnc = load_text(f"{body}M2\n")
+    assert [d.line for d in linuxcnc.errors] == [2, 4]
+    assert "not found in the tool table" in linuxcnc.errors[0].message
+
+
+@pytest.mark.parametrize("macro", ["fanuc21", "fanuc31"])
+def test_a_fanuc_feature_program_checks_with_an_empty_tool_table(tmp_path, macro):
+    from app.gcode.features.cli import main as feature
+
+    (tmp_path / "square.ngc").write_text("G0 X20 Y20\nG1 X60\nY50\nX20\nY20\n")
+    out = tmp_path / "profile.nc"
+    text = io.StringIO()
+    with contextlib.redirect_stdout(text):
+        assert feature(["profile", "--contour", str(tmp_path / "square.ngc"), "--side", "outside",
+                        "--stock", "6", "--tool-diameter", "6", "--depth", "2", "--macro", macro]) == 0
+    out.write_text(text.getvalue())
+    program = load(out)
+    assert "G10 L12" in text.getvalue() and not program.errors and len(program.moves) > 20
