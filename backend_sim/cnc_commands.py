@@ -10,6 +10,7 @@ UNKNOWN_VERB. ``PING``/``STATUS`` answer with ``S``.
 from __future__ import annotations
 
 from app.comm.frame import Command, Error, FrameError, Ok, decimal
+from backend_sim import value_ranges
 from backend_sim.motion import events as ev
 from backend_sim.motion.dialect import DialectError, DialectParser
 from backend_sim.motion.events import MotionError
@@ -159,13 +160,19 @@ def _reset(mcu, cmd: Command) -> None:
     mcu.reset()
 
 
+def _in_range(value: float, check) -> float:
+    problem = check(value)
+    if problem:
+        raise Refused("BAD_VALUE", problem)
+    return value
+
+
 def _jog(mcu, cmd: Command) -> None:
     axis, dist, feed = _args(cmd, 3, 3)
     if axis not in AXES:
         raise Refused("BAD_ARGS", f"axis {axis}: X, Y or Z")
-    distance, rate = _number(dist, "distance"), _number(feed, "feed")
-    if rate <= 0:
-        raise Refused("BAD_ARGS", "feed must be > 0")
+    distance = _in_range(_number(dist, "distance"), value_ranges.distance_problem)
+    rate = _in_range(_number(feed, "feed"), value_ranges.feed_problem)
     _cover_closed(mcu)
     if mcu.job.open:
         raise Refused("BUSY", "a job is open")
@@ -174,9 +181,12 @@ def _jog(mcu, cmd: Command) -> None:
     mcu.await_event(cmd.id, "JOG", ev.StateChanged, f"{axis} {dist}")
 
 
-def _spindle(mcu, cmd: Command) -> None:
+def _spindle(mcu, cmd: Command) -> str | None:
     (value,) = _args(cmd, 1, 1)
-    line = "M05" if value == "OFF" else f"M03 S{_number(value, 'rpm'):g}"
+    if value == "OFF" and (mcu.job.open or mcu.mc.state != "IDLE"):
+        mcu.mc.spindle_off()  # always allowed: whatever moves, the spindle stops now
+        return "OFF"
+    line = "M05" if value == "OFF" else f"M03 S{_in_range(_number(value, 'rpm'), value_ranges.rpm_problem):g}"
     if value != "OFF":
         _cover_closed(mcu)
     if mcu.job.open:
@@ -188,14 +198,20 @@ def _spindle(mcu, cmd: Command) -> None:
         raise Refused(exc.code, exc.text) from None
     mcu.mc.enqueue(move)
     mcu.await_event(cmd.id, "SPINDLE", ev.StateChanged, value)
+    return None
 
 
 def _set(mcu, cmd: Command) -> str:
     name, value = _args(cmd, 2, 2)
-    number = _number(value, name)
+    try:
+        number = value_ranges.set_value(name, value)
+    except ValueError as exc:
+        raise Refused("BAD_ARGS", str(exc)) from None
+    if number is None:
+        number = _number(value, name)
+    elif value_ranges.choice_problem(name, value):
+        raise Refused("BAD_PARAM", value_ranges.choice_problem(name, value))
     if name == "CHECK":
-        if value not in ("0", "1"):
-            raise Refused("BAD_ARGS", f"CHECK {value!r}: 0 or 1")
         if mcu.job.open:
             raise Refused("BUSY", "a job is open")
         mcu.check_mode = bool(number)
