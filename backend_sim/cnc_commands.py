@@ -183,12 +183,11 @@ def _jog(mcu, cmd: Command) -> None:
 
 def _spindle(mcu, cmd: Command) -> str | None:
     (value,) = _args(cmd, 1, 1)
-    if value == "OFF" and (mcu.job.open or mcu.mc.state != "IDLE"):
-        mcu.mc.spindle_off()  # always allowed: whatever moves, the spindle stops now
+    if value == "OFF":
+        mcu.mc.spindle_off()  # always allowed: whatever moves or holds, the spindle stops now
         return "OFF"
-    line = "M05" if value == "OFF" else f"M03 S{_in_range(_number(value, 'rpm'), value_ranges.rpm_problem):g}"
-    if value != "OFF":
-        _cover_closed(mcu)
+    line = f"M03 S{_in_range(_number(value, 'rpm'), value_ranges.rpm_problem):g}"
+    _cover_closed(mcu)
     if mcu.job.open:
         raise Refused("BUSY", "a job is open: use M03/M05 in the program")
     _alarm_free(mcu)

@@ -5,7 +5,8 @@ Contract (docs/protocol.md): ``SD LIST`` -> ``I <id> <name> <bytes> <lines>`` ro
 <crc32hex>`` -> ``E`` at once (BAD_NAME, SD_FULL, BUSY, BAD_ARGS; BUSY also for the file an ``SD RUN``
 is running) or, after the stream of ``D`` frames (acked ``A`` by the main MCU itself),
 one ``O <id> SD PUT <name>`` or ``E <id> CRC_MISMATCH``; a card that cannot take a line
-ends the upload at that line with ``E <id> SD_FULL`` (or ``SD_ERROR``), no file left; ``SD RUN <name>`` -> ``O <id> SD RUN <name>`` when the CNC MCU
+ends the upload at that line with ``E <id> SD_FULL`` (or ``SD_ERROR``), no file left;
+``SD RUN <name>`` -> ``O <id> SD RUN <name>`` when the CNC MCU
 has opened the job (status flag ``S`` while it runs). Functions take the ``MainMcu``.
 """
 

@@ -14,6 +14,7 @@ upload writes (tests put a failing file there).
 
 from __future__ import annotations
 
+import contextlib
 import errno
 import os
 import re
@@ -167,8 +168,6 @@ class SdUpload:
 
     def abort(self) -> None:
         """Close and remove the temporary file (a failing close changes nothing)."""
-        try:
+        with contextlib.suppress(OSError):
             self._out.close()
-        except OSError:
-            pass
         self.tmp.unlink(missing_ok=True)

@@ -14,7 +14,8 @@ absolute work millimetres, words separated by spaces or not):
     M06|M6 [T<n>]               tool change (the MCU holds there, spindle off, Z up)
 
 Every number is in the ranges of ``value_ranges`` (those of the host's loader), else
-``BAD_VALUE``. Omitted axes keep their last value; the feed and the spindle speed are modal. ``machine = work + offset``.
+``BAD_VALUE``. Omitted axes keep their last value; the feed and the spindle speed are
+modal. ``machine = work + offset``.
 ``parser.position`` is the machine position at the end of the last parsed move; the MCU
 sets it after homing, jog or stop. Never imports ``app.gcode``: a normaliser bug must
 not hide behind a shared parser.

@@ -112,7 +112,8 @@ def test_impossible_speeds_are_refused_at_the_argument(text, capsys):
     assert "--speed" in err and ("plain number" in err or "at most" in err), err
 
 
-@pytest.mark.parametrize("text,value", [("1", 1.0), ("0.5", 0.5), ("50", 50.0), (f"{MAX_SPEED:g}", MAX_SPEED)])
+@pytest.mark.parametrize("text,value", [("1", 1.0), ("0.5", 0.5), ("50", 50.0),
+                                        (f"{MAX_SPEED:g}", MAX_SPEED)])
 def test_possible_speeds_are_taken(text, value):
     assert build_parser().parse_args(["--pty", "--speed", text]).speed == value
 

@@ -72,8 +72,12 @@ def stream_until_alarm(sim, host, program: list[str]) -> Alarm:
     host.ok(f"JOB {len(program)}")
     alarms = lambda: [f for f in host.frames if isinstance(f, Alarm) and f.code == "EXEC_LOG"]  # noqa: E731
     for seq, line in enumerate(program):
-        room = lambda seq=seq: alarms() or seq - 1 - host.acked < min(host.free, 8)  # noqa: E731
-        assert sim.run_until(lambda: host.tick() or host.pump() or room(), 60)
+        def room(seq=seq) -> bool:
+            host.tick()
+            host.pump()
+            return bool(alarms()) or seq - 1 - host.acked < min(host.free, 8)
+
+        assert sim.run_until(room, 60)
         if alarms():
             break
         host.send(Data(seq, line).body())
