@@ -151,7 +151,8 @@ def reset(kit: Kit) -> None:
         "C <id> RESET",
         kit.got(start),
     )
-    after = link.status()
+    new_boot = boot.text.split()[0] if boot is not None and boot.text else None
+    after = kit.status_until(lambda st: st.boot == new_boot)
     kit.check(
         "commands.reset-new-boot",
         "Machine -> host",
@@ -160,10 +161,10 @@ def reset(kit: Kit) -> None:
         before is not None
         and after is not None
         and boot is not None
-        and after.boot == boot.text.split()[0]
+        and after.boot == new_boot
         and after.boot != before.boot
         and not after.has("H"),
-        "C <id> RESET, C <id> STATUS",
+        "C <id> RESET, C <id> STATUS (every 0.2 s, up to 1.5 s)",
         f"before {before}, X {boot}, after {after}",
     )
     kit.expect_error(
