@@ -24,7 +24,8 @@ def test_passes_against_cnc_sim_on_a_pty(tmp_path, capsys, speed, quick):
     try:
         assert first.startswith("PTY "), first
         report = tmp_path / "report.json"
-        code, out = run_cli(capsys, first.split()[1], *(["--quick"] if quick else []), "--report", str(report))
+        quick_flag = ["--quick"] if quick else []
+        code, out = run_cli(capsys, first.split()[1], *quick_flag, "--report", str(report))
     finally:
         stop_sim(proc)
     assert code == 0, out

@@ -29,6 +29,25 @@ def _kinds(replies: list[Reply], kinds: str = "ANFE") -> str:
     )
 
 
+def send(kit: Kit, lines: list[str], seqs) -> int:
+    """Send ``D <seq>`` for each of ``seqs``; the reply index before them."""
+    mark = len(kit.link.replies)
+    for seq in seqs:
+        kit.link.send(f"D {seq} {lines[seq]}")
+    return mark
+
+
+def finish(kit: Kit, check: str, rule: str, lines: list[str], seqs, section: str = RESENDS) -> None:
+    """Send ``seqs``; the job must end with ``F`` of its last line and no refusal."""
+    mark = send(kit, lines, seqs)
+    last = len(lines) - 1
+    done = kit.link.wait(lambda r: r.kind == "F" and r.int(0) == last, 2.0, mark)
+    refused = [r for r in kit.link.since(mark) if r.kind == "E"]
+    sent = ", ".join(f"D {seq}" for seq in seqs)
+    kit.check(check, section, rule, done is not None and not refused, sent, kit.got(mark))
+    kit.check_mode(False)
+
+
 def clean_stream(kit: Kit) -> None:
     start, free = _open_job(kit, 60)
     out = Streamer(kit.link, _lines(60), free).run(30.0)
@@ -63,12 +82,10 @@ def clean_stream(kit: Kit) -> None:
 
 
 def gap(kit: Kit) -> None:
-    """D0 D1 D3: `N 2` at once; D2: one `A 3` (frame 3 was kept, selective repeat)."""
-    link = kit.link
+    """D0 D1 D3: `N 2` at once; D2: `A 2` and one `A 3` (frame 3 was kept, selective repeat)."""
+    link, lines = kit.link, _lines(5)
     start, _ = _open_job(kit, 5)
-    lines = _lines(5)
-    for seq in (0, 1, 3):
-        link.send(f"D {seq} {lines[seq]}")
+    send(kit, lines, (0, 1, 3))
     nak = link.wait(lambda r: r.kind == "N", 1.0, start)
     kit.check(
         "stream.gap-answered-n",
@@ -78,8 +95,7 @@ def gap(kit: Kit) -> None:
         "D 0, D 1, D 3",
         _kinds(link.since(start)),
     )
-    mark = len(link.replies)
-    link.send(f"D 2 {lines[2]}")
+    mark = send(kit, lines, (2,))
     link.wait(lambda r: r.kind == "A" and r.int(0) >= 3, 1.0, mark)
     above = [r.int(0) for r in link.since(mark) if r.kind == "A" and r.int(0) > 2]
     kit.check(
@@ -91,29 +107,16 @@ def gap(kit: Kit) -> None:
         "D 2 (3 not resent)",
         _kinds(link.since(mark)),
     )
-    link.send(f"D 4 {lines[4]}")
-    done = link.wait(lambda r: r.kind == "F" and r.int(0) == 4, 2.0, mark)
-    kit.check(
-        "stream.gap-job-completes",
-        RESENDS,
-        "no line runs twice or is lost: `F 4` ends the job",
-        done is not None,
-        "D 4",
-        _kinds(link.since(mark)),
-    )
-    kit.check_mode(False)
+    finish(kit, "stream.gap-job-completes", "no line runs twice or is lost: `F 4` ends the job", lines, (4,))
 
 
 def holes(kit: Kit) -> None:
     """D0 D2 D5: `N 1`, then `N 3` `N 4` (every seq seen missing named at once)."""
-    link = kit.link
+    link, lines = kit.link, _lines(7)
     start, _ = _open_job(kit, 7)
-    lines = _lines(7)
-    for seq in (0, 2):
-        link.send(f"D {seq} {lines[seq]}")
+    send(kit, lines, (0, 2))
     link.wait(lambda r: r.kind == "N", 1.0, start)
-    mark = len(link.replies)
-    link.send(f"D 5 {lines[5]}")
+    mark = send(kit, lines, (5,))
     link.idle(0.3)
     naks = sorted(r.int(0) for r in link.since(mark) if r.kind == "N")
     kit.check(
@@ -125,8 +128,7 @@ def holes(kit: Kit) -> None:
         "D 0, D 2, then D 5",
         _kinds(link.since(start)),
     )
-    mark = len(link.replies)
-    link.send(f"D 1 {lines[1]}")
+    mark = send(kit, lines, (1,))
     after = link.wait(lambda r: r.kind == "N", 1.0, mark)
     kit.check(
         "stream.new-gap-named-at-once",
@@ -136,29 +138,15 @@ def holes(kit: Kit) -> None:
         "D 1",
         _kinds(link.since(mark)),
     )
-    for seq in (3, 4, 6):
-        link.send(f"D {seq} {lines[seq]}")
-    done = link.wait(lambda r: r.kind == "F" and r.int(0) == 6, 2.0, mark)
-    kit.check(
-        "stream.holes-job-completes",
-        RESENDS,
-        "the job ends with `F 6`",
-        done is not None,
-        "D 3, D 4, D 6",
-        _kinds(link.since(mark)),
-    )
-    kit.check_mode(False)
+    finish(kit, "stream.holes-job-completes", "the job ends with `F 6`", lines, (3, 4, 6))
 
 
 def duplicate(kit: Kit) -> None:
-    link = kit.link
+    link, lines = kit.link, _lines(4)
     start, _ = _open_job(kit, 4)
-    lines = _lines(4)
-    for seq in (0, 1, 2):
-        link.send(f"D {seq} {lines[seq]}")
+    send(kit, lines, (0, 1, 2))
     link.wait(lambda r: r.kind == "A" and r.int(0) == 2, 1.0, start)
-    mark = len(link.replies)
-    link.send(f"D 1 {lines[1]}")
+    mark = send(kit, lines, (1,))
     again = link.wait(lambda r: r.kind in "AN", 1.0, mark)
     kit.check(
         "stream.duplicate-reacked",
@@ -168,24 +156,19 @@ def duplicate(kit: Kit) -> None:
         "D 0..2, then D 1 again",
         _kinds(link.since(mark)),
     )
-    link.send(f"D 3 {lines[3]}")
-    done = link.wait(lambda r: r.kind == "F" and r.int(0) == 3, 2.0, mark)
-    kit.check(
+    finish(
+        kit,
         "stream.duplicate-not-run-twice",
-        RESENDS,
         "a duplicate never runs twice: `F 3` ends the job (no refusal)",
-        done is not None and not [r for r in link.since(mark) if r.kind == "E"],
-        "D 3",
-        _kinds(link.since(mark)),
+        lines,
+        (3,),
     )
-    kit.check_mode(False)
 
 
 def bad_crc_in_stream(kit: Kit) -> None:
-    link = kit.link
+    link, lines = kit.link, _lines(3)
     start, _ = _open_job(kit, 3)
-    lines = _lines(3)
-    link.send(f"D 0 {lines[0]}")
+    send(kit, lines, (0,))
     link.wait(lambda r: r.kind == "A", 1.0, start)
     raw = seal(f"D 1 {lines[1]}")
     bad = raw[:4] + bytes([raw[4] ^ 0x01]) + raw[5:]
@@ -200,41 +183,29 @@ def bad_crc_in_stream(kit: Kit) -> None:
         bad.decode("ascii", "replace").strip(),
         _kinds(link.since(mark)),
     )
-    link.send(f"D 1 {lines[1]}")
-    link.send(f"D 2 {lines[2]}")
-    done = link.wait(lambda r: r.kind == "F" and r.int(0) == 2, 2.0, mark)
-    kit.check(
+    finish(
+        kit,
         "stream.bad-crc-line-not-run",
-        RESENDS,
         "the corrupted line never runs; its resend does (`F 2`)",
-        done is not None and not [r for r in link.since(mark) if r.kind == "E"],
-        "D 1, D 2",
-        _kinds(link.since(mark)),
+        lines,
+        (1, 2),
     )
-    kit.check_mode(False)
 
 
 def go_back_n(kit: Kit) -> None:
     """A go-back-N host (resends everything from n on `N n`) still works."""
-    link = kit.link
+    link, lines = kit.link, _lines(6)
     start, _ = _open_job(kit, 6)
-    lines = _lines(6)
-    for seq in (0, 2, 3):
-        link.send(f"D {seq} {lines[seq]}")
+    send(kit, lines, (0, 2, 3))
     link.wait(lambda r: r.kind == "N", 1.0, start)
-    for seq in range(1, 6):
-        link.send(f"D {seq} {lines[seq]}")
-    done = link.wait(lambda r: r.kind == "F" and r.int(0) == 5, 2.0, start)
-    kit.check(
+    finish(
+        kit,
         "stream.go-back-n-host-works",
-        RESENDS,
-        "a host that resends everything from `n` on `N n` still "
-        "works: the frames the machine has are duplicates",
-        done is not None and not [r for r in link.since(start) if r.kind == "E"],
-        "D 0, D 2, D 3, then D 1..5",
-        _kinds(link.since(start)),
+        "a host that resends everything from `n` on `N n` still works: the "
+        "frames the machine has are duplicates",
+        lines,
+        range(1, 6),
     )
-    kit.check_mode(False)
 
 
 CHECKS = [clean_stream, gap, holes, duplicate, bad_crc_in_stream, go_back_n]
