@@ -4,7 +4,7 @@ docs/protocol.md: ``C <id> <VERB> [args]``; a repeated id (the same as the last 
 is not executed again. The machine only remembers the *last* id, so the host keeps
 exactly one command outstanding and retries it with the same id until ``O``/``E``
 arrives (every ``RETRY_S``, doubling up to 1 s); other commands wait in a FIFO. The
-heartbeat ``PING`` goes out every second besides (``PING``/``STATUS`` ids are never
+heartbeat ``PING`` goes out every 0.25 s besides (``PING``/``STATUS`` ids are never
 remembered by the machine). ``PING`` and ``STATUS`` are answered by
 an ``S`` frame. A command unanswered by its verb's deadline ends with ``TIMEOUT``.
 Urgent commands (``STOP``) supersede the outstanding one.
@@ -87,9 +87,12 @@ class CommandQueue:
             self._next = self.ids()
         return self._next
 
-    def _take_id(self) -> int:
+    def take_id(self) -> int:
+        """The next id of this queue's sequence, for a frame sent outside it (an ``R``)."""
         cid, self._next = self.next_id, None
         return cid
+
+    _take_id = take_id
 
     def submit(self, verb: str, args: tuple[str, ...] = (), urgent: bool = False) -> Command:
         """Queue a command and return its frame (with its id)."""

@@ -22,7 +22,11 @@ completed; otherwise it exits 1 with the reason. Exit 2: bad usage or file; 3: t
 port cannot be opened or the link was lost (no valid frame for 3 s, or the port
 went away). At a program stop (``M00``/``M01``/``M06``)
 ``run`` asks on stdin (Enter continues, ``stop`` ends the job), or answers as
-``--at-stops continue|stop`` says. ``--from LINE`` runs FILE from that source line,
+``--at-stops continue|stop`` says. A hold the console did not ask for (panel, cover,
+lost host link, ...: the status says why) is printed with its reason and answered
+the same way: asked on stdin, waited out (``continue``: the operator acts at the
+machine) or the job stopped with exit status 4 (``stop``). ``link`` lines carry the
+resend rate of the last minute. ``--from LINE`` runs FILE from that source line,
 the modal state of the lines before it restored first (as the window's "Start here").
 The heartbeat runs on the wall clock, also against ``cnc-sim --pty --speed N`` (the
 machine keeps its link timers in wall time).
@@ -73,11 +77,12 @@ class Console(JobCommands):
 
     def cmd_pause(self) -> None:
         self.session.pause()
-        self.wait(lambda: self.session.status.state in ("HOLD", "IDLE"), 10.0, "the hold")
+        self.wait(lambda: not self.session.urgent.pending("HOLD"), 10.0, "the hold")
 
     def cmd_stop(self) -> None:
         self.session.stop()
-        self.wait(lambda: self.session.status.state in ("IDLE", "ALARM"), 30.0, "the stop")
+        self.wait(lambda: not self.session.urgent.pending("STOP")
+                  and self.session.status.state in ("IDLE", "ALARM"), 30.0, "the stop")
 
 
 def split_commands(words: list[str]) -> list[list[str]]:
@@ -101,7 +106,9 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("-q", "--quiet", action="store_true", help="hide D/A/F/S traffic")
     parser.add_argument("--timeout", type=float, default=3600.0, help="seconds to wait per command")
     parser.add_argument("--at-stops", choices=("ask", "continue", "stop"), default="ask",
-                        help="at M00/M01/M06 program stops: ask on stdin, continue or stop the job")
+                        help="at M00/M01/M06 program stops and at holds the machine makes on its own: "
+                             "ask on stdin, continue (wait for the operator at the machine) or stop the job "
+                             "(exit 4 after a hold)")
     parser.add_argument("--from", dest="from_line", type=int, metavar="LINE",
                         help="run FILE from this source line, the modal state before it restored")
     args = parser.parse_intermixed_args(argv)

@@ -14,7 +14,7 @@ Signals (all carry one frozen dataclass of ``app.comm.events`` unless said other
 ``status_changed``            ``StatusEvent``: every ``S`` frame (position, state, flags, ...)
 ``progress_changed``          ``ProgressEvent``: job/upload progress in program line indices
 ``link_changed``              ``LinkEvent``: CONNECTED / DEGRADED / LOST / DISCONNECTED,
-                              resend rate and link-quality warning
+                              resend rate of the last minute and link-quality warning
 ``alarm_raised``              ``AlarmEvent``: an ``X`` frame (LIMIT, HOST_LOST, BOOT, ...)
 ``log_added``                 ``LogEvent``: a line for the log (host or machine)
 ``frame_logged``              ``FrameEvent``: console traffic; D/A/F/S only when verbose
@@ -23,6 +23,7 @@ Signals (all carry one frozen dataclass of ``app.comm.events`` unless said other
 ``error_occurred``            ``ErrorEvent``: LINK_LOST, RETRIES_EXHAUSTED, MACHINE_RESET, ...
 ``resume_offered``            ``ResumeOffer``: after a reconnect mid-job (same or new boot)
 ``program_stopped``           ``ProgramStopEvent``: the machine holds at M00/M01/M06 (RESUME goes on)
+``hold_reported``             ``HoldEvent``: why the machine holds or stopped (status ``why``), once
 ``connected``                 ``str``: the URL just opened
 ``connect_failed``            ``str``: why a URL could not be opened
 ``disconnected``              ``str``: why the transport closed (operator, unplug, ...)
@@ -111,6 +112,9 @@ class _Relay(SessionListener):
     def on_program_stop(self, event):
         self.w.program_stopped.emit(event)
 
+    def on_hold(self, event):
+        self.w.hold_reported.emit(event)
+
 
 class SerialWorker(QObject):
     """Owns transport and Session in the worker thread (see the module docstring)."""
@@ -127,6 +131,7 @@ class SerialWorker(QObject):
     error_occurred = Signal(object)
     resume_offered = Signal(object)
     program_stopped = Signal(object)
+    hold_reported = Signal(object)
     connected = Signal(str)
     connect_failed = Signal(str)
     disconnected = Signal(str)

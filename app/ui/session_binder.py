@@ -14,7 +14,7 @@ from app.comm.listener import BUSY_STATES, JOB_STATES, RECOVERY_STATES, SessionS
 from app.i18n import localize
 from app.ui.codes import alarm_text, refusal_text
 from app.ui.commanded import commanded_position
-from app.ui.numbers import decimal
+from app.ui.numbers import decimal, fill, integer
 from app.ui.program.summary import device_count
 from app.ui.progress import ProgressTracker, line_times
 
@@ -69,6 +69,7 @@ class SessionBinder(QObject):
         worker.job_finished.connect(self.on_job_finished)
         worker.error_occurred.connect(self.on_error)
         worker.resume_offered.connect(self.on_resume_offer)
+        worker.hold_reported.connect(self.on_hold)
 
     # Cross-thread signals must reach bound methods of this QObject (queued into the GUI
     # thread); a lambda would run in the emitting thread.
@@ -118,12 +119,30 @@ class SessionBinder(QObject):
 
     def on_link(self, event) -> None:
         self.link_state = event.state
-        percent = decimal(event.resend_rate * 100, 0)
+        percent = decimal(event.resend_rate * 100, 1)
         detail = self.tr("%1 % resends").replace("%1", percent) if event.quality_warning else ""
         self.w.connection.set_link(event.state, detail)
-        self.w.console.set_resends(0, event.resend_rate, event.quality_warning)
+        health = fill(self.tr("resends in the last minute: %1 % of %2 frames"), percent,
+                      integer(event.sent_last_min))
+        self.w.connection.link.setToolTip(health)
+        self.w.status.setToolTip(health)
+        self.w.console.set_resends(event.resent_last_min, event.resend_rate, event.quality_warning)
         if event.state == "LOST":
             self._alert("usb", event.reason)
+
+    def on_hold(self, event) -> None:
+        """Why the machine holds or stopped, in words with its source (status bar), until
+        it runs again; the cover and program stops have their own banner and prompt."""
+        if not event.why:
+            self.w.status.clearMessage()
+            return
+        if event.why in ("COVER", "PROG"):
+            return
+        sources = {"host": self.tr("this computer"), "panel": self.tr("the machine's panel"),
+                   "cover": self.tr("the cover"), "link": self.tr("the link"), "program": self.tr("the program"),
+                   "machine": self.tr("the machine")}
+        template = self.tr("Machine holds (%1): %2") if event.state == "HOLD" else self.tr("Machine stopped (%1): %2")
+        self.w.status.showMessage(fill(template, sources.get(event.source, event.source), localize(event.text)))
 
     def on_alarm(self, event) -> None:
         self.w.console.add_log("warning", f"alarm {event.code}: {event.text}", "machine")
@@ -195,7 +214,6 @@ class SessionBinder(QObject):
             self.job_done = event.done
             self.tracker.update(event.done + 1)
             self._progress_dirty = True
-        self.w.console.set_resends(event.resends, event.resend_rate, event.resend_rate > 0.1)
 
     def begin_job(self, loaded, first: int = 0) -> None:
         """Called when the operator starts ``loaded``: fresh progress (None: an MDI line);
