@@ -178,8 +178,8 @@ class MainMcu:
         for item in items:
             if isinstance(item, Legacy):
                 self.legacy.seen()
-            elif isinstance(item, Dropped):
-                self._host_bad()
+            elif isinstance(item, Dropped) or isinstance(item, RealtimeCommand) and item.why:
+                self._host_bad()  # a `why` only in the main MCU's own R frames: from the host, a bad frame
             else:
                 self._host_alive()
                 self._host_frame(item)
