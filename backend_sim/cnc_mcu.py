@@ -323,6 +323,7 @@ class CncMcu:
         self.send(Alarm("EXEC_LOG", text))
         if self.job.open:
             self.stop_job()
+            self.why = "FAULT"
 
     def _on_finished(self, event: ev.Finished) -> int:
         if event.seq < 0 or event.seq not in self.lines:
