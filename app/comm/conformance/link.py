@@ -3,8 +3,8 @@
 ``Link(port)`` wraps anything with pyserial's ``read``/``write``/``in_waiting``.
 Every line the machine sends becomes a ``Reply`` (kept in ``replies`` with its
 arrival time, bad ones too: the checks judge them). While ``heartbeat`` is on, the
-link sends ``C <id> PING`` after every 0.5 s without writing (docs/protocol.md,
-"Heartbeat": at least once a second), so the machine never sees a host loss the kit
+link sends ``C <id> PING`` after every 0.25 s without writing (docs/protocol.md,
+"Heartbeat": every 0.25 s), so the machine never sees a host loss the kit
 did not mean. Command ids start at a random value below 1,000,000 and count up
 ("Host conventions").
 """
@@ -17,7 +17,7 @@ from collections.abc import Callable
 
 from app.comm.conformance.wire import Reply, seal
 
-PING_EVERY_S = 0.5
+PING_EVERY_S = 0.25
 READ_SLICE_S = 0.01
 
 
@@ -109,6 +109,21 @@ class Link:
                 return cid, answer
             self.send_command(text, cid)
             retry = min(retry * 2, 1.0)
+
+    def realtime(self, verb: str, timeout: float = 5.0, cid: int | None = None) -> tuple[int, Reply | None]:
+        """Send ``R <id> verb`` as a host does ("Real-time commands": two copies back to
+        back, then one every 10 ms) until its ``O``/``E`` arrives or ``timeout``."""
+        start = len(self.replies)
+        cid = self.new_id() if cid is None else cid
+        frame = f"R {cid} {verb}"
+        self.send(frame)
+        self.send(frame)
+        deadline = self.clock() + timeout
+        while True:
+            answer = self.wait(lambda r: r.kind in "OE" and r.id == cid, 0.01, start)
+            if answer is not None or self.clock() >= deadline:
+                return cid, answer
+            self.send(frame)
 
     def status(self, timeout: float = 2.0):
         """A fresh status (the answer to ``STATUS``), or None."""

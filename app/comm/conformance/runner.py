@@ -43,7 +43,7 @@ SECTIONS = {
     "noisy": checks_noisy.CHECKS,
 }
 SLOW = {"motion"}
-FINAL = [checks_frames.every_frame_well_formed, checks_link.no_false_host_lost]
+FINAL = [checks_frames.every_frame_well_formed, checks_link.no_false_host_lost, checks_realtime.why_field]
 
 
 def run(

@@ -18,6 +18,7 @@ MAX_FRAME = 96
 GOLDEN = {b"123456789": "29B1", b"D 0 G00 X10 Y10": "904C"}
 STATES = ("IDLE", "HOMING", "RUN", "HOLD", "JOG", "ALARM")
 FLAGS = "HCLUPSW"
+WHY = ("HOST", "PANEL", "COVER", "LINK", "UART", "PROG", "SOFT", "LINE", "LIMIT", "FAULT")
 ALARMS = (
     "LIMIT",
     "SOFT_LIMIT",
@@ -43,7 +44,7 @@ _GRAMMAR = {
     "E": re.compile(rf"({_SEQ}|-) ({_WORD})(?: (.*))?"),
     "S": re.compile(
         rf"([0-9A-F]{{1,8}}) ({'|'.join(STATES)}) ({_NUM}) ({_NUM}) ({_NUM}) ({_INT}) ({_INT}) "
-        rf"({_SEQ}) ({_SEQ}) ([{FLAGS}]+|-)"
+        rf"({_SEQ}) ({_SEQ}) ([{FLAGS}]+|-)(?: ({'|'.join(WHY)}|-))?"
     ),
     "X": re.compile(rf"({_WORD})(?: (.*))?"),
     "I": re.compile(rf"({_SEQ}) (.+)"),
@@ -146,6 +147,7 @@ class Status:
     free: str
     rpm: str
     flags: str
+    why: str | None = None  # None: a status of ten fields (a machine from before `why`)
 
     def has(self, flag: str) -> bool:
         return flag in self.flags
