@@ -59,6 +59,13 @@ def duplicate_run_twice(sim):
     sim.cnc.job.offer = offer_again
 
 
+def forgets_realtime_ids(sim):
+    """Both MCUs forget every R id at once: a repeated R STOP is carried out again."""
+    for recent in (sim.main.urgent.recent, sim.cnc.recent):
+        recent.remembers = lambda rid: False
+        recent.answers = lambda rid: []
+
+
 CASES = [
     (wrong_crc_in_statuses, ["frames"], "frames.machine-frames-valid"),
     (no_n_for_a_gap, ["stream"], "stream.gap-answered-n"),
@@ -66,6 +73,7 @@ CASES = [
     (early_host_lost, ["link"], "link.host-lost-after-3s"),
     (no_selective_repeat, ["stream"], "stream.selective-repeat"),
     (duplicate_run_twice, ["stream"], "stream.duplicate-reacked"),
+    (forgets_realtime_ids, ["realtime"], "realtime.repeat-not-executed"),
 ]
 
 
@@ -83,6 +91,6 @@ def test_the_kit_names_a_lenient_set_grammar(tmp_path, monkeypatch):
             "errors.set-choice-leading-zero"} <= set(failed), sorted(failed)
 
 
-@pytest.mark.parametrize("sections", [["frames"], ["stream"], ["link"], ["errors"]])
+@pytest.mark.parametrize("sections", [["frames"], ["stream"], ["link"], ["errors"], ["realtime"]])
 def test_the_honest_machine_passes_the_same_sections(tmp_path, sections):
     assert failures(tmp_path, sections) == {}
