@@ -54,7 +54,17 @@ def _source(cmd: Command) -> str:
 def _hold_now(mcu, cmd: Command, why: str) -> None:
     if mcu.mc.state in ("RUN", "JOG", "HOMING"):
         mcu.why = why
+    _homing_stopped(mcu, cmd.verb)
     mcu.mc.feed_hold()
+
+
+def _homing_stopped(mcu, verb: str) -> None:
+    """A hold or stop ends a homing: its ``HOME`` is answered ``E NOT_HOMED`` now."""
+    if mcu.mc.state != "HOMING":
+        return
+    for pending in [p for p in mcu.pending if p.verb == "HOME"]:
+        mcu.pending.remove(pending)
+        mcu.send(Error(pending.id, "NOT_HOMED", f"homing stopped by {verb}"))
 
 
 def _resume_now(mcu, cmd: Command, why: str) -> None:
@@ -64,6 +74,7 @@ def _resume_now(mcu, cmd: Command, why: str) -> None:
 def _stop_now(mcu, cmd: Command, why: str) -> None:
     if mcu.job.open or mcu.mc.state != "IDLE":
         mcu.why = why
+    _homing_stopped(mcu, cmd.verb)
     mcu.stop_job()
 
 
@@ -170,8 +181,10 @@ def _pause(mcu, cmd: Command) -> str | None:
     if mcu.mc.state not in ("RUN", "JOG", "HOMING"):
         return mcu.mc.state
     mcu.why = _source(cmd)
-    mcu.mc.feed_hold()
-    mcu.await_event(cmd.id, "PAUSE", ev.Held)
+    moving_job = mcu.mc.state == "RUN"
+    _homing_stopped(mcu, "PAUSE")
+    mcu.mc.feed_hold()  # a jog is cancelled, homing stops: answered once stopped
+    mcu.await_event(cmd.id, "PAUSE", ev.Held if moving_job else ev.Stopped)
     return None
 
 

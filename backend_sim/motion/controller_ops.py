@@ -42,11 +42,12 @@ class ControllerOps:
                 self._set_state("RUN")
 
     def feed_hold(self) -> None:
-        """RUN: decelerate on the path and stop (``Held`` when at rest). JOG: cancel the jog."""
+        """RUN: decelerate on the path and stop (``Held`` when at rest). JOG: cancel the
+        jog; HOMING: stop homing (``Stopped`` when at rest)."""
         if self.state == "RUN":
             self.job.hold()
             self._set_state("HOLD")
-        elif self.state == "JOG":
+        elif self.state in ("JOG", "HOMING"):
             self.stop()
 
     def resume(self, release_stop: bool = True) -> None:

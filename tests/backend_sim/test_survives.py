@@ -179,3 +179,30 @@ def test_the_machine_s_numbers_are_the_loader_s():
 def test_logs_say_nothing_of_a_healthy_upload(sim, host):
     assert isinstance(put(host, "a.ngc", PROGRAM), Ok)
     assert not [f for f in host.of(Log) if "abandoned" in f.text]
+
+
+def test_pause_during_a_jog_is_answered_once_stopped(sim, host):
+    """Found by the conformance kit: a PAUSE that cancelled a jog was never answered."""
+    host.home()
+    jog = host.command("JOG X 100 300")
+    host.wait(lambda f: isinstance(f, Status) and f.state == "JOG")
+    assert host.ok("PAUSE", timeout=10).verb == "PAUSE"
+    assert sim.cnc.mc.state == "IDLE" and sim.cnc.mc.commanded_mm[0] < 100
+    host.wait(lambda f: isinstance(f, Ok | Error) and f.id == jog, start=0)
+
+
+def test_pause_during_homing_stops_it_and_is_answered(sim, host):
+    home = host.command("HOME")
+    host.wait(lambda f: isinstance(f, Status) and f.state == "HOMING")
+    assert host.ok("PAUSE", timeout=10).verb == "PAUSE"
+    assert sim.cnc.mc.state == "IDLE" and not sim.cnc.mc.homed
+    refusal = host.wait(lambda f: isinstance(f, Ok | Error) and f.id == home, start=0, timeout=5)
+    assert isinstance(refusal, Error) and refusal.code == "NOT_HOMED" and "PAUSE" in refusal.text
+
+
+def test_stop_during_homing_answers_the_home(sim, host):
+    home = host.command("HOME")
+    host.wait(lambda f: isinstance(f, Status) and f.state == "HOMING")
+    host.ok("STOP", timeout=10)
+    refusal = host.wait(lambda f: isinstance(f, Ok | Error) and f.id == home, start=0, timeout=5)
+    assert isinstance(refusal, Error) and refusal.code == "NOT_HOMED"

@@ -12,8 +12,10 @@ EARLY_S = 0.1  # the kit's last write lands a little after it is made
 LATE_S = 0.4  # the wire, the machine's own polling and the OS's scheduling
 
 
-def silence(kit: Kit, seconds: float = LOST_S + 1.5):
-    """Send nothing for up to ``seconds``; the ``X HOST_LOST`` that came and when (s after the last write)."""
+def silence(kit: Kit, seconds: float = LOST_S + 1.5, then=None):
+    """Send nothing for up to ``seconds``; the ``X HOST_LOST`` that came and when (s after
+    the last write). ``then(reply)``: stay silent after the alarm until a reply matches
+    (3 s at most), so what the machine does while the host is lost can be seen."""
     link = kit.link
     link.idle(0.2)
     link.heartbeat = False
@@ -21,6 +23,8 @@ def silence(kit: Kit, seconds: float = LOST_S + 1.5):
     try:
         start, last = len(link.replies), link.last_write
         alarm = link.wait(lambda r: r.kind == "X" and r.fields[0] == "HOST_LOST", seconds, start)
+        if alarm is not None and then is not None:
+            link.wait(then, 3.0, start)
     finally:
         link.heartbeat = True
     return start, alarm, None if alarm is None else alarm.t - last
