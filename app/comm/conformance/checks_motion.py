@@ -359,10 +359,10 @@ def sd_running_file(kit: Kit) -> None:
 
 CHECKS = [
     home,
+    zero,
     jog_and_statuses,
     spindle,
     pause_moving,
-    zero,
     program_stop,
     credit_window,
     host_lost_job,
