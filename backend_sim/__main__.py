@@ -49,9 +49,11 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--exec-log", metavar="FILE", help="append seq<TAB>line of every executed line")
     p.add_argument("--mode", choices=("planner", "simple"), default="planner")
     p.add_argument("--seed", type=int, default=None, help="seed of boot ids and random faults")
+    what = {"drop": "a byte dropped", "corrupt": "one bit of a byte flipped (whatever byte that makes)",
+            "duplicate": "a byte sent twice", "noise": "a burst of 1-16 random bytes 0x00-0xFF after a byte"}
     for kind in ("drop", "corrupt", "duplicate", "noise"):
         p.add_argument(f"--{kind}-rate", type=_rate, default=0.0, metavar="P",
-                       help=f"per-byte probability of a {kind} fault")
+                       help=f"per-byte probability of {what[kind]}")
     p.add_argument("--fault-hop", choices=("usb", "uart", "both"), default="usb")
     p.add_argument("--fault-direction", choices=("down", "up", "both"), default="both")
     return p

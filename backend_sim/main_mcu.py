@@ -1,7 +1,8 @@
 """The main MCU: relay between host (USB) and CNC MCU (UART), its own commands, watchdogs.
 
 Contract:
-- host frames: ``D`` and the commands that are not its own go down the UART; its own
+- host frames: ``D`` and the commands that are not its own go down the UART (a
+  forwarded command again every 50 ms while unanswered, for half a second); its own
   commands are ``PING``/``STATUS`` (answered with the last ``S`` of the CNC MCU, with
   the flags it owns: ``L``, ``U``, ``S``) and ``SD ...`` (``main_sd``). A repeated
   command id (the same as the last; ``PING``/``STATUS`` are never remembered) is not
@@ -11,7 +12,11 @@ Contract:
   ``expected`` mirrored from the stream (the CNC MCU's ``N`` for that same seq is
   not passed on twice). A resent ``D`` frame (seq at or below the highest relayed in
   this stream) goes down ahead of the new frames waiting for the UART
-  (``Wire.write_priority``), so a gap is filled while the frames above it arrive.
+  (``Wire.write_priority``), so a gap is filled while the frames above it arrive. The
+  relayed ``D`` frames are kept until the CNC MCU acknowledges them (``relay``): the
+  CNC MCU's ``N`` for a kept frame, and 20 ms without an acknowledgement, send it down
+  again (not passed up); a host's copy of a frame the CNC MCU has is answered with
+  its last ``A``.
 - ``R`` real-time commands go down ahead of every queue (``Wire.write_urgent``), sent
   again every 5 ms until the CNC MCU answers (``urgent.UrgentRelay``); a repeat of one
   still going down is dropped, of one answered gets the answer again. ``R STOP`` also
@@ -22,9 +27,10 @@ Contract:
 - heartbeat: 3 s without a valid host frame while connected (in link time,
   ``SimClock.link_now``: wall-clock seconds at any speed factor, so a host needs no
   knowledge of the factor) -> flag ``L``, ``X HOST_LOST``, LED blinks fast, buzzer
-  beeps, a host job feed-holds (its own ``R HOLD LINK``; an SD job carries on). The UART hop likewise (it sends
-  the CNC MCU a ``PING`` after 0.25 s without sending anything, and every 0.25 s
-  while nothing has come back for 0.25 s): ``U``, ``X UART_LOST``; both ends of the
+  beeps, a host job feed-holds (its own ``R HOLD LINK``; an SD job carries on). The
+  UART hop likewise (it sends the CNC MCU a ``PING`` after 0.1 s without sending
+  anything, and every 0.1 s while nothing has come back for 0.1 s): ``U``,
+  ``X UART_LOST``; both ends of the
   UART are the machine's, so it runs on machine time. Until the host has sent one
   valid frame nothing goes up (as USB CDC with no host reading).
 """
@@ -50,6 +56,7 @@ from app.comm.frame import (
 from backend_sim import main_sd
 from backend_sim.answer_cache import AnswerCache
 from backend_sim.outgoing import encode_fit
+from backend_sim.relay import DataRelay, Reforward
 from backend_sim.sd_card import SdCard
 from backend_sim.urgent import LegacyCounter, UrgentRelay
 from backend_sim.wire import Wire, to_ms
@@ -65,8 +72,8 @@ class LinkState(enum.Enum):
     LOST = "lost"
 
 
-PING_PERIOD_S = 0.25  # docs/protocol.md: a lost ping must not make the CNC MCU hold as UART_LOST
-SILENT_PING_S = 0.25
+PING_PERIOD_S = 0.1  # docs/protocol.md: lost pings must not make the CNC MCU hold as UART_LOST
+SILENT_PING_S = 0.1
 HOUSEKEEPING_S = 0.1
 
 
@@ -100,12 +107,14 @@ class MainMcu:
         self.answers = AnswerCache()
         self.expected = 0
         self.relayed = -1
+        self.relay = DataRelay()  # D frames relayed, not yet acknowledged by the CNC MCU
         self.nak_sent: int | None = None  # N sent in this bad stretch (the main MCU's or passed on)
         self.own_nak: int | None = None  # the N the main MCU sent itself, for a bad host frame
         self.upload = None
         self.sd_job = None
         self.own_id = OWN_ID0
         self.own_pending: dict[int, object] = {}
+        self.reforward = Reforward()
         self.notice = "ready"
 
     # ------------------------------------------------------------------ time
@@ -117,7 +126,9 @@ class MainMcu:
         if self.uart_link is LinkState.OK:
             due = min(due, self.last_uart + self.lost_s)
         job_due = self.sd_job.next_due() if self.sd_job is not None else None
-        for other in (job_due, self.urgent.next_due(), self.legacy.next_due()):
+        others = (job_due, self.urgent.next_due(), self.legacy.next_due(),
+                  self.reforward.next_due(self._answered), self.relay.next_due())
+        for other in others:
             if other is not None and other < due:
                 due = other
         due_ms = to_ms(due)
@@ -147,6 +158,10 @@ class MainMcu:
             self.send_cnc_own("PING", callback=None)
         for raw in self.urgent.due(now):
             self.uart_tx.write_urgent(raw, now)
+        self._down_again(self.relay.probe(now))
+        again = self.reforward.take(now, self._answered)
+        if again is not None:
+            self.to_cnc(again)
         said = self.legacy.report(now)
         if said is not None:
             self.to_host(said)
@@ -241,13 +256,27 @@ class MainMcu:
         if frame.seq == self.expected:
             self.expected += 1
             self.nak_sent = None
-        if frame.seq <= self.relayed:  # a resend: ahead of the new frames waiting for the UART
-            self.uart_tx.write_priority(encode_fit(frame), self.clock.now)
-            self.next_ping = self.clock.now + PING_PERIOD_S
-            return None
+        raw, now = encode_fit(frame), self.clock.now
+        if frame.seq <= self.relayed:  # a resend: answered here, or ahead of the new frames
+            answers = self.relay.answer_for(frame.seq, now)
+            for answer in answers:
+                self.to_host(answer)
+            if answers:
+                return None
+            self.relay.relayed(frame.seq, raw, now)
+            return self._down_again(raw)
+        self.relay.relayed(frame.seq, raw, now)
         self.relayed = frame.seq
         self.to_cnc(frame)
         return None
+
+    def _down_again(self, raw: bytes | None) -> bool:
+        """A ``D`` frame down again in the priority lane; False if there is none."""
+        if raw is None:
+            return False
+        self.uart_tx.write_priority(raw, self.clock.now)
+        self.next_ping = self.clock.now + PING_PERIOD_S
+        return True
 
     def _host_command(self, cmd: Command) -> None:
         handler = _OWN.get(cmd.verb)
@@ -278,18 +307,25 @@ class MainMcu:
         if hook is not None and hook(self, cmd) is False:
             return
         self.to_cnc(cmd)
+        self.reforward.start(cmd, self.clock.now)
+
+    def _answered(self, cmd: Command) -> bool:
+        """``cmd`` is answered, or no longer the remembered command."""
+        return self.answers.id != cmd.id or self.answers.answered
 
     def _before_job(self, cmd: Command) -> bool:
         if self.sd_job is not None or self.upload is not None:
             self.answer(Error(cmd.id, "BUSY", "SD job or upload in progress"))
             return False
         self.expected, self.nak_sent, self.relayed = 0, None, -1
+        self.relay.reset()
         return True
 
     def _before_resume(self, cmd: Command) -> bool:
         if cmd.args[:1] == ("FROM",) and len(cmd.args) == 2 and cmd.args[1].isdigit():
             self.expected, self.nak_sent = int(cmd.args[1]), None
             self.relayed = self.expected - 1
+            self.relay.reset()
         return True
 
     def _before_stop(self, cmd: Command) -> bool:
@@ -363,6 +399,7 @@ class MainMcu:
             return self._cnc_nak(frame)
         if isinstance(frame, Ack):
             self.expected = max(self.expected, frame.seq + 1)
+            self.relay.on_ack(frame, self.clock.now)
         if cid is not None and cid == self.last_id and isinstance(frame, Ok | Error | Info):
             return self.answer(frame)
         self.to_host(frame)
@@ -373,7 +410,8 @@ class MainMcu:
             self.own_nak = None
             return
         self.expected, self.nak_sent = frame.seq, frame.seq
-        self.to_host(frame)
+        if not self._down_again(self.relay.resend(frame.seq, self.clock.now)):  # the UART hop is its own
+            self.to_host(frame)
 
     def _cnc_status(self, frame: Status) -> None:
         """Keep the CNC's status; pass it on unless it repeats the last one (ping answers)."""

@@ -83,11 +83,11 @@ def fuzz_figures(total: int) -> None:
         wall = time.perf_counter()
         with tempfile.TemporaryDirectory() as sd:
             o = fuzz_run(total, 1, sd, job_lines)
-        print(f"  {label}: thrown {o.thrown:,}; started anything: {'yes' if o.moved else 'no'}; "
-              f"left the job: {'yes' if o.left_job else 'no'}; executed log exact: {'yes' if o.exact else 'no'}; "
-              f"phantom holds/stops: {o.phantoms}; legacy bytes ignored: {o.legacy}; "
-              f"PING answered afterwards: {'yes' if o.pinged else 'NO'}; {time.perf_counter() - wall:.0f} s wall"
-              + (f"; {o.reason}" if o.reason else ""))
+        yes = {True: "yes", False: "no"}
+        print(f"  {label}: thrown {o.thrown:,}; started anything: {yes[o.moved]}; left the job: "
+              f"{yes[o.left_job]}; executed log exact: {yes[o.exact]}; phantom holds/stops: {o.phantoms}; "
+              f"legacy bytes ignored: {o.legacy}; PING answered afterwards: {yes[o.pinged]}; "
+              f"{time.perf_counter() - wall:.0f} s wall" + (f"; {o.reason}" if o.reason else ""))
 
 
 def main() -> None:

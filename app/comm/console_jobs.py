@@ -24,7 +24,6 @@ from app.comm.console_client import ConsoleClient, ConsoleError, load_lines, loa
 from app.comm.listener import SessionState
 from app.comm.modal import device_index_of, restart_preamble
 
-
 HELD_EXIT = 4
 """Exit status of ``run`` when ``--at-stops stop`` ended a job the machine held on its own."""
 
@@ -91,8 +90,8 @@ class JobCommands(ConsoleClient):
         held = None
         self.printer.holds.clear()
         while not ended():
-            self.wait(lambda: ended() or bool(self.printer.stops or self.printer.holds), what="the job to end",
-                      through_loss=True)
+            asked = lambda: ended() or bool(self.printer.stops or self.printer.holds)  # noqa: E731
+            self.wait(asked, what="the job to end", through_loss=True)
             if self.printer.stops:
                 self.answer_stop(self.printer.stops.pop(0))
             if self.printer.holds:
@@ -109,16 +108,20 @@ class JobCommands(ConsoleClient):
             raise ConsoleError(f"job failed at line {job.done + 1} of {job.total}: {job.reason}")
         print(f"job completed: {job.total} lines", file=self.out)
 
+    def _answer(self, prompt: str, enter: str) -> str:
+        """``at_stops``, or with ``ask`` the operator's answer on stdin (Enter: ``enter``;
+        no stdin: ``stop``)."""
+        if self.at_stops != "ask":
+            return self.at_stops
+        try:
+            return input(prompt).strip().lower() or enter
+        except EOFError:
+            return "stop"
+
     def answer_stop(self, event) -> None:
         """The machine holds at a program stop: continue or stop, as ``at_stops`` says."""
         print(f"program stop at device line {event.index}: {event.line}", file=self.out)
-        answer = self.at_stops
-        if answer == "ask":
-            try:
-                answer = input("Enter continues, 'stop' ends the job: ").strip().lower() or "continue"
-            except EOFError:
-                answer = "stop"
-        if answer.startswith("s"):
+        if self._answer("Enter continues, 'stop' ends the job: ", "continue").startswith("s"):
             self.session.stop()
         else:
             self.session.resume()
@@ -126,12 +129,7 @@ class JobCommands(ConsoleClient):
     def answer_hold(self, event):
         """The machine holds on its own: resume, stop or wait, as ``at_stops`` says; the
         event if the job was stopped for it."""
-        answer = self.at_stops
-        if answer == "ask":
-            try:
-                answer = input("Enter resumes, 'stop' ends the job: ").strip().lower() or "resume"
-            except EOFError:
-                answer = "stop"
+        answer = self._answer("Enter resumes, 'stop' ends the job: ", "resume")
         if answer.startswith("s"):
             print("stopping the job", file=self.out)
             self.session.stop()

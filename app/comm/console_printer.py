@@ -48,7 +48,8 @@ class Printer(SessionListener):
     def on_link_changed(self, event):
         health = (f", resends {event.resend_rate:.1%} of {event.sent_last_min} frames in the last minute"
                   if event.sent_last_min else "")
-        print(f"link {event.state}{health}" + (" (poor quality)" if event.quality_warning else ""), file=self.out)
+        poor = " (poor quality)" if event.quality_warning else ""
+        print(f"link {event.state}{health}{poor}", file=self.out)
 
     def on_hold(self, event: HoldEvent):
         if not event.why:

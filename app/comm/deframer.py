@@ -13,7 +13,6 @@ from dataclasses import dataclass, field
 
 from app.comm.frame import LEGACY_BYTES, MAX_FRAME, PARTIAL_TIMEOUT, Frame, FrameError, decode
 
-
 _FRAME_START = re.compile(rb"[A-Z] ")
 
 

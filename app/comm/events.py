@@ -137,7 +137,7 @@ class LogEvent:
 class FrameEvent:
     """Traffic for the console: ``direction`` "tx" or "rx"; ``ok`` False for a dropped line.
 
-    ``kind`` is the frame letter (``D``, ``A``, ...), ``!``/``^X`` for a real-time byte,
+    ``kind`` is the frame letter (``D``, ``A``, ``R`` ...),
     or ``?`` for a line that was not a valid frame (``text`` then says why).
     """
 

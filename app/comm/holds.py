@@ -24,6 +24,9 @@ REASONS: dict[str, tuple[str, str]] = {
     "LIMIT": ("machine", N_("a limit switch was hit")),
     "FAULT": ("machine", N_("a machine fault (following error or homing)")),
 }
+SOURCE_WORDS = {"host": N_("this computer"), "panel": N_("the machine's panel"), "cover": N_("the cover"),
+                "link": N_("the link"), "program": N_("the program"), "machine": N_("the machine")}
+"""Each source in words, for the log line of a hold (``source_words``)."""
 QUIET_STATES = frozenset({"RUN", "JOG", "HOMING"})
 
 
@@ -34,6 +37,11 @@ def hold_text(why: str) -> str:
 
 def hold_source(why: str) -> str:
     return REASONS.get(why, ("machine", ""))[0]
+
+
+def source_words(source: str) -> str:
+    """``source`` (``host``, ``panel`` ...) in words (a message)."""
+    return msg(SOURCE_WORDS[source]) if source in SOURCE_WORDS else source
 
 
 class HoldWatch:

@@ -23,7 +23,8 @@ FIRST_COPIES = 2
 GIVE_UP_S = 5.0
 CONFIRMS = {"HOLD": frozenset({"HOLD", "ALARM"})}
 NAMES = {"HOLD": "feed hold", "RESUME": "resume", "STOP": "stop", "RESET": "reset"}
-SUPERSEDES = {"STOP": ("HOLD", "RESUME"), "HOLD": ("RESUME",), "RESUME": ("HOLD",), "RESET": ("HOLD", "RESUME", "STOP")}
+SUPERSEDES = {"STOP": ("HOLD", "RESUME"), "HOLD": ("RESUME",), "RESUME": ("HOLD",),
+              "RESET": ("HOLD", "RESUME", "STOP")}
 
 
 @dataclass

@@ -45,7 +45,7 @@ from app.comm.events import (
     StatusEvent,
 )
 from app.comm.heartbeat import LinkMonitor, LinkState
-from app.comm.holds import HoldWatch
+from app.comm.holds import HoldWatch, source_words
 from app.comm.jobs import UNKNOWN_BOOT, JobControl
 from app.comm.link_health import ResendMeter
 from app.comm.listener import JOB_STATES, SENDING_STATES, TRANSITIONS, SessionListener, SessionState
@@ -280,9 +280,9 @@ class Session(JobControl):
         if hold is None:
             return
         if hold.why and not hold.asked:
-            template = ("the machine holds ({source}): {reason}" if hold.state == "HOLD"
-                        else "the machine stopped ({source}): {reason}")
-            self._log("warning", msg(template, source=hold.source, reason=hold.text))
+            said = {"source": source_words(hold.source), "reason": hold.text}
+            self._log("warning", msg("the machine holds ({source}): {reason}", **said) if hold.state == "HOLD"
+                      else msg("the machine stopped ({source}): {reason}", **said))
         self.listener.on_hold(hold)
 
     # ------------------------------------------------------------------ link
@@ -307,10 +307,13 @@ class Session(JobControl):
         bad = self.health.warning(now)
         if bad != self._warned:
             self._warned = bad
-            rate, sent = float(self.health.rate(now)), self.health.sent(now)
-            text = ("poor link: {rate:.0%} of the {sent} frames of the last minute were resent" if bad
-                    else "link quality back: {rate:.0%} of the {sent} frames of the last minute were resent")
-            self._log("warning" if bad else "info", msg(text, rate=rate, sent=sent))
+            said = {"rate": float(self.health.rate(now)), "sent": self.health.sent(now)}
+            if bad:
+                self._log("warning", msg("poor link: {rate:.0%} of the {sent} frames of the last minute "
+                                         "were resent", **said))
+            else:
+                self._log("info", msg("link quality back: {rate:.0%} of the {sent} frames of the last "
+                                      "minute were resent", **said))
             self._emit_link()
         shown, when = self._health_shown
         if round(self.health.rate(now) * 100) != shown and now - when >= HEALTH_EVERY_S:

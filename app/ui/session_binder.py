@@ -139,10 +139,12 @@ class SessionBinder(QObject):
         if event.why in ("COVER", "PROG"):
             return
         sources = {"host": self.tr("this computer"), "panel": self.tr("the machine's panel"),
-                   "cover": self.tr("the cover"), "link": self.tr("the link"), "program": self.tr("the program"),
-                   "machine": self.tr("the machine")}
-        template = self.tr("Machine holds (%1): %2") if event.state == "HOLD" else self.tr("Machine stopped (%1): %2")
-        self.w.status.showMessage(fill(template, sources.get(event.source, event.source), localize(event.text)))
+                   "cover": self.tr("the cover"), "link": self.tr("the link"),
+                   "program": self.tr("the program"), "machine": self.tr("the machine")}
+        held = event.state == "HOLD"
+        template = self.tr("Machine holds (%1): %2") if held else self.tr("Machine stopped (%1): %2")
+        source = sources.get(event.source, event.source)
+        self.w.status.showMessage(fill(template, source, localize(event.text)))
 
     def on_alarm(self, event) -> None:
         self.w.console.add_log("warning", f"alarm {event.code}: {event.text}", "machine")

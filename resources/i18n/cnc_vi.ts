@@ -1576,6 +1576,42 @@ Nếu mất kết nối, máy giữ nguyên vị trí; kết nối lại và ch�
         <translation>%1 % gửi lại</translation>
     </message>
     <message>
+        <source>resends in the last minute: %1 % of %2 frames</source>
+        <translation>gửi lại trong phút vừa qua: %1 % của %2 khung</translation>
+    </message>
+    <message>
+        <source>this computer</source>
+        <translation>máy tính này</translation>
+    </message>
+    <message>
+        <source>the machine&apos;s panel</source>
+        <translation>bảng điều khiển của máy</translation>
+    </message>
+    <message>
+        <source>the cover</source>
+        <translation>nắp che</translation>
+    </message>
+    <message>
+        <source>the link</source>
+        <translation>kết nối</translation>
+    </message>
+    <message>
+        <source>the program</source>
+        <translation>chương trình</translation>
+    </message>
+    <message>
+        <source>the machine</source>
+        <translation>máy</translation>
+    </message>
+    <message>
+        <source>Machine holds (%1): %2</source>
+        <translation>Máy đang tạm dừng (%1): %2</translation>
+    </message>
+    <message>
+        <source>Machine stopped (%1): %2</source>
+        <translation>Máy đã dừng (%1): %2</translation>
+    </message>
+    <message>
         <source>Machine alarm</source>
         <translation>Máy báo lỗi</translation>
     </message>

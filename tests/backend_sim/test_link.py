@@ -245,7 +245,7 @@ def test_threaded_run_at_a_speed_factor(tmp_path):
 
 
 def test_a_forwarded_command_takes_its_uart_time_both_ways(sim, host):
-    sim.run_for(0.1)
+    sim.run_for(0.13)  # between the main MCU's pings (every 0.1 s of UART silence)
     start = sim.clock.now
     cid = host.command("GET KP_X")
     answer = host.answer(cid)

@@ -160,7 +160,8 @@ def noisy_run(lines: list[str], rate: float, seed: int, sd_dir, home: bool = Tru
     rig = NoisyRig(seed, sd_dir)
     rig.noise(rate)
     tally = rig.tally
-    problem = (rig.command("HOME", timeout=240.0) if home else "") or rig.command("SET", "CHECK", 1, timeout=30.0)
+    problem = rig.command("HOME", timeout=240.0) if home else ""
+    problem = problem or rig.command("SET", "CHECK", 1, timeout=30.0)
     if problem:
         return Outcome(False, False, 0.0, 0, len(tally.losses), rig.phantoms(), rig.legacy(), problem)
     start = rig.now
@@ -228,8 +229,8 @@ def fuzz_run(total: int, seed: int, sd_dir, job_lines: int = 0) -> FuzzOutcome:
 
     thrown_all = lambda: state["thrown"] >= total  # noqa: E731
     job_over = lambda: bool(rig.tally.jobs) or not lines  # noqa: E731
-    rig.run_until(lambda: thrown_all() and job_over(), total / 100 * BURST_EVERY_S * 2 + 5.0 * len(lines) + 60.0,
-                  every=throw)
+    budget = total / 100 * BURST_EVERY_S * 2 + 5.0 * len(lines) + 60.0
+    rig.run_until(lambda: thrown_all() and job_over(), budget, every=throw)
     rig.run_until(lambda: False, 1.0)
     pinged = rig.command("PING", timeout=5.0) == ""
     job = rig.tally.jobs[-1] if rig.tally.jobs else None

@@ -6,7 +6,6 @@ session is ticked every 2 ms of it. Time bounds are simulated seconds.
 
 import pytest
 
-from app.comm import frame as fr
 from app.comm.listener import SessionState
 from tests.comm.simlink import FAST_HOMING, SimLink, assert_oracle
 from tests.comm.tamper import Tamper, frame_of

@@ -47,7 +47,7 @@ def test_a_panel_pause_says_panel_and_is_logged(link):
     hold = holds(link, "PANEL")
     assert hold.source == "panel" and not hold.asked and "panel" in hold.text
     assert link.session.status.why == "PANEL" and link.session.state is S.PAUSED
-    assert any("the machine holds (panel)" in e.text for e in link.rec.of("on_log"))
+    assert any("the machine holds (the machine's panel)" in e.text for e in link.rec.of("on_log"))
     link.session.resume()
     assert link.run_until(lambda: link.rec.last("on_hold").why == "", 2.0)
     assert link.session.state is S.STREAMING

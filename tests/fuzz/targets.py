@@ -3,7 +3,7 @@
 Each target takes one generated input and checks that nothing but the documented
 error type comes out: the G-code loader (text and bytes: never raises, diagnostics
 name a line), the deframer and the codec (host and machine side: ``Frame``,
-``Dropped`` or ``Realtime`` items; ``decode`` raises only ``FrameError`` and what it
+``Dropped`` or ``Legacy`` items; ``decode`` raises only ``FrameError`` and what it
 returns encodes back to the same body), the machine's command parser (frames fed to a
 running simulator: it answers and never raises), the CNC MCU's dialect parser (only
 ``DialectError``), and the profile and settings loaders (never raise; every value in
