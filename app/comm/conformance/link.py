@@ -3,9 +3,9 @@
 ``Link(port)`` wraps anything with pyserial's ``read``/``write``/``in_waiting``.
 Every line the machine sends becomes a ``Reply`` (kept in ``replies`` with its
 arrival time, bad ones too: the checks judge them). While ``heartbeat`` is on, the
-link sends ``C <id> PING`` after every 0.25 s without writing (docs/protocol.md,
-"Heartbeat": every 0.25 s), so the machine never sees a host loss the kit
-did not mean. Command ids start at a random value below 1,000,000 and count up
+link sends ``C <id> PING`` after every 0.25 s without writing, every 0.02 s once
+nothing valid has come for 0.5 s (docs/protocol.md, "Heartbeat"), so the machine never
+sees a host loss the kit did not mean. Command ids start at a random value below 1,000,000 and count up
 ("Host conventions").
 """
 
@@ -18,6 +18,9 @@ from collections.abc import Callable
 from app.comm.conformance.wire import Reply, seal
 
 PING_EVERY_S = 0.25
+QUIET_PING_S = 0.02  # once nothing valid has come for QUIET_S ("Heartbeat")
+QUIET_S = 0.5
+RETRY_S = 0.25  # a command's retry, same id, no back-off ("Host conventions")
 READ_SLICE_S = 0.01
 
 
@@ -33,6 +36,7 @@ class Link:
         self.rx = bytearray()
         self.next_id = random.randrange(1, 1_000_000)
         self.last_write = -1e9
+        self.last_valid = clock()
         self.heartbeat = True
         self.corrupt: Callable[[bytes], bytes] | None = None  # the noisy-wire section's filter
 
@@ -61,7 +65,9 @@ class Link:
     # -- in ----------------------------------------------------------------------------
     def pump(self) -> None:
         """Read what has come (waiting at most one read slice); ping when due."""
-        if self.heartbeat and self.clock() - self.last_write >= PING_EVERY_S:
+        now = self.clock()
+        every = QUIET_PING_S if now - self.last_valid >= QUIET_S else PING_EVERY_S
+        if self.heartbeat and now - self.last_write >= every:
             self.send_command("PING")
         try:
             data = self.port.read(max(1, self.port.in_waiting))
@@ -73,7 +79,10 @@ class Link:
         now = self.clock()
         while (end := self.rx.find(b"\n")) >= 0:
             line, self.rx = bytes(self.rx[: end + 1]), self.rx[end + 1 :]
-            self.replies.append(Reply.parse(line, now))
+            reply = Reply.parse(line, now)
+            self.replies.append(reply)
+            if reply.problem is None:
+                self.last_valid = now
 
     def wait(self, match: Callable[[Reply], bool], timeout: float, start: int | None = None) -> Reply | None:
         """The first valid reply from index ``start`` (default: from now on) that matches."""
@@ -98,17 +107,16 @@ class Link:
 
     # -- commands ------------------------------------------------------------------------
     def command(self, text: str, timeout: float = 5.0, cid: int | None = None) -> tuple[int, Reply | None]:
-        """Send ``C <id> text`` and wait for its ``O``/``E``, repeating the same id after
-        0.25 s, doubling to 1 s, as a host does ("Host conventions")."""
+        """Send ``C <id> text`` and wait for its ``O``/``E``, repeating the same id every
+        0.25 s, as a host does ("Host conventions")."""
         start = len(self.replies)
         cid = self.send_command(text, cid)
-        deadline, retry = self.clock() + timeout, 0.25
+        deadline = self.clock() + timeout
         while True:
-            answer = self.wait(lambda r: r.kind in "OE" and r.id == cid, min(retry, timeout), start)
+            answer = self.wait(lambda r: r.kind in "OE" and r.id == cid, min(RETRY_S, timeout), start)
             if answer is not None or self.clock() >= deadline:
                 return cid, answer
             self.send_command(text, cid)
-            retry = min(retry * 2, 1.0)
 
     def realtime(self, verb: str, timeout: float = 5.0, cid: int | None = None) -> tuple[int, Reply | None]:
         """Send ``R <id> verb`` as a host does ("Real-time commands": two copies back to
