@@ -108,7 +108,7 @@ def no_job_open(kit: Kit) -> None:
     kit.ensure_idle()
     start = len(link.replies)
     link.send("D 1000 G00 X1")
-    refusal = link.wait(lambda r: r.kind == "E" and r.id is None, 2.0, start)
+    refusal = link.wait(lambda r: r.kind == "E" and r.id is None and r.text.startswith("1000 "), 2.0, start)
     kit.check(
         "errors.d-without-job",
         CONV,

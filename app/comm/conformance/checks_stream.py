@@ -82,32 +82,33 @@ def clean_stream(kit: Kit) -> None:
 
 
 def gap(kit: Kit) -> None:
-    """D0 D1 D3: `N 2` at once; D2: `A 2` and one `A 3` (frame 3 was kept, selective repeat)."""
-    link, lines = kit.link, _lines(5)
-    start, _ = _open_job(kit, 5)
-    send(kit, lines, (0, 1, 3))
+    """D0 D1 D3 D4: `N 2` at once; D2: `A 2` and one `A 4` for the kept 3 and 4 (selective repeat)."""
+    link, lines = kit.link, _lines(6)
+    start, _ = _open_job(kit, 6)
+    send(kit, lines, (0, 1, 3, 4))
     nak = link.wait(lambda r: r.kind == "N", 1.0, start)
     kit.check(
         "stream.gap-answered-n",
         RESENDS,
         "seq > expected: keep it and answer `N expected`",
         nak is not None and nak.int(0) == 2,
-        "D 0, D 1, D 3",
+        "D 0, D 1, D 3, D 4",
         _kinds(link.since(start)),
     )
     mark = send(kit, lines, (2,))
-    link.wait(lambda r: r.kind == "A" and r.int(0) >= 3, 1.0, mark)
-    above = [r.int(0) for r in link.since(mark) if r.kind == "A" and r.int(0) > 2]
+    link.wait(lambda r: r.kind == "A" and r.int(0) >= 4, 1.0, mark)
+    link.idle(0.1)
+    above = {r.int(0) for r in link.since(mark) if r.kind == "A" and r.int(0) > 2}
     kit.check(
         "stream.selective-repeat",
         RESENDS,
         "seq == expected: queue it and answer `A`; then queue every frame "
-        "kept above it and answer one `A` for them all (frame 3 is not asked for again)",
-        above == [3] and not [r for r in link.since(mark) if r.kind == "N"],
-        "D 2 (3 not resent)",
+        "kept above it and answer one `A` for them all (`A 4`, no `A 3`; 3 and 4 not asked for again)",
+        above == {4} and not [r for r in link.since(mark) if r.kind == "N"],
+        "D 2 (3 and 4 not resent)",
         _kinds(link.since(mark)),
     )
-    finish(kit, "stream.gap-job-completes", "no line runs twice or is lost: `F 4` ends the job", lines, (4,))
+    finish(kit, "stream.gap-job-completes", "no line runs twice or is lost: `F 5` ends the job", lines, (5,))
 
 
 def holes(kit: Kit) -> None:
