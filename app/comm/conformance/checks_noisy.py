@@ -104,4 +104,48 @@ def noisy_job(kit: Kit) -> None:
     kit.check_mode(False)
 
 
-CHECKS = [noisy_job]
+GARBAGE_BYTES = 20_000
+
+
+def garbage_at_rest(kit: Kit) -> None:
+    """Random bytes (all 256 values, bursts of 1-200) at a machine at rest start nothing."""
+    link = kit.link
+    kit.ensure_idle()
+    before = kit.status_until(lambda st: True)
+    rng, sent = random.Random(), 0
+    seed = rng.randrange(1 << 30)
+    rng.seed(seed)
+    start, first_id = len(link.replies), link.next_id
+    while sent < GARBAGE_BYTES:
+        burst = bytes(rng.randrange(256) for _ in range(rng.randint(1, 200)))
+        link.write(burst)
+        sent += len(burst)
+        link.pump()
+    link.write(b"\n")
+    link.idle(0.6)
+    after = kit.status_until(lambda st: True)
+    ours = range(first_id, link.next_id)
+    forged = [
+        r
+        for r in link.since(start)
+        if r.kind in "OE" and r.id is not None and r.id not in ours or r.kind == "X" or r.kind in "AF"
+    ]
+    moved = (
+        before is None
+        or after is None
+        or (before.state, before.x, before.y, before.z, before.acc)
+        != (after.state, after.x, after.y, after.z, after.acc)
+    )
+    kit.check(
+        "noisy.garbage-starts-nothing",
+        NOISY,
+        "no corruption can hold, stop or start anything: random bytes "
+        "at a machine at rest are bad frames, nothing is carried out, the machine answers after",
+        not forged and not moved and after is not None,
+        f"{sent} random bytes in bursts of 1-200",
+        f"before {before}; after {after}; " + (" | ".join(str(r) for r in forged[:3]) or "nothing forged"),
+        f"seed {seed}",
+    )
+
+
+CHECKS = [garbage_at_rest, noisy_job]
