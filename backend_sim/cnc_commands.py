@@ -18,6 +18,7 @@ from backend_sim import value_ranges
 from backend_sim.motion import events as ev
 from backend_sim.motion.dialect import DialectError, DialectParser
 from backend_sim.motion.events import MotionError
+from backend_sim.outgoing import encode_fit
 
 AXES = "XYZ"
 OWN_ID0 = 1_000_000_000  # ids of the main MCU's own commands (its panel, its SD job)
@@ -80,6 +81,8 @@ def _stop_now(mcu, cmd: Command, why: str) -> None:
 
 def _reset_now(mcu, cmd: Command, why: str) -> None:
     _reset(mcu, cmd)
+    mcu.recent.start(cmd.id)  # the reset's own id outlives it: a copy right behind is a repeat
+    mcu.recent.record(cmd.id, encode_fit(Ok(cmd.id, "RESET", "")))
 
 
 _REALTIME = {"HOLD": _hold_now, "RESUME": _resume_now, "STOP": _stop_now, "RESET": _reset_now}

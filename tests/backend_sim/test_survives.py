@@ -206,3 +206,19 @@ def test_stop_during_homing_answers_the_home(sim, host):
     host.ok("STOP", timeout=10)
     refusal = host.wait(lambda f: isinstance(f, Ok | Error) and f.id == home, start=0, timeout=5)
     assert isinstance(refusal, Error) and refusal.code == "NOT_HOMED"
+
+
+def test_two_copies_of_r_reset_in_one_chunk_reset_once(sim, host):
+    """Found by the conformance kit under load: the host writes each R frame twice back to
+    back; when both copies reached the CNC MCU in one chunk, the reset made it forget the
+    id and the second copy reset it again (a new boot the host never asked for)."""
+    from app.comm.frame import seal
+
+    boots = []
+    send = sim.cnc.send
+    sim.cnc.send = lambda frame: (boots.append(frame) if isinstance(frame, Alarm) and frame.code == "BOOT"
+                                  else None) or send(frame)
+    with sim.lock:
+        sim.cnc.receive(seal("R 77 RESET") * 2)
+        sim.cnc.receive(seal("R 77 RESET"))
+    assert len(boots) == 1

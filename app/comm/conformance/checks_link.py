@@ -42,7 +42,7 @@ def host_lost(kit: Kit) -> None:
         f"{alarm} after {after:.2f} s" if after is not None else kit.got(start),
         f"accepted {LOST_S - EARLY_S:.1f}-{LOST_S + LATE_S:.1f} s as measured at the host",
     )
-    status = kit.link.status()
+    status = kit.status_until(lambda st: not st.has("L"))  # a status sent before it may be in flight
     kit.check(
         "link.back-on-next-frame",
         HEART,
