@@ -14,14 +14,21 @@ import signal
 import sys
 import threading
 
-from app.profile import read_profile
+from app.profile import DECIMAL, read_profile
 
 
-def _positive(text: str) -> float:
-    value = float(text)
-    if not value > 0:
-        raise argparse.ArgumentTypeError(f"{text}: must be > 0")
-    return value
+def _speed(text: str) -> float:
+    """A speed factor: a plain decimal number, finite, above 0 and at most MAX_SPEED
+    (``inf``, ``nan``, ``1e308``, ``0`` and negatives are refused here, not in the
+    simulation thread)."""
+    from backend_sim.clock import speed_problem
+
+    if not DECIMAL.fullmatch(text):
+        raise argparse.ArgumentTypeError(f"{text!r} is not a plain number (like 1, 10 or 2.5)")
+    problem = speed_problem(float(text))
+    if problem:
+        raise argparse.ArgumentTypeError(problem)
+    return float(text)
 
 
 def _rate(text: str) -> float:
@@ -36,7 +43,8 @@ def build_parser() -> argparse.ArgumentParser:
     where = p.add_mutually_exclusive_group(required=True)
     where.add_argument("--pty", action="store_true", help="serve on a pseudo-terminal")
     where.add_argument("--tcp", type=int, metavar="PORT", help="serve on 127.0.0.1:PORT")
-    p.add_argument("--speed", type=_positive, default=1.0, help="speed factor of the clock (default 1)")
+    p.add_argument("--speed", type=_speed, default=1.0,
+                   help="speed factor of the clock, above 0 and at most 1000 (default 1)")
     p.add_argument("--sd", metavar="DIR", help="folder standing for the SD card")
     p.add_argument("--profile", metavar="FILE", help="machine profile (TOML or JSON)")
     p.add_argument("--exec-log", metavar="FILE", help="append seq<TAB>line of every executed line")

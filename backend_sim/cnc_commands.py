@@ -14,9 +14,11 @@ frame may name its own reason), cleared by ``JOB``, ``HOME`` and a ``RESUME`` ta
 from __future__ import annotations
 
 from app.comm.frame import Command, Error, FrameError, Ok, RealtimeCommand, decimal
+from backend_sim import value_ranges
 from backend_sim.motion import events as ev
 from backend_sim.motion.dialect import DialectError, DialectParser
 from backend_sim.motion.events import MotionError
+from backend_sim.outgoing import encode_fit
 
 AXES = "XYZ"
 OWN_ID0 = 1_000_000_000  # ids of the main MCU's own commands (its panel, its SD job)
@@ -53,7 +55,17 @@ def _source(cmd: Command) -> str:
 def _hold_now(mcu, cmd: Command, why: str) -> None:
     if mcu.mc.state in ("RUN", "JOG", "HOMING"):
         mcu.why = why
+    _homing_stopped(mcu, cmd.verb)
     mcu.mc.feed_hold()
+
+
+def _homing_stopped(mcu, verb: str) -> None:
+    """A hold or stop ends a homing: its ``HOME`` is answered ``E NOT_HOMED`` now."""
+    if mcu.mc.state != "HOMING":
+        return
+    for pending in [p for p in mcu.pending if p.verb == "HOME"]:
+        mcu.pending.remove(pending)
+        mcu.send(Error(pending.id, "NOT_HOMED", f"homing stopped by {verb}"))
 
 
 def _resume_now(mcu, cmd: Command, why: str) -> None:
@@ -63,11 +75,14 @@ def _resume_now(mcu, cmd: Command, why: str) -> None:
 def _stop_now(mcu, cmd: Command, why: str) -> None:
     if mcu.job.open or mcu.mc.state != "IDLE":
         mcu.why = why
+    _homing_stopped(mcu, cmd.verb)
     mcu.stop_job()
 
 
 def _reset_now(mcu, cmd: Command, why: str) -> None:
     _reset(mcu, cmd)
+    mcu.recent.start(cmd.id)  # the reset's own id outlives it: a copy right behind is a repeat
+    mcu.recent.record(cmd.id, encode_fit(Ok(cmd.id, "RESET", "")))
 
 
 _REALTIME = {"HOLD": _hold_now, "RESUME": _resume_now, "STOP": _stop_now, "RESET": _reset_now}
@@ -169,8 +184,10 @@ def _pause(mcu, cmd: Command) -> str | None:
     if mcu.mc.state not in ("RUN", "JOG", "HOMING"):
         return mcu.mc.state
     mcu.why = _source(cmd)
-    mcu.mc.feed_hold()
-    mcu.await_event(cmd.id, "PAUSE", ev.Held)
+    moving_job = mcu.mc.state == "RUN"
+    _homing_stopped(mcu, "PAUSE")
+    mcu.mc.feed_hold()  # a jog is cancelled, homing stops: answered once stopped
+    mcu.await_event(cmd.id, "PAUSE", ev.Held if moving_job else ev.Stopped)
     return None
 
 
@@ -209,13 +226,19 @@ def _reset(mcu, cmd: Command) -> None:
     mcu.reset()
 
 
+def _in_range(value: float, check) -> float:
+    problem = check(value)
+    if problem:
+        raise Refused("BAD_VALUE", problem)
+    return value
+
+
 def _jog(mcu, cmd: Command) -> None:
     axis, dist, feed = _args(cmd, 3, 3)
     if axis not in AXES:
         raise Refused("BAD_ARGS", f"axis {axis}: X, Y or Z")
-    distance, rate = _number(dist, "distance"), _number(feed, "feed")
-    if rate <= 0:
-        raise Refused("BAD_ARGS", "feed must be > 0")
+    distance = _in_range(_number(dist, "distance"), value_ranges.distance_problem)
+    rate = _in_range(_number(feed, "feed"), value_ranges.feed_problem)
     _cover_closed(mcu)
     if mcu.job.open:
         raise Refused("BUSY", "a job is open")
@@ -224,11 +247,13 @@ def _jog(mcu, cmd: Command) -> None:
     mcu.await_event(cmd.id, "JOG", ev.StateChanged, f"{axis} {dist}")
 
 
-def _spindle(mcu, cmd: Command) -> None:
+def _spindle(mcu, cmd: Command) -> str | None:
     (value,) = _args(cmd, 1, 1)
-    line = "M05" if value == "OFF" else f"M03 S{_number(value, 'rpm'):g}"
-    if value != "OFF":
-        _cover_closed(mcu)
+    if value == "OFF":
+        mcu.mc.spindle_off()  # always allowed: whatever moves or holds, the spindle stops now
+        return "OFF"
+    line = f"M03 S{_in_range(_number(value, 'rpm'), value_ranges.rpm_problem):g}"
+    _cover_closed(mcu)
     if mcu.job.open:
         raise Refused("BUSY", "a job is open: use M03/M05 in the program")
     _alarm_free(mcu)
@@ -238,14 +263,20 @@ def _spindle(mcu, cmd: Command) -> None:
         raise Refused(exc.code, exc.text) from None
     mcu.mc.enqueue(move)
     mcu.await_event(cmd.id, "SPINDLE", ev.StateChanged, value)
+    return None
 
 
 def _set(mcu, cmd: Command) -> str:
     name, value = _args(cmd, 2, 2)
-    number = _number(value, name)
+    try:
+        number = value_ranges.set_value(name, value)
+    except ValueError as exc:
+        raise Refused("BAD_ARGS", str(exc)) from None
+    if number is None:
+        number = _number(value, name)
+    elif value_ranges.choice_problem(name, value):
+        raise Refused("BAD_PARAM", value_ranges.choice_problem(name, value))
     if name == "CHECK":
-        if value not in ("0", "1"):
-            raise Refused("BAD_ARGS", f"CHECK {value!r}: 0 or 1")
         if mcu.job.open:
             raise Refused("BUSY", "a job is open")
         mcu.check_mode = bool(number)

@@ -315,6 +315,15 @@ class CncMcu:
             _EVENTS[type(event)](self, event)
         if finished >= -1:
             self._finished_up_to(finished)
+        if self.exec_log.failure is not None:
+            self._exec_log_failed(self.exec_log.take_failure())
+
+    def _exec_log_failed(self, text: str) -> None:
+        """The record of executed lines cannot be written: the job stops, said once."""
+        self.send(Alarm("EXEC_LOG", text))
+        if self.job.open:
+            self.stop_job()
+            self.why = "FAULT"
 
     def _on_finished(self, event: ev.Finished) -> int:
         if event.seq < 0 or event.seq not in self.lines:

@@ -129,6 +129,10 @@ class HostPort:
             self.lost_bytes += len(self._rx) - RX_LIMIT
             del self._rx[: len(self._rx) - RX_LIMIT]
 
+    def landed(self) -> int:
+        """Bytes waiting for the host, without the port checks (the servers' wait)."""
+        return len(self._rx)
+
     def set_unplugged(self, unplugged: bool) -> None:
         self.unplugged = unplugged
         if unplugged:

@@ -142,7 +142,7 @@ class MainMcu:
             self.next_housekeeping = now + HOUSEKEEPING_S
             if not (self.host_rx.pending() or self.uart_rx.pending()):
                 return self._timers(now)
-            self._host_items(self.host_rx.poll(now))
+            self._host_items(self.host_rx.poll(self.clock.link_now))  # host-facing: link time
             self._uart_items(self.uart_rx.poll(now))
         return self._timers(now)
 
@@ -187,14 +187,14 @@ class MainMcu:
     # ------------------------------------------------------------------ host side
 
     def receive_host(self, data: bytes) -> None:
-        self._host_items(self.host_rx.feed(data, self.clock.now))
+        self._host_items(self.host_rx.feed(data, self.clock.link_now))
 
     def _host_items(self, items: list) -> None:
         for item in items:
             if isinstance(item, Legacy):
                 self.legacy.seen()
-            elif isinstance(item, Dropped):
-                self._host_bad()
+            elif isinstance(item, Dropped) or isinstance(item, RealtimeCommand) and item.why:
+                self._host_bad()  # a `why` only in the main MCU's own R frames: from the host, a bad frame
             else:
                 self._host_alive()
                 self._host_frame(item)

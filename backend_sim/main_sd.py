@@ -2,9 +2,11 @@
 
 Contract (docs/protocol.md): ``SD LIST`` -> ``I <id> <name> <bytes> <lines>`` rows then
 ``O <id> SD LIST <count>``; ``SD DEL <name>`` -> ``O``; ``SD PUT <name> <lines>
-<crc32hex>`` -> ``E`` at once (BAD_NAME, SD_FULL, BUSY, BAD_ARGS) or, after the stream of
-``D`` frames (acked ``A`` by the main MCU itself), one ``O <id> SD PUT <name>`` or
-``E <id> CRC_MISMATCH``; ``SD RUN <name>`` -> ``O <id> SD RUN <name>`` when the CNC MCU
+<crc32hex>`` -> ``E`` at once (BAD_NAME, SD_FULL, BUSY, BAD_ARGS; BUSY also for the file an ``SD RUN``
+is running) or, after the stream of ``D`` frames (acked ``A`` by the main MCU itself),
+one ``O <id> SD PUT <name>`` or ``E <id> CRC_MISMATCH``; a card that cannot take a line
+ends the upload at that line with ``E <id> SD_FULL`` (or ``SD_ERROR``), no file left;
+``SD RUN <name>`` -> ``O <id> SD RUN <name>`` when the CNC MCU
 has opened the job (status flag ``S`` while it runs). Functions take the ``MainMcu``.
 """
 
@@ -13,7 +15,7 @@ from __future__ import annotations
 from app.comm.frame import Ack, Alarm, Command, Data, Error, Finished, Frame, Info, Log, Nak, Ok
 from backend_sim.job_stream import Verdict
 from backend_sim.outgoing import encode_fit
-from backend_sim.sd_card import UPLOAD_FREE_SLOTS, SdError
+from backend_sim.sd_card import UPLOAD_FREE_SLOTS, SdError, write_error
 from backend_sim.sd_job import SdJob, SdJobState
 
 
@@ -26,6 +28,9 @@ def command(mcu, cmd: Command) -> None:
         handler(mcu, cmd)
     except SdError as exc:
         mcu.answer(Error(cmd.id, exc.code, exc.text))
+    except OSError as exc:  # the card failed under a LIST, DEL or RUN: said, never fatal
+        error = write_error(" ".join(cmd.args[1:2]) or "card", exc)
+        mcu.answer(Error(cmd.id, error.code, error.text))
 
 
 def _arg(cmd: Command, count: int) -> tuple[str, ...]:
@@ -56,6 +61,8 @@ def _put(mcu, cmd: Command) -> None:
         raise SdError("BUSY", "an upload is in progress")
     if not lines.isdigit():
         raise SdError("BAD_ARGS", f"line count {lines!r}")
+    if mcu.sd_job is not None and mcu.sd_job.name == name:
+        raise SdError("BUSY", f"{name} is running")
     mcu.upload = mcu.sd.begin_put(name, int(lines), crc)
     mcu.upload_id = cmd.id
 
@@ -101,7 +108,13 @@ def upload_data(mcu, frame: Data) -> None:
 
 
 def _store(mcu, up, seq: int, line: str) -> None:
-    up.write(seq, line)
+    try:
+        up.write(seq, line)
+    except SdError as exc:  # the card is full: the upload is over, its file removed
+        mcu.upload = None
+        mcu.notice = f"SD PUT {up.name}: {exc.code}"
+        _upload_answer(mcu, mcu.upload_id, Error(mcu.upload_id, exc.code, exc.text))
+        return
     mcu.host_tx.write(Ack(seq, UPLOAD_FREE_SLOTS).encode(), mcu.clock.now)
     if up.complete:
         _finish_upload(mcu)

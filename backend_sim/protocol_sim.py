@@ -21,6 +21,8 @@ from urllib.parse import parse_qs, urlsplit
 
 from serial import PortNotOpenError, SerialBase, SerialException
 
+from backend_sim.clock import speed_problem
+
 
 def url_options(url: str | None) -> dict[str, str]:
     """The query options of a ``sim://`` URL as a flat dict (last value wins)."""
@@ -41,8 +43,8 @@ def build_simulator(options: dict[str, str], profile=None, grbl: bool = False):
 
     speed = _number(options, "speed", "1", float)
     seed = _number(options, "seed", None, int)
-    if not speed > 0:
-        raise SerialException(f"sim:// speed must be > 0, not {speed:g}")
+    if speed_problem(speed):
+        raise SerialException(f"sim:// {speed_problem(speed)}")
     if grbl:
         sim = GrblSimulator(profile=profile, seed=seed)
         sim.start(speed=speed)
@@ -110,15 +112,21 @@ class Serial(SerialBase):
         return self._host.in_waiting
 
     def read(self, size: int = 1) -> bytes:
-        """Up to ``size`` bytes within ``timeout`` wall seconds (None: until ``size``)."""
+        """Up to ``size`` bytes within ``timeout`` wall seconds (None: until ``size``),
+        at any speed factor and however far the simulation lags."""
         self._check()
-        timeout = self._timeout
-        speed = self.simulator.clock.speed or 1.0
-        self._host.timeout = None if timeout is None else timeout * speed
-        try:
-            return self._host.read(size)
-        finally:
-            self._host.timeout = 0
+        sim, host, timeout = self.simulator, self._host, self._timeout
+        if not sim.running:  # a stopped machine: the host port runs it for the bytes
+            host.timeout = timeout
+            try:
+                return host.read(size)
+            finally:
+                host.timeout = 0
+        ready = lambda: not host.is_open or host.unplugged or host.landed() >= size or not sim.running  # noqa: E731
+        with sim.lock:
+            if timeout != 0:
+                sim.condition.wait_for(ready, timeout)
+            return host.read(size)
 
     def write(self, data) -> int:
         self._check()

@@ -5,11 +5,17 @@ start with a dot (so ``..``, ``/`` and hidden temporary files are refused with
 ``BAD_NAME``). ``SdUpload`` receives an ``SD PUT`` stream into a hidden temporary
 file and renames it only when the line count and the CRC32 (over the lines joined
 with ``\\n`` plus a final ``\\n``) match; otherwise no file is left. ``capacity_bytes``
-models a full card (``SD_FULL``).
+models a full card (``SD_FULL``); so does an ``OSError`` of the folder standing for
+the card (ENOSPC, a quota, an I/O error) at any byte of an upload: the upload is
+refused with ``SD_FULL`` (``SD_ERROR`` for an error other than a full medium) and its
+temporary file removed. ``SdCard.open_for_write`` is the one seam through which an
+upload writes (tests put a failing file there).
 """
 
 from __future__ import annotations
 
+import contextlib
+import errno
 import os
 import re
 import zlib
@@ -22,12 +28,21 @@ _CRC32 = re.compile(r"[0-9A-Fa-f]{1,8}")
 UPLOAD_FREE_SLOTS = 16
 
 
+FULL_ERRNOS = frozenset({errno.ENOSPC, errno.EDQUOT, errno.EFBIG})
+
+
 class SdError(Exception):
-    """Refused SD operation: ``code`` (BAD_NAME, NO_FILE, SD_FULL, CRC_MISMATCH) and text."""
+    """Refused SD operation: ``code`` (BAD_NAME, NO_FILE, SD_FULL, SD_ERROR, CRC_MISMATCH) and text."""
 
     def __init__(self, code: str, text: str) -> None:
         super().__init__(code, text)
         self.code, self.text = code, text
+
+
+def write_error(name: str, exc: OSError) -> SdError:
+    """The refusal for an ``OSError`` while ``name`` was being written."""
+    code = "SD_FULL" if exc.errno in FULL_ERRNOS else "SD_ERROR"
+    return SdError(code, f"{name}: {exc.strerror or exc}")
 
 
 def check_name(name: str) -> str:
@@ -82,6 +97,10 @@ class SdCard:
             raise SdError("NO_FILE", name)
         path.unlink()
 
+    def open_for_write(self, path: Path):
+        """A binary file to write an upload to (the filesystem seam)."""
+        return path.open("wb")
+
     def begin_put(self, name: str, lines: int, crc_hex: str) -> SdUpload:
         check_name(name)
         if lines < 1:
@@ -101,15 +120,25 @@ class SdUpload:
         self.stream = JobStream()
         self.stream.start(lines)
         self.tmp = card.folder / f".{name}.part"
-        self._out = self.tmp.open("wb")
+        try:
+            self._out = card.open_for_write(self.tmp)
+        except OSError as exc:
+            self.tmp.unlink(missing_ok=True)
+            raise write_error(name, exc) from None
         self._crc = 0
         self._bytes = 0
 
     def write(self, seq: int, line: str) -> None:
+        """Store one line; SdError (the upload is over, its file removed) when the card
+        cannot take it."""
         data = line.encode("ascii", "replace") + b"\n"
+        try:
+            self._out.write(data)
+        except OSError as exc:
+            self.abort()
+            raise write_error(self.name, exc) from None
         self._crc = zlib.crc32(data, self._crc)
         self._bytes += len(data)
-        self._out.write(data)
         self.stream.accepted(seq)
 
     @property
@@ -118,7 +147,11 @@ class SdUpload:
 
     def finish(self) -> None:
         """Rename into place, or raise SdError (no file is left)."""
-        self._out.close()
+        try:
+            self._out.close()
+        except OSError as exc:
+            self.abort()
+            raise write_error(self.name, exc) from None
         count = self.stream.acc + 1
         if count != self.lines or self._crc != self.crc:
             self.tmp.unlink(missing_ok=True)
@@ -127,8 +160,14 @@ class SdUpload:
         if self.card.used_bytes() > self.card.capacity_bytes:
             self.tmp.unlink(missing_ok=True)
             raise SdError("SD_FULL", "card full")
-        os.replace(self.tmp, self.card.path(self.name))
+        try:
+            os.replace(self.tmp, self.card.path(self.name))
+        except OSError as exc:
+            self.abort()
+            raise write_error(self.name, exc) from None
 
     def abort(self) -> None:
-        self._out.close()
+        """Close and remove the temporary file (a failing close changes nothing)."""
+        with contextlib.suppress(OSError):
+            self._out.close()
         self.tmp.unlink(missing_ok=True)

@@ -42,16 +42,22 @@ class _Bridge:
             thread.join(timeout=2)
 
     def _outbound(self) -> None:
+        """Bytes that land at the host port go out at once; the wait is in wall time,
+        whatever the speed factor and however far the simulation lags."""
+        self.port.timeout = 0
         while not self._stop.is_set():
-            self.port.timeout = _POLL_S * (self.sim.clock.speed or 1.0)
             try:
-                data = self.port.read(1)
-                data += self.port.read(self.port.in_waiting) if data else b""
+                with self.sim.lock:
+                    self.sim.condition.wait_for(self._landed, _POLL_S)
+                    data = self.port.read(self.port.in_waiting)
             except serial.SerialException:
                 self._stop.wait(_POLL_S)
                 continue
             if data:
                 self._send(data)
+
+    def _landed(self) -> bool:
+        return self.port.landed() > 0 or self._stop.is_set() or self.port.unplugged
 
     def _inbound(self) -> None:
         raise NotImplementedError

@@ -216,5 +216,7 @@ class Simulator:
         if target > self.clock.now_ms:
             self._step_to(min(target, self.clock.now_ms + THREAD_SLICE_MS))
             self.condition.notify_all()
+            if self.clock.now_ms < target:  # behind the wall: on at once (the lock is let go between slices)
+                return
         wait = self.clock.wall_until(self._next_due(FAR_MS)[0])
         self.condition.wait(min(max(wait, 0.002), 0.05))

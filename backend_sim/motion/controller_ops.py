@@ -42,11 +42,12 @@ class ControllerOps:
                 self._set_state("RUN")
 
     def feed_hold(self) -> None:
-        """RUN: decelerate on the path and stop (``Held`` when at rest). JOG: cancel the jog."""
+        """RUN: decelerate on the path and stop (``Held`` when at rest). JOG: cancel the
+        jog; HOMING: stop homing (``Stopped`` when at rest)."""
         if self.state == "RUN":
             self.job.hold()
             self._set_state("HOLD")
-        elif self.state == "JOG":
+        elif self.state in ("JOG", "HOMING"):
             self.stop()
 
     def resume(self, release_stop: bool = True) -> None:
@@ -296,6 +297,18 @@ class ControllerOps:
         """Every axis within one count of its setpoint."""
         tol = 1.0 / self.model.counts_per_mm
         return all(-tol <= e <= tol for e in self.errors)
+
+    def spindle_off(self) -> None:
+        """``SPINDLE OFF`` whatever moves: the spindle stops now (a jog or homing goes
+        on). A job's spindle is held as the cover holds it: a running job feed-holds,
+        and RESUME brings the spindle back to speed before it goes on."""
+        if self.state in ("RUN", "HOLD") and self.waiting is None and (self.spindle_target or self.spin_up):
+            self.cover_rpm = self.spin_up[0] if self.spin_up else self.spindle_target
+            self.spin_up = None
+            self.feed_hold()
+        self._spindle_off()
+        self.wake()
+        self._update_watch()
 
     def _spindle_off(self) -> None:
         if self.spindle_target:

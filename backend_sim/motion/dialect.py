@@ -13,7 +13,9 @@ absolute work millimetres, words separated by spaces or not):
     M00|M0  M01|M1              program stop, optional stop (the MCU holds there)
     M06|M6 [T<n>]               tool change (the MCU holds there, spindle off, Z up)
 
-Omitted axes keep their last value; the feed and the spindle speed are modal. ``machine = work + offset``.
+Every number is in the ranges of ``value_ranges`` (those of the host's loader), else
+``BAD_VALUE``. Omitted axes keep their last value; the feed and the spindle speed are
+modal. ``machine = work + offset``.
 ``parser.position`` is the machine position at the end of the last parsed move; the MCU
 sets it after homing, jog or stop. Never imports ``app.gcode``: a normaliser bug must
 not hide behind a shared parser.
@@ -24,6 +26,8 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass
+
+from backend_sim import value_ranges
 
 Vec3 = tuple[float, float, float]
 
@@ -197,7 +201,10 @@ def _split(line: str) -> tuple[str, dict[str, float]]:
             continue
         if letter in words:
             raise DialectError("BAD_LINE", f"word {letter} twice")
-        words[letter] = float(number)
+        words[letter] = value = float(number)
+        problem = value_ranges.word_problem(letter, value)
+        if problem:
+            raise DialectError("BAD_VALUE", problem)
     if command is None:
         raise DialectError("BAD_LINE", "no G or M word" if text else "empty line")
     for letter in words:
