@@ -27,6 +27,7 @@ from app.i18n import localize
 from app.ui.connection_bar import ConnectionBar
 from app.ui.console import ConsoleView
 from app.ui.controls import MachineControls
+from app.ui.dro_panel import DroPanel
 from app.ui.keep_awake import KeepAwake
 from app.ui.language import SETTING, apply_language, current_language
 from app.ui.link import MachineLink
@@ -56,6 +57,7 @@ DOCK_TITLES = {
     "panel": QT_TRANSLATE_NOOP("MainWindow", "Machine panel"),
     "plot": QT_TRANSLATE_NOOP("MainWindow", "Live position"),
     "console": QT_TRANSLATE_NOOP("MainWindow", "Console"),
+    "dro": QT_TRANSLATE_NOOP("MainWindow", "Position and work offsets"),
 }
 
 
@@ -84,6 +86,7 @@ class MainWindow(QMainWindow):
         self._build_widgets(port_lister)
         self._build_docks()
         from app.ui.cover_banner import CoverBanner
+        from app.ui.dro import Dro
         from app.ui.menus import build_menus
         from app.ui.operator_actions import OperatorActions
         from app.ui.preflight import Preflight
@@ -97,6 +100,7 @@ class MainWindow(QMainWindow):
         self.program_stops = ProgramStops(self)
         self.cover_banner = CoverBanner(self)
         self.preflight = Preflight(self)
+        self.dro = Dro(self, self.dro_panel)
         self.start_here = StartHere(self)
         self.actions_by_name = build_menus(self)
         self.retranslate_ui()  # applies the state table too
@@ -128,6 +132,7 @@ class MainWindow(QMainWindow):
         self.controls = MachineControls()
         self.sd_panel = SdPanel()
         self.machine_panel = MachinePanelView()
+        self.dro_panel = DroPanel()
         self.position_plot = PositionPlot(self.history)
         self.diagnostics = DiagnosticsView(self.history)
         self.plots = QTabWidget()
@@ -155,11 +160,13 @@ class MainWindow(QMainWindow):
             "panel": self._dock("panel_dock", self.machine_panel, right),
             "plot": self._dock("plot_dock", self.plots, bottom),
             "console": self._dock("console_dock", self.console, bottom),
+            "dro": self._dock("dro_dock", self.dro_panel, right),
         }
         # Side columns run the full height; the plot and console sit under the preview only.
         self.setCorner(Qt.Corner.BottomLeftCorner, left)
         self.setCorner(Qt.Corner.BottomRightCorner, right)
         self.tabifyDockWidget(self.docks["sd"], self.docks["panel"])
+        self.tabifyDockWidget(self.docks["panel"], self.docks["dro"])
         self.tabifyDockWidget(self.docks["plot"], self.docks["console"])
         self.docks["sd"].raise_()
         self.docks["plot"].raise_()

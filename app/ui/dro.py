@@ -1,0 +1,85 @@
+"""The DRO's link to the machine: reads the six work systems on connect, follows every
+answer that changes them, shows each status, and sends the operator's requests once
+the state table allows them (``work_offsets``, ``zero``, ``go_to``).
+
+After the active system changes (``SET WCS``, or a row of the active system), the
+work offset is read again (``GET OFFSET_X..Z``) so the preflight (``app/ui/preflight.py``)
+checks the program with the offset the machine now uses.
+"""
+
+from __future__ import annotations
+
+from PySide6.QtCore import QObject
+
+from app.ui.dro_panel import DroPanel
+from app.ui.preflight import OFFSET_NAMES
+from app.ui.work_offsets import AXES, WorkSystems
+
+
+class Dro(QObject):
+    def __init__(self, window, panel: DroPanel) -> None:
+        super().__init__(window)
+        self.w, self.panel = window, panel
+        self.systems = WorkSystems()
+        self.work: tuple[float, float, float] | None = None
+        worker = window.link.worker
+        worker.connected.connect(self.read_all)
+        worker.command_finished.connect(self.on_command)
+        worker.status_changed.connect(self.on_status)
+        panel.select_requested.connect(self.select)
+        panel.row_edited.connect(self.edit_row)
+        panel.zero_requested.connect(window.operator.zero)
+        panel.move_requested.connect(self.move_to)
+        panel.refused.connect(self._say)
+
+    def read_all(self, url: str = "") -> None:
+        self.systems = WorkSystems()
+        for query in WorkSystems.queries():
+            self.w.link.call("send_command", query)
+        self.show()
+
+    def on_status(self, event) -> None:
+        self.work = tuple(event.position)
+        self.show()
+
+    def on_command(self, result) -> None:
+        if not self.systems.take(result.verb, tuple(result.args), result.info, result.ok):
+            return
+        name = result.args[0] if result.args else ""
+        active_row = name.startswith(f"G{self.systems.active}_")
+        changed = result.verb == "SET" and result.ok and (name == "WCS" or active_row)
+        if changed or (name == "WCS" and not result.ok):  # a new offset, or a machine with one only
+            for offset in OFFSET_NAMES:
+                self.w.link.call("send_command", f"GET {offset}")
+        self.show()
+
+    def show(self) -> None:
+        self.panel.show_state(self.systems, self.work)
+
+    def select(self, system: int) -> None:
+        self._send(WorkSystems.select(system))
+
+    def edit_row(self, system: int, axis: str, value: float) -> None:
+        self._send(WorkSystems.set_row(system, axis, value))
+
+    def _send(self, command: str) -> None:
+        """A change of the work offsets, if the table allows it now; if not (or until the
+        machine answers) the panel shows what the machine has."""
+        if self.w.operator.allowed("work_offsets"):
+            self.w.link.call("send_command", command)
+        self.show()
+
+    def move_to(self, target: dict) -> None:
+        if not self.w.operator.allowed("go_to"):
+            return
+        top = self.w.profile.travel.limits()[AXES.index("Z")][1]
+        try:
+            text = self.systems.move_to(target, top)
+        except ValueError:
+            self._say(self.tr("The work offset is not known yet: connect to the machine first."))
+            return
+        self.w.operator.run_lines(text, self.tr("Go to"))
+
+    def _say(self, text: str) -> None:
+        self.w.status.showMessage(text, 10000)
+        self.w.console.add_log("warning", text)
