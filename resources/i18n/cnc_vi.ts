@@ -98,6 +98,76 @@
     </message>
 </context>
 <context>
+    <name>Dro</name>
+    <message>
+        <source>The work offset is not known yet: connect to the machine first.</source>
+        <translation>Chưa biết gốc phôi: hãy kết nối với máy trước.</translation>
+    </message>
+    <message>
+        <source>Go to</source>
+        <translation>Đi tới</translation>
+    </message>
+</context>
+<context>
+    <name>DroPanel</name>
+    <message>
+        <source>Position</source>
+        <translation>Vị trí</translation>
+    </message>
+    <message>
+        <source>Coordinate system</source>
+        <translation>Hệ tọa độ</translation>
+    </message>
+    <message>
+        <source>Work</source>
+        <translation>Phôi</translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation>Máy</translation>
+    </message>
+    <message>
+        <source>Zero %1</source>
+        <translation>Đặt 0 %1</translation>
+    </message>
+    <message>
+        <source>Make the current position the work zero of %1 in the active system</source>
+        <translation>Lấy vị trí hiện tại làm gốc phôi của trục %1 trong hệ tọa độ đang dùng</translation>
+    </message>
+    <message>
+        <source>Work offsets (machine position of each work zero, mm)</source>
+        <translation>Gốc phôi (vị trí máy của mỗi gốc phôi, mm)</translation>
+    </message>
+    <message>
+        <source>Go to (work mm; an empty axis stays)</source>
+        <translation>Đi tới (mm theo phôi; trục để trống giữ nguyên)</translation>
+    </message>
+    <message>
+        <source>Go</source>
+        <translation>Đi</translation>
+    </message>
+    <message>
+        <source>Go to work zero</source>
+        <translation>Về gốc phôi</translation>
+    </message>
+    <message>
+        <source>Rapid to the top of Z first, then across, then down</source>
+        <translation>Chạy nhanh lên đỉnh hành trình Z trước, rồi đi ngang, rồi hạ xuống</translation>
+    </message>
+    <message>
+        <source>G92 in force: %1</source>
+        <translation>G92 đang có hiệu lực: %1</translation>
+    </message>
+    <message>
+        <source>Work offset %1 %2: “%3” is not a number</source>
+        <translation>Gốc phôi %1 %2: “%3” không phải là số</translation>
+    </message>
+    <message>
+        <source>Go to %1: “%2” is not a number</source>
+        <translation>Đi tới %1: “%2” không phải là số</translation>
+    </message>
+</context>
+<context>
     <name>FeatureDialog</name>
     <message>
         <source>Machining features</source>
@@ -865,6 +935,10 @@
     <message>
         <source>Console</source>
         <translation>Bảng lệnh</translation>
+    </message>
+    <message>
+        <source>Position and work offsets</source>
+        <translation>Vị trí và gốc phôi</translation>
     </message>
     <message>
         <source>Settings</source>
@@ -2323,6 +2397,14 @@ Hình 2-D hiển thị chương trình.</translation>
     <message>
         <source>Cover switch</source>
         <translation>Công tắc nắp che</translation>
+    </message>
+    <message>
+        <source>Work offsets</source>
+        <translation>Gốc phôi</translation>
+    </message>
+    <message>
+        <source>Go to position</source>
+        <translation>Đi tới vị trí</translation>
     </message>
 </context>
 <context>
