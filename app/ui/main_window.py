@@ -32,6 +32,7 @@ from app.ui.keep_awake import KeepAwake
 from app.ui.language import SETTING, apply_language, current_language
 from app.ui.link import MachineLink
 from app.ui.link_alert import LinkAlert
+from app.ui.live_panel import LivePanel
 from app.ui.loader import ProgramLoader
 from app.ui.machine_panel import MachinePanelView
 from app.ui.notifier import Notifier
@@ -58,6 +59,7 @@ DOCK_TITLES = {
     "plot": QT_TRANSLATE_NOOP("MainWindow", "Live position"),
     "console": QT_TRANSLATE_NOOP("MainWindow", "Console"),
     "dro": QT_TRANSLATE_NOOP("MainWindow", "Position and work offsets"),
+    "live": QT_TRANSLATE_NOOP("MainWindow", "Live modal state"),
 }
 
 
@@ -87,6 +89,7 @@ class MainWindow(QMainWindow):
         self._build_docks()
         from app.ui.cover_banner import CoverBanner
         from app.ui.dro import Dro
+        from app.ui.live_state import LiveState
         from app.ui.menus import build_menus
         from app.ui.operator_actions import OperatorActions
         from app.ui.preflight import Preflight
@@ -101,6 +104,7 @@ class MainWindow(QMainWindow):
         self.cover_banner = CoverBanner(self)
         self.preflight = Preflight(self)
         self.dro = Dro(self, self.dro_panel)
+        self.live_state = LiveState(self, self.live_panel)
         self.start_here = StartHere(self)
         self.actions_by_name = build_menus(self)
         self.retranslate_ui()  # applies the state table too
@@ -133,6 +137,7 @@ class MainWindow(QMainWindow):
         self.sd_panel = SdPanel()
         self.machine_panel = MachinePanelView()
         self.dro_panel = DroPanel()
+        self.live_panel = LivePanel()
         self.position_plot = PositionPlot(self.history)
         self.diagnostics = DiagnosticsView(self.history)
         self.plots = QTabWidget()
@@ -161,12 +166,14 @@ class MainWindow(QMainWindow):
             "plot": self._dock("plot_dock", self.plots, bottom),
             "console": self._dock("console_dock", self.console, bottom),
             "dro": self._dock("dro_dock", self.dro_panel, right),
+            "live": self._dock("live_dock", self.live_panel, right),
         }
         # Side columns run the full height; the plot and console sit under the preview only.
         self.setCorner(Qt.Corner.BottomLeftCorner, left)
         self.setCorner(Qt.Corner.BottomRightCorner, right)
         self.tabifyDockWidget(self.docks["sd"], self.docks["panel"])
         self.tabifyDockWidget(self.docks["panel"], self.docks["dro"])
+        self.tabifyDockWidget(self.docks["dro"], self.docks["live"])
         self.tabifyDockWidget(self.docks["plot"], self.docks["console"])
         self.docks["sd"].raise_()
         self.docks["plot"].raise_()
