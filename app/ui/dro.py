@@ -54,7 +54,10 @@ class Dro(QObject):
         self.show()
 
     def show(self) -> None:
-        self.panel.show_state(self.systems, self.work)
+        live = getattr(self.w, "live_state", None)
+        tracker = live.tracker if live is not None else None
+        g92 = tracker.view.g92 if tracker is not None else ""  # in force in the running job
+        self.panel.show_state(self.systems, self.work, g92)
 
     def select(self, system: int) -> None:
         self._send(WorkSystems.select(system))

@@ -8,6 +8,7 @@ SOURCE = """G21 G90 G17
 G0 Z5
 S8000 M03
 G1 Z-0.5 F300
+G92 X0
 o100 repeat [3]
 G91 G1 X4 F450
 o100 endrepeat
@@ -27,6 +28,14 @@ def test_the_panel_follows_the_job_line_by_line(qtbot, window, tmp_path):
         shown.append({key: label.text() for key, label in panel.values.items()})
 
     panel.show_state = spy
+    dro_g92 = []
+    original_dro = window.dro_panel.show_state
+
+    def dro_spy(systems, work, g92=""):
+        original_dro(systems, work, g92)
+        dro_g92.append(window.dro_panel.g92.text())
+
+    window.dro_panel.show_state = dro_spy
     window.operator.connect_to(f"sim://?speed=20&sd={tmp_path}")
     qtbot.waitUntil(lambda: window.binder.connected and window.binder.status is not None, timeout=60_000)
     window.operator.home("NORMAL")
@@ -44,9 +53,10 @@ def test_the_panel_follows_the_job_line_by_line(qtbot, window, tmp_path):
     assert in_loop[-1]["codes"] == "G1 G17 G21 G91 G54 G40"
     assert in_loop[-1]["feed"].startswith("450")
     assert in_loop[-1]["spindle"].startswith("8")  # 8000 or 8.000, as the language writes it
-    assert in_loop[-1]["line"].startswith("6 ")
-    moving = [row for row in shown if row["line"].startswith("6 ") and not row["feed"].endswith("—")]
+    assert in_loop[-1]["line"].startswith("7 ") and in_loop[-1]["g92"] == "X0"
+    moving = [row for row in shown if row["line"].startswith("7 ") and not row["feed"].endswith("—")]
     assert moving, "an actual feed while moving"
     assert any(int(row["spindle"].split("/")[1].strip().replace(",", "").replace(".", "")) > 1000
                for row in in_loop)  # measured (the simulated spindle tops out below the S word)
+    assert "G92 in force: X0" in dro_g92  # the DRO says so too
     assert panel.values["codes"].text() == "—"  # the job ended: dashes again
