@@ -604,6 +604,57 @@
     </message>
 </context>
 <context>
+    <name>LivePanel</name>
+    <message>
+        <source>Active G-codes</source>
+        <translation>Mã G đang hiệu lực</translation>
+    </message>
+    <message>
+        <source>Feed (programmed / actual)</source>
+        <translation>Tốc độ tiến (lập trình / thực tế)</translation>
+    </message>
+    <message>
+        <source>Spindle (commanded / measured)</source>
+        <translation>Trục chính (lệnh / đo được)</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>Dao</translation>
+    </message>
+    <message>
+        <source>Source line</source>
+        <translation>Dòng nguồn</translation>
+    </message>
+    <message>
+        <source>Subprogram / loop pass</source>
+        <translation>Chương trình con / lượt lặp</translation>
+    </message>
+    <message>
+        <source>G92 offset</source>
+        <translation>Độ dời G92</translation>
+    </message>
+    <message>
+        <source>T%1</source>
+        <translation>T%1</translation>
+    </message>
+    <message>
+        <source>%1 of %2</source>
+        <translation>%1 / %2</translation>
+    </message>
+    <message>
+        <source>main program</source>
+        <translation>chương trình chính</translation>
+    </message>
+    <message>
+        <source>%1, pass %2</source>
+        <translation>%1, lượt %2</translation>
+    </message>
+    <message>
+        <source>not in force</source>
+        <translation>không có hiệu lực</translation>
+    </message>
+</context>
+<context>
     <name>Loader</name>
     <message>
         <source>%1 could not be loaded: %2</source>
@@ -939,6 +990,10 @@
     <message>
         <source>Position and work offsets</source>
         <translation>Vị trí và gốc phôi</translation>
+    </message>
+    <message>
+        <source>Live modal state</source>
+        <translation>Trạng thái modal trực tiếp</translation>
     </message>
     <message>
         <source>Settings</source>
