@@ -28,7 +28,7 @@ from .estimate import Estimate, estimate
 from .estimate_lines import EventLines
 from .limits import program_checks
 from .moves import moves_of
-from .offsets import ACTIVE_SYSTEM
+from .offsets import ACTIVE_SYSTEM, system_param
 from .ops import OpBuffer, Ops, Source
 from .reading import SourceError, clean_bytes, clean_text, read_source, text_problem
 from .render import render
@@ -142,10 +142,23 @@ def _empty(name: str, message: str, profile: MachineProfile) -> Program:
     return program
 
 
-def _start_state(profile: MachineProfile, tools: dict | None) -> State:
-    """The interpreter's state before the first line: LinuxCNC's, in G54, with the tool table."""
+def _start_state(profile: MachineProfile, tools: dict | None, systems=None) -> State:
+    """The interpreter's state before the first line: LinuxCNC's, in G54, with the tool table.
+
+    ``systems``: the machine's work systems, ``(active, {system: (x, y, z)})`` with
+    systems 1-6 for G54-G59 in machine mm; the program then starts in the active one,
+    and each other system's offset is its difference from the active one (the frame's
+    zero is the active system's work zero), so a program's G55 moves where the
+    machine's G55 is."""
     start = State(tools=dict(tools or {}), arc_tolerance=profile.motion.arc_tolerance_mm)
-    start.params.set(ACTIVE_SYSTEM, 1)  # G54, as LinuxCNC starts
+    active = 1
+    if systems is not None:
+        active, rows = systems
+        for system, row in rows.items():
+            for axis in range(3):
+                start.params.set(system_param(system, axis), row[axis] - rows[active][axis])
+        start.offsets.system = active
+    start.params.set(ACTIVE_SYSTEM, active)  # G54 unless the machine has another, as LinuxCNC starts
     return start
 
 
@@ -176,10 +189,10 @@ def _expanded(lines: Lines, name: str, folder: Path | None, start: State, report
 
 
 def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfile,
-               tools: dict | None = None, folder: Path | None = None) -> Program:
+               tools: dict | None = None, folder: Path | None = None, systems=None) -> Program:
     """Interpret ``lines``: the expander when the bytes in ``data`` need it, else the fast path."""
     report = Report()
-    start = _start_state(profile, tools)
+    start = _start_state(profile, tools, systems)
     if sniff.needs_expander(data[0]):
         data.clear()
         ops = _expanded(lines, name, folder, start, report)
@@ -234,22 +247,24 @@ class _in_thread(threading.Thread):
 
 
 def load_text(text: str, name: str = "<text>", profile: MachineProfile | None = None,
-              tools: dict | None = None, folder: Path | None = None) -> Program:
+              tools: dict | None = None, folder: Path | None = None, systems=None) -> Program:
     """Interpret G-code ``text``; errors and warnings are in the result, never raised.
     ``tools`` is the tool table (``tools.Tool`` by number) for T, G43 H and G41 D;
-    ``folder`` is where its subprogram files are looked for (none when ``None``)."""
+    ``folder`` is where its subprogram files are looked for (none when ``None``);
+    ``systems`` the machine's work systems (``_start_state``)."""
     profile = profile or MachineProfile()
     if "\x00" in text:
         return _empty(name, msg("not a text file (it contains NUL bytes)"), profile)
     text = clean_text(text)
     data = [text.encode("utf-8", "replace")]  # a \r is a space to the fast path
-    return _interpret(Lines(_split(text)), data, name, profile, tools, folder)
+    return _interpret(Lines(_split(text)), data, name, profile, tools, folder, systems)
 
 
-def load(path: str | Path, profile: MachineProfile | None = None, tools: dict | None = None) -> Program:
+def load(path: str | Path, profile: MachineProfile | None = None, tools: dict | None = None,
+         systems=None) -> Program:
     """Read and interpret a G-code file; unreadable or non-UTF-8 files give an error.
-    ``tools`` is the tool table, as for ``load_text``; subprogram files are looked for
-    in the file's folder."""
+    ``tools`` is the tool table and ``systems`` the machine's work systems, as for
+    ``load_text``; subprogram files are looked for in the file's folder."""
     path = Path(path)
     profile = profile or MachineProfile()
     try:
@@ -262,4 +277,4 @@ def load(path: str | Path, profile: MachineProfile | None = None, tools: dict | 
     lines = Lines(data=raw)  # split on first use, not here
     data = [raw]  # valid UTF-8: the bytes the fast path reads
     del raw
-    return _interpret(lines, data, str(path), profile, tools, path.parent)
+    return _interpret(lines, data, str(path), profile, tools, path.parent, systems)
