@@ -13,7 +13,18 @@ from PySide6.QtCore import QObject
 
 from app.ui.dro_panel import DroPanel
 from app.ui.preflight import OFFSET_NAMES
+from app.ui.session_binder import JOB
 from app.ui.work_offsets import AXES, WorkSystems
+
+
+def relative(systems) -> tuple:
+    """What a program sees of ``systems``: the active one and each row less the active
+    row (``None``, programs read without the machine's systems: G54 and no offsets)."""
+    if systems is None:
+        return 1, tuple((0.0, 0.0, 0.0) for _ in range(6))
+    active, rows = systems
+    return active, tuple(tuple(round(a - b, 6) for a, b in zip(rows[n], rows[active], strict=True))
+                         for n in sorted(rows))
 
 
 class Dro(QObject):
@@ -51,7 +62,20 @@ class Dro(QObject):
         if changed or (name == "WCS" and not result.ok):  # a new offset, or a machine with one only
             for offset in OFFSET_NAMES:
                 self.w.link.call("send_command", f"GET {offset}")
+        self._programs_follow()
         self.show()
+
+    def _programs_follow(self) -> None:
+        """Programs are read with the machine's systems; the open one again when they
+        place its G54-G59 differently from when it was read."""
+        systems = self.systems.for_programs()
+        if systems is None or relative(systems) == relative(self.w.loader.systems):
+            self.w.loader.systems = systems if systems is not None else self.w.loader.systems
+            return
+        self.w.loader.systems = systems
+        loaded = self.w.loaded
+        if loaded is not None and not self.w.loader.busy and self.w.binder.state not in JOB:
+            self.w.open_file(loaded.path)
 
     def show(self) -> None:
         live = getattr(self.w, "live_state", None)

@@ -58,6 +58,7 @@ class ProgramLoader(QObject):
         super().__init__(parent)
         self.tolerance = tolerance
         self.tools: dict = {}  # the tool table (app.gcode.tools), as the window last saved it
+        self.systems = None  # the machine's work systems (app/ui/dro.py), None until read
         self.busy = False
         self.view_size: tuple[float, float] | None = None  # the preview's, in pixels
         self._shown = threading.Event()
@@ -79,7 +80,7 @@ class ProgramLoader(QObject):
 
     def _run(self, path: Path, view_size, defer: bool) -> None:
         try:
-            result = load_program(path, self.tolerance, view_size, self.tools)
+            result = load_program(path, self.tolerance, view_size, self.tools, self.systems)
         except LoadError as exc:
             self.busy = False
             self.failed.emit(str(path), str(exc))
@@ -129,7 +130,8 @@ class LoadError(Exception):
     """A file that cannot be shown as a program; the message says why."""
 
 
-def load_program(path: Path, tolerance: float = 0.01, view_size=None, tools=None) -> LoadedProgram:
+def load_program(path: Path, tolerance: float = 0.01, view_size=None, tools=None,
+                 systems=None) -> LoadedProgram:
     """The program and its preview model, with what the first picture of a preview of
     ``view_size`` pixels needs already computed."""
     _sniff(path)
@@ -137,7 +139,7 @@ def load_program(path: Path, tolerance: float = 0.01, view_size=None, tools=None
 
     started = time.perf_counter()
     try:
-        program = load(path, tools=tools)
+        program = load(path, tools=tools, systems=systems)
     except (OSError, UnicodeError, ValueError) as exc:
         said = QCoreApplication.translate("Loader", "%1 could not be read as G-code: %2")
         raise LoadError(fill(said, path.name, exc)) from None

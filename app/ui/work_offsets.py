@@ -71,6 +71,15 @@ class WorkSystems:
             row[AXES.index(axis)] = value
         return bool(words)
 
+    def for_programs(self):
+        """``(active, {1..6: row})`` for ``app.gcode.load(systems=...)`` (G54 = 1), or
+        ``None`` while any row is unknown or the machine has one offset only."""
+        if not self.supported or self.active not in SYSTEMS:
+            return None
+        if any(None in row for row in self.rows.values()):
+            return None
+        return self.active - 53, {n - 53: tuple(row) for n, row in self.rows.items()}
+
     def offset(self) -> list[float | None]:
         """The active system's offset (machine mm of its work zero)."""
         return list(self.rows[self.active or 54])

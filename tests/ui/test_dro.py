@@ -103,3 +103,20 @@ def test_the_state_table_governs_the_dro(qtbot, window):
     assert "Not now" in panel.go_to.toolTip()
     window.dro.move_to({"X": 1.0})  # a stale request is refused, with the reason
     assert window.operator.refused[-1][0] == "go_to"
+
+
+def test_a_program_s_g55_is_where_the_machine_holds_g55(qtbot, window, tmp_path):
+    panel, dro = window.dro_panel, window.dro
+    _connect_and_home(qtbot, window, tmp_path)
+    qtbot.waitUntil(lambda: dro.systems.for_programs() is not None, timeout=20_000)
+    path = tmp_path / "g55.ngc"
+    path.write_text("G21 G90\nG55\n" + SOURCE.split("\n", 1)[1])
+    open_and_wait(qtbot, window, path)
+    qtbot.waitUntil(lambda: None not in window.preflight.offset, timeout=10_000)
+    assert not window.preflight.errors  # G55 = G54 on this machine so far
+    before = window.loaded
+    panel.table.item(SYSTEMS.index(55), 0).setText("50")
+    qtbot.waitUntil(lambda: window.loaded is not before, timeout=30_000)  # read again with the new G55
+    qtbot.waitUntil(lambda: bool(window.preflight.errors), timeout=10_000)
+    assert "X+" in window.preflight.message()
+    assert window.loaded.program.ops.end[:, 0].max() > 150.0  # the preview draws it there too
