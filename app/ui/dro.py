@@ -45,8 +45,7 @@ class Dro(QObject):
 
     def read_all(self, url: str = "") -> None:
         self.systems = WorkSystems()
-        for query in WorkSystems.queries():
-            self.w.link.call("send_command", query)
+        self.w.link.call("send_command", "GET WCS")
         self.show()
 
     def on_status(self, event) -> None:
@@ -54,9 +53,13 @@ class Dro(QObject):
         self.show()
 
     def on_command(self, result) -> None:
+        first_answer = self.systems.supported is None
         if not self.systems.take(result.verb, tuple(result.args), result.info, result.ok):
             return
         name = result.args[0] if result.args else ""
+        if first_answer and self.systems.supported:
+            for query in WorkSystems.row_queries():
+                self.w.link.call("send_command", query)
         active_row = name.startswith(f"G{self.systems.active}_")
         changed = result.verb == "SET" and result.ok and (name == "WCS" or active_row)
         if changed or (name == "WCS" and not result.ok):  # a new offset, or a machine with one only

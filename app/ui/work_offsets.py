@@ -28,9 +28,10 @@ class WorkSystems:
         self.supported: bool | None = None  # None until the machine has answered GET WCS
 
     @staticmethod
-    def queries() -> list[str]:
-        """The commands that read everything: the active system, then each row."""
-        return ["GET WCS", *(f"GET G{n}_{a}" for n in SYSTEMS for a in AXES)]
+    def row_queries() -> list[str]:
+        """The commands that read each system's row (once ``GET WCS`` has been answered:
+        a machine with one offset only is not asked)."""
+        return [f"GET G{n}_{a}" for n in SYSTEMS for a in AXES]
 
     @staticmethod
     def set_row(system: int, axis: str, value: float) -> str:
