@@ -12,6 +12,7 @@ import math
 
 from PySide6.QtCore import QEvent, Qt, Signal
 from PySide6.QtWidgets import (
+    QAbstractItemView,
     QComboBox,
     QGridLayout,
     QGroupBox,
@@ -159,10 +160,14 @@ class DroPanel(QWidget):
             item = QTableWidgetItem()
             item.setTextAlignment(Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter)
             self.table.setItem(row, column, item)
-        if not self.table.isPersistentEditorOpen(item):
+        editing = (self.table.state() == QAbstractItemView.State.EditingState
+                   and self.table.currentItem() is item)
+        if item.text() != _mm(value) and not editing:  # a cell being typed into is left alone
             item.setText(_mm(value))
         flags = Qt.ItemFlag.ItemIsEnabled | Qt.ItemFlag.ItemIsSelectable
-        item.setFlags(flags | Qt.ItemFlag.ItemIsEditable if editable else flags)
+        flags = flags | Qt.ItemFlag.ItemIsEditable if editable else flags
+        if item.flags() != flags:
+            item.setFlags(flags)
 
     # -- asking ------------------------------------------------------------------------
 

@@ -120,3 +120,24 @@ def test_a_program_s_g55_is_where_the_machine_holds_g55(qtbot, window, tmp_path)
     qtbot.waitUntil(lambda: bool(window.preflight.errors), timeout=10_000)
     assert "X+" in window.preflight.message()
     assert window.loaded.program.ops.end[:, 0].max() > 150.0  # the preview draws it there too
+
+
+def test_a_cell_being_typed_into_is_not_overwritten_by_the_next_status(qtbot, window):
+    from app.ui.work_offsets import WorkSystems
+
+    panel = window.dro_panel
+    window.show()
+    systems = WorkSystems()
+    for name, value in (("WCS", 54), ("G54_X", 1.0), ("G55_X", 2.0)):
+        systems.take("GET", (name,), f"{name} {value}", True)
+    panel.show_state(systems, (0.0, 0.0, 0.0))
+    item = panel.table.item(SYSTEMS.index(55), 0)
+    panel.table.setEnabled(True)
+    panel.table.setCurrentItem(item)
+    panel.table.editItem(item)
+    assert panel.table.state() == panel.table.State.EditingState
+    systems.take("GET", ("G55_X",), "G55_X 3", True)
+    systems.take("GET", ("G54_X",), "G54_X 4", True)
+    panel.show_state(systems, (0.0, 0.0, 0.0))
+    assert item.text().replace(",", ".") == "2.000"  # left to the operator
+    assert panel.table.item(0, 0).text().replace(",", ".") == "4.000"
