@@ -33,6 +33,7 @@ class Dro(QObject):
         self.w, self.panel = window, panel
         self.systems = WorkSystems()
         self.work: tuple[float, float, float] | None = None
+        self._travel_offset: list[float] | None = None  # what the previews' travel box uses
         worker = window.link.worker
         worker.connected.connect(self.read_all)
         worker.command_finished.connect(self.on_command)
@@ -66,7 +67,18 @@ class Dro(QObject):
             for offset in OFFSET_NAMES:
                 self.w.link.call("send_command", f"GET {offset}")
         self._programs_follow()
+        self._travel_follows()
         self.show()
+
+    def _travel_follows(self) -> None:
+        """The previews draw the travel box around the active system's work zero."""
+        offset = self.systems.offset()
+        if None in offset or offset == self._travel_offset:
+            return
+        self._travel_offset = offset
+        travel = self.w.profile.travel
+        self.w.preview.set_travel((travel.x_max, travel.y_max), offset[:2])
+        self.w.preview3d.set_travel((travel.x_max, travel.y_max, travel.z_max), offset)
 
     def _programs_follow(self) -> None:
         """Programs are read with the machine's systems; the open one again when they

@@ -46,6 +46,7 @@ def test_the_dro_reads_every_system_and_changes_reach_the_machine(qtbot, window,
     qtbot.waitUntil(lambda: bool(window.preflight.errors), timeout=10_000)  # X0..120 from machine X50
     assert "X+" in window.preflight.message()
     qtbot.waitUntil(lambda: abs(window.binder.status.x - (0.0 - 50.0)) < 0.01, timeout=10_000)
+    assert window.preview3d._travel[1][0] == 50.0  # the travel box drawn around G55's zero
     assert panel.work["X"].text().replace(",", ".") == "-50.000"
     assert panel.machine["X"].text().replace(",", ".") == "0.000"
     panel.wcs.activated.emit(SYSTEMS.index(54))
