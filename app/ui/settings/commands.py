@@ -57,7 +57,8 @@ def load_commands(path: Path) -> LoadedCommands:
     except OSError as exc:
         return LoadedCommands((), msg("{path}: cannot read ({error}); using the defaults", path=str(path),
                                       error=str(exc)))
-    if not (isinstance(data, dict) and data.get("version") == VERSION and isinstance(data.get("commands"), list)):
+    valid = isinstance(data, dict) and data.get("version") == VERSION
+    if not (valid and isinstance(data.get("commands"), list)):
         return LoadedCommands((), aside_note(path, _damaged(path, "not a version 1 list of commands")))
     commands, problems = [], []
     for number, entry in enumerate(data["commands"][:LIMIT], start=1):
