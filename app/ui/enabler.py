@@ -47,6 +47,7 @@ def controls_of(window) -> dict[str, list]:
         "cover_switch": [window.machine_panel.cover],
         "work_offsets": [window.dro_panel.wcs, window.dro_panel.table],
         "go_to": [window.dro_panel.go_to, window.dro_panel.go_zero],
+        "custom_commands": list(window.custom_bar.buttons),
     }
 
 

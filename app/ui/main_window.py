@@ -27,6 +27,7 @@ from app.i18n import localize
 from app.ui.connection_bar import ConnectionBar
 from app.ui.console import ConsoleView
 from app.ui.controls import MachineControls
+from app.ui.custom_bar import CustomBar
 from app.ui.dro_panel import DroPanel
 from app.ui.keep_awake import KeepAwake
 from app.ui.language import SETTING, apply_language, current_language
@@ -88,6 +89,7 @@ class MainWindow(QMainWindow):
         self._build_widgets(port_lister)
         self._build_docks()
         from app.ui.cover_banner import CoverBanner
+        from app.ui.custom_commands import CustomCommands
         from app.ui.dro import Dro
         from app.ui.live_state import LiveState
         from app.ui.menus import build_menus
@@ -105,6 +107,7 @@ class MainWindow(QMainWindow):
         self.preflight = Preflight(self)
         self.dro = Dro(self, self.dro_panel)
         self.live_state = LiveState(self, self.live_panel)
+        self.custom_commands = CustomCommands(self, self.custom_bar)
         self.start_here = StartHere(self)
         self.actions_by_name = build_menus(self)
         self.retranslate_ui()  # applies the state table too
@@ -132,6 +135,10 @@ class MainWindow(QMainWindow):
         bar = self.connection_toolbar = self.addToolBar("")
         bar.setObjectName("connection_toolbar")
         bar.addWidget(self.connection)
+        self.custom_bar = CustomBar()
+        custom = self.custom_toolbar = self.addToolBar("")
+        custom.setObjectName("custom_toolbar")
+        custom.addWidget(self.custom_bar)
         self.program_panel = ProgramPanel()
         self.controls = MachineControls()
         self.sd_panel = SdPanel()
@@ -206,6 +213,7 @@ class MainWindow(QMainWindow):
         title = self.tr("CNC mill controller")
         self.setWindowTitle(f"{name} — {title}" if name else title)
         self.connection_toolbar.setWindowTitle(self.tr("Connection"))
+        self.custom_toolbar.setWindowTitle(self.tr("Custom commands"))
         self.views.setTabText(0, self.tr("2-D view"))
         self.views.setTabText(1, self.tr("3-D view"))
         self.plots.setTabText(0, self.tr("Position"))
