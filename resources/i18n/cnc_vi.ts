@@ -2,6 +2,49 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="vi">
 <context>
+    <name>CommandsDialog</name>
+    <message>
+        <source>Custom commands</source>
+        <translation>Lệnh tự định nghĩa</translation>
+    </message>
+    <message>
+        <source>Ask before running</source>
+        <translation>Hỏi trước khi chạy</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Tên</translation>
+    </message>
+    <message>
+        <source>G-code lines</source>
+        <translation>Các dòng G-code</translation>
+    </message>
+    <message>
+        <source>or a G-code file</source>
+        <translation>hoặc một file G-code</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Thêm</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Xóa</translation>
+    </message>
+    <message>
+        <source>At most %1 commands</source>
+        <translation>Tối đa %1 lệnh</translation>
+    </message>
+    <message>
+        <source>New command</source>
+        <translation>Lệnh mới</translation>
+    </message>
+    <message>
+        <source>Command %1 (%2): %3</source>
+        <translation>Lệnh %1 (%2): %3</translation>
+    </message>
+</context>
+<context>
     <name>ConnectionBar</name>
     <message>
         <source>Port</source>
@@ -88,6 +131,48 @@
     <message>
         <source>Cover closed</source>
         <translation>Nắp che đã đóng</translation>
+    </message>
+</context>
+<context>
+    <name>CustomBar</name>
+    <message>
+        <source>Commands…</source>
+        <translation>Lệnh…</translation>
+    </message>
+    <message>
+        <source>Add, change or remove your own command buttons</source>
+        <translation>Thêm, sửa hoặc xóa các nút lệnh của bạn</translation>
+    </message>
+    <message>
+        <source>file %1</source>
+        <translation>file %1</translation>
+    </message>
+    <message>
+        <source>Runs: %1</source>
+        <translation>Chạy: %1</translation>
+    </message>
+    <message>
+        <source>Asks first</source>
+        <translation>Hỏi trước</translation>
+    </message>
+</context>
+<context>
+    <name>CustomCommands</name>
+    <message>
+        <source>Custom commands</source>
+        <translation>Lệnh tự định nghĩa</translation>
+    </message>
+    <message>
+        <source>Run “%1” now?</source>
+        <translation>Chạy “%1” ngay bây giờ?</translation>
+    </message>
+    <message>
+        <source>%1: the file %2 cannot be read (%3)</source>
+        <translation>%1: không đọc được file %2 (%3)</translation>
+    </message>
+    <message>
+        <source>%1 cannot be written (%2)</source>
+        <translation>Không ghi được %1 (%2)</translation>
     </message>
 </context>
 <context>
@@ -1010,6 +1095,10 @@
     <message>
         <source>Connection</source>
         <translation>Kết nối</translation>
+    </message>
+    <message>
+        <source>Custom commands</source>
+        <translation>Lệnh tự định nghĩa</translation>
     </message>
     <message>
         <source>2-D view</source>
@@ -2460,6 +2549,10 @@ Hình 2-D hiển thị chương trình.</translation>
     <message>
         <source>Go to position</source>
         <translation>Đi tới vị trí</translation>
+    </message>
+    <message>
+        <source>Custom command</source>
+        <translation>Lệnh tự định nghĩa</translation>
     </message>
 </context>
 <context>
