@@ -14,7 +14,7 @@ frame may name its own reason), cleared by ``JOB``, ``HOME`` and a ``RESUME`` ta
 from __future__ import annotations
 
 from app.comm.frame import Command, Error, FrameError, Ok, RealtimeCommand, decimal
-from backend_sim import value_ranges
+from backend_sim import value_ranges, work_systems
 from backend_sim.motion import events as ev
 from backend_sim.motion.dialect import DialectError, DialectParser
 from backend_sim.motion.events import MotionError
@@ -276,7 +276,9 @@ def _set(mcu, cmd: Command) -> str:
         number = _number(value, name)
     elif value_ranges.choice_problem(name, value):
         raise Refused("BAD_PARAM", value_ranges.choice_problem(name, value))
-    if name == "CHECK":
+    if work_systems.owns(name):
+        work_systems.set_(mcu, name, number, Refused, _not_running)
+    elif name == "CHECK":
         if mcu.job.open:
             raise Refused("BUSY", "a job is open")
         mcu.check_mode = bool(number)
@@ -290,6 +292,8 @@ def _get(mcu, cmd: Command) -> str:
     value = mcu.stops.get(name)
     if name in OFFSET_NAMES:
         value = mcu.offset[OFFSET_NAMES.index(name)]
+    elif work_systems.owns(name):
+        value = work_systems.get(mcu, name)
     elif value is None:
         value = int(mcu.check_mode) if name == "CHECK" else _param(mcu.mc.get_param, name)
     return f"{name} {value:g}"
@@ -309,9 +313,7 @@ def _zero(mcu, cmd: Command) -> str:
     _homed(mcu)
     _not_running(mcu)
     position = mcu.mc.commanded_mm
-    mcu.offset = tuple(position[k] if AXES[k] in axes else mcu.offset[k] for k in range(3))
-    mcu.flash.save_offset(mcu.offset)
-    mcu.reset_parser()
+    work_systems.write_active(mcu, (position[k] if AXES[k] in axes else mcu.offset[k] for k in range(3)))
     return " ".join(f"{a}{o:.3f}" for a, o in zip(AXES, mcu.offset, strict=True))
 
 

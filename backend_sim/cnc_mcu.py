@@ -66,7 +66,8 @@ class CncMcu:
         self.exec_log = exec_log
         self.rng = rng
         self.flash = flash or Flash(None, profile.travel.work_offset())
-        self.offset = self.flash.load_offset()
+        self.systems, self.wcs = self.flash.load_systems()  # G54..G59 offsets, the active one
+        self.offset = self.systems[self.wcs]  # the active system's: every work position uses it
         self.lost_ms = round(profile.link.lost_s * 1000)
         self.cover_open = False
         self.stops = program_stops.StopSettings()

@@ -28,7 +28,7 @@ from .estimate import Estimate, estimate
 from .estimate_lines import EventLines
 from .limits import program_checks
 from .moves import moves_of
-from .offsets import ACTIVE_SYSTEM
+from .offsets import ACTIVE_SYSTEM, system_param
 from .ops import OpBuffer, Ops, Source
 from .percent import abort_line, abort_message, percent_lines, report_tail
 from .reading import SourceError, clean_bytes, clean_text, read_source, text_problem
@@ -143,12 +143,26 @@ def _empty(name: str, message: str, profile: MachineProfile) -> Program:
     return program
 
 
-def _start_state(profile: MachineProfile, tools: dict | None, block_delete: bool = False) -> State:
+def _start_state(profile: MachineProfile, tools: dict | None, block_delete: bool = False,
+                 systems=None) -> State:
     """The interpreter's state before the first line: LinuxCNC's, in G54, with the tool table
-    and the operator's block delete switch."""
+    and the operator's block delete switch.
+
+    ``systems``: the machine's work systems, ``(active, {system: (x, y, z)})`` with
+    systems 1-6 for G54-G59 in machine mm; the program then starts in the active one,
+    and each other system's offset is its difference from the active one (the frame's
+    zero is the active system's work zero), so a program's G55 moves where the
+    machine's G55 is."""
     start = State(tools=dict(tools or {}), arc_tolerance=profile.motion.arc_tolerance_mm,
                   block_delete=block_delete)
-    start.params.set(ACTIVE_SYSTEM, 1)  # G54, as LinuxCNC starts
+    active = 1
+    if systems is not None:
+        active, rows = systems
+        for system, row in rows.items():
+            for axis in range(3):
+                start.params.set(system_param(system, axis), row[axis] - rows[active][axis])
+        start.offsets.system = active
+    start.params.set(ACTIVE_SYSTEM, active)  # G54 unless the machine has another, as LinuxCNC starts
     return start
 
 
@@ -182,10 +196,11 @@ def _expanded(lines: Lines, name: str, folder: Path | None, start: State, report
 
 
 def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfile,
-               tools: dict | None = None, folder: Path | None = None, block_delete: bool = False) -> Program:
+               tools: dict | None = None, folder: Path | None = None, block_delete: bool = False,
+               systems=None) -> Program:
     """Interpret ``lines``: the expander when the bytes in ``data`` need it, else the fast path."""
     report = Report()
-    start = _start_state(profile, tools, block_delete)
+    start = _start_state(profile, tools, block_delete, systems)
     percent = percent_lines(data[0])
     closing = percent[1]
     stop = closing - 1 if closing else len(lines)  # nothing after the closing % runs
@@ -250,25 +265,27 @@ class _in_thread(threading.Thread):
 
 
 def load_text(text: str, name: str = "<text>", profile: MachineProfile | None = None,
-              tools: dict | None = None, folder: Path | None = None, block_delete: bool = False) -> Program:
+              tools: dict | None = None, folder: Path | None = None, block_delete: bool = False,
+              systems=None) -> Program:
     """Interpret G-code ``text``; errors and warnings are in the result, never raised.
     ``tools`` is the tool table (``tools.Tool`` by number) for T, G43 H and G41 D;
     ``folder`` is where its subprogram files are looked for (none when ``None``);
     ``block_delete``: the operator's switch (on: lines starting with ``/`` are skipped;
-    off, the default as on LinuxCNC and Fanuc controls: they run)."""
+    off, the default as on LinuxCNC and Fanuc controls: they run); ``systems`` the
+    machine's work systems (``_start_state``)."""
     profile = profile or MachineProfile()
     if "\x00" in text:
         return _empty(name, msg("not a text file (it contains NUL bytes)"), profile)
     text = clean_text(text)
     data = [text.encode("utf-8", "replace")]  # a \r is a space to the fast path
-    return _interpret(Lines(_split(text)), data, name, profile, tools, folder, block_delete)
+    return _interpret(Lines(_split(text)), data, name, profile, tools, folder, block_delete, systems)
 
 
 def load(path: str | Path, profile: MachineProfile | None = None, tools: dict | None = None,
-         block_delete: bool = False) -> Program:
+         block_delete: bool = False, systems=None) -> Program:
     """Read and interpret a G-code file; unreadable or non-UTF-8 files give an error.
-    ``tools`` and ``block_delete`` as for ``load_text``; subprogram files are looked for
-    in the file's folder."""
+    ``tools``, ``block_delete`` and ``systems`` as for ``load_text``; subprogram files are
+    looked for in the file's folder."""
     path = Path(path)
     profile = profile or MachineProfile()
     try:
@@ -281,4 +298,4 @@ def load(path: str | Path, profile: MachineProfile | None = None, tools: dict | 
     lines = Lines(data=raw)  # split on first use, not here
     data = [raw]  # valid UTF-8: the bytes the fast path reads
     del raw
-    return _interpret(lines, data, str(path), profile, tools, path.parent, block_delete)
+    return _interpret(lines, data, str(path), profile, tools, path.parent, block_delete, systems)

@@ -32,7 +32,8 @@ def controls_of(window) -> dict[str, list]:
         **both,
         "start_here": [window.program_panel.start_here_action],
         "jog": [*c.jog.buttons.values(), *(a[n] for n in a if n.startswith("jog_"))],
-        "zero": [*(b for k, b in c.buttons.items() if k.startswith("zero_")), a["zero_xy"], a["zero_z"]],
+        "zero": [*(b for k, b in c.buttons.items() if k.startswith("zero_")), a["zero_xy"], a["zero_z"],
+                 *window.dro_panel.zero.values()],
         "check_mode": [c.check_mode, a["check"]],
         "override_travel": [c.override_travel],
         "sd_save": [sd.save],
@@ -44,6 +45,9 @@ def controls_of(window) -> dict[str, list]:
         "connect": [window.connection.button, a["connect"]],
         "panel": list(window.machine_panel.buttons.values()),
         "cover_switch": [window.machine_panel.cover],
+        "work_offsets": [window.dro_panel.wcs, window.dro_panel.table],
+        "go_to": [window.dro_panel.go_to, window.dro_panel.go_zero],
+        "custom_commands": list(window.custom_bar.buttons),
     }
 
 

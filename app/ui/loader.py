@@ -59,6 +59,7 @@ class ProgramLoader(QObject):
         self.tolerance = tolerance
         self.tools: dict = {}  # the tool table (app.gcode.tools), as the window last saved it
         self.block_delete = False  # the operator's switch: lines starting with "/" are skipped
+        self.systems = None  # the machine's work systems (app/ui/dro.py), None until read
         self.busy = False
         self.view_size: tuple[float, float] | None = None  # the preview's, in pixels
         self._shown = threading.Event()
@@ -80,7 +81,8 @@ class ProgramLoader(QObject):
 
     def _run(self, path: Path, view_size, defer: bool) -> None:
         try:
-            result = load_program(path, self.tolerance, view_size, self.tools, self.block_delete)
+            result = load_program(path, self.tolerance, view_size, self.tools, self.block_delete,
+                                  self.systems)
         except LoadError as exc:
             self.busy = False
             self.failed.emit(str(path), str(exc))
@@ -131,7 +133,7 @@ class LoadError(Exception):
 
 
 def load_program(path: Path, tolerance: float = 0.01, view_size=None, tools=None,
-                 block_delete: bool = False) -> LoadedProgram:
+                 block_delete: bool = False, systems=None) -> LoadedProgram:
     """The program and its preview model, with what the first picture of a preview of
     ``view_size`` pixels needs already computed (``block_delete``: the operator's switch)."""
     _sniff(path)
@@ -139,7 +141,7 @@ def load_program(path: Path, tolerance: float = 0.01, view_size=None, tools=None
 
     started = time.perf_counter()
     try:
-        program = load(path, tools=tools, block_delete=block_delete)
+        program = load(path, tools=tools, block_delete=block_delete, systems=systems)
     except (OSError, UnicodeError, ValueError) as exc:
         said = QCoreApplication.translate("Loader", "%1 could not be read as G-code: %2")
         raise LoadError(fill(said, path.name, exc)) from None

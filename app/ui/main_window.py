@@ -27,10 +27,13 @@ from app.i18n import localize
 from app.ui.connection_bar import ConnectionBar
 from app.ui.console import ConsoleView
 from app.ui.controls import MachineControls
+from app.ui.custom_bar import CustomBar
+from app.ui.dro_panel import DroPanel
 from app.ui.keep_awake import KeepAwake
 from app.ui.language import SETTING, apply_language, current_language
 from app.ui.link import MachineLink
 from app.ui.link_alert import LinkAlert
+from app.ui.live_panel import LivePanel
 from app.ui.loader import ProgramLoader
 from app.ui.machine_panel import MachinePanelView
 from app.ui.notifier import Notifier
@@ -56,6 +59,8 @@ DOCK_TITLES = {
     "panel": QT_TRANSLATE_NOOP("MainWindow", "Machine panel"),
     "plot": QT_TRANSLATE_NOOP("MainWindow", "Live position"),
     "console": QT_TRANSLATE_NOOP("MainWindow", "Console"),
+    "dro": QT_TRANSLATE_NOOP("MainWindow", "Position and work offsets"),
+    "live": QT_TRANSLATE_NOOP("MainWindow", "Live modal state"),
 }
 
 
@@ -84,6 +89,9 @@ class MainWindow(QMainWindow):
         self._build_widgets(port_lister)
         self._build_docks()
         from app.ui.cover_banner import CoverBanner
+        from app.ui.custom_commands import CustomCommands
+        from app.ui.dro import Dro
+        from app.ui.live_state import LiveState
         from app.ui.menus import build_menus
         from app.ui.operator_actions import OperatorActions
         from app.ui.preflight import Preflight
@@ -97,6 +105,9 @@ class MainWindow(QMainWindow):
         self.program_stops = ProgramStops(self)
         self.cover_banner = CoverBanner(self)
         self.preflight = Preflight(self)
+        self.dro = Dro(self, self.dro_panel)
+        self.live_state = LiveState(self, self.live_panel)
+        self.custom_commands = CustomCommands(self, self.custom_bar)
         self.start_here = StartHere(self)
         self.actions_by_name = build_menus(self)
         self.retranslate_ui()  # applies the state table too
@@ -124,10 +135,16 @@ class MainWindow(QMainWindow):
         bar = self.connection_toolbar = self.addToolBar("")
         bar.setObjectName("connection_toolbar")
         bar.addWidget(self.connection)
+        self.custom_bar = CustomBar()
+        custom = self.custom_toolbar = self.addToolBar("")
+        custom.setObjectName("custom_toolbar")
+        custom.addWidget(self.custom_bar)
         self.program_panel = ProgramPanel()
         self.controls = MachineControls()
         self.sd_panel = SdPanel()
         self.machine_panel = MachinePanelView()
+        self.dro_panel = DroPanel()
+        self.live_panel = LivePanel()
         self.position_plot = PositionPlot(self.history)
         self.diagnostics = DiagnosticsView(self.history)
         self.plots = QTabWidget()
@@ -155,11 +172,15 @@ class MainWindow(QMainWindow):
             "panel": self._dock("panel_dock", self.machine_panel, right),
             "plot": self._dock("plot_dock", self.plots, bottom),
             "console": self._dock("console_dock", self.console, bottom),
+            "dro": self._dock("dro_dock", self.dro_panel, right),
+            "live": self._dock("live_dock", self.live_panel, right),
         }
         # Side columns run the full height; the plot and console sit under the preview only.
         self.setCorner(Qt.Corner.BottomLeftCorner, left)
         self.setCorner(Qt.Corner.BottomRightCorner, right)
         self.tabifyDockWidget(self.docks["sd"], self.docks["panel"])
+        self.tabifyDockWidget(self.docks["panel"], self.docks["dro"])
+        self.tabifyDockWidget(self.docks["dro"], self.docks["live"])
         self.tabifyDockWidget(self.docks["plot"], self.docks["console"])
         self.docks["sd"].raise_()
         self.docks["plot"].raise_()
@@ -192,6 +213,7 @@ class MainWindow(QMainWindow):
         title = self.tr("CNC mill controller")
         self.setWindowTitle(f"{name} — {title}" if name else title)
         self.connection_toolbar.setWindowTitle(self.tr("Connection"))
+        self.custom_toolbar.setWindowTitle(self.tr("Custom commands"))
         self.views.setTabText(0, self.tr("2-D view"))
         self.views.setTabText(1, self.tr("3-D view"))
         self.plots.setTabText(0, self.tr("Position"))

@@ -208,15 +208,21 @@ class OperatorActions(QObject):
             if verb in ("HOME", "JOG", "SPINDLE"):
                 self._motion_sent(verb)
             return
+        self.run_lines(text, "MDI")
+
+    def run_lines(self, text: str, name: str) -> bool:
+        """G-code ``text`` run as a job of its own (the caller has asked the table);
+        a line the loader refuses is logged and nothing is sent."""
         from app.gcode import load_text
 
-        program = load_text(text, name="MDI")
+        program = load_text(text, name=name)
         errors = list(program.errors)
         if errors:
-            self.w.console.add_log("error", f"MDI: {localize(errors[0].message)}")
-            return
+            self.w.console.add_log("error", f"{name}: {localize(errors[0].message)}")
+            return False
         self.w.binder.begin_job(None)
         self.link.call("start_job", list(program.device_lines))
+        return True
 
     # -- files and settings ---------------------------------------------------------
 

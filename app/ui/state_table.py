@@ -69,22 +69,25 @@ COLUMNS = {
     "sddel": "sd_delete",
     "sdrun": "sd_run",
     "mdi": "mdi",
+    "wcs": "work_offsets",
+    "goto": "go_to",
+    "cust": "custom_commands",
 }
 
 TABLE = """
-state        home recov start here pause resum stop jog spon spoff zero check trav sdsav sdls sddel sdrun mdi
-idle         Y    Y     h     h    .     .     Y    Y   Y    Y     h    Y     .    Y     Y    Y     h     h
-check_mode   Y    Y     Y     Y    .     .     Y    Y   Y    Y     h    Y     Y    Y     Y    Y     .     Y
-homing       .    .     .     .    Y     .     Y    .   .    .     .    .     .    .     .    .     .     .
-jog          .    .     .     .    Y     .     Y    .   .    .     .    .     .    .     .    .     .     .
-spindle      .    .     .     .    .     .     Y    .   .    Y     .    .     .    .     .    .     .     .
-run_host     .    .     .     .    Y     .     Y    .   .    .     .    .     .    .     .    .     .     .
-run_sd       .    .     .     .    Y     .     Y    .   .    .     .    .     .    .     .    .     .     .
-upload       .    .     .     .    .     .     Y    .   .    .     .    .     .    .     .    .     .     .
-hold         .    .     .     .    .     Y     Y    .   .    .     .    .     .    .     .    .     .     .
-program_stop .    .     .     .    .     Y     Y    .   .    .     .    .     .    .     .    .     .     .
-alarm        Y    Y     .     .    .     .     Y    .   .    Y     .    .     .    .     Y    .     .     .
-cover_open   .    .     .     .    Y     .     Y    .   .    Y     .    .     .    .     .    .     .     .
+state        home recov start here pause resum stop jog spon spoff zero check trav sdsav sdls sddel sdrun mdi wcs goto cust
+idle         Y    Y     h     h    .     .     Y    Y   Y    Y     h    Y     .    Y     Y    Y     h     h   Y   h    h
+check_mode   Y    Y     Y     Y    .     .     Y    Y   Y    Y     h    Y     Y    Y     Y    Y     .     Y   Y   Y    Y
+homing       .    .     .     .    Y     .     Y    .   .    .     .    .     .    .     .    .     .     .   .   .    .
+jog          .    .     .     .    Y     .     Y    .   .    .     .    .     .    .     .    .     .     .   .   .    .
+spindle      .    .     .     .    .     .     Y    .   .    Y     .    .     .    .     .    .     .     .   .   .    .
+run_host     .    .     .     .    Y     .     Y    .   .    .     .    .     .    .     .    .     .     .   .   .    .
+run_sd       .    .     .     .    Y     .     Y    .   .    .     .    .     .    .     .    .     .     .   .   .    .
+upload       .    .     .     .    .     .     Y    .   .    .     .    .     .    .     .    .     .     .   .   .    .
+hold         .    .     .     .    .     Y     Y    .   .    .     .    .     .    .     .    .     .     .   .   .    .
+program_stop .    .     .     .    .     Y     Y    .   .    .     .    .     .    .     .    .     .     .   .   .    .
+alarm        Y    Y     .     .    .     .     Y    .   .    Y     .    .     .    .     Y    .     .     .   Y   .    .
+cover_open   .    .     .     .    Y     .     Y    .   .    Y     .    .     .    .     .    .     .     .   Y   .    .
 """
 
 # Controls the link alone decides (enabled whenever the link is up, as the machine
@@ -275,4 +278,7 @@ LABELS = {
     "connect": QT_TRANSLATE_NOOP("StateTable", "Connect"),
     "panel": QT_TRANSLATE_NOOP("StateTable", "Machine panel"),
     "cover_switch": QT_TRANSLATE_NOOP("StateTable", "Cover switch"),
+    "work_offsets": QT_TRANSLATE_NOOP("StateTable", "Work offsets"),
+    "go_to": QT_TRANSLATE_NOOP("StateTable", "Go to position"),
+    "custom_commands": QT_TRANSLATE_NOOP("StateTable", "Custom command"),
 }

@@ -2,6 +2,49 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="vi">
 <context>
+    <name>CommandsDialog</name>
+    <message>
+        <source>Custom commands</source>
+        <translation>Lệnh tự định nghĩa</translation>
+    </message>
+    <message>
+        <source>Ask before running</source>
+        <translation>Hỏi trước khi chạy</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Tên</translation>
+    </message>
+    <message>
+        <source>G-code lines</source>
+        <translation>Các dòng G-code</translation>
+    </message>
+    <message>
+        <source>or a G-code file</source>
+        <translation>hoặc một file G-code</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Thêm</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Xóa</translation>
+    </message>
+    <message>
+        <source>At most %1 commands</source>
+        <translation>Tối đa %1 lệnh</translation>
+    </message>
+    <message>
+        <source>New command</source>
+        <translation>Lệnh mới</translation>
+    </message>
+    <message>
+        <source>Command %1 (%2): %3</source>
+        <translation>Lệnh %1 (%2): %3</translation>
+    </message>
+</context>
+<context>
     <name>ConnectionBar</name>
     <message>
         <source>Port</source>
@@ -95,6 +138,48 @@
     </message>
 </context>
 <context>
+    <name>CustomBar</name>
+    <message>
+        <source>Commands…</source>
+        <translation>Lệnh…</translation>
+    </message>
+    <message>
+        <source>Add, change or remove your own command buttons</source>
+        <translation>Thêm, sửa hoặc xóa các nút lệnh của bạn</translation>
+    </message>
+    <message>
+        <source>file %1</source>
+        <translation>file %1</translation>
+    </message>
+    <message>
+        <source>Runs: %1</source>
+        <translation>Chạy: %1</translation>
+    </message>
+    <message>
+        <source>Asks first</source>
+        <translation>Hỏi trước</translation>
+    </message>
+</context>
+<context>
+    <name>CustomCommands</name>
+    <message>
+        <source>Custom commands</source>
+        <translation>Lệnh tự định nghĩa</translation>
+    </message>
+    <message>
+        <source>Run “%1” now?</source>
+        <translation>Chạy “%1” ngay bây giờ?</translation>
+    </message>
+    <message>
+        <source>%1: the file %2 cannot be read (%3)</source>
+        <translation>%1: không đọc được file %2 (%3)</translation>
+    </message>
+    <message>
+        <source>%1 cannot be written (%2)</source>
+        <translation>Không ghi được %1 (%2)</translation>
+    </message>
+</context>
+<context>
     <name>DiagnosticsView</name>
     <message>
         <source>%1 error mm</source>
@@ -114,6 +199,76 @@
     <message>
         <source>GRBL</source>
         <translation>GRBL</translation>
+    </message>
+</context>
+<context>
+    <name>Dro</name>
+    <message>
+        <source>The work offset is not known yet: connect to the machine first.</source>
+        <translation>Chưa biết gốc phôi: hãy kết nối với máy trước.</translation>
+    </message>
+    <message>
+        <source>Go to</source>
+        <translation>Đi tới</translation>
+    </message>
+</context>
+<context>
+    <name>DroPanel</name>
+    <message>
+        <source>Position</source>
+        <translation>Vị trí</translation>
+    </message>
+    <message>
+        <source>Coordinate system</source>
+        <translation>Hệ tọa độ</translation>
+    </message>
+    <message>
+        <source>Work</source>
+        <translation>Phôi</translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation>Máy</translation>
+    </message>
+    <message>
+        <source>Zero %1</source>
+        <translation>Đặt 0 %1</translation>
+    </message>
+    <message>
+        <source>Make the current position the work zero of %1 in the active system</source>
+        <translation>Lấy vị trí hiện tại làm gốc phôi của trục %1 trong hệ tọa độ đang dùng</translation>
+    </message>
+    <message>
+        <source>Work offsets (machine position of each work zero, mm)</source>
+        <translation>Gốc phôi (vị trí máy của mỗi gốc phôi, mm)</translation>
+    </message>
+    <message>
+        <source>Go to (work mm; an empty axis stays)</source>
+        <translation>Đi tới (mm theo phôi; trục để trống giữ nguyên)</translation>
+    </message>
+    <message>
+        <source>Go</source>
+        <translation>Đi</translation>
+    </message>
+    <message>
+        <source>Go to work zero</source>
+        <translation>Về gốc phôi</translation>
+    </message>
+    <message>
+        <source>Rapid to the top of Z first, then across, then down</source>
+        <translation>Chạy nhanh lên đỉnh hành trình Z trước, rồi đi ngang, rồi hạ xuống</translation>
+    </message>
+    <message>
+        <source>G92 in force: %1</source>
+        <translation>G92 đang có hiệu lực: %1</translation>
+    </message>
+    <message>
+        <source>Work offset %1 %2: “%3” is not a number</source>
+        <translation>Gốc phôi %1 %2: “%3” không phải là số</translation>
+    </message>
+    <message>
+        <source>Go to %1: “%2” is not a number</source>
+        <translation>Đi tới %1: “%2” không phải là số</translation>
     </message>
 </context>
 <context>
@@ -553,6 +708,57 @@
     </message>
 </context>
 <context>
+    <name>LivePanel</name>
+    <message>
+        <source>Active G-codes</source>
+        <translation>Mã G đang hiệu lực</translation>
+    </message>
+    <message>
+        <source>Feed (programmed / actual)</source>
+        <translation>Tốc độ tiến (lập trình / thực tế)</translation>
+    </message>
+    <message>
+        <source>Spindle (commanded / measured)</source>
+        <translation>Trục chính (lệnh / đo được)</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>Dao</translation>
+    </message>
+    <message>
+        <source>Source line</source>
+        <translation>Dòng nguồn</translation>
+    </message>
+    <message>
+        <source>Subprogram / loop pass</source>
+        <translation>Chương trình con / lượt lặp</translation>
+    </message>
+    <message>
+        <source>G92 offset</source>
+        <translation>Độ dời G92</translation>
+    </message>
+    <message>
+        <source>T%1</source>
+        <translation>T%1</translation>
+    </message>
+    <message>
+        <source>%1 of %2</source>
+        <translation>%1 / %2</translation>
+    </message>
+    <message>
+        <source>main program</source>
+        <translation>chương trình chính</translation>
+    </message>
+    <message>
+        <source>%1, pass %2</source>
+        <translation>%1, lượt %2</translation>
+    </message>
+    <message>
+        <source>not in force</source>
+        <translation>không có hiệu lực</translation>
+    </message>
+</context>
+<context>
     <name>Loader</name>
     <message>
         <source>%1 could not be loaded: %2</source>
@@ -886,6 +1092,14 @@
         <translation>Bảng lệnh</translation>
     </message>
     <message>
+        <source>Position and work offsets</source>
+        <translation>Vị trí và gốc phôi</translation>
+    </message>
+    <message>
+        <source>Live modal state</source>
+        <translation>Trạng thái modal trực tiếp</translation>
+    </message>
+    <message>
         <source>Settings</source>
         <translation>Cài đặt</translation>
     </message>
@@ -900,6 +1114,10 @@
     <message>
         <source>Connection</source>
         <translation>Kết nối</translation>
+    </message>
+    <message>
+        <source>Custom commands</source>
+        <translation>Lệnh tự định nghĩa</translation>
     </message>
     <message>
         <source>2-D view</source>
@@ -2350,6 +2568,18 @@ Hình 2-D hiển thị chương trình.</translation>
     <message>
         <source>Cover switch</source>
         <translation>Công tắc nắp che</translation>
+    </message>
+    <message>
+        <source>Work offsets</source>
+        <translation>Gốc phôi</translation>
+    </message>
+    <message>
+        <source>Go to position</source>
+        <translation>Đi tới vị trí</translation>
+    </message>
+    <message>
+        <source>Custom command</source>
+        <translation>Lệnh tự định nghĩa</translation>
     </message>
 </context>
 <context>
