@@ -36,6 +36,7 @@ from backend_sim.motion import events as ev
 from backend_sim.motion.dialect import DialectError, DialectParser, soft_limit_violation
 from backend_sim.motion.events import MotionError
 from backend_sim.outgoing import encode_fit
+from backend_sim.continuous_jog import ContinuousJog
 from backend_sim.urgent import LegacyCounter, RecentIds
 from backend_sim.wire import Wire
 
@@ -88,6 +89,7 @@ class CncMcu:
         self.mc.cover_open = self.cover_open
         self.rx = Deframer(legacy=True)
         self.recent = RecentIds()
+        self.jogging = ContinuousJog(self)
         self.why = ""
         self.job = JobStream()
         self.parser = DialectParser(self.offset, tuple(self.mc.commanded_mm))
@@ -128,6 +130,8 @@ class CncMcu:
         due = min(base + MOTION_CHUNK_MS, max(self.next_status, base + 1))
         if not self.uart_lost:
             due = min(due, self.last_frame_ms + self.lost_ms)
+        if (dead_man := self.jogging.next_due_ms()) is not None:
+            due = min(due, max(dead_man, self.clock.now_ms + 1))
         return due if partial is None else min(due, partial)
 
     def wake(self) -> None:
@@ -146,6 +150,7 @@ class CncMcu:
 
     def service(self) -> None:
         self._drain_events()
+        self.jogging.tick()
         said = self.legacy.report(self.clock.now)
         if said is not None:
             self.send(said)
