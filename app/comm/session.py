@@ -76,7 +76,7 @@ class Session(JobControl):
         self.link = LinkMonitor(link.heartbeat_s, link.degraded_s, link.lost_s)
         self.commands = CommandQueue(ids=ids or next_command_id)
         self.urgent = UrgentCommands(self.commands.take_id)
-        self.jog = HoldToJog(self.commands.take_id)
+        self.hold_jog = HoldToJog(self.commands.take_id)
         self.health = ResendMeter()
         self.holds = HoldWatch()
         self.asked_hold = False  # this host asked for the hold or stop under way
@@ -214,7 +214,7 @@ class Session(JobControl):
         during a job."""
         if keys and (not self.attached or self.busy):
             return False
-        if self.jog.hold(keys, feed):
+        if self.hold_jog.hold(keys, feed):
             self.request_urgent("JOGEND")
         elif self.attached:
             self.tick()
@@ -226,7 +226,7 @@ class Session(JobControl):
             self._error("REALTIME_UNCONFIRMED", msg("the machine did not confirm the {what}", what=what))
             self._urgent_unanswered(frame)
         if self.attached:
-            for frame in self.urgent.due(now) + self.jog.due(now):
+            for frame in self.urgent.due(now) + self.hold_jog.due(now):
                 self._send(frame)
 
     # ------------------------------------------------------------------ incoming
@@ -249,8 +249,8 @@ class Session(JobControl):
         if isinstance(frame, fr.Error) and frame.id is None:
             self._line_refused(frame)
             return
-        if not isinstance(frame, fr.Info) and self.jog.on_answer(frame):
-            if self.jog.refused is frame:
+        if not isinstance(frame, fr.Info) and self.hold_jog.on_answer(frame):
+            if self.hold_jog.refused is frame:
                 self._log("warning", msg("the jog stopped: {code} {text}", code=frame.code, text=frame.text))
             return
         urgent = self.urgent.on_answer(frame) if not isinstance(frame, fr.Info) else None
@@ -307,7 +307,7 @@ class Session(JobControl):
     # ------------------------------------------------------------------ link
 
     def _link_lost(self, reason: str) -> None:
-        self.jog.cancel()
+        self.hold_jog.cancel()
         self._error("LINK_LOST", msg("link to the machine lost: {reason}", reason=reason))
         self._job_link_lost(reason)
         for result in self.commands.fail_all("LINK_LOST", reason):

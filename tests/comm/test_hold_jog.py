@@ -100,7 +100,7 @@ def test_session_runs_into_the_soft_limit_and_says_so_without_an_alarm(link):
     texts = [e.text for e in link.rec.of("on_log")]
     assert "jog stopped at the soft limit X- 0" in texts
     assert any("the jog stopped: SOFT_LIMIT X- at 0" in t for t in texts)
-    assert not link.session.jog.jogging
+    assert not link.session.hold_jog.jogging
     assert [a.code for a in link.rec.of("on_alarm")] == ["BOOT"]  # power-up only, no alarm of the jog
 
 
@@ -109,7 +109,7 @@ def test_stop_and_hold_cancel_a_held_jog(link, how):
     link.session.jog_hold(("Y+",), 600)
     link.run_for(0.5)
     getattr(link.session, how)()
-    assert not link.session.jog.jogging
+    assert not link.session.hold_jog.jogging
     assert link.run_until(lambda: link.sim.cnc.mc.state == "IDLE" and not link.sim.cnc.mc.stopping, 1.0)
     y = link.sim.cnc.mc.commanded_mm[1]
     link.run_for(0.5)
@@ -123,7 +123,7 @@ def test_a_lost_link_stops_the_keep_alives_and_the_machine_stops_by_its_dead_man
     cut = link.now
     assert link.run_until(lambda: link.sim.cnc.mc.state == "IDLE", 1.0)
     assert link.now - cut < 0.25 + 0.025 + 0.3
-    assert link.run_until(lambda: not link.session.jog.jogging, 5.0)  # the session saw the link lost
+    assert link.run_until(lambda: not link.session.hold_jog.jogging, 5.0)  # the session saw the link lost
 
 
 def test_no_jog_during_a_job_or_without_a_link(link):
