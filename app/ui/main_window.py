@@ -84,6 +84,7 @@ class MainWindow(QMainWindow):
         self._build_widgets(port_lister)
         self._build_docks()
         from app.ui.cover_banner import CoverBanner
+        from app.ui.hold_jog_keys import HoldJogKeys
         from app.ui.menus import build_menus
         from app.ui.operator_actions import OperatorActions
         from app.ui.preflight import Preflight
@@ -92,6 +93,7 @@ class MainWindow(QMainWindow):
         from app.ui.start_here import StartHere
 
         self.operator = OperatorActions(self)
+        self.hold_jog_keys = HoldJogKeys(self, self.controls.jog)
         self.binder = SessionBinder(self)
         self.preview3d.follow(self)
         self.program_stops = ProgramStops(self)
@@ -289,6 +291,7 @@ class MainWindow(QMainWindow):
         super().closeEvent(event)
 
     def shutdown(self) -> None:
+        self.hold_jog_keys.detach()
         self.keep_awake.stop()
         self.machine_panel.set_panel(None)
         self.link.shutdown()

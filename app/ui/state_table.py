@@ -69,22 +69,23 @@ COLUMNS = {
     "sddel": "sd_delete",
     "sdrun": "sd_run",
     "mdi": "mdi",
+    "hold": "jog_hold",
 }
 
 TABLE = """
-state        home recov start here pause resum stop jog spon spoff zero check trav sdsav sdls sddel sdrun mdi
-idle         Y    Y     h     h    .     .     Y    Y   Y    Y     h    Y     .    Y     Y    Y     h     h
-check_mode   Y    Y     Y     Y    .     .     Y    Y   Y    Y     h    Y     Y    Y     Y    Y     .     Y
-homing       .    .     .     .    Y     .     Y    .   .    .     .    .     .    .     .    .     .     .
-jog          .    .     .     .    Y     .     Y    .   .    .     .    .     .    .     .    .     .     .
-spindle      .    .     .     .    .     .     Y    .   .    Y     .    .     .    .     .    .     .     .
-run_host     .    .     .     .    Y     .     Y    .   .    .     .    .     .    .     .    .     .     .
-run_sd       .    .     .     .    Y     .     Y    .   .    .     .    .     .    .     .    .     .     .
-upload       .    .     .     .    .     .     Y    .   .    .     .    .     .    .     .    .     .     .
-hold         .    .     .     .    .     Y     Y    .   .    .     .    .     .    .     .    .     .     .
-program_stop .    .     .     .    .     Y     Y    .   .    .     .    .     .    .     .    .     .     .
-alarm        Y    Y     .     .    .     .     Y    .   .    Y     .    .     .    .     Y    .     .     .
-cover_open   .    .     .     .    Y     .     Y    .   .    Y     .    .     .    .     .    .     .     .
+state        home recov start here pause resum stop jog spon spoff zero check trav sdsav sdls sddel sdrun mdi   hold
+idle         Y    Y     h     h    .     .     Y    Y   Y    Y     h    Y     .    Y     Y    Y     h     h   Y
+check_mode   Y    Y     Y     Y    .     .     Y    Y   Y    Y     h    Y     Y    Y     Y    Y     .     Y   Y
+homing       .    .     .     .    Y     .     Y    .   .    .     .    .     .    .     .    .     .     .   .
+jog          .    .     .     .    Y     .     Y    .   .    .     .    .     .    .     .    .     .     .   Y
+spindle      .    .     .     .    .     .     Y    .   .    Y     .    .     .    .     .    .     .     .   .
+run_host     .    .     .     .    Y     .     Y    .   .    .     .    .     .    .     .    .     .     .   .
+run_sd       .    .     .     .    Y     .     Y    .   .    .     .    .     .    .     .    .     .     .   .
+upload       .    .     .     .    .     .     Y    .   .    .     .    .     .    .     .    .     .     .   .
+hold         .    .     .     .    .     Y     Y    .   .    .     .    .     .    .     .    .     .     .   .
+program_stop .    .     .     .    .     Y     Y    .   .    .     .    .     .    .     .    .     .     .   .
+alarm        Y    Y     .     .    .     .     Y    .   .    Y     .    .     .    .     Y    .     .     .   .
+cover_open   .    .     .     .    Y     .     Y    .   .    Y     .    .     .    .     .    .     .     .   .
 """
 
 # Controls the link alone decides (enabled whenever the link is up, as the machine
@@ -271,6 +272,7 @@ LABELS = {
     "sd_delete": QT_TRANSLATE_NOOP("StateTable", "Delete from SD"),
     "sd_run": QT_TRANSLATE_NOOP("StateTable", "Run from SD"),
     "mdi": QT_TRANSLATE_NOOP("StateTable", "MDI line"),
+    "jog_hold": QT_TRANSLATE_NOOP("StateTable", "Hold to jog"),
     "query": QT_TRANSLATE_NOOP("StateTable", "MDI command"),
     "connect": QT_TRANSLATE_NOOP("StateTable", "Connect"),
     "panel": QT_TRANSLATE_NOOP("StateTable", "Machine panel"),
