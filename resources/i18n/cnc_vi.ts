@@ -423,6 +423,14 @@
         <translation>%1 mm</translation>
     </message>
     <message>
+        <source>Hold</source>
+        <translation>Giữ</translation>
+    </message>
+    <message>
+        <source>Jog while a button is held (Alt+4); the arrow keys and PageUp/PageDown always do</source>
+        <translation>Chạy tay khi giữ nút (Alt+4); các phím mũi tên và PageUp/PageDown luôn chạy như vậy</translation>
+    </message>
+    <message>
         <source> mm/min</source>
         <translation> mm/phút</translation>
     </message>
@@ -1024,6 +1032,10 @@
     <message>
         <source>Step 10 mm</source>
         <translation>Bước 10 mm</translation>
+    </message>
+    <message>
+        <source>Hold to jog</source>
+        <translation>Giữ để chạy tay</translation>
     </message>
     <message>
         <source>Spindle o&amp;n</source>
@@ -2307,6 +2319,10 @@ Hình 2-D hiển thị chương trình.</translation>
     <message>
         <source>MDI line</source>
         <translation>Dòng MDI</translation>
+    </message>
+    <message>
+        <source>Hold to jog</source>
+        <translation>Giữ để chạy tay</translation>
     </message>
     <message>
         <source>MDI command</source>
