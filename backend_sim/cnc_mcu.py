@@ -29,6 +29,7 @@ from app.comm.frame import Alarm, Command, Data, Error, Finished, Frame, Log, Na
 from app.profile import MachineProfile
 from backend_sim import cnc_commands, program_stops
 from backend_sim.answer_cache import AnswerCache
+from backend_sim.continuous_jog import ContinuousJog
 from backend_sim.exec_log import ExecLog
 from backend_sim.flash import Flash
 from backend_sim.job_stream import JobStream, Verdict
@@ -36,7 +37,6 @@ from backend_sim.motion import events as ev
 from backend_sim.motion.dialect import DialectError, DialectParser, soft_limit_violation
 from backend_sim.motion.events import MotionError
 from backend_sim.outgoing import encode_fit
-from backend_sim.continuous_jog import ContinuousJog
 from backend_sim.urgent import LegacyCounter, RecentIds
 from backend_sim.wire import Wire
 

@@ -34,7 +34,8 @@ def keep_jogging(host: Host, dirs: str, feed: float, seconds: float) -> list[int
 
 def at_rest(host: Host, since: float, timeout: float = 5.0) -> float:
     """Wait for the machine at rest in IDLE; the simulated time from ``since``."""
-    assert host.sim.run_until(lambda: host.sim.cnc.mc.state == "IDLE" and not host.sim.cnc.mc.stopping, timeout)
+    mc = host.sim.cnc.mc
+    assert host.sim.run_until(lambda: mc.state == "IDLE" and not mc.stopping, timeout)
     host.pump()
     return host.sim.clock.now - since
 
@@ -167,7 +168,7 @@ def test_noise_at_1e_2_per_byte_may_stop_a_jog_early_but_never_lets_it_run_on(ho
         for _ in range(2):
             before = homed.sim.cnc.mc.commanded_mm
             sent = keep_two_copies(homed, dirs, 0.3)
-            homed.sim.run_until(lambda: homed.sim.cnc.mc.state == "IDLE" and not homed.sim.cnc.mc.stopping, 2.0)
+            at_rest(homed, sent, 2.0)
             assert homed.sim.clock.now - sent <= DEAD_MAN_MS / 1000 + 0.025 + stop_bound(homed)
             assert homed.sim.cnc.mc.state == "IDLE"
             moved += math.dist(before, homed.sim.cnc.mc.commanded_mm)

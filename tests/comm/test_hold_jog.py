@@ -13,8 +13,8 @@ from app.comm.hold_jog import COPIES, KEEP_ALIVE_S, HoldToJog, directions
 from tests.comm.simlink import FAST_HOMING, SimLink
 
 
-@pytest.mark.parametrize("body, args", [("R 7 JOG X+ 600", ("X+", "600")), ("R 7 JOG X-Z+ 12.5", ("X-Z+", "12.5")),
-                                        ("R 7 JOGEND", ())])
+@pytest.mark.parametrize("body, args", [("R 7 JOG X+ 600", ("X+", "600")),
+                                        ("R 7 JOG X-Z+ 12.5", ("X-Z+", "12.5")), ("R 7 JOGEND", ())])
 def test_jog_frames_round_trip(body, args):
     frame = parse_body(body)
     assert isinstance(frame, RealtimeCommand) and frame.args == args and frame.why == ""
