@@ -85,6 +85,7 @@ class MainWindow(QMainWindow):
         self._build_docks()
         from app.ui.cover_banner import CoverBanner
         from app.ui.hold_jog_keys import HoldJogKeys
+        from app.ui.outline import OutlineBox
         from app.ui.menus import build_menus
         from app.ui.operator_actions import OperatorActions
         from app.ui.preflight import Preflight
@@ -94,6 +95,8 @@ class MainWindow(QMainWindow):
 
         self.operator = OperatorActions(self)
         self.hold_jog_keys = HoldJogKeys(self, self.controls.jog)
+        self.outline = OutlineBox(self)
+        self.controls.layout().insertWidget(1, self.outline)
         self.binder = SessionBinder(self)
         self.preview3d.follow(self)
         self.program_stops = ProgramStops(self)

@@ -70,22 +70,23 @@ COLUMNS = {
     "sdrun": "sd_run",
     "mdi": "mdi",
     "hold": "jog_hold",
+    "outl": "outline",
 }
 
 TABLE = """
-state        home recov start here pause resum stop jog spon spoff zero check trav sdsav sdls sddel sdrun mdi   hold
-idle         Y    Y     h     h    .     .     Y    Y   Y    Y     h    Y     .    Y     Y    Y     h     h   Y
-check_mode   Y    Y     Y     Y    .     .     Y    Y   Y    Y     h    Y     Y    Y     Y    Y     .     Y   Y
-homing       .    .     .     .    Y     .     Y    .   .    .     .    .     .    .     .    .     .     .   .
-jog          .    .     .     .    Y     .     Y    .   .    .     .    .     .    .     .    .     .     .   Y
-spindle      .    .     .     .    .     .     Y    .   .    Y     .    .     .    .     .    .     .     .   .
-run_host     .    .     .     .    Y     .     Y    .   .    .     .    .     .    .     .    .     .     .   .
-run_sd       .    .     .     .    Y     .     Y    .   .    .     .    .     .    .     .    .     .     .   .
-upload       .    .     .     .    .     .     Y    .   .    .     .    .     .    .     .    .     .     .   .
-hold         .    .     .     .    .     Y     Y    .   .    .     .    .     .    .     .    .     .     .   .
-program_stop .    .     .     .    .     Y     Y    .   .    .     .    .     .    .     .    .     .     .   .
-alarm        Y    Y     .     .    .     .     Y    .   .    Y     .    .     .    .     Y    .     .     .   .
-cover_open   .    .     .     .    Y     .     Y    .   .    Y     .    .     .    .     .    .     .     .   .
+state        home recov start here pause resum stop jog spon spoff zero check trav sdsav sdls sddel sdrun mdi   hold outl
+idle         Y    Y     h     h    .     .     Y    Y   Y    Y     h    Y     .    Y     Y    Y     h     h   Y    h
+check_mode   Y    Y     Y     Y    .     .     Y    Y   Y    Y     h    Y     Y    Y     Y    Y     .     Y   Y    Y
+homing       .    .     .     .    Y     .     Y    .   .    .     .    .     .    .     .    .     .     .   .    .
+jog          .    .     .     .    Y     .     Y    .   .    .     .    .     .    .     .    .     .     .   Y    .
+spindle      .    .     .     .    .     .     Y    .   .    Y     .    .     .    .     .    .     .     .   .    .
+run_host     .    .     .     .    Y     .     Y    .   .    .     .    .     .    .     .    .     .     .   .    .
+run_sd       .    .     .     .    Y     .     Y    .   .    .     .    .     .    .     .    .     .     .   .    .
+upload       .    .     .     .    .     .     Y    .   .    .     .    .     .    .     .    .     .     .   .    .
+hold         .    .     .     .    .     Y     Y    .   .    .     .    .     .    .     .    .     .     .   .    .
+program_stop .    .     .     .    .     Y     Y    .   .    .     .    .     .    .     .    .     .     .   .    .
+alarm        Y    Y     .     .    .     .     Y    .   .    Y     .    .     .    .     Y    .     .     .   .    .
+cover_open   .    .     .     .    Y     .     Y    .   .    Y     .    .     .    .     .    .     .     .   .    .
 """
 
 # Controls the link alone decides (enabled whenever the link is up, as the machine
@@ -95,6 +96,7 @@ ALWAYS = ("connect",)
 # What stays usable while the link is degraded or a dialog waits: what makes the machine safer.
 SAFE = frozenset({"pause", "stop", "spindle_off"})
 NEEDS_PROGRAM = frozenset({"start", "start_here", "sd_save"})
+NEEDS_PROGRAM |= {"outline"}  # issue 21: the outline of the open program
 NEEDS_CAPABILITY = {"sd_save": "sd_card", "sd_list": "sd_card", "sd_delete": "sd_card", "sd_run": "sd_card",
                     "panel": "oled_panel", "cover_switch": "cover"}
 
@@ -273,6 +275,7 @@ LABELS = {
     "sd_run": QT_TRANSLATE_NOOP("StateTable", "Run from SD"),
     "mdi": QT_TRANSLATE_NOOP("StateTable", "MDI line"),
     "jog_hold": QT_TRANSLATE_NOOP("StateTable", "Hold to jog"),
+    "outline": QT_TRANSLATE_NOOP("StateTable", "Trace outline"),
     "query": QT_TRANSLATE_NOOP("StateTable", "MDI command"),
     "connect": QT_TRANSLATE_NOOP("StateTable", "Connect"),
     "panel": QT_TRANSLATE_NOOP("StateTable", "Machine panel"),
