@@ -12,6 +12,7 @@ from __future__ import annotations
 import numpy as np
 
 from app.gcode.features.paper import fmt
+from app.i18n import msg
 
 HULL_TOLERANCE_MM = 0.01
 
@@ -63,11 +64,11 @@ def outline_lines(toolpath, feed_mm_min: float, hull: bool = False) -> list[str]
     """The outline program (see the module docstring); ValueError for a job that moves
     nowhere in X and Y or a feed that is not above 0."""
     if not feed_mm_min > 0:
-        raise ValueError(f"outline feed must be above 0, not {feed_mm_min}")
+        raise ValueError(msg("outline feed must be above 0, not {feed:g}", feed=float(feed_mm_min)))
     points = visited(toolpath)
     corners = outline_corners(points, hull) if len(points) else []
     if len(set(corners)) < 2:
-        raise ValueError("the job moves nowhere in X and Y: no outline to trace")
+        raise ValueError(msg("the job moves nowhere in X and Y: no outline to trace"))
     safe_z = float(points[:, 2].max())
     first = corners[0]
     lines = ["G21 G90", "M05", f"G00 Z{fmt(safe_z)}", f"G00 X{fmt(first[0])} Y{fmt(first[1])}"]

@@ -58,7 +58,7 @@ class OutlineBox(QGroupBox):
             lines = outline_lines(loaded.program.toolpath, float(self.w.controls.jog.feed.value()),
                                   self.hull.isChecked())
         except ValueError as exc:
-            notifier.warning(self.tr("No outline"), str(exc))
+            notifier.warning(self.tr("No outline"), localize(exc.args[0]))
             return None
         program = load_text("\n".join(lines), name="outline", profile=self.w.profile)
         offset = self.w.preflight.current_offset()
