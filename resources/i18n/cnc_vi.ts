@@ -1214,6 +1214,41 @@ Nếu mất kết nối, máy giữ nguyên vị trí; kết nối lại và ch�
     </message>
 </context>
 <context>
+    <name>OutlineBox</name>
+    <message>
+        <source>Outline</source>
+        <translation>Đường bao</translation>
+    </message>
+    <message>
+        <source>Trace outline</source>
+        <translation>Chạy đường bao</translation>
+    </message>
+    <message>
+        <source>spindle off, at the job&apos;s top Z: trace where the job will cut (Pause holds it, Stop ends it)</source>
+        <translation>tắt trục chính, ở Z cao nhất của chương trình: chạy theo vùng chương trình sẽ cắt (Tạm dừng giữ lại, Dừng kết thúc)</translation>
+    </message>
+    <message>
+        <source>Convex hull</source>
+        <translation>Bao lồi</translation>
+    </message>
+    <message>
+        <source>trace the convex hull of the job instead of its bounding rectangle</source>
+        <translation>chạy theo bao lồi của chương trình thay cho hình chữ nhật bao</translation>
+    </message>
+    <message>
+        <source>No outline</source>
+        <translation>Không có đường bao</translation>
+    </message>
+    <message>
+        <source>Open a program without errors first.</source>
+        <translation>Hãy mở một chương trình không có lỗi trước.</translation>
+    </message>
+    <message>
+        <source>Outline leaves the travel</source>
+        <translation>Đường bao vượt ra ngoài hành trình</translation>
+    </message>
+</context>
+<context>
     <name>PathGLView</name>
     <message>
         <source>no OpenGL context could be created</source>
@@ -2323,6 +2358,10 @@ Hình 2-D hiển thị chương trình.</translation>
     <message>
         <source>Hold to jog</source>
         <translation>Giữ để chạy tay</translation>
+    </message>
+    <message>
+        <source>Trace outline</source>
+        <translation>Chạy đường bao</translation>
     </message>
     <message>
         <source>MDI command</source>
