@@ -25,7 +25,8 @@ def test_the_rectangle_is_traced_spindle_off_at_the_job_s_top_and_is_a_valid_pro
     program = load_text(JOB, name="job")
     lines = outline_lines(program.toolpath, 900)
     assert lines[:4] == ["G21 G90", "M05", "G00 Z5", "G00 X10 Y10"]
-    assert lines[4:] == ["G01 X50 Y10 F900", "G01 X50 Y30 F900", "G01 X10 Y30 F900", "G01 X10 Y10 F900", "M30"]
+    corners = ["G01 X50 Y10 F900", "G01 X50 Y30 F900", "G01 X10 Y30 F900", "G01 X10 Y10 F900"]
+    assert lines[4:] == [*corners, "M30"]
     traced = load_text("\n".join(lines), name="outline")
     assert not traced.errors
     reached = visited(traced.toolpath)

@@ -19,7 +19,8 @@ def homed(qtbot, window, tmp_path):
     window.operator.connect_to(f"sim://?speed={SPEED}&sd={tmp_path}")
     qtbot.waitUntil(lambda: window.binder.connected and window.binder.status is not None, timeout=60_000)
     window.operator.home("NORMAL")
-    qtbot.waitUntil(lambda: window.binder.status.homed and window.binder.status.state == "IDLE", timeout=60_000)
+    homed = lambda: window.binder.status.homed and window.binder.status.state == "IDLE"  # noqa: E731
+    qtbot.waitUntil(homed, timeout=60_000)
     return window
 
 
