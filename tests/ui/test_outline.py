@@ -4,24 +4,15 @@ travel first, held by Pause; refused by the state table before homing."""
 
 from __future__ import annotations
 
-import pytest
 from PySide6.QtCore import Qt
 
+from tests.ui import test_machine_controls
 from tests.ui.conftest import open_and_wait
 
-SPEED = 20
+SPEED = 20  # as test_machine_controls' fixture
+homed = test_machine_controls.connected  # the fixture: connected at 20x, homed
 JOB = "G21 G90\nG00 Z5\nG00 X10 Y10\nM03 S3000\nG01 Z-1 F200\nG01 X40 Y10 F600\nG03 X40 Y30 I0 J10\n" \
       "G01 X10 Y30\nG01 X10 Y10\nG00 Z5\nM05\nM30\n"
-
-
-@pytest.fixture
-def homed(qtbot, window, tmp_path):
-    window.operator.connect_to(f"sim://?speed={SPEED}&sd={tmp_path}")
-    qtbot.waitUntil(lambda: window.binder.connected and window.binder.status is not None, timeout=60_000)
-    window.operator.home("NORMAL")
-    homed = lambda: window.binder.status.homed and window.binder.status.state == "IDLE"  # noqa: E731
-    qtbot.waitUntil(homed, timeout=60_000)
-    return window
 
 
 def executed(window) -> list[str]:
