@@ -5,7 +5,8 @@ Each handler answers ``O <id> <VERB> [info]`` when the command has been carried 
 Held, ``STOP`` on Stopped, ``JOG`` back in IDLE, ``SPINDLE`` when at speed) or ``E <id> <code> <text>``:
 NOT_HOMED, SOFT_LIMIT, BUSY, COVER_OPEN, ALARM, BAD_ARGS, BAD_PARAM, BAD_SEQ,
 UNKNOWN_VERB. ``PING``/``STATUS`` answer with ``S``. ``realtime`` carries out an ``R``
-frame (HOLD, RESUME, STOP, RESET) as the ``C`` verb does, answered at once with the
+frame (HOLD, RESUME, STOP, RESET as the ``C`` verb does; JOG, JOGEND: the continuous
+jog of ``continuous_jog``), answered at once with the
 state after it. Each handler keeps the status's ``why`` (``mcu.why``): a hold or stop
 by a command is ``HOST`` (``PANEL`` for the main MCU's own ids: its buttons; an ``R``
 frame may name its own reason), cleared by ``JOB``, ``HOME`` and a ``RESUME`` taken.
@@ -36,7 +37,7 @@ class Refused(Exception):
 
 def realtime(mcu, frame: RealtimeCommand) -> None:
     """An ``R`` frame: act as its ``C`` verb at once; ``O <id> <VERB> <state>`` or ``E``."""
-    cmd = Command(frame.id, frame.verb)
+    cmd = Command(frame.id, frame.verb, frame.args)
     try:
         _REALTIME[frame.verb](mcu, cmd, frame.why or _source(cmd))
     except Refused as exc:
@@ -85,7 +86,17 @@ def _reset_now(mcu, cmd: Command, why: str) -> None:
     mcu.recent.record(cmd.id, encode_fit(Ok(cmd.id, "RESET", "")))
 
 
-_REALTIME = {"HOLD": _hold_now, "RESUME": _resume_now, "STOP": _stop_now, "RESET": _reset_now}
+def _jog_keep(mcu, cmd: Command, why: str) -> None:
+    """``R JOG <dirs> <feed>``: start or keep alive a continuous jog."""
+    mcu.jogging.keep(cmd.args[0], decimal(cmd.args[1], "jog feed"))
+
+
+def _jog_end(mcu, cmd: Command, why: str) -> None:
+    mcu.jogging.end()
+
+
+_REALTIME = {"HOLD": _hold_now, "RESUME": _resume_now, "STOP": _stop_now, "RESET": _reset_now,
+             "JOG": _jog_keep, "JOGEND": _jog_end}
 
 
 def dispatch(mcu, cmd: Command) -> None:

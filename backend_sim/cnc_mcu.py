@@ -29,6 +29,7 @@ from app.comm.frame import Alarm, Command, Data, Error, Finished, Frame, Log, Na
 from app.profile import MachineProfile
 from backend_sim import cnc_commands, program_stops
 from backend_sim.answer_cache import AnswerCache
+from backend_sim.continuous_jog import ContinuousJog
 from backend_sim.exec_log import ExecLog
 from backend_sim.flash import Flash
 from backend_sim.job_stream import JobStream, Verdict
@@ -89,6 +90,7 @@ class CncMcu:
         self.mc.cover_open = self.cover_open
         self.rx = Deframer(legacy=True)
         self.recent = RecentIds()
+        self.jogging = ContinuousJog(self)
         self.why = ""
         self.job = JobStream()
         self.parser = DialectParser(self.offset, tuple(self.mc.commanded_mm))
@@ -129,6 +131,8 @@ class CncMcu:
         due = min(base + MOTION_CHUNK_MS, max(self.next_status, base + 1))
         if not self.uart_lost:
             due = min(due, self.last_frame_ms + self.lost_ms)
+        if (dead_man := self.jogging.next_due_ms()) is not None:
+            due = min(due, max(dead_man, self.clock.now_ms + 1))
         return due if partial is None else min(due, partial)
 
     def wake(self) -> None:
@@ -147,6 +151,7 @@ class CncMcu:
 
     def service(self) -> None:
         self._drain_events()
+        self.jogging.tick()
         said = self.legacy.report(self.clock.now)
         if said is not None:
             self.send(said)

@@ -6,7 +6,9 @@ commands"), and the legacy bytes that are no longer commands.
   again; kept apart from the remembered ``C`` id.
 - ``UrgentRelay``: the main MCU's ``R`` frames on their way down the UART (the host's,
   and its own): each is sent again every ``REPEAT_S`` until the CNC MCU answers it, for
-  at most ``GIVE_UP_S``; ``due(now)`` gives the copies to send now.
+  at most ``GIVE_UP_S`` (a continuous jog's keep-alive ``R JOG``: 25 ms, so none
+  arrives late enough to keep alive a jog the host gave up); ``due(now)`` gives the
+  copies to send now.
 - ``LegacyCounter``: ``!``/0x18 taken off the start of a line, counted and reported in
   one ``L`` frame per ``LOG_EVERY_S`` at most; never acted on.
 """
@@ -21,6 +23,7 @@ from app.comm.frame import Log, RealtimeCommand
 REMEMBERED = 16
 REPEAT_S = 0.005
 GIVE_UP_S = 1.0
+GIVE_UP_S_BY_VERB = {"JOG": 0.025}  # a keep-alive later than the next one is worth nothing
 LOG_EVERY_S = 1.0
 
 
@@ -55,6 +58,7 @@ class _Forwarding:
     raw: bytes
     first: float
     last: float
+    give_up: float = GIVE_UP_S
 
 
 class UrgentRelay:
@@ -71,7 +75,7 @@ class UrgentRelay:
     def forward(self, frame: RealtimeCommand, raw: bytes, now: float) -> None:
         """``frame`` goes down now (the caller writes ``raw``) and again until answered."""
         self.recent.start(frame.id)
-        self._waiting[frame.id] = _Forwarding(raw, now, now)
+        self._waiting[frame.id] = _Forwarding(raw, now, now, GIVE_UP_S_BY_VERB.get(frame.verb, GIVE_UP_S))
 
     def answered(self, rid: int | None, raw: bytes) -> bool:
         """An ``O``/``E`` from the CNC MCU: True if it answers an R frame (kept for repeats)."""
@@ -81,10 +85,10 @@ class UrgentRelay:
         return True
 
     def due(self, now: float) -> list[bytes]:
-        """The copies to send again at ``now``; frames unanswered for ``GIVE_UP_S`` are dropped."""
+        """The copies to send again at ``now``; frames unanswered for their give-up time are dropped."""
         out = []
         for rid, item in list(self._waiting.items()):
-            if now - item.first > GIVE_UP_S:
+            if now - item.first > item.give_up:
                 del self._waiting[rid]
             elif now - item.last >= REPEAT_S - 1e-9:
                 item.last = now

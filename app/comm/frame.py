@@ -28,6 +28,8 @@ STATES = ("IDLE", "HOMING", "RUN", "HOLD", "JOG", "ALARM")
 FLAG_LETTERS = "HCLUPSW"
 NO_FLAGS = "-"
 REALTIME_VERBS = ("HOLD", "RESUME", "STOP", "RESET")
+JOG_VERBS = ("JOG", "JOGEND")  # continuous jog: ``R <id> JOG <dirs> <feed>``, ``R <id> JOGEND``
+JOG_DIRS = re.compile(r"(?:[XYZ][+-]){1,2}")
 WHY_CODES = ("HOST", "PANEL", "COVER", "LINK", "UART", "PROG", "SOFT", "LINE", "LIMIT", "FAULT")
 """Why the machine holds, stopped a job short or is in ALARM (``Status.why``); ``-``: none."""
 
@@ -119,15 +121,18 @@ class Command(Frame):
 @dataclass(frozen=True)
 class RealtimeCommand(Frame):
     """``R <id> <VERB> [why]``: a real-time command (HOLD, RESUME, STOP, RESET) taken in
-    the fast lane; ``why`` only in the main MCU's own frames (``LINK``, ``PANEL``)."""
+    the fast lane; ``why`` only in the main MCU's own frames (``LINK``, ``PANEL``).
+    ``R <id> JOG <dirs> <feed>`` (``args`` = (dirs, feed)) and ``R <id> JOGEND``: the
+    continuous jog (docs/protocol.md, "Continuous jog")."""
 
     KIND: ClassVar[str] = "R"
     id: int
     verb: str
     why: str = ""
+    args: tuple[str, ...] = ()
 
     def body(self) -> str:
-        return _join("R", str(self.id), self.verb, self.why)
+        return _join("R", str(self.id), self.verb, *self.args, self.why)
 
 
 @dataclass(frozen=True)
@@ -330,6 +335,8 @@ def _command(rest: str) -> Command:
 def _realtime(rest: str) -> RealtimeCommand:
     """The strict grammar of docs/protocol.md: id, one of the four verbs, an optional why."""
     fields = rest.split(" ")
+    if len(fields) >= 2 and fields[1] in JOG_VERBS and "" not in fields:
+        return _jog_frame(fields)
     if not 2 <= len(fields) <= 3 or "" in fields:
         raise FrameError("R frame needs an id, a verb and at most a why, single-spaced")
     if fields[1] not in REALTIME_VERBS:
@@ -338,6 +345,23 @@ def _realtime(rest: str) -> RealtimeCommand:
     if why and why not in WHY_CODES:
         raise FrameError(f"bad why {why!r}")
     return RealtimeCommand(_int(fields[0], "command id"), fields[1], why)
+
+
+def _jog_frame(fields: list[str]) -> RealtimeCommand:
+    """``<id> JOG <dirs> <feed>`` or ``<id> JOGEND``, nothing else (no why)."""
+    rid = _int(fields[0], "command id")
+    if fields[1] == "JOGEND":
+        if len(fields) != 2:
+            raise FrameError("R JOGEND takes nothing after the verb")
+        return RealtimeCommand(rid, "JOGEND")
+    if len(fields) != 4:
+        raise FrameError("R JOG needs <dirs> <feed>")
+    dirs, feed = fields[2], fields[3]
+    if not JOG_DIRS.fullmatch(dirs) or len(set(dirs[::2])) != len(dirs) // 2:
+        raise FrameError(f"bad jog directions {dirs!r} (e.g. X+, X+Y-)")
+    if decimal(feed, "jog feed") <= 0:
+        raise FrameError(f"jog feed {feed!r} must be above 0")
+    return RealtimeCommand(rid, "JOG", "", (dirs, feed))
 
 
 def _ack(rest: str) -> Ack:

@@ -106,6 +106,7 @@ class JobControl(StreamFrames, Recovery):
         if not self.attached:
             return self._refuse("NOT_CONNECTED", msg("not connected"))
         self.asked_hold = True
+        self.hold_jog.cancel()
         self.request_urgent("HOLD")
         return True
 
@@ -124,6 +125,7 @@ class JobControl(StreamFrames, Recovery):
         """Stop and flush now (``R STOP``, repeated until answered)."""
         if self.state in RECOVERY_STATES:
             self._finish_stream(False, msg("abandoned by the operator"))
+        self.hold_jog.cancel()
         if self.attached:
             self.asked_hold, self._stop_taken = True, False
             if self.state in JOB_STATES or self.state is S.UPLOADING:

@@ -22,7 +22,8 @@ REPEAT_S = 0.01
 FIRST_COPIES = 2
 GIVE_UP_S = 5.0
 CONFIRMS = {"HOLD": frozenset({"HOLD", "ALARM"})}
-NAMES = {"HOLD": "feed hold", "RESUME": "resume", "STOP": "stop", "RESET": "reset"}
+NAMES = {"HOLD": "feed hold", "RESUME": "resume", "STOP": "stop", "RESET": "reset",
+         "JOGEND": "end of the jog"}
 SUPERSEDES = {"STOP": ("HOLD", "RESUME"), "HOLD": ("RESUME",), "RESUME": ("HOLD",),
               "RESET": ("HOLD", "RESUME", "STOP")}
 

@@ -45,6 +45,7 @@ from app.comm.events import (
     StatusEvent,
 )
 from app.comm.heartbeat import LinkMonitor, LinkState
+from app.comm.hold_jog import HoldToJog
 from app.comm.holds import HoldWatch, source_words
 from app.comm.jobs import UNKNOWN_BOOT, JobControl
 from app.comm.link_health import ResendMeter
@@ -75,6 +76,7 @@ class Session(JobControl):
         self.link = LinkMonitor(link.heartbeat_s, link.degraded_s, link.lost_s)
         self.commands = CommandQueue(ids=ids or next_command_id)
         self.urgent = UrgentCommands(self.commands.take_id)
+        self.hold_jog = HoldToJog(self.commands.take_id)
         self.health = ResendMeter()
         self.holds = HoldWatch()
         self.asked_hold = False  # this host asked for the hold or stop under way
@@ -205,13 +207,26 @@ class Session(JobControl):
         self.urgent.request(verb, self.clock())
         self.tick()
 
+    def jog_hold(self, keys: tuple[str, ...], feed: float) -> bool:
+        """Hold-to-jog: the jog keys held now (``("X+", "Y+")``; ``()`` on release) at
+        ``feed`` mm/min. Keep-alives go out from the next tick, ``R JOGEND`` on release
+        (docs/protocol.md, "Continuous jog"); False (nothing sent) without a link or
+        during a job."""
+        if keys and (not self.attached or self.busy):
+            return False
+        if self.hold_jog.hold(keys, feed):
+            self.request_urgent("JOGEND")
+        elif self.attached:
+            self.tick()
+        return True
+
     def _tick_realtime(self, now: float) -> None:
         for frame in self.urgent.expired(now):
             what = NAMES[frame.verb]
             self._error("REALTIME_UNCONFIRMED", msg("the machine did not confirm the {what}", what=what))
             self._urgent_unanswered(frame)
         if self.attached:
-            for frame in self.urgent.due(now):
+            for frame in self.urgent.due(now) + self.hold_jog.due(now):
                 self._send(frame)
 
     # ------------------------------------------------------------------ incoming
@@ -233,6 +248,10 @@ class Session(JobControl):
     def _on_answer(self, frame: fr.Ok | fr.Error | fr.Info, now: float) -> None:
         if isinstance(frame, fr.Error) and frame.id is None:
             self._line_refused(frame)
+            return
+        if not isinstance(frame, fr.Info) and self.hold_jog.on_answer(frame):
+            if self.hold_jog.refused is frame:
+                self._log("warning", msg("the jog stopped: {code} {text}", code=frame.code, text=frame.text))
             return
         urgent = self.urgent.on_answer(frame) if not isinstance(frame, fr.Info) else None
         if urgent is not None:
@@ -288,6 +307,7 @@ class Session(JobControl):
     # ------------------------------------------------------------------ link
 
     def _link_lost(self, reason: str) -> None:
+        self.hold_jog.cancel()
         self._error("LINK_LOST", msg("link to the machine lost: {reason}", reason=reason))
         self._job_link_lost(reason)
         for result in self.commands.fail_all("LINK_LOST", reason):

@@ -66,7 +66,7 @@ from app.comm.transport import open_transport
 
 SLOT_NAMES = frozenset({
     "connect_to", "disconnect_from", "send_command", "start_job", "pause", "resume", "stop",
-    "jog", "home", "upload_to_sd", "run_from_sd", "list_sd", "delete_sd",
+    "jog", "jog_hold", "home", "upload_to_sd", "run_from_sd", "list_sd", "delete_sd",
     "resume_after_reconnect", "confirm_restart", "set_verbose_frames", "shutdown",
     "machine_call",
 })
@@ -271,6 +271,11 @@ class SerialWorker(QObject):
     @Slot(str, float, float)
     def jog(self, axis: str, distance_mm: float, feed_mm_min: float) -> None:
         self.session.jog(axis, distance_mm, feed_mm_min)
+
+    @Slot(object, float)
+    def jog_hold(self, keys: tuple, feed_mm_min: float) -> None:
+        """Hold-to-jog: the jog keys held now (``()`` on release); see Session.jog_hold."""
+        self.session.jog_hold(tuple(keys), feed_mm_min)
 
     @Slot(str)
     def home(self, mode: str = "NORMAL") -> None:

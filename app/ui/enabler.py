@@ -31,7 +31,10 @@ def controls_of(window) -> dict[str, list]:
     return {
         **both,
         "start_here": [window.program_panel.start_here_action],
-        "jog": [*c.jog.buttons.values(), *(a[n] for n in a if n.startswith("jog_"))],
+        "jog": [*(() if c.jog.hold_mode else c.jog.buttons.values()),
+                *(a[n] for n in a if n.startswith("jog_"))],
+        "outline": [window.outline.button],
+        "jog_hold": [*(c.jog.buttons.values() if c.jog.hold_mode else ())],  # and the keys: OperatorActions
         "zero": [*(b for k, b in c.buttons.items() if k.startswith("zero_")), a["zero_xy"], a["zero_z"],
                  *window.dro_panel.zero.values()],
         "check_mode": [c.check_mode, a["check"]],

@@ -92,6 +92,8 @@ class MainWindow(QMainWindow):
         from app.ui.custom_commands import CustomCommands
         from app.ui.dro import Dro
         from app.ui.live_state import LiveState
+        from app.ui.hold_jog_keys import HoldJogKeys
+        from app.ui.outline import OutlineBox
         from app.ui.menus import build_menus
         from app.ui.operator_actions import OperatorActions
         from app.ui.preflight import Preflight
@@ -100,6 +102,9 @@ class MainWindow(QMainWindow):
         from app.ui.start_here import StartHere
 
         self.operator = OperatorActions(self)
+        self.hold_jog_keys = HoldJogKeys(self, self.controls.jog)
+        self.outline = OutlineBox(self)
+        self.controls.layout().insertWidget(1, self.outline)
         self.binder = SessionBinder(self)
         self.preview3d.follow(self)
         self.program_stops = ProgramStops(self)
@@ -311,6 +316,7 @@ class MainWindow(QMainWindow):
         super().closeEvent(event)
 
     def shutdown(self) -> None:
+        self.hold_jog_keys.detach()
         self.keep_awake.stop()
         self.machine_panel.set_panel(None)
         self.link.shutdown()

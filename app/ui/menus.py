@@ -118,7 +118,7 @@ def _machine_menu(w, menu: QMenu, actions) -> None:
                                 lambda _=False, a=axis, s=sign: w.controls.jog.jog(a, s), key)
     jog.addSeparator()
     steps = (QT_TRANSLATE_NOOP("Menus", "Step 0.1 mm"), QT_TRANSLATE_NOOP("Menus", "Step 1 mm"),
-             QT_TRANSLATE_NOOP("Menus", "Step 10 mm"))
+             QT_TRANSLATE_NOOP("Menus", "Step 10 mm"), QT_TRANSLATE_NOOP("Menus", "Hold to jog"))
     for index, step in enumerate(steps):
         set_step = lambda _=False, i=index: w.controls.jog.set_step_index(i)  # noqa: E731
         actions[f"step_{index}"] = _action(w, jog, step, set_step, f"Alt+{index + 1}")

@@ -45,6 +45,8 @@ class OperatorActions(QObject):
         c.zero_requested.connect(self.zero)
         c.check_mode_toggled.connect(self.set_check_mode)
         c.jog.jog_requested.connect(self.jog)
+        c.jog.hold_changed.connect(self.jog_hold)
+        c.jog.step_group.idToggled.connect(lambda *_: self.w.binder.refresh_enabled())
         w.sd_panel.upload_requested.connect(self.upload)
         w.sd_panel.list_requested.connect(lambda: self._send("sd_list", "list_sd"))
         w.sd_panel.delete_requested.connect(lambda name: self._send("sd_delete", "delete_sd", name))
@@ -140,6 +142,14 @@ class OperatorActions(QObject):
     def jog(self, axis: str, distance: float, feed: float) -> None:
         if self._send("jog", "jog", axis, float(distance), float(feed)):
             self._motion_sent("JOG")
+
+    def jog_hold(self, keys: tuple, feed: float) -> None:
+        """Hold-to-jog: the keys held now; a release always goes out, a press only when the
+        table allows it (the panel forgets keys it refused)."""
+        if keys and not self.allowed("jog_hold"):
+            self.w.controls.jog.held.clear()
+            return
+        self.link.call("jog_hold", tuple(keys), float(feed))
 
     def spindle(self, rpm: int) -> None:
         control = "spindle_on" if rpm > 0 else "spindle_off"

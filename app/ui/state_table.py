@@ -72,22 +72,24 @@ COLUMNS = {
     "wcs": "work_offsets",
     "goto": "go_to",
     "cust": "custom_commands",
+    "hold": "jog_hold",
+    "outl": "outline",
 }
 
 TABLE = """
-state        home recov start here pause resum stop jog spon spoff zero check trav sdsav sdls sddel sdrun mdi wcs goto cust
-idle         Y    Y     h     h    .     .     Y    Y   Y    Y     h    Y     .    Y     Y    Y     h     h   Y   h    h
-check_mode   Y    Y     Y     Y    .     .     Y    Y   Y    Y     h    Y     Y    Y     Y    Y     .     Y   Y   Y    Y
-homing       .    .     .     .    Y     .     Y    .   .    .     .    .     .    .     .    .     .     .   .   .    .
-jog          .    .     .     .    Y     .     Y    .   .    .     .    .     .    .     .    .     .     .   .   .    .
-spindle      .    .     .     .    .     .     Y    .   .    Y     .    .     .    .     .    .     .     .   .   .    .
-run_host     .    .     .     .    Y     .     Y    .   .    .     .    .     .    .     .    .     .     .   .   .    .
-run_sd       .    .     .     .    Y     .     Y    .   .    .     .    .     .    .     .    .     .     .   .   .    .
-upload       .    .     .     .    .     .     Y    .   .    .     .    .     .    .     .    .     .     .   .   .    .
-hold         .    .     .     .    .     Y     Y    .   .    .     .    .     .    .     .    .     .     .   .   .    .
-program_stop .    .     .     .    .     Y     Y    .   .    .     .    .     .    .     .    .     .     .   .   .    .
-alarm        Y    Y     .     .    .     .     Y    .   .    Y     .    .     .    .     Y    .     .     .   Y   .    .
-cover_open   .    .     .     .    Y     .     Y    .   .    Y     .    .     .    .     .    .     .     .   Y   .    .
+state        home recov start here pause resum stop jog spon spoff zero check trav sdsav sdls sddel sdrun mdi wcs goto cust hold outl
+idle         Y    Y     h     h    .     .     Y    Y   Y    Y     h    Y     .    Y     Y    Y     h     h   Y   h    h    Y    h
+check_mode   Y    Y     Y     Y    .     .     Y    Y   Y    Y     h    Y     Y    Y     Y    Y     .     Y   Y   Y    Y    Y    Y
+homing       .    .     .     .    Y     .     Y    .   .    .     .    .     .    .     .    .     .     .   .   .    .    .    .
+jog          .    .     .     .    Y     .     Y    .   .    .     .    .     .    .     .    .     .     .   .   .    .    Y    .
+spindle      .    .     .     .    .     .     Y    .   .    Y     .    .     .    .     .    .     .     .   .   .    .    .    .
+run_host     .    .     .     .    Y     .     Y    .   .    .     .    .     .    .     .    .     .     .   .   .    .    .    .
+run_sd       .    .     .     .    Y     .     Y    .   .    .     .    .     .    .     .    .     .     .   .   .    .    .    .
+upload       .    .     .     .    .     .     Y    .   .    .     .    .     .    .     .    .     .     .   .   .    .    .    .
+hold         .    .     .     .    .     Y     Y    .   .    .     .    .     .    .     .    .     .     .   .   .    .    .    .
+program_stop .    .     .     .    .     Y     Y    .   .    .     .    .     .    .     .    .     .     .   .   .    .    .    .
+alarm        Y    Y     .     .    .     .     Y    .   .    Y     .    .     .    .     Y    .     .     .   Y   .    .    .    .
+cover_open   .    .     .     .    Y     .     Y    .   .    Y     .    .     .    .     .    .     .     .   Y   .    .    .    .
 """
 
 # Controls the link alone decides (enabled whenever the link is up, as the machine
@@ -97,6 +99,7 @@ ALWAYS = ("connect",)
 # What stays usable while the link is degraded or a dialog waits: what makes the machine safer.
 SAFE = frozenset({"pause", "stop", "spindle_off"})
 NEEDS_PROGRAM = frozenset({"start", "start_here", "sd_save"})
+NEEDS_PROGRAM |= {"outline"}  # issue 21: the outline of the open program
 NEEDS_CAPABILITY = {"sd_save": "sd_card", "sd_list": "sd_card", "sd_delete": "sd_card", "sd_run": "sd_card",
                     "panel": "oled_panel", "cover_switch": "cover"}
 
@@ -274,6 +277,8 @@ LABELS = {
     "sd_delete": QT_TRANSLATE_NOOP("StateTable", "Delete from SD"),
     "sd_run": QT_TRANSLATE_NOOP("StateTable", "Run from SD"),
     "mdi": QT_TRANSLATE_NOOP("StateTable", "MDI line"),
+    "jog_hold": QT_TRANSLATE_NOOP("StateTable", "Hold to jog"),
+    "outline": QT_TRANSLATE_NOOP("StateTable", "Trace outline"),
     "query": QT_TRANSLATE_NOOP("StateTable", "MDI command"),
     "connect": QT_TRANSLATE_NOOP("StateTable", "Connect"),
     "panel": QT_TRANSLATE_NOOP("StateTable", "Machine panel"),

@@ -149,11 +149,20 @@ class ControllerOps:
         start = self.planner.tail if self.state == "JOG" else self.commanded_mm
         target = list(start)
         target[k] += distance_mm
-        move = Move(-1, "line", tuple(target), feed=feed_mm_min, source=f"jog {axis}")
+        self.jog_to(start, tuple(target), feed_mm_min, f"jog {axis}")
+
+    def jog_to(self, start, target, feed_mm_min: float, source: str) -> None:
+        """Jog in a straight line from ``start`` (the commanded end) to ``target``,
+        soft-limited once homed; the caller checked the machine may move."""
+        move = Move(-1, "line", tuple(target), feed=feed_mm_min, source=source)
         if self.homed and (why := soft_limit_violation(start, move, self.profile.travel)):
             raise MotionError("SOFT_LIMIT", why)
         self.planner.add(move)
         self._set_state("JOG")
+
+    def ready_to_jog(self) -> None:
+        """Raise MotionError (COVER_OPEN, BUSY) unless the machine may start a jog now."""
+        self._ready_to_move()
 
     def _ready_to_move(self, allow_jog: bool = False) -> None:
         if self._cover:

@@ -597,6 +597,14 @@
         <translation>%1 mm</translation>
     </message>
     <message>
+        <source>Hold</source>
+        <translation>Giữ</translation>
+    </message>
+    <message>
+        <source>Jog while a button is held (Alt+4); the arrow keys and PageUp/PageDown always do</source>
+        <translation>Chạy tay khi giữ nút (Alt+4); các phím mũi tên và PageUp/PageDown luôn chạy như vậy</translation>
+    </message>
+    <message>
         <source> mm/min</source>
         <translation> mm/phút</translation>
     </message>
@@ -1267,6 +1275,10 @@
         <translation>Bước 10 mm</translation>
     </message>
     <message>
+        <source>Hold to jog</source>
+        <translation>Giữ để chạy tay</translation>
+    </message>
+    <message>
         <source>Spindle o&amp;n</source>
         <translation>&amp;Bật trục chính</translation>
     </message>
@@ -1440,6 +1452,41 @@ Nếu mất kết nối, máy giữ nguyên vị trí; kết nối lại và ch�
     <message>
         <source>Settings saved</source>
         <translation>Đã lưu cài đặt</translation>
+    </message>
+</context>
+<context>
+    <name>OutlineBox</name>
+    <message>
+        <source>Outline</source>
+        <translation>Đường bao</translation>
+    </message>
+    <message>
+        <source>Trace outline</source>
+        <translation>Chạy đường bao</translation>
+    </message>
+    <message>
+        <source>spindle off, at the job&apos;s top Z: trace where the job will cut (Pause holds it, Stop ends it)</source>
+        <translation>tắt trục chính, ở Z cao nhất của chương trình: chạy theo vùng chương trình sẽ cắt (Tạm dừng giữ lại, Dừng kết thúc)</translation>
+    </message>
+    <message>
+        <source>Convex hull</source>
+        <translation>Bao lồi</translation>
+    </message>
+    <message>
+        <source>trace the convex hull of the job instead of its bounding rectangle</source>
+        <translation>chạy theo bao lồi của chương trình thay cho hình chữ nhật bao</translation>
+    </message>
+    <message>
+        <source>No outline</source>
+        <translation>Không có đường bao</translation>
+    </message>
+    <message>
+        <source>Open a program without errors first.</source>
+        <translation>Hãy mở một chương trình không có lỗi trước.</translation>
+    </message>
+    <message>
+        <source>Outline leaves the travel</source>
+        <translation>Đường bao vượt ra ngoài hành trình</translation>
     </message>
 </context>
 <context>
@@ -2552,6 +2599,14 @@ Hình 2-D hiển thị chương trình.</translation>
     <message>
         <source>MDI line</source>
         <translation>Dòng MDI</translation>
+    </message>
+    <message>
+        <source>Hold to jog</source>
+        <translation>Giữ để chạy tay</translation>
+    </message>
+    <message>
+        <source>Trace outline</source>
+        <translation>Chạy đường bao</translation>
     </message>
     <message>
         <source>MDI command</source>
