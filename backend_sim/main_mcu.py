@@ -444,7 +444,7 @@ class MainMcu:
         flags = self.flags()
         if flags == s.flags:
             return s
-        return Status(s.boot, s.state, s.x, s.y, s.z, s.acc, s.done, s.free, s.rpm, flags, s.why)
+        return Status(s.boot, s.state, s.x, s.y, s.z, s.acc, s.done, s.free, s.rpm, flags, s.why, s.overrides)
 
     @property
     def host_connected(self) -> bool:
