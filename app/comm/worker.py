@@ -232,6 +232,10 @@ class SerialWorker(QObject):
     def stop(self) -> None:
         self.session.stop()
 
+    @Slot(str, int)
+    def set_override(self, verb: str, percent: int) -> None:
+        self.session.set_override(verb, percent)
+
     @Slot(str, float, float)
     def jog(self, axis: str, distance_mm: float, feed_mm_min: float) -> None:
         self.session.jog(axis, distance_mm, feed_mm_min)
