@@ -63,6 +63,7 @@ SLOT_NAMES = frozenset({
     "jog", "home", "upload_to_sd", "run_from_sd", "list_sd", "delete_sd",
     "resume_after_reconnect", "confirm_restart", "set_verbose_frames", "shutdown",
 })
+SLOT_NAMES |= {"set_override"}  # issue 21 (kept apart: other branches add slots above)
 PUMP_MS = 5
 IDLE_PUMP_MS = 50  # with no port open: nothing arrives, the session's timers are coarse
 READ_CHUNK = 65536

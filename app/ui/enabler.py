@@ -13,7 +13,7 @@ from __future__ import annotations
 from PySide6.QtCore import QCoreApplication
 from PySide6.QtGui import QAction
 
-from app.ui.state_table import Inputs, Verdict, decide_all
+from app.ui.state_table import OVERRIDE_CONTROLS, Inputs, Verdict, decide_all
 
 SUFFIX = "why_not_suffix"  # the property holding what apply() appended to a tooltip
 
@@ -44,6 +44,8 @@ def controls_of(window) -> dict[str, list]:
         "connect": [window.connection.button, a["connect"]],
         "panel": list(window.machine_panel.buttons.values()),
         "cover_switch": [window.machine_panel.cover],
+        **{control: [*c.overrides.controls(verb), *(a[n] for n in a if n.startswith(f"override_{verb.lower()}"))]
+           for verb, control in OVERRIDE_CONTROLS.items()},
     }
 
 

@@ -69,22 +69,25 @@ COLUMNS = {
     "sddel": "sd_delete",
     "sdrun": "sd_run",
     "mdi": "mdi",
+    "ovfd": "feed_override",
+    "ovsp": "spindle_override",
+    "ovrp": "rapid_override",
 }
 
 TABLE = """
-state        home recov start here pause resum stop jog spon spoff zero check trav sdsav sdls sddel sdrun mdi
-idle         Y    Y     h     h    .     .     Y    Y   Y    Y     h    Y     .    Y     Y    Y     h     h
-check_mode   Y    Y     Y     Y    .     .     Y    Y   Y    Y     h    Y     Y    Y     Y    Y     .     Y
-homing       .    .     .     .    Y     .     Y    .   .    .     .    .     .    .     .    .     .     .
-jog          .    .     .     .    Y     .     Y    .   .    .     .    .     .    .     .    .     .     .
-spindle      .    .     .     .    .     .     Y    .   .    Y     .    .     .    .     .    .     .     .
-run_host     .    .     .     .    Y     .     Y    .   .    .     .    .     .    .     .    .     .     .
-run_sd       .    .     .     .    Y     .     Y    .   .    .     .    .     .    .     .    .     .     .
-upload       .    .     .     .    .     .     Y    .   .    .     .    .     .    .     .    .     .     .
-hold         .    .     .     .    .     Y     Y    .   .    .     .    .     .    .     .    .     .     .
-program_stop .    .     .     .    .     Y     Y    .   .    .     .    .     .    .     .    .     .     .
-alarm        Y    Y     .     .    .     .     Y    .   .    Y     .    .     .    .     Y    .     .     .
-cover_open   .    .     .     .    Y     .     Y    .   .    Y     .    .     .    .     .    .     .     .
+state        home recov start here pause resum stop jog spon spoff zero check trav sdsav sdls sddel sdrun mdi ovfd ovsp ovrp
+idle         Y    Y     h     h    .     .     Y    Y   Y    Y     h    Y     .    Y     Y    Y     h     h   Y    Y    Y
+check_mode   Y    Y     Y     Y    .     .     Y    Y   Y    Y     h    Y     Y    Y     Y    Y     .     Y   Y    Y    Y
+homing       .    .     .     .    Y     .     Y    .   .    .     .    .     .    .     .    .     .     .   .    .    .
+jog          .    .     .     .    Y     .     Y    .   .    .     .    .     .    .     .    .     .     .   .    .    .
+spindle      .    .     .     .    .     .     Y    .   .    Y     .    .     .    .     .    .     .     .   .    Y    .
+run_host     .    .     .     .    Y     .     Y    .   .    .     .    .     .    .     .    .     .     .   Y    Y    Y
+run_sd       .    .     .     .    Y     .     Y    .   .    .     .    .     .    .     .    .     .     .   Y    Y    Y
+upload       .    .     .     .    .     .     Y    .   .    .     .    .     .    .     .    .     .     .   .    .    .
+hold         .    .     .     .    .     Y     Y    .   .    .     .    .     .    .     .    .     .     .   Y    Y    Y
+program_stop .    .     .     .    .     Y     Y    .   .    .     .    .     .    .     .    .     .     .   Y    Y    Y
+alarm        Y    Y     .     .    .     .     Y    .   .    Y     .    .     .    .     Y    .     .     .   Y    Y    Y
+cover_open   .    .     .     .    Y     .     Y    .   .    Y     .    .     .    .     .    .     .     .   Y    Y    Y
 """
 
 # Controls the link alone decides (enabled whenever the link is up, as the machine
@@ -96,6 +99,10 @@ SAFE = frozenset({"pause", "stop", "spindle_off"})
 NEEDS_PROGRAM = frozenset({"start", "start_here", "sd_save"})
 NEEDS_CAPABILITY = {"sd_save": "sd_card", "sd_list": "sd_card", "sd_delete": "sd_card", "sd_run": "sd_card",
                     "panel": "oled_panel", "cover_switch": "cover"}
+# The overrides (issue 21): the control of each ``R`` override verb; set in any state the
+# machine takes them in, except while a homing, a jog or an upload has the machine.
+OVERRIDE_CONTROLS = {"FEED": "feed_override", "SPINDLE": "spindle_override", "RAPID": "rapid_override"}
+NEEDS_CAPABILITY.update(dict.fromkeys(OVERRIDE_CONTROLS.values(), "overrides"))
 
 
 def _parse(table: str) -> tuple[tuple[str, ...], dict[Machine, dict[str, str]]]:
@@ -146,6 +153,7 @@ CAPABILITY_REASONS = {
     "sd_card": QT_TRANSLATE_NOOP("StateTable", "this machine has no SD card"),
     "oled_panel": QT_TRANSLATE_NOOP("StateTable", "this machine has no panel of its own"),
     "cover": QT_TRANSLATE_NOOP("StateTable", "this machine has no cover switch"),
+    "overrides": QT_TRANSLATE_NOOP("StateTable", "this machine takes no overrides"),
 }
 
 
@@ -275,4 +283,7 @@ LABELS = {
     "connect": QT_TRANSLATE_NOOP("StateTable", "Connect"),
     "panel": QT_TRANSLATE_NOOP("StateTable", "Machine panel"),
     "cover_switch": QT_TRANSLATE_NOOP("StateTable", "Cover switch"),
+    "feed_override": QT_TRANSLATE_NOOP("StateTable", "Feed override"),
+    "spindle_override": QT_TRANSLATE_NOOP("StateTable", "Spindle override"),
+    "rapid_override": QT_TRANSLATE_NOOP("StateTable", "Rapid override"),
 }
