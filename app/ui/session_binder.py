@@ -215,6 +215,8 @@ class SessionBinder(QObject):
 
     def on_status(self, event) -> None:
         self.status = event
+        if self.tracker is not None and event.overrides is not None:
+            self.tracker.set_feed(event.overrides[0] / 100.0, time.monotonic())
         measured = event.position
         commanded = measured
         if self.job is not None and self.state in JOB:
