@@ -117,3 +117,36 @@ def test_an_override_repeat_is_answered_again_and_a_reset_clears_them(sim, host)
     host.ok("RESET")
     status = host.wait(lambda f: isinstance(f, Status) and f.overrides == (100, 100, 100))
     assert status.overrides == (100, 100, 100)
+
+
+def press(sim, *buttons):
+    for button in buttons:
+        sim.panel.press(button)
+        sim.run_for(0.05)
+
+
+def test_the_oled_menu_sets_the_overrides_of_an_sd_job_and_the_host_sees_them(sim, host, tmp_path):
+    (tmp_path / "sd" / "long.nc").write_text("G01 X100 F400\nG00 X0\n")
+    host.home()
+    host.ok("SD RUN long.nc")
+    assert sim.run_until(lambda: host.tick() or sim.cnc.mc.state == "RUN" and sim.cnc.mc.measured_mm[0] > 3, 20)
+    planner = sim.cnc.mc.planner
+    press(sim, "OK", *["DOWN"] * 5, "OK")
+    assert sim.panel.oled_text()[0] == "OVERRIDES"
+    assert [row.split() for row in sim.panel.oled_text()[2:5]] == [["Spindle", "100%"], ["Rapid", "100%"],
+                                                                    ["Reset", "all"]]
+    assert sim.panel.oled_text()[1].split() == ["Feed", "100%"]
+    press(sim, "OK", "DOWN", "DOWN", "DOWN")  # edit the feed: 70 %
+    assert sim.panel.oled_text()[1].split() == [">Feed", "70%"]
+    sim.run_for(0.2)
+    assert planner.v_raw == pytest.approx(FEED / 60 * 0.7)
+    press(sim, "EXIT", "DOWN", "DOWN", "OK", "DOWN")  # rapid one step down: 50 %
+    assert sim.cnc.mc.overrides.as_tuple() == (70, 100, 50)
+    assert host.wait(lambda f: isinstance(f, Status) and f.overrides == (70, 100, 50)).has("S")
+    override(host, "FEED", 150)  # the host's own override during the SD job
+    sim.run_for(0.2)
+    assert planner.v_raw == pytest.approx(planner.max_feed)
+    press(sim, "EXIT", "DOWN", "OK")  # Reset all
+    assert sim.cnc.mc.overrides.as_tuple() == (100, 100, 100)
+    press(sim, "EXIT")
+    assert sim.panel.oled_text()[0] == "MENU"
