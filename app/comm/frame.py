@@ -218,7 +218,8 @@ class Status(Frame):
         ovr = "" if self.overrides is None else " " + "/".join(map(str, self.overrides))
         return (
             f"S {self.boot} {self.state} {self.x:.3f} {self.y:.3f} {self.z:.3f} "
-            f"{self.acc} {self.done} {self.free} {self.rpm} {self.flags or NO_FLAGS} {self.why or NO_FLAGS}{ovr}"
+            f"{self.acc} {self.done} {self.free} {self.rpm} {self.flags or NO_FLAGS} {self.why or NO_FLAGS}"
+            f"{ovr}"
         )
 
     def has(self, flag: str) -> bool:

@@ -17,9 +17,9 @@ from PySide6.QtWidgets import (
 )
 
 from app.ui.jog_panel import JogPanel
+from app.ui.numbers import integer
 from app.ui.overrides_panel import VERBS as OVERRIDE_VERBS
 from app.ui.overrides_panel import OverridesPanel
-from app.ui.numbers import integer
 
 # key: (label, tooltip), translated in the "MachineControls" context.
 BUTTON_TEXTS = {

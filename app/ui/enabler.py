@@ -44,9 +44,13 @@ def controls_of(window) -> dict[str, list]:
         "connect": [window.connection.button, a["connect"]],
         "panel": list(window.machine_panel.buttons.values()),
         "cover_switch": [window.machine_panel.cover],
-        **{control: [*c.overrides.controls(verb), *(a[n] for n in a if n.startswith(f"override_{verb.lower()}"))]
+        **{control: [*c.overrides.controls(verb), *_actions_of(a, f"override_{verb.lower()}_")]
            for verb, control in OVERRIDE_CONTROLS.items()},
     }
+
+
+def _actions_of(actions: dict, prefix: str) -> list:
+    return [action for name, action in actions.items() if name.startswith(prefix)]
 
 
 def apply(window, inputs: Inputs) -> dict[str, Verdict]:

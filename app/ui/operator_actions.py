@@ -21,8 +21,7 @@ from app.ui.program.summary import device_count
 from app.ui.recent import add_recent
 from app.ui.settings.dialog import SettingsDialog
 from app.ui.settings.store import FILE_NAME, machine_settings, save_settings
-from app.ui.state_table import LABELS, decide
-from app.ui.state_table import OVERRIDE_CONTROLS
+from app.ui.state_table import LABELS, OVERRIDE_CONTROLS, decide
 
 
 class OperatorActions(QObject):

@@ -72,7 +72,8 @@ class OverridesPanel(QGroupBox):
         grid.addWidget(self.names["RAPID"], row, 0)
         self.rapid_group = QButtonGroup(self)
         for col, percent in enumerate(RAPIDS):
-            button = self._button("RAPID", f"{percent} %", lambda _=False, p=percent: self.request("RAPID", p))
+            send = lambda _=False, p=percent: self.request("RAPID", p)  # noqa: E731
+            button = self._button("RAPID", f"{percent} %", send)
             button.setCheckable(True)
             button.setChecked(percent == 100)
             self.rapid_group.addButton(button, percent)
@@ -123,9 +124,10 @@ class OverridesPanel(QGroupBox):
 
     def _slid(self, verb: str, value: int) -> None:
         self.values[verb].setText(f"{value} %")
-        if not self.sliders[verb].isSliderDown() and self.sliders[verb].property("syncing") is not True:
-            if self._asked.get(verb, (None,))[0] != value:  # keyboard or wheel on the slider
-                self.request(verb, value)
+        slider = self.sliders[verb]
+        by_hand = not slider.isSliderDown() and slider.property("syncing") is not True
+        if by_hand and self._asked.get(verb, (None,))[0] != value:  # keyboard or wheel on the slider
+            self.request(verb, value)
 
     def _set_control(self, verb: str, percent: int) -> None:
         if verb == "RAPID":
@@ -161,5 +163,7 @@ class OverridesPanel(QGroupBox):
             return
         feed, spindle, rapid = self._reported
         text = self.tr("Machine: feed %1 %, spindle %2 %, rapid %3 %")
-        self.machine.setText(text.replace("%1", str(feed)).replace("%2", str(spindle)).replace("%3", str(rapid)))
+        for marker, value in (("%1", feed), ("%2", spindle), ("%3", rapid)):
+            text = text.replace(marker, str(value))
+        self.machine.setText(text)
         self.machine.setProperty("default", self._reported == NO_OVERRIDES)

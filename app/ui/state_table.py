@@ -75,19 +75,38 @@ COLUMNS = {
 }
 
 TABLE = """
-state        home recov start here pause resum stop jog spon spoff zero check trav sdsav sdls sddel sdrun mdi ovfd ovsp ovrp
-idle         Y    Y     h     h    .     .     Y    Y   Y    Y     h    Y     .    Y     Y    Y     h     h   Y    Y    Y
-check_mode   Y    Y     Y     Y    .     .     Y    Y   Y    Y     h    Y     Y    Y     Y    Y     .     Y   Y    Y    Y
-homing       .    .     .     .    Y     .     Y    .   .    .     .    .     .    .     .    .     .     .   .    .    .
-jog          .    .     .     .    Y     .     Y    .   .    .     .    .     .    .     .    .     .     .   .    .    .
-spindle      .    .     .     .    .     .     Y    .   .    Y     .    .     .    .     .    .     .     .   .    Y    .
-run_host     .    .     .     .    Y     .     Y    .   .    .     .    .     .    .     .    .     .     .   Y    Y    Y
-run_sd       .    .     .     .    Y     .     Y    .   .    .     .    .     .    .     .    .     .     .   Y    Y    Y
-upload       .    .     .     .    .     .     Y    .   .    .     .    .     .    .     .    .     .     .   .    .    .
-hold         .    .     .     .    .     Y     Y    .   .    .     .    .     .    .     .    .     .     .   Y    Y    Y
-program_stop .    .     .     .    .     Y     Y    .   .    .     .    .     .    .     .    .     .     .   Y    Y    Y
-alarm        Y    Y     .     .    .     .     Y    .   .    Y     .    .     .    .     Y    .     .     .   Y    Y    Y
-cover_open   .    .     .     .    Y     .     Y    .   .    Y     .    .     .    .     .    .     .     .   Y    Y    Y
+state        home recov start here pause resum stop jog spon spoff zero check trav sdsav sdls sddel sdrun mdi
+idle         Y    Y     h     h    .     .     Y    Y   Y    Y     h    Y     .    Y     Y    Y     h     h
+check_mode   Y    Y     Y     Y    .     .     Y    Y   Y    Y     h    Y     Y    Y     Y    Y     .     Y
+homing       .    .     .     .    Y     .     Y    .   .    .     .    .     .    .     .    .     .     .
+jog          .    .     .     .    Y     .     Y    .   .    .     .    .     .    .     .    .     .     .
+spindle      .    .     .     .    .     .     Y    .   .    Y     .    .     .    .     .    .     .     .
+run_host     .    .     .     .    Y     .     Y    .   .    .     .    .     .    .     .    .     .     .
+run_sd       .    .     .     .    Y     .     Y    .   .    .     .    .     .    .     .    .     .     .
+upload       .    .     .     .    .     .     Y    .   .    .     .    .     .    .     .    .     .     .
+hold         .    .     .     .    .     Y     Y    .   .    .     .    .     .    .     .    .     .     .
+program_stop .    .     .     .    .     Y     Y    .   .    .     .    .     .    .     .    .     .     .
+alarm        Y    Y     .     .    .     .     Y    .   .    Y     .    .     .    .     Y    .     .     .
+cover_open   .    .     .     .    Y     .     Y    .   .    Y     .    .     .    .     .    .     .     .
+"""
+
+# The overrides' columns (issue 21), kept in a table of their own (the one above is as wide
+# as a line may be): the machine takes them in any state; not while a homing, a jog or an
+# upload has it (the spindle one also while the spindle changes speed).
+OVERRIDE_TABLE = """
+state        ovfd ovsp ovrp
+idle         Y    Y    Y
+check_mode   Y    Y    Y
+homing       .    .    .
+jog          .    .    .
+spindle      .    Y    .
+run_host     Y    Y    Y
+run_sd       Y    Y    Y
+upload       .    .    .
+hold         Y    Y    Y
+program_stop Y    Y    Y
+alarm        Y    Y    Y
+cover_open   Y    Y    Y
 """
 
 # Controls the link alone decides (enabled whenever the link is up, as the machine
@@ -119,6 +138,10 @@ def _parse(table: str) -> tuple[tuple[str, ...], dict[Machine, dict[str, str]]]:
 
 
 TABLE_CONTROLS, CELLS = _parse(TABLE)
+_more, _more_cells = _parse(OVERRIDE_TABLE)
+TABLE_CONTROLS += _more
+for _machine, _row in _more_cells.items():
+    CELLS[_machine].update(_row)
 CONTROLS = (*TABLE_CONTROLS, *LINK_ONLY, *ALWAYS, "panel", "cover_switch")
 
 # Why a control is not allowed, in the operator's words ("StateTable" context).

@@ -75,7 +75,8 @@ class ControllerOps:
     def spun_up(self) -> bool:
         """While ``resume`` waits for the spindle: True once at speed (the job goes on)."""
         rpm, since = self.spin_up
-        if not (self.spindle.ready(self.now_ms, self.overrides.spindle_rpm(rpm)) or self.now_ms - since > _SPINDLE_MAX_WAIT_MS):
+        ready = self.spindle.ready(self.now_ms, self.overrides.spindle_rpm(rpm))
+        if not (ready or self.now_ms - since > _SPINDLE_MAX_WAIT_MS):
             return False
         self.spin_up = None
         self.job.resume()

@@ -129,7 +129,8 @@ def test_the_oled_menu_sets_the_overrides_of_an_sd_job_and_the_host_sees_them(si
     (tmp_path / "sd" / "long.nc").write_text("G01 X100 F400\nG00 X0\n")
     host.home()
     host.ok("SD RUN long.nc")
-    assert sim.run_until(lambda: host.tick() or sim.cnc.mc.state == "RUN" and sim.cnc.mc.measured_mm[0] > 3, 20)
+    moving = lambda: host.tick() or sim.cnc.mc.state == "RUN" and sim.cnc.mc.measured_mm[0] > 3  # noqa: E731
+    assert sim.run_until(moving, 20)
     planner = sim.cnc.mc.planner
     press(sim, "OK", *["DOWN"] * 5, "OK")
     assert sim.panel.oled_text()[0] == "OVERRIDES"
