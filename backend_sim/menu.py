@@ -5,8 +5,9 @@ gains, links, notice), MENU (Run SD file, Pause, Resume, Stop, Home, Overrides),
 FILES (the SD card; OK runs the file), OVERRIDES (``menu_overrides.py``). UP/DOWN move
 the cursor, OK selects, EXIT goes back. Two screens take over the STATUS page: COVER
 OPEN (close to continue) while the cover is open, and PROGRAM STOP / TOOL CHANGE while
-a job holds at ``M00``/``M01``/``M06`` (OK continues with ``RESUME``, EXIT stops the job). ``lines()`` gives the 8 text rows
-the OLED shows now; the cursor row starts with ``oled.INVERT``.
+a job holds at ``M00``/``M01``/``M06`` (OK continues with ``RESUME``, EXIT stops the
+job). ``lines()`` gives the 8 text rows the OLED shows now; the cursor row starts with
+``oled.INVERT``.
 """
 
 from __future__ import annotations
