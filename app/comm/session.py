@@ -210,7 +210,7 @@ class Session(JobControl):
         absolute value, repeated until answered; refused when out of its range."""
         allowed = fr.OVERRIDE_RANGES.get(verb)
         if allowed is None or percent not in allowed:
-            return self._refuse("BAD_ARGS", msg("override {verb} {percent} % is out of its range",
+            return self._refuse("BAD_ARGS", msg("override {verb}: {percent} is outside its range",
                                                 verb=verb, percent=percent))
         if not self.attached:
             return self._refuse("NOT_CONNECTED", msg("not connected"))
