@@ -31,6 +31,9 @@ the modal state of the lines before it restored first (as the window's "Start he
 The heartbeat runs on the wall clock, also against ``cnc-sim --pty --speed N`` (the
 machine keeps its link timers in wall time).
 
+GRBL machines (``--driver grbl``; ``sim://grbl`` and a machine that greets as GRBL are
+found by themselves) get the commands of ``app.comm.grbl.console``.
+
 The parts: ``console_client`` (the session driven over the transport, waiting,
 commands, files), ``console_printer`` (what is printed), ``console_jobs`` (``run``,
 ``resume``, ``sd``); here the short commands, the command line and the loop over the
@@ -45,6 +48,8 @@ import sys
 
 from app.comm.console_client import ConsoleError, load_lines
 from app.comm.console_jobs import JobCommands
+from app.comm.driver import DRIVERS, kind_for_url, probe
+from app.comm.grbl.console import GrblConsole
 from app.comm.transport import open_transport
 
 __all__ = ["Console", "ConsoleError", "load_lines", "main", "run_commands", "split_commands"]
@@ -111,14 +116,18 @@ def main(argv: list[str] | None = None) -> int:
                              "(exit 4 after a hold)")
     parser.add_argument("--from", dest="from_line", type=int, metavar="LINE",
                         help="run FILE from this source line, the modal state before it restored")
+    parser.add_argument("--driver", choices=("auto", *DRIVERS), default="auto",
+                        help="the machine's protocol: this mill's frames or GRBL (auto: detect)")
     args = parser.parse_intermixed_args(argv)
     try:
         transport = open_transport(args.url)
     except (OSError, ValueError) as exc:
         print(f"cannot open {args.url}: {exc}", file=sys.stderr)
         return 3
-    console = Console(transport, quiet=args.quiet, timeout=args.timeout, at_stops=args.at_stops,
-                      from_line=args.from_line)
+    kind = args.driver if args.driver != "auto" else kind_for_url(args.url) or probe(transport) or "frame"
+    console_class = Console if kind == "frame" else GrblConsole
+    console = console_class(transport, quiet=args.quiet, timeout=args.timeout, at_stops=args.at_stops,
+                            from_line=args.from_line)
     given = split_commands(args.command)
     try:
         console.connect()

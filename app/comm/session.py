@@ -218,6 +218,16 @@ class Session(JobControl):
         self.tick()
         return True
 
+    def set_feed_override(self, percent: int) -> bool:
+        """The driver-neutral call (``SerialWorker.machine_call``): ``R FEED <percent>``."""
+        return self.set_override("FEED", percent)
+
+    def set_spindle_override(self, percent: int) -> bool:
+        return self.set_override("SPINDLE", percent)
+
+    def set_rapid_override(self, percent: int) -> bool:
+        return self.set_override("RAPID", percent)
+
     def _tick_realtime(self, now: float) -> None:
         for frame in self.urgent.expired(now):
             what = NAMES[frame.verb]

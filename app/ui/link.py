@@ -63,6 +63,7 @@ class MachineLink(QObject):
         self.controller = SerialController(self, SerialWorker(opener=self.opener))
         self.worker = self.controller.worker
         self.url = ""
+        self.driver = ""
         if profile is not None:
             _apply_link_timing(self.worker, profile.link)  # before the thread starts
         self.controller.start()
@@ -89,9 +90,12 @@ class MachineLink(QObject):
     def call(self, name: str, *args) -> None:
         self.controller.call(name, *args)
 
-    def connect_to(self, url: str) -> None:
+    def connect_to(self, url: str, driver: str | None = None) -> None:
+        """Open ``url``; ``driver`` "auto", "frame" or "grbl" (None: the last one chosen)."""
         self.url = url
-        self.controller.call("connect_to", url)
+        if driver is not None:
+            self.driver = driver
+        self.controller.call("connect_to", url, self.driver)
 
     def shutdown(self) -> None:
         self.controller.shutdown()

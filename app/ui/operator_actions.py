@@ -79,7 +79,7 @@ class OperatorActions(QObject):
 
     def connect_to(self, url: str, baud: int = 115200) -> None:
         self.w.connection.set_link("CONNECTING")
-        self.link.connect_to(url)
+        self.link.connect_to(url, self.w.connection.driver_choice())
 
     def disconnect(self) -> None:
         self.link.call("disconnect_from")
@@ -150,7 +150,7 @@ class OperatorActions(QObject):
 
     def override(self, verb: str, percent: int) -> None:
         """An override (``FEED``, ``SPINDLE``, ``RAPID``) to ``percent``, if the table allows."""
-        self._send(OVERRIDE_CONTROLS[verb], "set_override", verb, int(percent))
+        self._send(OVERRIDE_CONTROLS[verb], "machine_call", f"set_{verb.lower()}_override", (int(percent),))
 
     def zero(self, axes: str) -> None:
         self._send("zero", "send_command", f"ZERO {axes}")

@@ -1,5 +1,6 @@
-"""Port discovery for the connection bar: the simulator first, then serial ports, then
-the pseudo-terminals of ``cnc-sim --pty`` processes running on this computer."""
+"""Port discovery for the connection bar: the simulators first (the mill's, then a GRBL
+machine's), then serial ports, then the pseudo-terminals of ``cnc-sim --pty`` processes
+running on this computer."""
 
 from __future__ import annotations
 
@@ -15,6 +16,10 @@ def _simulator() -> tuple[str, str]:
     return "sim://", QCoreApplication.translate("Ports", "Built-in simulator (sim://)")
 
 
+def _grbl_simulator() -> tuple[str, str]:
+    return "sim://grbl", QCoreApplication.translate("Ports", "Built-in GRBL 1.1 simulator (sim://grbl)")
+
+
 def available_ports() -> list[tuple[str, str]]:
     """(url, description) pairs; never raises (a vanished port is simply not listed)."""
     try:
@@ -26,6 +31,8 @@ def available_ports() -> list[tuple[str, str]]:
     ports = [_pair(entry) for entry in found]
     if not any(url.startswith("sim://") for url, _ in ports):
         ports.insert(0, _simulator())
+    if not any(url.startswith("sim://grbl") for url, _ in ports):
+        ports.insert(1, _grbl_simulator())
     listed = {url for url, _ in ports}
     said = QCoreApplication.translate("Ports", "simulated machine (cnc-sim, process %1)")
     for path, pid in sim_ptys():

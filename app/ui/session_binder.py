@@ -65,6 +65,7 @@ class SessionBinder(QObject):
 
     def _connect(self, worker) -> None:
         worker.connected.connect(self.on_connected)
+        worker.machine_info_changed.connect(self.on_machine_info)
         worker.connect_failed.connect(self.on_connect_failed)
         worker.disconnected.connect(self.on_disconnected)
         worker.state_changed.connect(self.on_state)
@@ -114,6 +115,12 @@ class SessionBinder(QObject):
         self.w.machine_panel.set_panel(sim.panel if sim is not None and url.startswith("sim") else None)
         self.w.link.call("list_sd")
         self.refresh_enabled()
+
+    def on_machine_info(self, info) -> None:
+        """A GRBL machine's welcome and ``$I`` (the machine's own text, shown as it is)."""
+        name = "grblHAL" if info.flavour == "grblhal" else "Grbl"
+        build = info.build.split(":")[0] if info.build else ""
+        self.w.connection.set_machine_info(f"{name} {info.version}" + (f" · {build}" if build else ""))
 
     def on_connect_failed(self, text: str) -> None:
         self.w.connection.set_connected(False)
@@ -371,7 +378,8 @@ class SessionBinder(QObject):
             self.w.console.add_log("error", text, "machine")
             shown = f"{command}: {refusal_text(result.code, result.info)}"
             self.w.status.showMessage(shown, 10000)
-            if result.verb in ("HOME", "JOG", "SD", "ZERO", "SPINDLE", "SET"):
+            lacks = result.code == "UNSUPPORTED"  # what a GRBL machine has not: logged, no box
+            if result.verb in ("HOME", "JOG", "SD", "ZERO", "SPINDLE", "SET") and not lacks:
                 self.w.notifier.warning(self.tr("Machine refused"), shown)
 
     # -- the ~30 Hz refresh -----------------------------------------------------------

@@ -16,6 +16,10 @@
         <translation>Máy:</translation>
     </message>
     <message>
+        <source>Protocol</source>
+        <translation>Giao thức</translation>
+    </message>
+    <message>
         <source>Disconnect</source>
         <translation>Ngắt kết nối</translation>
     </message>
@@ -95,6 +99,21 @@
     <message>
         <source>%1 error mm</source>
         <translation>lệch %1 mm</translation>
+    </message>
+</context>
+<context>
+    <name>Drivers</name>
+    <message>
+        <source>Auto</source>
+        <translation>Tự động</translation>
+    </message>
+    <message>
+        <source>This mill</source>
+        <translation>Máy này</translation>
+    </message>
+    <message>
+        <source>GRBL</source>
+        <translation>GRBL</translation>
     </message>
 </context>
 <context>
@@ -1347,6 +1366,10 @@ Nếu mất kết nối, máy giữ nguyên vị trí; kết nối lại và ch�
     <message>
         <source>Built-in simulator (sim://)</source>
         <translation>Bộ mô phỏng có sẵn (sim://)</translation>
+    </message>
+    <message>
+        <source>Built-in GRBL 1.1 simulator (sim://grbl)</source>
+        <translation>Bộ mô phỏng GRBL 1.1 có sẵn (sim://grbl)</translation>
     </message>
     <message>
         <source>simulated machine (cnc-sim, process %1)</source>
