@@ -6,8 +6,9 @@ Held, ``STOP`` on Stopped, ``JOG`` back in IDLE, ``SPINDLE`` when at speed) or `
 NOT_HOMED, SOFT_LIMIT, BUSY, COVER_OPEN, ALARM, BAD_ARGS, BAD_PARAM, BAD_SEQ,
 UNKNOWN_VERB. ``PING``/``STATUS`` answer with ``S``. ``realtime`` carries out an ``R``
 frame (HOLD, RESUME, STOP, RESET as the ``C`` verb does; JOG, JOGEND: the continuous
-jog of ``continuous_jog``), answered at once with the
-state after it. Each handler keeps the status's ``why`` (``mcu.why``): a hold or stop
+jog of ``continuous_jog``), answered at once with the state after it; an override
+frame (FEED, SPINDLE, RAPID with a percentage) sets the controller's override, in any
+state. Each handler keeps the status's ``why`` (``mcu.why``): a hold or stop
 by a command is ``HOST`` (``PANEL`` for the main MCU's own ids: its buttons; an ``R``
 frame may name its own reason), cleared by ``JOB``, ``HOME`` and a ``RESUME`` taken.
 """
@@ -39,7 +40,11 @@ def realtime(mcu, frame: RealtimeCommand) -> None:
     """An ``R`` frame: act as its ``C`` verb at once; ``O <id> <VERB> <state>`` or ``E``."""
     cmd = Command(frame.id, frame.verb, frame.args)
     try:
-        _REALTIME[frame.verb](mcu, cmd, frame.why or _source(cmd))
+        if frame.percent is not None:  # an override (FEED, SPINDLE, RAPID): any state
+            mcu.mc.set_override(frame.verb, frame.percent)
+            mcu.send_status()  # the new value shows in the status at once
+        else:
+            _REALTIME[frame.verb](mcu, cmd, frame.why or _source(cmd))
     except Refused as exc:
         mcu.send(Error(frame.id, exc.code, exc.text))
     except MotionError as exc:

@@ -418,7 +418,8 @@ class CncMcu:
         x, y, z = (pos[k] - self.offset[k] for k in range(3))
         state = "HOLD" if self.mc.waiting is not None else self.mc.state
         return Status(self.boot_id, state, x, y, z, self.job.acc, self.job.done,
-                      self.free_slots(), int(round(self.mc.spindle_rpm)), self.flags(), self.why)
+                      self.free_slots(), int(round(self.mc.spindle_rpm)), self.flags(), self.why,
+                      self.mc.overrides.as_tuple())
 
     def send_status(self) -> None:
         self.send(self.status())

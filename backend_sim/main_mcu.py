@@ -222,10 +222,11 @@ class MainMcu:
             self._before_reset(frame)
         self._urgent_down(frame)
 
-    def send_urgent_own(self, verb: str, why: str) -> None:
-        """The main MCU's own ``R`` frame (host lost, panel), with the reason it holds."""
+    def send_urgent_own(self, verb: str, why: str = "", percent: int | None = None) -> None:
+        """The main MCU's own ``R`` frame (host lost, panel), with the reason it holds, or
+        an override's ``percent`` (the OLED's overrides page)."""
         self.own_id += 1
-        self._urgent_down(RealtimeCommand(self.own_id, verb, why))
+        self._urgent_down(RealtimeCommand(self.own_id, verb, why, percent=percent))
 
     def _urgent_down(self, frame: RealtimeCommand) -> None:
         raw = encode_fit(frame)
@@ -444,7 +445,7 @@ class MainMcu:
         flags = self.flags()
         if flags == s.flags:
             return s
-        return Status(s.boot, s.state, s.x, s.y, s.z, s.acc, s.done, s.free, s.rpm, flags, s.why)
+        return Status(s.boot, s.state, s.x, s.y, s.z, s.acc, s.done, s.free, s.rpm, flags, s.why, s.overrides)
 
     @property
     def host_connected(self) -> bool:

@@ -1,12 +1,13 @@
 """The OLED pages and the button menu of the main MCU, usable with no host at all.
 
 Pages (explicit ``Page`` enum): STATUS (state, flags, X/Y/Z, measured spindle rpm, PID
-gains, links, notice), MENU (Run SD file, Pause, Resume, Stop, Home), FILES (the SD
-card; OK runs the file). UP/DOWN move the cursor, OK selects, EXIT goes back. Two
-screens take over the STATUS page: COVER OPEN (close to continue) while the cover is
-open, and PROGRAM STOP / TOOL CHANGE while a job holds at ``M00``/``M01``/``M06``
-(OK continues with ``RESUME``, EXIT stops the job). ``lines()`` gives the 8 text rows
-the OLED shows now; the cursor row starts with ``oled.INVERT``.
+gains, links, notice), MENU (Run SD file, Pause, Resume, Stop, Home, Overrides),
+FILES (the SD card; OK runs the file), OVERRIDES (``menu_overrides.py``). UP/DOWN move
+the cursor, OK selects, EXIT goes back. Two screens take over the STATUS page: COVER
+OPEN (close to continue) while the cover is open, and PROGRAM STOP / TOOL CHANGE while
+a job holds at ``M00``/``M01``/``M06`` (OK continues with ``RESUME``, EXIT stops the
+job). ``lines()`` gives the 8 text rows the OLED shows now; the cursor row starts with
+``oled.INVERT``.
 """
 
 from __future__ import annotations
@@ -15,6 +16,7 @@ import enum
 
 from app.comm.frame import Error, Frame
 from backend_sim import main_sd
+from backend_sim.menu_overrides import OverridesPage
 from backend_sim.oled import INVERT, ROWS
 from backend_sim.sd_card import SdError
 
@@ -25,10 +27,11 @@ class Page(enum.Enum):
     STATUS = "status"
     MENU = "menu"
     FILES = "files"
+    OVERRIDES = "overrides"
 
 
 class Menu:
-    ITEMS = ("Run SD file", "Pause", "Resume", "Stop", "Home")
+    ITEMS = ("Run SD file", "Pause", "Resume", "Stop", "Home", "Overrides")
 
     def __init__(self, main, cnc) -> None:
         self.main, self.cnc = main, cnc
@@ -38,12 +41,17 @@ class Menu:
         self.page = Page.STATUS
         self.cursor = 0
         self.files: list[str] = []
+        self.overrides = OverridesPage(self.main, self.cnc)
 
     # ------------------------------------------------------------------ buttons
 
     def press(self, button: str) -> None:
         if self.page is Page.STATUS and self._waiting() is not None and button in ("OK", "EXIT"):
             self._command("RESUME" if button == "OK" else "STOP")
+            return
+        if self.page is Page.OVERRIDES:
+            if not self.overrides.press(button):
+                self._back_to_menu()
             return
         _PRESS[self.page][button](self)
 
@@ -115,6 +123,8 @@ class Menu:
             if waiting is not None:
                 return self._stop_lines(waiting)
             return self._status_lines()
+        if self.page is Page.OVERRIDES:
+            return self.overrides.lines()
         title = "MENU" if self.page is Page.MENU else "SD FILES"
         items = self._items() or ["(empty)"]
         top = max(0, self.cursor - (ROWS - 2))
@@ -167,4 +177,5 @@ _ACTIONS = {
     "Resume": lambda m: m._command("RESUME"),
     "Stop": lambda m: m._command("STOP"),
     "Home": lambda m: m._command("HOME", "NORMAL"),
+    "Overrides": lambda m: setattr(m, "page", Page.OVERRIDES),
 }

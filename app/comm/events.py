@@ -33,6 +33,7 @@ class StatusEvent:
     flags: str
     time: float = 0.0
     why: str = ""  # why it holds, stopped a job short or is in ALARM ("" none or unknown)
+    overrides: tuple[int, int, int] | None = None  # feed, spindle, rapid %; None: unknown
 
     @property
     def homed(self) -> bool:

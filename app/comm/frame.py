@@ -30,6 +30,9 @@ NO_FLAGS = "-"
 REALTIME_VERBS = ("HOLD", "RESUME", "STOP", "RESET")
 JOG_VERBS = ("JOG", "JOGEND")  # continuous jog: ``R <id> JOG <dirs> <feed>``, ``R <id> JOGEND``
 JOG_DIRS = re.compile(r"(?:[XYZ][+-]){1,2}")
+OVERRIDE_RANGES = {"FEED": range(10, 201), "SPINDLE": range(50, 151), "RAPID": (25, 50, 100)}
+"""Override verbs of the ``R`` frame and the percentages each takes (docs/protocol.md)."""
+NO_OVERRIDES = (100, 100, 100)
 WHY_CODES = ("HOST", "PANEL", "COVER", "LINK", "UART", "PROG", "SOFT", "LINE", "LIMIT", "FAULT")
 """Why the machine holds, stopped a job short or is in ALARM (``Status.why``); ``-``: none."""
 
@@ -129,10 +132,12 @@ class RealtimeCommand(Frame):
     id: int
     verb: str
     why: str = ""
-    args: tuple[str, ...] = ()
+    args: tuple[str, ...] = ()  # the continuous jog's directions and feed
+    percent: int | None = None  # the override verbs' value (FEED, SPINDLE, RAPID)
 
     def body(self) -> str:
-        return _join("R", str(self.id), self.verb, *self.args, self.why)
+        pct = "" if self.percent is None else str(self.percent)
+        return _join("R", str(self.id), self.verb, *self.args, self.why, pct)
 
 
 @dataclass(frozen=True)
@@ -212,11 +217,14 @@ class Status(Frame):
     rpm: int
     flags: str = ""
     why: str = ""
+    overrides: tuple[int, int, int] | None = None  # feed, spindle, rapid %; None: not sent
 
     def body(self) -> str:
+        ovr = "" if self.overrides is None else " " + "/".join(map(str, self.overrides))
         return (
             f"S {self.boot} {self.state} {self.x:.3f} {self.y:.3f} {self.z:.3f} "
             f"{self.acc} {self.done} {self.free} {self.rpm} {self.flags or NO_FLAGS} {self.why or NO_FLAGS}"
+            f"{ovr}"
         )
 
     def has(self, flag: str) -> bool:
@@ -281,7 +289,7 @@ _STATUS = re.compile(
         [_BOOT.pattern.join("()"), "|".join(STATES).join("()")]
         + [_NUM.pattern.join("()")] * 3 + [_SEQ] * 2 + [_COUNT] * 2
         + [f"(-|[{FLAG_LETTERS}]+)"]
-    ) + "(?: (" + "|".join(("-",) + WHY_CODES) + "))?"
+    ) + "(?: (" + "|".join(("-",) + WHY_CODES) + r")(?: (\d{1,3})/(\d{1,3})/(\d{1,3}))?)?"
 )
 """A well-formed status body after ``S ``: the hot path; anything else is parsed field by field."""
 
@@ -333,12 +341,15 @@ def _command(rest: str) -> Command:
 
 
 def _realtime(rest: str) -> RealtimeCommand:
-    """The strict grammar of docs/protocol.md: id, one of the four verbs, an optional why."""
+    """The strict grammar of docs/protocol.md: id, one of the four verbs, an optional why;
+    or id, an override verb and its percentage within the verb's range."""
     fields = rest.split(" ")
     if len(fields) >= 2 and fields[1] in JOG_VERBS and "" not in fields:
         return _jog_frame(fields)
     if not 2 <= len(fields) <= 3 or "" in fields:
         raise FrameError("R frame needs an id, a verb and at most a why, single-spaced")
+    if fields[1] in OVERRIDE_RANGES:
+        return _override(fields)
     if fields[1] not in REALTIME_VERBS:
         raise FrameError(f"bad real-time verb {fields[1]!r}")
     why = fields[2] if len(fields) == 3 else ""
@@ -361,7 +372,30 @@ def _jog_frame(fields: list[str]) -> RealtimeCommand:
         raise FrameError(f"bad jog directions {dirs!r} (e.g. X+, X+Y-)")
     if decimal(feed, "jog feed") <= 0:
         raise FrameError(f"jog feed {feed!r} must be above 0")
-    return RealtimeCommand(rid, "JOG", "", (dirs, feed))
+    return RealtimeCommand(rid, "JOG", "", args=(dirs, feed))
+
+
+def _override(fields: list[str]) -> RealtimeCommand:
+    verb = fields[1]
+    text = fields[2] if len(fields) == 3 else ""
+    if not _PERCENT.fullmatch(text) or int(text) not in OVERRIDE_RANGES[verb]:
+        raise FrameError(f"bad {verb} override {text!r}")
+    return RealtimeCommand(_int(fields[0], "command id"), verb, percent=int(text))
+
+
+def override_percents(text: str) -> tuple[int, int, int]:
+    """A status's ``ovr`` field ``<feed>/<spindle>/<rapid>`` (each within its range)."""
+    parts = text.split("/")
+    if len(parts) != 3 or not all(_PERCENT.fullmatch(p) for p in parts):
+        raise FrameError(f"bad overrides {text!r}")
+    values = tuple(int(p) for p in parts)
+    for verb, value in zip(OVERRIDE_RANGES, values, strict=True):
+        if value not in OVERRIDE_RANGES[verb]:
+            raise FrameError(f"bad {verb} override {value} in {text!r}")
+    return values
+
+
+_PERCENT = re.compile(r"[1-9][0-9]{0,2}")
 
 
 def _ack(rest: str) -> Ack:
@@ -392,10 +426,11 @@ def _error(rest: str) -> Error:
 def _status(rest: str) -> Status:
     match = _STATUS.fullmatch(rest)
     if match:
-        boot, state, x, y, z, acc, done, free, rpm, flags, why = match.groups()
+        boot, state, x, y, z, acc, done, free, rpm, flags, why, *ovr = match.groups()
         return Status(
             boot, state, float(x), float(y), float(z), int(acc), int(done), int(free), int(rpm),
             "" if flags == NO_FLAGS else flags, "" if why in (None, NO_FLAGS) else why,
+            None if ovr[0] is None else override_percents("/".join(ovr)),
         )
     return _status_fields(rest)
 
@@ -405,6 +440,7 @@ def _status_fields(rest: str) -> Status:
     f = rest.split(" ")
     if len(f) == 10:
         f.append(NO_FLAGS)
+    ovr = override_percents(f.pop()) if len(f) == 12 else None
     f = _exact(" ".join(f), 11, "S")
     if f[10] != NO_FLAGS and f[10] not in WHY_CODES:
         raise FrameError(f"bad why {f[10]!r}")
@@ -418,7 +454,7 @@ def _status_fields(rest: str) -> Status:
     return Status(
         f[0], f[1], _num(f[2], "x"), _num(f[3], "y"), _num(f[4], "z"),
         _int(f[5], "acc", -1), _int(f[6], "done", -1), _int(f[7], "free"),
-        _int(f[8], "rpm"), flags, "" if f[10] == NO_FLAGS else f[10],
+        _int(f[8], "rpm"), flags, "" if f[10] == NO_FLAGS else f[10], ovr,
     )
 
 

@@ -73,7 +73,7 @@ class HoldToJog:
         if not self.jogging or (self._last is not None and now - self._last < KEEP_ALIVE_S - 1e-9):
             return []
         self._last = now
-        frame = RealtimeCommand(self.ids(), "JOG", "", (self.dirs, plain_feed(self.feed)))
+        frame = RealtimeCommand(self.ids(), "JOG", "", args=(self.dirs, plain_feed(self.feed)))
         self._sent.append(frame.id)
         return [frame] * COPIES
 

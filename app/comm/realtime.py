@@ -6,7 +6,9 @@ status in HOLD or ALARM: a stale IDLE or RUN status could predate it), and gives
 after ``GIVE_UP_S``. ``UrgentCommands.request(verb, now)`` queues one (a new id from the
 session's command sequence; a request of a verb already waiting is that one); ``due(now)``
 gives the frames to write now; ``on_answer(frame)`` and ``on_status(state)`` end them;
-``expired(now)`` gives those that never got an answer. A ``STOP`` drops a waiting
+``expired(now)`` gives those that never got an answer. An override (``FEED``,
+``SPINDLE``, ``RAPID`` with a percentage) asked again with another value replaces the
+waiting one under a new id: the machine takes the latest value. A ``STOP`` drops a waiting
 ``HOLD``/``RESUME`` and a ``HOLD`` a waiting ``RESUME`` (and the other way round): an
 operator's later click is the one that counts.
 """
@@ -23,7 +25,8 @@ FIRST_COPIES = 2
 GIVE_UP_S = 5.0
 CONFIRMS = {"HOLD": frozenset({"HOLD", "ALARM"})}
 NAMES = {"HOLD": "feed hold", "RESUME": "resume", "STOP": "stop", "RESET": "reset",
-         "JOGEND": "end of the jog"}
+         "JOGEND": "end of the jog",
+         "FEED": "feed override", "SPINDLE": "spindle override", "RAPID": "rapid override"}
 SUPERSEDES = {"STOP": ("HOLD", "RESUME"), "HOLD": ("RESUME",), "RESUME": ("HOLD",),
               "RESET": ("HOLD", "RESUME", "STOP")}
 
@@ -44,12 +47,13 @@ class UrgentCommands:
         self.ids = ids
         self._pending: dict[str, Urgent] = {}
 
-    def request(self, verb: str, now: float) -> RealtimeCommand:
-        """Send ``R <id> verb`` at the next ``due`` and repeat it until answered."""
+    def request(self, verb: str, now: float, percent: int | None = None) -> RealtimeCommand:
+        """Send ``R <id> verb [percent]`` at the next ``due`` and repeat it until answered."""
         for older in SUPERSEDES.get(verb, ()):
             self._pending.pop(older, None)
-        if verb not in self._pending:
-            self._pending[verb] = Urgent(RealtimeCommand(self.ids(), verb), now)
+        waiting = self._pending.get(verb)
+        if waiting is None or waiting.frame.percent != percent:
+            self._pending[verb] = Urgent(RealtimeCommand(self.ids(), verb, percent=percent), now)
         return self._pending[verb].frame
 
     def pending(self, verb: str) -> bool:

@@ -220,6 +220,29 @@ class Session(JobControl):
             self.tick()
         return True
 
+    def set_override(self, verb: str, percent: int) -> bool:
+        """``R <id> FEED|SPINDLE|RAPID <percent>`` (docs/protocol.md, "Overrides"): the
+        absolute value, repeated until answered; refused when out of its range."""
+        allowed = fr.OVERRIDE_RANGES.get(verb)
+        if allowed is None or percent not in allowed:
+            return self._refuse("BAD_ARGS", msg("override {verb}: {percent} is outside its range",
+                                                verb=verb, percent=percent))
+        if not self.attached:
+            return self._refuse("NOT_CONNECTED", msg("not connected"))
+        self.urgent.request(verb, self.clock(), int(percent))
+        self.tick()
+        return True
+
+    def set_feed_override(self, percent: int) -> bool:
+        """The driver-neutral call (``SerialWorker.machine_call``): ``R FEED <percent>``."""
+        return self.set_override("FEED", percent)
+
+    def set_spindle_override(self, percent: int) -> bool:
+        return self.set_override("SPINDLE", percent)
+
+    def set_rapid_override(self, percent: int) -> bool:
+        return self.set_override("RAPID", percent)
+
     def _tick_realtime(self, now: float) -> None:
         for frame in self.urgent.expired(now):
             what = NAMES[frame.verb]
@@ -274,7 +297,8 @@ class Session(JobControl):
 
     def _on_status(self, frame: fr.Status, now: float) -> None:
         event = StatusEvent(frame.boot, frame.state, frame.x, frame.y, frame.z, frame.acc,
-                            frame.done, frame.free, frame.rpm, frame.flags, now, frame.why)
+                            frame.done, frame.free, frame.rpm, frame.flags, now, frame.why,
+                            frame.overrides)
         self.status = event
         self.listener.on_status(event)
         old_boot = self.boot

@@ -18,6 +18,8 @@ from PySide6.QtWidgets import (
 
 from app.ui.jog_panel import JogPanel
 from app.ui.numbers import integer
+from app.ui.overrides_panel import VERBS as OVERRIDE_VERBS
+from app.ui.overrides_panel import OverridesPanel
 
 # key: (label, tooltip), translated in the "MachineControls" context.
 BUTTON_TEXTS = {
@@ -55,11 +57,14 @@ class MachineControls(QWidget):
         self.jog = JogPanel()
         layout.addWidget(self.jog)
         layout.addWidget(self._spindle_box())
+        self.overrides = OverridesPanel()
+        layout.addWidget(self.overrides)
         layout.addWidget(self._zero_box())
         layout.addStretch(1)
         self._rpm_measured: int | None = None
         self._rpm_commanded: float | None = None
-        widgets = [*self.buttons.values(), *self.jog.buttons.values(), self.check_mode, self.override_travel]
+        widgets = [*self.buttons.values(), *self.jog.buttons.values(), self.check_mode, self.override_travel,
+                   *(w for verb in OVERRIDE_VERBS for w in self.overrides.controls(verb))]
         for widget in widgets:
             widget.setEnabled(False)  # until the window's state table says otherwise
         self.retranslate_ui()

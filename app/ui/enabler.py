@@ -13,7 +13,7 @@ from __future__ import annotations
 from PySide6.QtCore import QCoreApplication
 from PySide6.QtGui import QAction
 
-from app.ui.state_table import Inputs, Verdict, decide_all
+from app.ui.state_table import OVERRIDE_CONTROLS, Inputs, Verdict, decide_all
 
 SUFFIX = "why_not_suffix"  # the property holding what apply() appended to a tooltip
 
@@ -51,7 +51,13 @@ def controls_of(window) -> dict[str, list]:
         "work_offsets": [window.dro_panel.wcs, window.dro_panel.table],
         "go_to": [window.dro_panel.go_to, window.dro_panel.go_zero],
         "custom_commands": list(window.custom_bar.buttons),
+        **{control: [*c.overrides.controls(verb), *_actions_of(a, f"override_{verb.lower()}_")]
+           for verb, control in OVERRIDE_CONTROLS.items()},
     }
+
+
+def _actions_of(actions: dict, prefix: str) -> list:
+    return [action for name, action in actions.items() if name.startswith(prefix)]
 
 
 def apply(window, inputs: Inputs) -> dict[str, Verdict]:

@@ -133,6 +133,35 @@ def _machine_menu(w, menu: QMenu, actions) -> None:
     check = _action(w, menu, QT_TRANSLATE_NOOP("Menus", "Check mode (&dry run)"),
                     w.controls.check_mode.toggle)
     actions["check"] = check
+    _override_menu(w, _menu(menu, QT_TRANSLATE_NOOP("Menus", "&Overrides")), actions)
+
+
+# The overrides' shortcuts (issue 21): brackets step the feed (Ctrl: 10 %, Alt: 1 %) and
+# Ctrl+backslash resets it; Alt with comma / full stop steps the spindle and Alt+/ resets
+# it; Ctrl+Alt+1..3 pick the rapid rate. (Chosen here, not copied from another program.)
+OVERRIDE_KEYS = (
+    ("override_feed_plus10", QT_TRANSLATE_NOOP("Menus", "Feed +10 %"), "FEED", 10, "Ctrl+]"),
+    ("override_feed_minus10", QT_TRANSLATE_NOOP("Menus", "Feed −10 %"), "FEED", -10, "Ctrl+["),
+    ("override_feed_plus1", QT_TRANSLATE_NOOP("Menus", "Feed +1 %"), "FEED", 1, "Alt+]"),
+    ("override_feed_minus1", QT_TRANSLATE_NOOP("Menus", "Feed −1 %"), "FEED", -1, "Alt+["),
+    ("override_feed_reset", QT_TRANSLATE_NOOP("Menus", "Feed 100 %"), "FEED", None, "Ctrl+\\"),
+    ("override_spindle_plus10", QT_TRANSLATE_NOOP("Menus", "Spindle +10 %"), "SPINDLE", 10, "Alt+."),
+    ("override_spindle_minus10", QT_TRANSLATE_NOOP("Menus", "Spindle −10 %"), "SPINDLE", -10, "Alt+,"),
+    ("override_spindle_reset", QT_TRANSLATE_NOOP("Menus", "Spindle 100 %"), "SPINDLE", None, "Alt+/"),
+    ("override_rapid_25", QT_TRANSLATE_NOOP("Menus", "Rapid 25 %"), "RAPID", 25, "Ctrl+Alt+1"),
+    ("override_rapid_50", QT_TRANSLATE_NOOP("Menus", "Rapid 50 %"), "RAPID", 50, "Ctrl+Alt+2"),
+    ("override_rapid_100", QT_TRANSLATE_NOOP("Menus", "Rapid 100 %"), "RAPID", 100, "Ctrl+Alt+3"),
+)
+
+
+def _override_menu(w, menu: QMenu, actions) -> None:
+    panel = w.controls.overrides
+    for name, text, verb, amount, key in OVERRIDE_KEYS:
+        if verb == "RAPID" or amount is None:
+            slot = lambda _=False, v=verb, p=amount or 100: panel.request(v, p)  # noqa: E731
+        else:
+            slot = lambda _=False, v=verb, d=amount: panel.step(v, d)  # noqa: E731
+        actions[name] = _action(w, menu, text, slot, key)
 
 
 def _view_menu(w, menu: QMenu, actions) -> None:

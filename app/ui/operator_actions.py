@@ -21,7 +21,7 @@ from app.ui.program.summary import device_count
 from app.ui.recent import add_recent
 from app.ui.settings.dialog import SettingsDialog
 from app.ui.settings.store import FILE_NAME, machine_settings, save_settings
-from app.ui.state_table import LABELS, decide
+from app.ui.state_table import LABELS, OVERRIDE_CONTROLS, decide
 
 
 class OperatorActions(QObject):
@@ -42,6 +42,7 @@ class OperatorActions(QObject):
         c.resume_requested.connect(self.resume)
         c.stop_requested.connect(self.stop)
         c.spindle_requested.connect(self.spindle)
+        c.overrides.override_requested.connect(self.override)
         c.zero_requested.connect(self.zero)
         c.check_mode_toggled.connect(self.set_check_mode)
         c.jog.jog_requested.connect(self.jog)
@@ -156,6 +157,10 @@ class OperatorActions(QObject):
         if self._send(control, "send_command", f"SPINDLE {rpm}" if rpm > 0 else "SPINDLE OFF"):
             self.w.binder.spindle_asked = float(max(rpm, 0))
             self._motion_sent("SPINDLE")
+
+    def override(self, verb: str, percent: int) -> None:
+        """An override (``FEED``, ``SPINDLE``, ``RAPID``) to ``percent``, if the table allows."""
+        self._send(OVERRIDE_CONTROLS[verb], "machine_call", f"set_{verb.lower()}_override", (int(percent),))
 
     def zero(self, axes: str) -> None:
         self._send("zero", "send_command", f"ZERO {axes}")

@@ -3,7 +3,11 @@ time from the program's estimate corrected by the rate measured so far. Time spe
 held (a program stop waiting for the operator, a feed hold) is not motion: it counts
 in the elapsed time but not in the measured rate (``hold(now)``/``release(now)``).
 ``finish(now, completed)`` stops the clock; a run that did not complete shows no
-remaining time (a stale figure would mislead)."""
+remaining time (a stale figure would mislead). The feed override (``set_feed(factor,
+now)``, from the machine's status) divides the time still to run, and the measured rate
+is taken over moving time counted at 100 % (a second at 50 % feed counts half), so an
+override changes the estimate at once and an earlier one does not skew it (dwells and
+spin-ups are scaled too: an approximation)."""
 
 from __future__ import annotations
 
@@ -45,6 +49,19 @@ class ProgressTracker:
         self._held_since: float | None = None
         self.ended: float | None = None  # when the run ended (the clock stops there)
         self.completed = False
+        self.feed = 1.0  # the feed override as a factor
+        self._feed_mark = (0.0, 0.0)  # (moving seconds, the same at 100 % feed) at the last change
+
+    def set_feed(self, factor: float, now: float) -> None:
+        """The machine's feed override (1.0 = 100 %) from ``now`` on."""
+        if factor > 0 and factor != self.feed:
+            self._feed_mark = (self.moving(now), self.nominal(now))
+            self.feed = factor
+
+    def nominal(self, now: float) -> float:
+        """Moving seconds counted at 100 % feed."""
+        moved, nominal = self._feed_mark
+        return nominal + max(self.moving(now) - moved, 0.0) * self.feed
 
     def finish(self, now: float, completed: bool) -> None:
         """The run ended: the elapsed time stops; an unfinished run has no remaining time."""
@@ -75,7 +92,7 @@ class ProgressTracker:
         elapsed = max(now - self.started, 0.0)
         if self.ended is not None and not self.completed:
             return ProgressView(self.done, self.total, elapsed, None)  # stopped: nothing remains to wait for
-        return ProgressView(self.done, self.total, elapsed, self._remaining(self.moving(now)))
+        return ProgressView(self.done, self.total, elapsed, self._remaining(self.nominal(now)))
 
     def _remaining(self, elapsed: float) -> float | None:
         if self.total == 0 or self.done >= self.total:
@@ -85,5 +102,5 @@ class ProgressTracker:
         done_est = (float(self.cumulative[self.done - 1]) if self.done > 0 else 0.0) - before
         left_est = total_est - before - done_est
         if done_est > 1.0 and elapsed > 2.0:
-            return left_est * elapsed / done_est
-        return left_est if total_est > 0 else None
+            return left_est * elapsed / done_est / self.feed
+        return left_est / self.feed if total_est > 0 else None

@@ -222,6 +222,8 @@ class SessionBinder(QObject):
 
     def on_status(self, event) -> None:
         self.status = event
+        if self.tracker is not None and event.overrides is not None:
+            self.tracker.set_feed(event.overrides[0] / 100.0, time.monotonic())
         measured = event.position
         commanded = measured
         if self.job is not None and self.state in JOB:
@@ -392,6 +394,7 @@ class SessionBinder(QObject):
             self.w.preview.set_tool(s.x, s.y)
             self.w.connection.set_machine_state(s.state, s.flags)
             self.w.controls.set_rpm(s.rpm, self.commanded_rpm())
+            self.w.controls.overrides.show_machine(s.overrides)
         now = time.monotonic()
         if self.tracker is not None and self.tracker.ended is None and int(now) != self._second:
             self._second = int(now)  # the elapsed and remaining time tick every second

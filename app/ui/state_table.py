@@ -74,6 +74,9 @@ COLUMNS = {
     "cust": "custom_commands",
     "hold": "jog_hold",
     "outl": "outline",
+    "ovfd": "feed_override",
+    "ovsp": "spindle_override",
+    "ovrp": "rapid_override",
 }
 
 TABLE = """
@@ -92,6 +95,25 @@ alarm        Y    Y     .     .    .     .     Y    .   .    Y     .    .     . 
 cover_open   .    .     .     .    Y     .     Y    .   .    Y     .    .     .    .     .    .     .     .   Y   .    .    .    .
 """
 
+# The overrides' columns (issue 21), kept in a table of their own (the one above is as wide
+# as a line may be): the machine takes them in any state; not while a homing, a jog or an
+# upload has it (the spindle one also while the spindle changes speed).
+OVERRIDE_TABLE = """
+state        ovfd ovsp ovrp
+idle         Y    Y    Y
+check_mode   Y    Y    Y
+homing       .    .    .
+jog          .    .    .
+spindle      .    Y    .
+run_host     Y    Y    Y
+run_sd       Y    Y    Y
+upload       .    .    .
+hold         Y    Y    Y
+program_stop Y    Y    Y
+alarm        Y    Y    Y
+cover_open   Y    Y    Y
+"""
+
 # Controls the link alone decides (enabled whenever the link is up, as the machine
 # answers them in every state): queries, and the connect/disconnect button always.
 LINK_ONLY = ("query",)
@@ -102,6 +124,10 @@ NEEDS_PROGRAM = frozenset({"start", "start_here", "sd_save"})
 NEEDS_PROGRAM |= {"outline"}  # issue 21: the outline of the open program
 NEEDS_CAPABILITY = {"sd_save": "sd_card", "sd_list": "sd_card", "sd_delete": "sd_card", "sd_run": "sd_card",
                     "panel": "oled_panel", "cover_switch": "cover"}
+# The overrides (issue 21): the control of each ``R`` override verb; set in any state the
+# machine takes them in, except while a homing, a jog or an upload has the machine.
+OVERRIDE_CONTROLS = {"FEED": "feed_override", "SPINDLE": "spindle_override", "RAPID": "rapid_override"}
+NEEDS_CAPABILITY.update(dict.fromkeys(OVERRIDE_CONTROLS.values(), "overrides"))
 
 
 def _parse(table: str) -> tuple[tuple[str, ...], dict[Machine, dict[str, str]]]:
@@ -118,6 +144,10 @@ def _parse(table: str) -> tuple[tuple[str, ...], dict[Machine, dict[str, str]]]:
 
 
 TABLE_CONTROLS, CELLS = _parse(TABLE)
+_more, _more_cells = _parse(OVERRIDE_TABLE)
+TABLE_CONTROLS += _more
+for _machine, _row in _more_cells.items():
+    CELLS[_machine].update(_row)
 CONTROLS = (*TABLE_CONTROLS, *LINK_ONLY, *ALWAYS, "panel", "cover_switch")
 
 # Why a control is not allowed, in the operator's words ("StateTable" context).
@@ -152,6 +182,7 @@ CAPABILITY_REASONS = {
     "sd_card": QT_TRANSLATE_NOOP("StateTable", "this machine has no SD card"),
     "oled_panel": QT_TRANSLATE_NOOP("StateTable", "this machine has no panel of its own"),
     "cover": QT_TRANSLATE_NOOP("StateTable", "this machine has no cover switch"),
+    "overrides": QT_TRANSLATE_NOOP("StateTable", "this machine takes no overrides"),
 }
 
 
@@ -286,4 +317,7 @@ LABELS = {
     "work_offsets": QT_TRANSLATE_NOOP("StateTable", "Work offsets"),
     "go_to": QT_TRANSLATE_NOOP("StateTable", "Go to position"),
     "custom_commands": QT_TRANSLATE_NOOP("StateTable", "Custom command"),
+    "feed_override": QT_TRANSLATE_NOOP("StateTable", "Feed override"),
+    "spindle_override": QT_TRANSLATE_NOOP("StateTable", "Spindle override"),
+    "rapid_override": QT_TRANSLATE_NOOP("StateTable", "Rapid override"),
 }

@@ -13,6 +13,7 @@ from backend_sim.motion import servo
 from backend_sim.motion.dialect import Move, soft_limit_violation
 from backend_sim.motion.events import Alarm, Finished, Homed, MotionError, ProgramStop, StateChanged, Stopped
 from backend_sim.motion.homing import Homing
+from backend_sim.motion.overrides import Overrides
 
 _S = {name: n for n, name in enumerate(servo.STATE)}
 _PARAMS = {"KP": ("kp", 0.0, 1e4, 1.0), "KI": ("ki", 0.0, 1e5, 1e-3), "KD": ("kd", 0.0, 1e3, 1.0)}
@@ -64,7 +65,7 @@ class ControllerOps:
         if self.cover_rpm > 0:  # the cover stopped the spindle: back to speed first
             rpm, self.cover_rpm = self.cover_rpm, 0.0
             self.spindle_target = rpm
-            self.spindle.command(self.now_ms, rpm)
+            self._drive_spindle()
             self.spin_up = (rpm, self.now_ms)
             self.wake()
             self._update_watch()
@@ -75,7 +76,8 @@ class ControllerOps:
     def spun_up(self) -> bool:
         """While ``resume`` waits for the spindle: True once at speed (the job goes on)."""
         rpm, since = self.spin_up
-        if not (self.spindle.ready(self.now_ms, rpm) or self.now_ms - since > _SPINDLE_MAX_WAIT_MS):
+        ready = self.spindle.ready(self.now_ms, self.overrides.spindle_rpm(rpm))
+        if not (ready or self.now_ms - since > _SPINDLE_MAX_WAIT_MS):
             return False
         self.spin_up = None
         self.job.resume()
@@ -237,6 +239,8 @@ class ControllerOps:
         self.brk = 0
         self.spindle.reset(self.now_ms)
         self.spindle_target = 0.0
+        self.overrides = Overrides()
+        self.planner.set_scales(1.0, 1.0)
         self._hold_here((0.0, 0.0, 0.0))
         if old not in (None, "IDLE"):
             self._events.append(StateChanged("IDLE"))
@@ -285,10 +289,25 @@ class ControllerOps:
     def spindle_command(self, rpm: float, ms: int) -> bool:
         if ms == 1:
             self.spindle_target = rpm
-            self.spindle.command(self.now_ms, rpm)
+            self._drive_spindle()
         if rpm <= 0:
             return True
-        return self.spindle.ready(self.now_ms, rpm) or ms > _SPINDLE_MAX_WAIT_MS
+        return self.spindle.ready(self.now_ms, self.overrides.spindle_rpm(rpm)) or ms > _SPINDLE_MAX_WAIT_MS
+
+    def _drive_spindle(self) -> None:
+        """Command the spindle model: the programmed speed times the spindle override."""
+        self.spindle.command(self.now_ms, self.overrides.spindle_rpm(self.spindle_target))
+
+    def set_override(self, verb: str, percent: int) -> None:
+        """``R <id> FEED|SPINDLE|RAPID <percent>``: taken at once, in any state (protocol)."""
+        self.overrides.set(verb, percent)
+        feed, rapid = self.overrides.feed / 100.0, self.overrides.rapid / 100.0
+        for source in {id(self.planner): self.planner, id(self.job): self.job}.values():
+            if hasattr(source, "set_scales"):
+                source.set_scales(feed, rapid)
+        if verb == "SPINDLE" and self.spindle_target > 0:
+            self._drive_spindle()
+        self.wake()
 
     def program_wait(self, move: Move, ms: int) -> bool:
         """A program stop's wait (``stop_of``): reported once, done when ``resume`` releases it."""

@@ -94,6 +94,8 @@ def entry(p: Planner):
         return None
     nxt = blocks[p.raw + 1] if p.raw + 1 < len(blocks) else None
     exit_v = nxt.v_entry if nxt is not None else 0.0
+    if p.braking:  # an override lowered the plan: Planner.step() brakes to it
+        return None
     if p.still >= p.window - 1:
         p.sum = p.s_raw * p.window
     return (p.s_raw, p.v_raw, p.buf, p.idx, p.sum, p.window, 1.0 / p.window, p.accel * 1e-3,

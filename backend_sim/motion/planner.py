@@ -13,6 +13,11 @@ path distance ``s`` then runs a trapezoid online (accelerate at ``a``, never abo
 makes it an S-curve with jerk <= ``jerk``. Smoothing ``s`` rather than x, y, z keeps
 every setpoint on the path. Non-motion moves (dwell, spindle, end) are barriers: the
 path stops there, the action runs, then the path continues.
+
+Overrides (docs/protocol.md, "Overrides"): ``set_scales(feed, rapid)`` scales the
+nominal speed of every block not yet finished, the one under way included, and re-runs
+the junctions and the backward pass; a speed now above the new plan comes down at the
+acceleration (no stop, no jump).
 """
 
 from __future__ import annotations
@@ -27,7 +32,8 @@ _EPS = 1e-9
 
 
 class Block:
-    __slots__ = ("move", "seg", "s0", "s1", "v_nom", "v_junc", "v_entry", "barrier", "coef", "arc")
+    __slots__ = ("move", "seg", "s0", "s1", "v_nom", "v_junc", "v_entry", "barrier", "coef", "arc",
+                 "v_cap", "vj_geom", "prev")
 
     def __init__(self, move: Move, seg: Segment | None, s0: float):
         self.move, self.seg, self.s0 = move, seg, s0
@@ -36,6 +42,8 @@ class Block:
         self.v_nom = self.v_junc = self.v_entry = 0.0
         self.coef = seg.coef if seg else None
         self.arc = bool(seg and seg.arc)
+        self.v_cap = self.vj_geom = 0.0  # arc limit; geometric junction speed
+        self.prev = None  # the block it joins (None: starts from rest)
 
 
 class Planner(FeedHold):
@@ -52,6 +60,8 @@ class Planner(FeedHold):
         self.ctx, self.events = ctx, events
         self.blocks: list[Block] = []
         self.holding = False
+        self.feed_scale = self.rapid_scale = 1.0
+        self.braking = False  # an override lowered the plan under the current speed
         self.reset_position(position)
 
     # -- queue -------------------------------------------------------------
@@ -67,6 +77,7 @@ class Planner(FeedHold):
         self.barrier_ms = 0
         self.held_flag = True
         self.holding = False
+        self.braking = False
 
     def __len__(self) -> int:
         return len(self.blocks)
@@ -86,16 +97,32 @@ class Planner(FeedHold):
 
     def _speeds(self, block: Block) -> None:
         seg = block.seg
-        v = self.rapid if block.move.kind == "rapid" else min(block.move.feed / 60.0, self.max_feed)
-        if seg.arc:
-            v = min(v, math.sqrt(self.accel * seg.radius))
-        block.v_nom = v
+        block.v_cap = math.sqrt(self.accel * seg.radius) if seg.arc else math.inf
         prev = next((b for b in reversed(self.blocks) if b.barrier or b.s1 > b.s0), None)
-        if prev is None or prev.barrier:
-            block.v_junc = 0.0  # starts from rest
-            return
-        vj = junction_speed(prev.seg, seg, self.accel, self.deviation)
-        block.v_junc = min(vj, v, prev.v_nom)
+        if prev is not None and not prev.barrier:
+            block.prev = prev
+            block.vj_geom = junction_speed(prev.seg, seg, self.accel, self.deviation)
+        self._nominal(block)
+
+    def _nominal(self, block: Block) -> None:
+        """``v_nom`` and ``v_junc`` of ``block`` under the current override scales."""
+        move = block.move
+        if move.kind == "rapid":
+            v = self.rapid * self.rapid_scale
+        else:
+            v = min(move.feed / 60.0 * self.feed_scale, self.max_feed)
+        block.v_nom = v = min(v, block.v_cap)
+        prev = block.prev
+        block.v_junc = 0.0 if prev is None else min(block.vj_geom, v, prev.v_nom)
+
+    def set_scales(self, feed: float, rapid: float) -> None:
+        """Overrides: re-plan every block from the one under way on (see the docstring)."""
+        self.feed_scale, self.rapid_scale = feed, rapid
+        for b in self.blocks[self.raw:]:
+            if b.seg is not None and b.v_nom != math.inf:
+                self._nominal(b)
+        self._backward_pass()
+        self.braking = True
 
     def _backward_pass(self) -> None:
         nxt = 0.0
@@ -171,6 +198,9 @@ class Planner(FeedHold):
         dv = self.accel * 1e-3
         v = self.v_raw - dv if self.holding else self.v_raw + dv
         v = min(v, b.v_nom, allow)
+        if self.braking and not self.holding:  # over a lowered plan: brake, never jump
+            self.braking = v < self.v_raw - dv
+            v = max(v, self.v_raw - dv)
         if v <= 0.0:
             self.v_raw = 0.0
             return

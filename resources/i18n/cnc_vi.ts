@@ -1299,6 +1299,54 @@
         <translation>Chạy t&amp;hử (không chuyển động)</translation>
     </message>
     <message>
+        <source>&amp;Overrides</source>
+        <translation>&amp;Điều chỉnh tốc độ</translation>
+    </message>
+    <message>
+        <source>Feed +10 %</source>
+        <translation>Tốc độ chạy dao +10 %</translation>
+    </message>
+    <message>
+        <source>Feed −10 %</source>
+        <translation>Tốc độ chạy dao −10 %</translation>
+    </message>
+    <message>
+        <source>Feed +1 %</source>
+        <translation>Tốc độ chạy dao +1 %</translation>
+    </message>
+    <message>
+        <source>Feed −1 %</source>
+        <translation>Tốc độ chạy dao −1 %</translation>
+    </message>
+    <message>
+        <source>Feed 100 %</source>
+        <translation>Tốc độ chạy dao 100 %</translation>
+    </message>
+    <message>
+        <source>Spindle +10 %</source>
+        <translation>Trục chính +10 %</translation>
+    </message>
+    <message>
+        <source>Spindle −10 %</source>
+        <translation>Trục chính −10 %</translation>
+    </message>
+    <message>
+        <source>Spindle 100 %</source>
+        <translation>Trục chính 100 %</translation>
+    </message>
+    <message>
+        <source>Rapid 25 %</source>
+        <translation>Chạy nhanh 25 %</translation>
+    </message>
+    <message>
+        <source>Rapid 50 %</source>
+        <translation>Chạy nhanh 50 %</translation>
+    </message>
+    <message>
+        <source>Rapid 100 %</source>
+        <translation>Chạy nhanh 100 %</translation>
+    </message>
+    <message>
         <source>&amp;Fit program</source>
         <translation>&amp;Vừa khung chương trình</translation>
     </message>
@@ -1487,6 +1535,37 @@ Nếu mất kết nối, máy giữ nguyên vị trí; kết nối lại và ch�
     <message>
         <source>Outline leaves the travel</source>
         <translation>Đường bao vượt ra ngoài hành trình</translation>
+    </message>
+</context>
+<context>
+    <name>OverridesPanel</name>
+    <message>
+        <source>Overrides</source>
+        <translation>Điều chỉnh tốc độ</translation>
+    </message>
+    <message>
+        <source>Feed</source>
+        <translation>Chạy dao</translation>
+    </message>
+    <message>
+        <source>Spindle</source>
+        <translation>Trục chính</translation>
+    </message>
+    <message>
+        <source>Rapid</source>
+        <translation>Chạy nhanh</translation>
+    </message>
+    <message>
+        <source>drag, then release to send</source>
+        <translation>kéo, rồi thả ra để gửi</translation>
+    </message>
+    <message>
+        <source>Machine: overrides not reported</source>
+        <translation>Máy: chưa báo mức điều chỉnh</translation>
+    </message>
+    <message>
+        <source>Machine: feed %1 %, spindle %2 %, rapid %3 %</source>
+        <translation>Máy: chạy dao %1 %, trục chính %2 %, chạy nhanh %3 %</translation>
     </message>
 </context>
 <context>
@@ -2529,6 +2608,10 @@ Hình 2-D hiển thị chương trình.</translation>
         <translation>máy này không có công tắc nắp che</translation>
     </message>
     <message>
+        <source>this machine takes no overrides</source>
+        <translation>máy này không nhận điều chỉnh tốc độ</translation>
+    </message>
+    <message>
         <source>Home</source>
         <translation>Về gốc máy</translation>
     </message>
@@ -2635,6 +2718,18 @@ Hình 2-D hiển thị chương trình.</translation>
     <message>
         <source>Custom command</source>
         <translation>Lệnh tự định nghĩa</translation>
+    </message>
+    <message>
+        <source>Feed override</source>
+        <translation>Điều chỉnh chạy dao</translation>
+    </message>
+    <message>
+        <source>Spindle override</source>
+        <translation>Điều chỉnh trục chính</translation>
+    </message>
+    <message>
+        <source>Rapid override</source>
+        <translation>Điều chỉnh chạy nhanh</translation>
     </message>
 </context>
 <context>

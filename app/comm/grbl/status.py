@@ -70,5 +70,6 @@ def to_status_event(status: GrblStatus, boot: str, acc: int, done: int, homed: b
         flags += "W"
     x, y, z = status.wpos
     free = status.planner_free if status.planner_free is not None else -1
+    feed, rapid, spindle = status.overrides  # GRBL's Ov order; the event's is feed, spindle, rapid
     return StatusEvent(boot, STATES.get(status.state, status.state.upper()), x, y, z, acc, done,
-                       free, int(status.rpm), flags, status.time)
+                       free, int(status.rpm), flags, status.time, overrides=(feed, spindle, rapid))
