@@ -58,6 +58,7 @@ class Ops:
     messages: list[str]  # one per PAUSE row, in order
     _starts: np.ndarray | None = field(default=None, repr=False)
     source: Source | None = None  # set for expanded programs
+    origin: tuple[float, float, float] = (0.0, 0.0, 0.0)  # where the first row starts (start.py)
 
     def __len__(self) -> int:
         return len(self.line)
@@ -67,13 +68,13 @@ class Ops:
         return self.line if self.source is None else self.source.call_line
 
     def starts(self) -> np.ndarray:
-        """Start point of every row: the previous row's end ((0, 0, 0) for the first).
+        """Start point of every row: the previous row's end (``origin`` for the first).
 
         Computed once; treat the result as read-only."""
         if self._starts is None:
             start = np.empty_like(self.end)
             if len(start):
-                start[0] = 0.0
+                start[0] = self.origin
                 start[1:] = self.end[:-1]
             self._starts = start
         return self._starts

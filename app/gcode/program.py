@@ -23,6 +23,7 @@ from app.i18n import msg
 from app.profile import MachineProfile
 
 from . import bulk, checks, normalize, runner, sniff
+from . import start as job_start
 from .diagnostics import ERROR, WARNING, Diagnostic, Report
 from .limits import program_checks
 from .moves import moves_of
@@ -31,10 +32,12 @@ from .ops import OpBuffer, Ops, Source
 from .reading import SourceError, clean_bytes, clean_text, read_source, text_problem
 from .render import render
 from .source import Lines
+from .start import StartInfo
 from .state import State
 from .toolpath import Toolpath, build
 
 TRIM_BYTES = 8 << 20  # after the scan of a file this big, free heap pages go back to the system
+ORIGIN = (0.0, 0.0, 0.0)  # where rs274 reads a program from; ``from_start`` gives the machine's
 
 
 @dataclass(repr=False)
@@ -50,6 +53,16 @@ class Program:
     plan: normalize.Plan
     _render: tuple | None = field(default=None, repr=False)
     envelope: checks.Envelope | None = field(default=None, repr=False)  # for checks.preflight
+    start: StartInfo = field(default_factory=StartInfo)  # where the job starts (start.py)
+    _again: object = field(default=None, repr=False)  # origin -> the program read from there
+
+    def from_start(self, position) -> Program:
+        """The program as a job from ``position`` (work mm, as the machine reports it):
+        itself, or read again from there when a move is relative to where the machine
+        stands (``start.relative``: G91 first moves, arcs or cycles from the start)."""
+        if self._again is None or not self.start.needs_reading_from(position):
+            return self
+        return self._again(tuple(float(v) for v in position))
 
     def __repr__(self) -> str:
         return (f"Program({self.name!r}, {len(self.lines)} lines, {len(self.toolpath)} moves, "
@@ -72,7 +85,8 @@ class Program:
         if self._render is None:
             tol = self.profile.motion.arc_tolerance_mm
             rpm = self.profile.spindle.no_load_rpm
-            self._render = render(self.ops, self.plan.count, self.plan.chords, tol, rpm)
+            free = self.start.free_rows(self.ops)
+            self._render = render(self.ops, self.plan.count, self.plan.chords, tol, rpm, free)
         return self._render
 
     @property
@@ -130,9 +144,11 @@ def _empty(name: str, message: str, profile: MachineProfile) -> Program:
     return program
 
 
-def _start_state(profile: MachineProfile, tools: dict | None) -> State:
-    """The interpreter's state before the first line: LinuxCNC's, in G54, with the tool table."""
-    start = State(tools=dict(tools or {}), arc_tolerance=profile.motion.arc_tolerance_mm)
+def _start_state(profile: MachineProfile, tools: dict | None, origin=ORIGIN) -> State:
+    """The interpreter's state before the first line: LinuxCNC's, in G54, with the tool
+    table, at ``origin`` (work mm)."""
+    start = State(pos=[float(v) for v in origin], tools=dict(tools or {}),
+                  arc_tolerance=profile.motion.arc_tolerance_mm)
     start.params.set(ACTIVE_SYSTEM, 1)  # G54, as LinuxCNC starts
     return start
 
@@ -163,12 +179,73 @@ def _expanded(lines: Lines, name: str, folder: Path | None, start: State, report
     return ops
 
 
+class _Enough(BaseException):
+    """Raised by ``_CappedBuffer`` once it holds the rows a probe asked for."""
+
+
+@dataclass
+class _CappedBuffer(OpBuffer):
+    """An ``OpBuffer`` that stops the reading (``_Enough``) once it holds ``cap`` rows."""
+
+    cap: int = 0
+    count: int = 0
+
+    def add(self, *args, **kwargs) -> None:
+        super().add(*args, **kwargs)
+        self._count(1)
+
+    def add_block(self, line, *rest) -> None:
+        super().add_block(line, *rest)
+        self._count(len(line))
+
+    def _count(self, n: int) -> None:
+        self.count += n
+        if self.count >= self.cap:
+            raise _Enough
+
+
+def _line_end(raw: bytes, count: int) -> int:
+    """Offset just past the ``count``-th newline of ``raw`` (its length if fewer)."""
+    pos = -1
+    for _ in range(count):
+        pos = raw.find(b"\n", pos + 1)
+        if pos < 0:
+            return len(raw)
+    return pos + 1
+
+
+def _prefix_reader(raw: bytes, lines: Lines, name: str, profile: MachineProfile, tools, folder, expand: bool):
+    """``start.Reader`` of this program: its first rows read from a given origin (a plain
+    program's first lines; an expanded program until it has made the rows asked for)."""
+
+    def read(origin, limit: int) -> tuple[Ops, bool]:
+        state, report = _start_state(profile, tools, origin), Report()
+        if expand:
+            from . import macro
+
+            buffer = _CappedBuffer(cap=limit)
+            try:
+                macro.expand(lines.as_list(), name, folder, state, buffer, report)
+            except _Enough:
+                return buffer.finish(), False
+            return buffer.finish(), True
+        cut = _line_end(raw, limit)
+        return _plain(Lines(data=raw[:cut]), [raw[:cut]], state, report), cut >= len(raw)
+
+    return read
+
+
 def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfile,
-               tools: dict | None = None, folder: Path | None = None) -> Program:
-    """Interpret ``lines``: the expander when the bytes in ``data`` need it, else the fast path."""
+               tools: dict | None = None, folder: Path | None = None, origin=ORIGIN) -> Program:
+    """Interpret ``lines`` from ``origin`` (work mm): the expander when the bytes in
+    ``data`` need it, else the fast path."""
     report = Report()
-    start = _start_state(profile, tools)
-    if sniff.needs_expander(data[0]):
+    start = _start_state(profile, tools, origin)
+    expand = sniff.needs_expander(data[0])
+    reader = _prefix_reader(data[0], lines, name, profile, tools, folder, expand)
+    where = job_start.probe(reader, origin)  # before the bytes are handed over
+    del reader
+    if expand:
         data.clear()
         ops = _expanded(lines, name, folder, start, report)
     else:
@@ -176,6 +253,7 @@ def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfi
         ops = _plain(lines, data, start, report)
         if big:
             _give_back_free_memory()  # the scan's many chunk-sized temporaries
+    ops.origin = tuple(float(v) for v in origin)
     ops.starts()  # computed once, before two threads read it
     checking = _in_thread(checks.run, ops, profile, lines, report)  # numpy lets both run at once
     the_plan = normalize.plan(ops, profile.motion.arc_tolerance_mm)
@@ -183,7 +261,13 @@ def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfi
     envelope = checking.join()
     program_checks(toolpath, profile, report)
     ops.forget_starts()  # the Toolpath has its own copy of the moves' starts
-    return Program(name, lines, report.finish(), ops, toolpath, profile, the_plan, envelope=envelope)
+
+
+    def again(position) -> Program:
+        return _interpret(lines, [lines.encoded()], name, profile, tools, folder, position)
+
+    return Program(name, lines, report.finish(), ops, toolpath, profile, the_plan, envelope=envelope,
+                   start=where, _again=again)
 
 
 def _give_back_free_memory() -> None:
