@@ -29,6 +29,7 @@ from .ops import ARC_CCW, ARC_CW, PLANE_AXES, Ops
 
 SHIFT = np.array([1024.0, 2048.0, 4096.0])  # the second origin's offset (mm)
 PROBE_ROWS = 512  # rows of the first probe; each further probe reads 8 times as many
+PROBE_MAX = 32_768  # past this many rows an axis still moving with the origin counts as relative
 TOLERANCE = 1e-6  # mm: a row that moved less with the shift does not depend on the start
 SAME_PLACE = 0.0005  # mm: the machine reports thousandths
 NEVER = 1 << 62  # ``known_from`` of an axis no row gives a value
@@ -96,14 +97,16 @@ def probe(read: Reader, origin) -> StartInfo:
     while True:
         ops, complete = read(origin, limit)
         shifted, complete2 = read(origin + SHIFT, limit)
-        info = _compare(ops, shifted, origin, complete and complete2)
+        info = _compare(ops, shifted, origin, complete and complete2, limit >= PROBE_MAX)
         if info is not None:
             return info
         limit *= 8
 
 
-def _compare(ops: Ops, shifted: Ops, origin: np.ndarray, complete: bool) -> StartInfo | None:
-    """The start info from two readings, or None when the rows read are too few to say."""
+def _compare(ops: Ops, shifted: Ops, origin: np.ndarray, complete: bool, last: bool) -> StartInfo | None:
+    """The start info from two readings, or None when the rows read are too few to say.
+    ``last``: say it anyway; an axis still moving with the origin at the last row read
+    is relative from there on (the job is read again from the machine's position)."""
     n = min(len(ops), len(shifted))
     same_kind = ops.kind[:n] == shifted.kind[:n]
     diverge = n if same_kind.all() else int(np.argmin(same_kind))
@@ -113,7 +116,8 @@ def _compare(ops: Ops, shifted: Ops, origin: np.ndarray, complete: bool) -> Star
     dep = np.vstack([dep, np.ones((n - diverge, 3), bool)])  # rows read differently: all depend
     # once a row's axis no longer moves with the origin, no later row's does
     known = np.array([int(np.argmin(dep[:, a])) if not dep[:, a].all() else n for a in range(3)])
-    if not complete and (known >= n).any():
+    undecided = (known >= n) & (not complete)
+    if undecided.any() and not last:
         return None  # an axis still depends on the start at the last row read: read more
     known = np.where(known >= n, NEVER, known)
     lines = ops.main_lines()
@@ -125,6 +129,8 @@ def _compare(ops: Ops, shifted: Ops, origin: np.ndarray, complete: bool) -> Star
         in_plane = np.array([a in PLANE_AXES[p][:2] for p in ops.plane[arcs].tolist()], bool)
         arcs_a = arcs[in_plane & (arcs <= known[a])] if len(arcs) else arcs
         hits = np.union1d(rows_a, arcs_a)
+        if undecided[a] and n:
+            hits = np.union1d(hits, [n - 1])
         relative.append(bool(len(hits)))
         free.append(int(min(known[a], hits[0])) if len(hits) else int(known[a]))
         first.append(int(lines[hits[0]]) if len(hits) else 0)

@@ -131,3 +131,15 @@ def test_a_first_z_move_on_the_simulator_moves_z_only(text):
     assert [line for _, line in link.executed()] == job.device_lines
     assert _position(link) == pytest.approx((143.7, 64.3, want_z), abs=0.02)
     assert job.toolpath.end[-1][2] == pytest.approx(want_z, abs=1e-6)
+
+
+def test_past_the_probe_limit_an_axis_still_moving_with_the_start_is_relative():
+    from app.gcode.start import PROBE_MAX
+
+    text = "G0 Z1\n" * (PROBE_MAX + 10) + "G0 X3\n"
+    program = load_text(text)
+    assert program.start.relative == (True, True, False)  # X, Y undecided after PROBE_MAX rows
+    assert program.device_lines[-1] == "G00 X3"
+    job = program.from_start((0.0, 7.0, 1.0))
+    assert job.device_lines[-1] == "G00 X3" and "G00 Z1 Y7" not in job.device_lines
+    assert not any("Y" in line for line in job.device_lines[: PROBE_MAX - 1])
