@@ -5,7 +5,8 @@ The first line must position (G00/G01 X Y); each later line is a line or an XY a
 has them; blank lines, ``( )`` and ``;`` comments are ignored. Errors name the
 contour's file, line and column: a word other than G0-G3/X/Y/R/I/J/N/F, an arc
 whose radius cannot reach its end, a contour that does not end where it began, one
-that crosses itself.
+that crosses itself. One full circle (``G02``/``G03`` back to its start with I J) is a
+contour.
 """
 
 from __future__ import annotations
@@ -152,8 +153,9 @@ def parse_contour(text: str, name: str = "<contour>") -> Contour:
 
 def _closed(contour: Contour, first_line: int) -> Contour:
     segs = contour.segments
-    if len(segs) < 2:
-        raise FeatureError("contour", msg("{name}: a contour needs at least two segments", name=contour.name))
+    if not segs or (len(segs) == 1 and segs[0].center is None):  # one full circle is a contour
+        raise FeatureError("contour", msg("{name}: a contour needs at least two segments or one full "
+                                          "circle", name=contour.name))
     gap = math.dist(segs[0].start, segs[-1].end)
     if gap > 0.001:
         raise FeatureError("contour", msg("{name}, line {line}: the contour is not closed: it ends at "

@@ -48,6 +48,13 @@ class Cutting:
                 msg("must be > 0 and <= 100 % (got {stepover:g})", stepover=float(self.stepover)))
         not_negative(self.finish_xy, "finish_xy")
         not_negative(self.finish_z, "finish_z")
+        require(self.finish_xy <= self.tool_diameter / 2, "finish_xy",
+                msg("must be at most the tool's radius {radius:g} (got {finish_xy:g}): the finishing pass "
+                    "takes what roughing leaves", radius=float(self.tool_diameter / 2),
+                    finish_xy=float(self.finish_xy)))
+        require(self.finish_z <= self.stepdown, "finish_z",
+                msg("must be at most the stepdown {stepdown:g} (got {finish_z:g}): the floor pass "
+                    "takes what roughing leaves", stepdown=float(self.stepdown), finish_z=float(self.finish_z)))
         require(self.finish_z < self.depth, "finish_z",
                 msg("must be less than the depth {depth:g} (got {finish_z:g})", depth=float(self.depth),
                     finish_z=float(self.finish_z)))

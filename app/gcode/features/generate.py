@@ -117,9 +117,8 @@ def _holes(feature: Holes) -> list[Move]:
         depth = cut.top
         while depth > cut.floor + 1e-9:
             target = max(cut.floor, depth - feature.peck) if feature.peck > 0 else cut.floor
-            if depth < cut.top:  # G83: back out to R, rapid down to just above the last depth
+            if depth < cut.top:  # a peck: back out above the top, feed down the drilled hole
                 path.rapid(z=cut.top + entry.GAP)
-                path.rapid(z=depth + entry.GAP)
             path.feed(z=target, f=cut.plunge_feed)
             depth = target
         if feature.dwell > 0:

@@ -21,7 +21,28 @@ from app.i18n import msg
 from .contour import CHORD_TOL, Contour
 from .cutting import Cutting
 from .errors import FeatureError, positive, require
-from .rings import quad_segs
+from .rings import MIN_AREA, centre_of, quad_segs
+
+ENTRY_ROOM = 0.05  # mm: the least width of roughing area a ramp needs (clearing.Pocket._enter)
+
+
+def _roughable(region, cut: Cutting) -> None:
+    """Refuse a pocket whose roughing area (``region`` eroded by D/2 + U) is empty or too
+    small to enter by a ramp: naming ``finish_xy`` when the allowance is what leaves
+    nothing to rough, else ``tool_diameter``."""
+    rough = region.buffer(-(cut.radius + cut.finish_xy))
+    if not rough.is_empty and rough.area > MIN_AREA and rough.length > 2 * ENTRY_ROOM:
+        return
+    deepest = region.boundary.distance(Point(centre_of(region)))  # the largest tool radius that fits
+    if cut.finish_xy > 0 and deepest - cut.radius > ENTRY_ROOM:
+        raise FeatureError("finish_xy", msg(
+            "leaves nothing to rough in this {what}: with this tool it must be below {most:.3f} "
+            "(got {finish_xy:g})", what=msg("pocket"), most=float(deepest - cut.radius - ENTRY_ROOM),
+            finish_xy=float(cut.finish_xy)))
+    raise FeatureError("tool_diameter", msg(
+        "the tool ({tool:g} mm) leaves no room to enter this pocket by a ramp or a helix: "
+        "use one below {most:.3f} mm", tool=float(cut.tool_diameter),
+        most=float(2 * (deepest - ENTRY_ROOM))))
 
 
 def _narrower(cut: Cutting, width: float, what: str) -> None:
@@ -66,6 +87,7 @@ class PocketRect:
                 msg("must be between 0 and half the smaller side, {half:g} (got {radius:g})",
                     half=float(min(self.width, self.height) / 2), radius=float(self.corner_radius)))
         _narrower(self.cut, min(self.width, self.height), msg("pocket"))
+        _roughable(self.region(), self.cut)
 
     def region(self) -> Polygon:
         shape = box(0, 0, self.width, self.height)
@@ -93,6 +115,7 @@ class PocketCircle:
     def __post_init__(self) -> None:
         positive(self.diameter, "diameter")
         _narrower(self.cut, self.diameter, msg("pocket"))
+        _roughable(self.region(), self.cut)
 
     def region(self) -> Polygon:
         r = self.diameter / 2
@@ -121,6 +144,8 @@ class Slot:
         require(self.cut.tool_diameter <= self.width, "tool_diameter",
                 msg("the tool ({tool:g} mm) is wider than the slot ({width:g} mm)",
                     tool=float(self.cut.tool_diameter), width=float(self.width)))
+        if not self.exact:
+            _roughable(self.region(), self.cut)
 
     def region(self) -> Polygon:
         r = self.width / 2
@@ -158,6 +183,8 @@ class Profile:
             said = msg("the tool ({tool:g} mm) does not fit inside the contour {name}",
                        tool=float(self.cut.tool_diameter), name=self.contour.name)
             raise FeatureError("tool_diameter", said)
+        else:
+            _roughable(self.region(), self.cut)
 
 
     def region(self) -> Polygon:
