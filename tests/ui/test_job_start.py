@@ -13,8 +13,11 @@ def _jogged(qtbot, window, tmp_path):
     for axis, distance in (("X", 14.5), ("Z", 10)):
         before = getattr(window.binder.status, axis.lower())
         window.operator.jog(axis, distance, 900)
-        qtbot.waitUntil(lambda a=axis, b=before, d=distance: abs(getattr(window.binder.status, a.lower()) - b - d)
-                        < 0.01 and window.binder.status.state == "IDLE", timeout=60_000)
+        def arrived(a=axis, b=before, d=distance):
+            status = window.binder.status
+            return abs(getattr(status, a.lower()) - b - d) < 0.01 and status.state == "IDLE"
+
+        qtbot.waitUntil(arrived, timeout=60_000)
     return window.binder.status
 
 

@@ -13,13 +13,16 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from pathlib import Path
 
 from shapely.geometry import LinearRing, Polygon
 
 from app.i18n import msg
 
 from ..lexer import lex_line
+from ..reading import SourceError, clean_bytes, read_source, text_problem
 from .errors import FeatureError
+from .ranges import COORD
 
 CHORD_TOL = 0.002  # mm, chord error when arcs become polygon edges
 
@@ -132,6 +135,10 @@ def parse_contour(text: str, name: str = "<contour>") -> Contour:
                                                              code=float(w.value)))
                 state["g"] = int(w.value)
             elif w.letter in "XYRIJ":
+                if not abs(w.value) <= COORD:
+                    raise _fail(name, line_no, w.column, msg("{letter}{value:g} is beyond {limit:g} mm",
+                                                             letter=w.letter, value=float(w.value),
+                                                             limit=COORD))
                 words[w.letter], columns[w.letter] = w.value, w.column
             elif w.letter not in "NF":
                 raise _fail(name, line_no, w.column, msg("{letter}: a contour has only G, X, Y, R, I, J",
@@ -149,6 +156,19 @@ def parse_contour(text: str, name: str = "<contour>") -> Contour:
             segments.append(seg)
             state["pos"] = seg.end
     return _closed(Contour(name, tuple(segments)), first_line)
+
+
+def read_contour(path) -> Contour:
+    """The contour in the file ``path``, after the loader's own file checks (a regular
+    file within its size, UTF-8 text without NUL bytes); ``FeatureError("contour", ...)``."""
+    try:
+        raw = clean_bytes(read_source(path))
+    except SourceError as exc:
+        raise FeatureError("contour", exc.args[0]) from None
+    problem = text_problem(raw)
+    if problem:
+        raise FeatureError("contour", msg("{path}: {problem}", path=str(path), problem=problem))
+    return parse_contour(raw.decode("utf-8"), Path(path).name)
 
 
 def _closed(contour: Contour, first_line: int) -> Contour:

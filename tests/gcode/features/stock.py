@@ -68,8 +68,8 @@ class Stock:
     def run(self, moves, start, drilling: bool = False) -> list[str]:
         """Cut ``moves`` from ``start``; the broken rules, one text per move."""
         bad = []
-        for (kind, pts), move in zip(samples(moves, start), [m for m in moves if m.kind in ("rapid", "feed", "arc")],
-                                     strict=True):
+        motion = [m for m in moves if m.kind in ("rapid", "feed", "arc")]
+        for (kind, pts), move in zip(samples(moves, start), motion, strict=True):
             a, b = pts[0], pts[-1]
             flat = math.dist(a[:2], b[:2])
             if kind == RAPID:
