@@ -16,6 +16,7 @@ the plain program's moves.
 from __future__ import annotations
 
 from .folding import Inline, Repeat, fold
+from .holes_macro import HolePattern, holes_program
 from .moves import ARC, FEED, RAPID, Move
 from .paper_macro import paper_program
 from .plain import line_of, num
@@ -92,7 +93,14 @@ def write_fanuc(moves: list[Move], dialect: str, title: str = "") -> str:
         main.append(f"G00 Z{num(first.end[2])}")
         end = (None, None, first.end[2])
     for run in _runs(moves):
-        if run[0].block is not None:
+        if isinstance(run[0].block, HolePattern):
+            written = holes_program(run, dialect, number, 7000 + 10 * (number - FIRST_SUB))
+            if written is not None:
+                main += written[0]
+                subs += written[1]
+                end, note, number = run[-1].end, None, number + 1
+                continue
+        elif run[0].block is not None:
             lines, programs = paper_program(run[0].block, dialect, number, 5000 + 100 * (number - FIRST_SUB))
             main += lines
             subs += programs

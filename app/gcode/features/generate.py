@@ -9,12 +9,14 @@ or the walls of a contour pocket) are the paper's compensated program (``profile
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 from app.profile import MachineProfile
 
 from . import entry, finish, rings
 from .clearing import Pocket
 from .cutting import Cutting
+from .holes_macro import HolePattern
 from .kinds import Face, Holes, PocketCircle, PocketRect, Profile, Slot
 from .moves import RAPID, SPINDLE, TOOL, Move, Path
 from .profile import profile_moves
@@ -124,7 +126,10 @@ def _holes(feature: Holes) -> list[Move]:
         if feature.dwell > 0:
             path.dwell(feature.dwell)
         path.rapid(z=cut.safe_z)
-    return path.moves
+    if not feature.layout:
+        return path.moves
+    form = HolePattern(feature.layout, len(feature.centres))  # the macro writers' parametric form
+    return [replace(m, block=form) for m in path.moves]
 
 
 GENERATORS = {PocketRect: _pocket, PocketCircle: _pocket, Slot: _slot, Profile: _profile,

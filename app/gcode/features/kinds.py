@@ -224,6 +224,7 @@ class Holes:
     cut: Cutting
     peck: float = 0.0
     dwell: float = 0.0
+    layout: tuple = ()  # ("circle", x, y, r, start) or ("row", x, y, pitch, angle): the macro's formula
 
     def __post_init__(self) -> None:
         require(1 <= len(self.centres) <= MAX_HOLES, "count",
@@ -244,7 +245,8 @@ def holes_circle(x: float, y: float, diameter: float, count: int, cut: Cutting,
                                                               (start_angle, "start_angle")))
     r = diameter / 2
     angles = [math.radians(start_angle + 360.0 * k / count) for k in range(count)]
-    return Holes(tuple((x + r * math.cos(a), y + r * math.sin(a)) for a in angles), cut, peck, dwell)
+    return Holes(tuple((x + r * math.cos(a), y + r * math.sin(a)) for a in angles), cut, peck, dwell,
+                 ("circle", x, y, r, start_angle))
 
 
 def holes_row(x: float, y: float, count: int, pitch: float, cut: Cutting,
@@ -255,4 +257,4 @@ def holes_row(x: float, y: float, count: int, pitch: float, cut: Cutting,
     pitch = within(pitch, "pitch") if count > 1 else 0.0
     a = math.radians(angle)
     return Holes(tuple((x + k * pitch * math.cos(a), y + k * pitch * math.sin(a)) for k in range(count)),
-                 cut, peck, dwell)
+                 cut, peck, dwell, ("row", x, y, pitch, angle))
