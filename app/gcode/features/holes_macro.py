@@ -76,7 +76,8 @@ def _template(parts: list[list[Move]]) -> list[Move] | None:
     return first
 
 
-def holes_program(moves: list[Move], dialect: str, number: int, label: int) -> tuple[list[str], list[str]] | None:
+def holes_program(moves: list[Move], dialect: str, number: int,
+                  label: int) -> tuple[list[str], list[str]] | None:
     """(main lines, subprogram lines) of a hole pattern's ``moves`` (its first move the
     rapid over the first hole at the safe height), or None when its holes differ."""
     form: HolePattern = moves[0].block
