@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import math
 
-from app.i18n import msg
+from app.i18n import N_, msg
 
 from ..limits import MAX_DWELL_S, MAX_NUMBER, MIN_FEED
 from ..motion import LIMIT_MM
@@ -58,8 +58,8 @@ def within(value, field: str) -> float:
         number = math.nan
     ok = math.isfinite(number) and (number > low if open_low else number >= low) and number <= high
     if not ok:
-        template = ("must be a number above {low:g} and at most {high:g} (got {value})" if open_low else
-                    "must be a number from {low:g} to {high:g} (got {value})")
+        template = (N_("must be a number above {low:g} and at most {high:g} (got {value})") if open_low else
+                    N_("must be a number from {low:g} to {high:g} (got {value})"))
         raise FeatureError(field, msg(template, low=float(low), high=float(high), value=_shown(value)))
     return number
 
