@@ -88,7 +88,8 @@ def test_cli_feature_and_import_speak_vietnamese(tmp_path):
     feature = subprocess.run([*run, "feature", "pocket-rect", "--x", "20", "--y", "20", "--width", "40",
                               "--height", "25", "--tool-diameter", "6", "--depth", "3", "--stepover", "120"],
                              capture_output=True, text=True, encoding="utf-8", env=env, check=False)
-    assert "cnc-gcode feature: --stepover: phải là một số lớn hơn 0 và không quá 100 (nhập 120)" in feature.stderr
+    said = "cnc-gcode feature: --stepover: phải là một số lớn hơn 0 và không quá 100 (nhập 120)"
+    assert said in feature.stderr
     imported = subprocess.run([*run, "import", str(bad)], capture_output=True, text=True, encoding="utf-8",
                               env=env, check=False)
     assert "dòng 2, cột 3: cần một số (y), gặp 'x'" in imported.stderr
