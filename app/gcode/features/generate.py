@@ -31,11 +31,16 @@ def _start(cut: Cutting, xy) -> Path:
 
 
 def _rough(path: Path, area, cut: Cutting) -> None:
+    """Every roughing layer; each ends up at the safe height over where the next begins,
+    so all layers are the same moves at their own depth (a macro loops over one)."""
     bottom = cut.floor + cut.finish_z
     levels = cut.layers(bottom) + ([cut.floor] if cut.finish_z > 0 else [])
     z_from = cut.top
     for k, z in enumerate(levels):
-        area.layer(path, z_from, z, f"layer {k + 1}/{len(levels)} z {z:.3f}")
+        note = f"layer {k + 1}/{len(levels)} z {z:.3f}"
+        area.layer(path, z_from, z, note)
+        entry.retract(path, cut)  # under the layer's last note: one block per layer
+        path.rapid(*area.entry_xy())
         z_from = z
 
 
@@ -104,6 +109,8 @@ def _face(feature: Face) -> list[Move]:
         for j, y in enumerate(rows):
             path.feed(y=y, f=cut.feed)
             path.feed(right if j % 2 == 0 else left, f=cut.feed)
+        entry.retract(path, cut)  # every layer the same moves at its depth: back over the start
+        path.rapid(left, rows[0])
         path.note = ""
     entry.retract(path, cut)
     return path.moves
