@@ -243,12 +243,15 @@ def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfi
     start = _start_state(profile, tools, origin)
     expand = sniff.needs_expander(data[0])
     reader = _prefix_reader(data[0], lines, name, profile, tools, folder, expand)
-    where = job_start.probe(reader, origin)  # before the bytes are handed over
-    del reader
     if expand:
         data.clear()
         ops = _expanded(lines, name, folder, start, report)
+        shifted = reader  # the rows read from the origin are the program's own: one reading less
+        reader = lambda at, limit: (ops, True) if np.array_equal(at, origin) else shifted(at, limit)  # noqa: E731
+        where = job_start.probe(reader, origin)
     else:
+        where = job_start.probe(reader, origin)  # before the bytes are handed over
+        del reader
         big = len(data[0]) >= TRIM_BYTES
         ops = _plain(lines, data, start, report)
         if big:
