@@ -25,7 +25,7 @@ MIN_TOOL = 0.1  # mm: the machine holds the path within 0.1 mm
 MIN_STEP = 0.01  # mm: the least stepdown, clearance or pitch (ten of the device's thousandths)
 MAX_TOOL_NUMBER = 9999
 MAX_HOLES = 10_000
-MAX_RINGS = 2_000  # rings of one roughing layer (or around an island)
+MAX_RINGS = 500  # rings of one roughing layer (or around an island): shapely unions of more take minutes
 MAX_LAYERS = 10_000
 MAX_MOVES = 2_000_000  # estimated moves of one feature
 
