@@ -16,7 +16,7 @@ POT := $(I18N)/cnc.pot
 PO := $(I18N)/vi/LC_MESSAGES/cnc.po
 MO := $(PO:.po=.mo)
 UI_SOURCES = $(shell find app/ui -name '*.py' | sort)
-CORE_SOURCES = app/i18n.py app/profile.py app/ui/settings/store.py app/ui/settings/prefs.py app/gcode app/comm
+CORE_SOURCES = app/i18n.py app/atomic.py app/profile.py app/ui/settings/store.py app/ui/settings/prefs.py app/gcode app/comm
 
 .PHONY: run test bench lint clean i18n translations bytecode
 

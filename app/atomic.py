@@ -42,3 +42,31 @@ def _sync_folder(folder: Path) -> None:
             os.fsync(fd)
         finally:
             os.close(fd)
+
+
+def set_aside(path: str | Path) -> Path | None:
+    """Rename a damaged ``path`` to ``<name>.damaged`` (a free name: ``.damaged-2``...) so
+    that it is kept for the operator and never read or overwritten again; the new path,
+    or None if it could not be moved (then it stays where it is)."""
+    path = Path(path)
+    for n in range(1, 100):
+        aside = path.with_name(path.name + (".damaged" if n == 1 else f".damaged-{n}"))
+        if os.path.lexists(aside):
+            continue
+        try:
+            os.rename(path, aside)
+        except OSError:
+            return None
+        return aside
+    return None
+
+
+def aside_note(path: str | Path, problem) -> str:
+    """``problem`` and what became of the file (set aside now), for the operator."""
+    from app.i18n import msg
+
+    aside = set_aside(path)
+    if aside is None:
+        return msg("{problem}; the defaults are used", problem=problem)
+    return msg("{problem}; the defaults are used and the file is kept as {aside}", problem=problem,
+               aside=aside.name)

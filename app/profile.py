@@ -265,8 +265,14 @@ def read_overrides(base: MachineProfile, data: Any, where: str = "") -> ProfileR
 
 
 def parse_file(path: Path, text: str) -> Any:
-    """The JSON (``.json``) or TOML data of ``text``; ProfileError if it cannot be read."""
+    """The JSON (``.json``) or TOML data of ``text``; ProfileError if it cannot be read
+    (nested deeper than ``reading.MAX_JSON_DEPTH`` included: never the parser's recursion)."""
+    from app.gcode.reading import nesting_problem
+
     kind = "JSON" if path.suffix == ".json" else "TOML"
+    deep = nesting_problem(text)
+    if deep:
+        raise ProfileError(msg("{path}: not valid {kind}: {error}", path=str(path), kind=kind, error=deep))
     try:
         return json.loads(text) if kind == "JSON" else tomllib.loads(text)
     except (json.JSONDecodeError, tomllib.TOMLDecodeError) as exc:
@@ -279,14 +285,18 @@ def parse_file(path: Path, text: str) -> Any:
 
 def read_profile(path: str | Path) -> ProfileRead:
     """The default profile with the good values of a TOML or JSON file; never raises."""
+    from app.gcode.reading import SourceError, read_config
+
     path = Path(path)
     try:
-        data = parse_file(path, path.read_text(encoding="utf-8"))
-    except (OSError, UnicodeDecodeError) as exc:
+        data = parse_file(path, read_config(path))
+    except SourceError as exc:
+        return ProfileRead(MachineProfile(), (exc.args[0],))
+    except OSError as exc:
         problem = msg("{path}: cannot read: {error}", path=str(path), error=str(exc))
         return ProfileRead(MachineProfile(), (problem,))
     except ProfileError as exc:
-        return ProfileRead(MachineProfile(), (str(exc),))
+        return ProfileRead(MachineProfile(), (exc.args[0],))
     return read_overrides(MachineProfile(), data, str(path))
 
 

@@ -4,6 +4,7 @@
 SIGINT/SIGTERM; ``--tcp PORT`` prints ``TCP 127.0.0.1:PORT`` and serves
 ``socket://127.0.0.1:PORT``. ``--speed`` sets the clock's speed factor (1 = real time).
 Fault flags set seeded per-byte error rates on the chosen hop(s) and direction(s).
+``--grbl`` serves the simulated GRBL 1.1 machine (``backend_sim.grbl``) instead.
 """
 
 from __future__ import annotations
@@ -40,10 +41,13 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--profile", metavar="FILE", help="machine profile (TOML or JSON)")
     p.add_argument("--exec-log", metavar="FILE", help="append seq<TAB>line of every executed line")
     p.add_argument("--mode", choices=("planner", "simple"), default="planner")
+    p.add_argument("--grbl", action="store_true", help="a GRBL 1.1 machine instead (backend_sim.grbl)")
     p.add_argument("--seed", type=int, default=None, help="seed of boot ids and random faults")
+    what = {"drop": "a byte dropped", "corrupt": "one bit of a byte flipped (whatever byte that makes)",
+            "duplicate": "a byte sent twice", "noise": "a burst of 1-16 random bytes 0x00-0xFF after a byte"}
     for kind in ("drop", "corrupt", "duplicate", "noise"):
         p.add_argument(f"--{kind}-rate", type=_rate, default=0.0, metavar="P",
-                       help=f"per-byte probability of a {kind} fault")
+                       help=f"per-byte probability of {what[kind]}")
     p.add_argument("--fault-hop", choices=("usb", "uart", "both"), default="usb")
     p.add_argument("--fault-direction", choices=("down", "up", "both"), default="both")
     return p
@@ -73,8 +77,13 @@ def main(argv: list[str] | None = None) -> int:
     from backend_sim.serve import PtyServer, TcpServer
     from backend_sim.simulator import Simulator
 
-    sim = Simulator(profile, sd_dir=args.sd, mode=args.mode, seed=args.seed, exec_log=args.exec_log)
-    _apply_faults(sim, args)
+    if args.grbl:
+        from backend_sim.grbl.simulator import GrblSimulator
+
+        sim = GrblSimulator(profile, seed=args.seed)
+    else:
+        sim = Simulator(profile, sd_dir=args.sd, mode=args.mode, seed=args.seed, exec_log=args.exec_log)
+        _apply_faults(sim, args)
     server = PtyServer(sim) if args.pty else TcpServer(sim, args.tcp)
     where = f"PTY {server.path}" if args.pty else f"TCP 127.0.0.1:{server.address[1]}"
     stop = threading.Event()

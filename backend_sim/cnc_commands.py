@@ -4,17 +4,22 @@ Each handler answers ``O <id> <VERB> [info]`` when the command has been carried 
 (at once, or when the motion controller reports it: ``HOME`` on Homed, ``PAUSE`` on
 Held, ``STOP`` on Stopped, ``JOG`` back in IDLE, ``SPINDLE`` when at speed) or ``E <id> <code> <text>``:
 NOT_HOMED, SOFT_LIMIT, BUSY, COVER_OPEN, ALARM, BAD_ARGS, BAD_PARAM, BAD_SEQ,
-UNKNOWN_VERB. ``PING``/``STATUS`` answer with ``S``.
+UNKNOWN_VERB. ``PING``/``STATUS`` answer with ``S``. ``realtime`` carries out an ``R``
+frame (HOLD, RESUME, STOP, RESET) as the ``C`` verb does, answered at once with the
+state after it. Each handler keeps the status's ``why`` (``mcu.why``): a hold or stop
+by a command is ``HOST`` (``PANEL`` for the main MCU's own ids: its buttons; an ``R``
+frame may name its own reason), cleared by ``JOB``, ``HOME`` and a ``RESUME`` taken.
 """
 
 from __future__ import annotations
 
-from app.comm.frame import Command, Error, FrameError, Ok, decimal
+from app.comm.frame import Command, Error, FrameError, Ok, RealtimeCommand, decimal
 from backend_sim.motion import events as ev
 from backend_sim.motion.dialect import DialectError, DialectParser
 from backend_sim.motion.events import MotionError
 
 AXES = "XYZ"
+OWN_ID0 = 1_000_000_000  # ids of the main MCU's own commands (its panel, its SD job)
 OFFSET_NAMES = ("OFFSET_X", "OFFSET_Y", "OFFSET_Z")  # GET: the work offset, machine mm
 RUNNING = frozenset({"RUN", "HOLD", "HOMING", "JOG"})
 
@@ -25,6 +30,47 @@ class Refused(Exception):
     def __init__(self, code: str, text: str = "") -> None:
         super().__init__(code, text)
         self.code, self.text = code, text
+
+
+def realtime(mcu, frame: RealtimeCommand) -> None:
+    """An ``R`` frame: act as its ``C`` verb at once; ``O <id> <VERB> <state>`` or ``E``."""
+    cmd = Command(frame.id, frame.verb)
+    try:
+        _REALTIME[frame.verb](mcu, cmd, frame.why or _source(cmd))
+    except Refused as exc:
+        mcu.send(Error(frame.id, exc.code, exc.text))
+    except MotionError as exc:
+        mcu.send(Error(frame.id, exc.code, exc.text))
+    else:
+        if frame.verb != "RESET":
+            mcu.send(Ok(frame.id, frame.verb, mcu.status().state))
+
+
+def _source(cmd: Command) -> str:
+    return "PANEL" if cmd.id >= OWN_ID0 else "HOST"
+
+
+def _hold_now(mcu, cmd: Command, why: str) -> None:
+    if mcu.mc.state in ("RUN", "JOG", "HOMING"):
+        mcu.why = why
+    mcu.mc.feed_hold()
+
+
+def _resume_now(mcu, cmd: Command, why: str) -> None:
+    _resume(mcu, cmd)
+
+
+def _stop_now(mcu, cmd: Command, why: str) -> None:
+    if mcu.job.open or mcu.mc.state != "IDLE":
+        mcu.why = why
+    mcu.stop_job()
+
+
+def _reset_now(mcu, cmd: Command, why: str) -> None:
+    _reset(mcu, cmd)
+
+
+_REALTIME = {"HOLD": _hold_now, "RESUME": _resume_now, "STOP": _stop_now, "RESET": _reset_now}
 
 
 def dispatch(mcu, cmd: Command) -> None:
@@ -92,6 +138,7 @@ def _home(mcu, cmd: Command) -> None:
         _not_running(mcu)
     mcu.job.close()
     mcu.mc.home(mode)
+    mcu.why = ""
     mcu.await_event(cmd.id, "HOME", ev.Homed, mode)
 
 
@@ -106,6 +153,7 @@ def _job(mcu, cmd: Command) -> str:
     if not mcu.check_mode:
         _homed(mcu)
     mcu.reset_parser()
+    mcu.why = ""
     mcu.job.start(int(count))
     mcu.lines.clear()
     mcu.send_status()  # before the O: no status of the last job may follow it
@@ -120,6 +168,7 @@ def _alarm_free(mcu) -> None:
 def _pause(mcu, cmd: Command) -> str | None:
     if mcu.mc.state not in ("RUN", "JOG", "HOMING"):
         return mcu.mc.state
+    mcu.why = _source(cmd)
     mcu.mc.feed_hold()
     mcu.await_event(cmd.id, "PAUSE", ev.Held)
     return None
@@ -131,6 +180,7 @@ def _resume(mcu, cmd: Command) -> str:
     _cover_closed(mcu)
     _alarm_free(mcu)
     mcu.mc.resume()
+    mcu.why = ""
     return ""
 
 
@@ -151,7 +201,7 @@ def _resume_from(mcu, cmd: Command) -> str:
 
 def _stop(mcu, cmd: Command) -> None:
     mcu.await_event(cmd.id, "STOP", ev.Stopped)
-    mcu.stop_job()
+    _stop_now(mcu, cmd, _source(cmd))
 
 
 def _reset(mcu, cmd: Command) -> None:

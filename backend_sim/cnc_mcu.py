@@ -9,18 +9,23 @@ missing: ``job_stream``), reports ``F <seq>`` cumulatively as lines finish, and 
 state change, on ``PING``/``STATUS`` and at least every 50 ms while moving. With nothing
 from the main MCU for 3 s while moving it holds (``X UART_LOST``). A refused
 line (``E - <code> <seq> <text>``) flushes the queue and ends the job. Commands are in
-``cnc_commands``. Nothing here knows about the host or the SD card.
+``cnc_commands``; ``R`` real-time commands are taken ahead of everything that arrived
+with them, once per id (``urgent.RecentIds``). The status's ``why`` says why it holds,
+stopped a job short or is in ALARM (``self.why``, set where that happens). ``!``/0x18
+at the start of a line are counted and logged, never acted on. Nothing here knows
+about the host or the SD card.
 """
 
 from __future__ import annotations
 
 import random
+from collections import Counter
 from collections.abc import Callable
 from dataclasses import dataclass
 
-from app.comm.deframer import Deframer, Dropped, Realtime
+from app.comm.deframer import Deframer, Dropped, Legacy
 from app.comm.frame import Ack as AckFrame
-from app.comm.frame import Alarm, Command, Data, Error, Finished, Frame, Log, Nak, Ok, Status
+from app.comm.frame import Alarm, Command, Data, Error, Finished, Frame, Log, Nak, Ok, RealtimeCommand, Status
 from app.profile import MachineProfile
 from backend_sim import cnc_commands, program_stops
 from backend_sim.answer_cache import AnswerCache
@@ -31,11 +36,14 @@ from backend_sim.motion import events as ev
 from backend_sim.motion.dialect import DialectError, DialectParser, soft_limit_violation
 from backend_sim.motion.events import MotionError
 from backend_sim.outgoing import encode_fit
+from backend_sim.urgent import LegacyCounter, RecentIds
 from backend_sim.wire import Wire
 
 STATUS_PERIOD_MS = 50
 CHECK_F_EVERY = 8
 MOTION_CHUNK_MS = 50
+ALARM_WHY = {"LIMIT": "LIMIT", "SOFT_LIMIT": "SOFT", "COVER_OPEN": "COVER", "UART_LOST": "UART"}
+"""An alarm's ``why`` in the status; any other alarm is ``FAULT``."""
 
 
 @dataclass
@@ -63,6 +71,8 @@ class CncMcu:
         self.cover_open = False
         self.stops = program_stops.StopSettings()
         self.answers = AnswerCache()
+        self.legacy = LegacyCounter()
+        self.taken: Counter = Counter()  # verbs carried out since power-up (``R HOLD`` for R frames)
         self.boot()
 
     # ------------------------------------------------------------------ life cycle
@@ -76,7 +86,9 @@ class CncMcu:
             self.mc.reset()
         self.mc.events()
         self.mc.cover_open = self.cover_open
-        self.rx = Deframer(realtime=True)
+        self.rx = Deframer(legacy=True)
+        self.recent = RecentIds()
+        self.why = ""
         self.job = JobStream()
         self.parser = DialectParser(self.offset, tuple(self.mc.commanded_mm))
         self.check_mode = False
@@ -106,6 +118,10 @@ class CncMcu:
     def next_due_ms(self) -> int | None:
         """When the CNC MCU next needs the clock: the next motion chunk or status."""
         partial = self.rx_ms + 501 if self.rx.pending() else None
+        said = self.legacy.next_due()
+        if said is not None:
+            said_ms = max(self.clock.now_ms + 1, int(said * 1000) + 1)
+            partial = said_ms if partial is None else min(partial, said_ms)
         if not self._busy:
             return partial
         base = self.mc_ms
@@ -130,6 +146,9 @@ class CncMcu:
 
     def service(self) -> None:
         self._drain_events()
+        said = self.legacy.report(self.clock.now)
+        if said is not None:
+            self.send(said)
         if self.rx.pending():
             self._frames(self.rx.poll(self.clock.now))
         self._busy = busy = not self.mc.idle()
@@ -143,6 +162,7 @@ class CncMcu:
         self.uart_lost = True
         if self.mc.state in ("RUN", "JOG"):
             self.mc.feed_hold()
+            self.why = "UART"
         self.send(Alarm("UART_LOST", f"nothing from the main MCU for {self.lost_ms / 1000:g} s"))
 
     # ------------------------------------------------------------------ input
@@ -154,15 +174,14 @@ class CncMcu:
         self._busy = not self.mc.idle()
 
     def _frames(self, items: list) -> None:
-        for item in items:
+        """Handle what arrived: ``R`` frames first (the fast lane), then the rest in order."""
+        urgent = [item for item in items if isinstance(item, RealtimeCommand)]
+        for item in urgent + [item for item in items if not isinstance(item, RealtimeCommand)]:
             _INPUT[type(item)](self, item)
         self._drain_events()
 
-    def _on_realtime(self, item: Realtime) -> None:
-        if item.byte == b"!":
-            self.mc.feed_hold()
-        else:
-            self.stop_job()
+    def _on_legacy(self, item: Legacy) -> None:
+        self.legacy.seen()
 
     def _on_dropped(self, item: Dropped) -> None:
         if self.job.open and self.job.bad_frame() is Verdict.NAK:
@@ -171,7 +190,9 @@ class CncMcu:
     def _on_frame(self, frame: Frame) -> None:
         self.last_frame_ms = self.clock.now_ms
         self.uart_lost = False
-        if isinstance(frame, Command):
+        if isinstance(frame, RealtimeCommand):
+            self._on_realtime_command(frame)
+        elif isinstance(frame, Command):
             self._on_command(frame)
         elif isinstance(frame, Data):
             self._on_data(frame)
@@ -184,7 +205,18 @@ class CncMcu:
                 self.tx.write(raw, self.clock.now)
             return
         self.answers.start(cmd)
+        self.taken[cmd.verb] += 1
         cnc_commands.dispatch(self, cmd)
+
+    def _on_realtime_command(self, frame: RealtimeCommand) -> None:
+        """Carry out an ``R`` frame once per id; a repeat gets its answer again."""
+        if self.recent.remembers(frame.id):
+            for raw in self.recent.answers(frame.id):
+                self.tx.write(raw, self.clock.now)
+            return
+        self.recent.start(frame.id)
+        self.taken[f"R {frame.verb}"] += 1
+        cnc_commands.realtime(self, frame)
 
     def _on_data(self, frame: Data) -> None:
         if not self.job.open:
@@ -265,6 +297,7 @@ class CncMcu:
 
     def refuse_line(self, seq: int, code: str, text: str) -> None:
         """``E - code seq text``: the line is refused, the queue flushed, the job ended."""
+        self.why = "SOFT" if code == "SOFT_LIMIT" else "LINE"
         self.send(Error(None, code, f"{seq} {text}"))
         self.stop_job()
 
@@ -296,6 +329,7 @@ class CncMcu:
         if report or last:
             self.send(Finished(self.job.done))
         if last and self.job.open:
+            self.why = ""
             self.job.close()
             self.send(Log(f"job done, {self.job.total} lines"))
             if not self.check_mode:
@@ -305,7 +339,10 @@ class CncMcu:
     def _on_alarm(self, event: ev.Alarm) -> None:
         self.send(Alarm(event.code, event.text))
         if event.code == "COVER_OPEN":
+            if self.job.open or self.mc.state != "IDLE":
+                self.why = "COVER"
             return self._cover_opened(event)
+        self.why = ALARM_WHY.get(event.code, "FAULT")
         for pending in self.pending:
             self.send(Error(pending.id, event.code, event.text))
         self.pending.clear()
@@ -313,6 +350,7 @@ class CncMcu:
         self.lines.clear()
 
     def _on_program_stop(self, event: ev.ProgramStop) -> None:
+        self.why = "PROG"
         self.send(Log(f"STOP {event.seq} {event.line}"))
         self.send_status()
 
@@ -365,7 +403,7 @@ class CncMcu:
         x, y, z = (pos[k] - self.offset[k] for k in range(3))
         state = "HOLD" if self.mc.waiting is not None else self.mc.state
         return Status(self.boot_id, state, x, y, z, self.job.acc, self.job.done,
-                      self.free_slots(), int(round(self.mc.spindle_rpm)), self.flags())
+                      self.free_slots(), int(round(self.mc.spindle_rpm)), self.flags(), self.why)
 
     def send_status(self) -> None:
         self.send(self.status())
@@ -374,6 +412,8 @@ class CncMcu:
     def send(self, frame: Frame) -> None:
         raw = encode_fit(frame)
         self.answers.record(frame, raw)
+        if isinstance(frame, Ok | Error):
+            self.recent.record(frame.id, raw)
         self.tx.write(raw, self.clock.now)
 
     def set_cover(self, is_open: bool) -> None:
@@ -385,7 +425,7 @@ class CncMcu:
 
 
 _INPUT = {cls: CncMcu._on_frame for cls in Frame.__subclasses__()}
-_INPUT.update({Realtime: CncMcu._on_realtime, Dropped: CncMcu._on_dropped})
+_INPUT.update({Legacy: CncMcu._on_legacy, Dropped: CncMcu._on_dropped})
 
 _EVENTS = {
     ev.Alarm: CncMcu._on_alarm,

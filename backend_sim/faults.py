@@ -5,16 +5,19 @@ carries: a list of ``(delay_s, bytes)`` pieces. Two kinds of faults:
 
 - one-shot frame faults, armed with ``arm(kind, frames=1, **params)`` and applied to
   the next complete line (a piece ending in ``\\n``) written: ``drop``, ``corrupt``
-  (one bit flipped in the body), ``duplicate``, ``delay`` (``seconds``; the frames
-  behind it are not held up, so they overtake it), ``reorder``
-  (held back until the next line has gone), ``noise`` (``nbytes`` of garbage and a
-  newline before it), ``truncate`` (only the first ``keep`` bytes, no newline);
+  (one bit of one byte flipped, the newline included), ``duplicate``, ``delay``
+  (``seconds``; the frames behind it are not held up, so they overtake it),
+  ``reorder`` (held back until the next line has gone), ``noise`` (``nbytes`` random
+  bytes 0x00-0xFF and a newline before it), ``truncate`` (only the first ``keep``
+  bytes, no newline);
 - seeded random per-byte rates (``set_rates``: drop, corrupt, duplicate, noise), for
-  soak tests: the same seed and traffic give the same faults.
+  soak tests and benchmarks: the same seed and traffic give the same faults.
 
-A corrupted byte never becomes ``\\n``, ``!`` or 0x18 (a flip that would is moved to
-the next bit), so noise can break frames but never stands in for a real-time byte.
-Real-time bytes written alone are never touched by frame faults.
+The model is honest (issue 18): a flip is any of the 8 bits of any byte, so it makes
+whatever byte it makes (a newline, ``!``, 0x18, any of 256); drops and duplicates hit
+any byte; a noise event inserts a burst of 1 to ``NOISE_BURST`` random bytes 0x00-0xFF
+after any byte, between frames or inside them. Nothing is spared: not newlines, not
+the CRC, not real-time frames.
 """
 
 from __future__ import annotations
@@ -26,8 +29,8 @@ from dataclasses import dataclass, field
 
 FRAME_FAULTS = ("drop", "corrupt", "duplicate", "delay", "reorder", "noise", "truncate")
 RATE_FAULTS = ("drop", "corrupt", "duplicate", "noise")
-_SPECIAL = frozenset(b"\n!\x18")
-_NOISE = bytes(b for b in range(0x20, 0x7F) if b not in b"!*")
+NOISE_BURST = 16
+"""Longest burst of random bytes one noise event of ``set_rates`` inserts."""
 
 
 @dataclass
@@ -115,7 +118,7 @@ class ChannelFaults:
         return []
 
     def _corrupt(self, line: bytes, params: dict) -> list:
-        return [(0.0, self._flip(line, self._rng.randrange(max(1, len(line) - 1))))]
+        return [(0.0, self._flip(line, self._rng.randrange(len(line))))]
 
     def _duplicate(self, line: bytes, params: dict) -> list:
         return [(0.0, line), (0.0, line)]
@@ -128,7 +131,7 @@ class ChannelFaults:
         return []
 
     def _noise(self, line: bytes, params: dict) -> list:
-        junk = bytes(self._rng.choice(_NOISE) for _ in range(int(params.get("nbytes", 8))))
+        junk = self._random_bytes(int(params.get("nbytes", 8)))
         return [(0.0, junk + b"\n" + line)]
 
     def _truncate(self, line: bytes, params: dict) -> list:
@@ -170,19 +173,17 @@ class ChannelFaults:
         if kind == "duplicate":
             return bytes((byte, byte))
         if kind == "noise":
-            return bytes((byte, self._rng.choice(_NOISE)))
+            return bytes((byte,)) + self._random_bytes(self._rng.randint(1, NOISE_BURST))
         return self._flip(bytes((byte,)), 0)
 
+    def _random_bytes(self, count: int) -> bytes:
+        """``count`` bytes drawn from all 256 values."""
+        return self._rng.randbytes(count)
+
     def _flip(self, data: bytes, index: int) -> bytes:
-        if data[index] in _SPECIAL:
-            return data
+        """Flip one of the 8 bits of byte ``index``: whatever byte that makes."""
         buf = bytearray(data)
-        bit = self._rng.randrange(7)
-        for step in range(7):
-            flipped = buf[index] ^ (1 << ((bit + step) % 7))
-            if flipped not in _SPECIAL:
-                buf[index] = flipped
-                break
+        buf[index] ^= 1 << self._rng.randrange(8)
         return bytes(buf)
 
 

@@ -1,7 +1,8 @@
 """The main MCU: relay between host (USB) and CNC MCU (UART), its own commands, watchdogs.
 
 Contract:
-- host frames: ``D`` and the commands that are not its own go down the UART; its own
+- host frames: ``D`` and the commands that are not its own go down the UART (a
+  forwarded command again every 50 ms while unanswered, for half a second); its own
   commands are ``PING``/``STATUS`` (answered with the last ``S`` of the CNC MCU, with
   the flags it owns: ``L``, ``U``, ``S``) and ``SD ...`` (``main_sd``). A repeated
   command id (the same as the last; ``PING``/``STATUS`` are never remembered) is not
@@ -11,16 +12,25 @@ Contract:
   ``expected`` mirrored from the stream (the CNC MCU's ``N`` for that same seq is
   not passed on twice). A resent ``D`` frame (seq at or below the highest relayed in
   this stream) goes down ahead of the new frames waiting for the UART
-  (``Wire.write_priority``), so a gap is filled while the frames above it arrive.
-- real-time bytes go down ahead of every queue (``Wire.write_urgent``).
+  (``Wire.write_priority``), so a gap is filled while the frames above it arrive. The
+  relayed ``D`` frames are kept until the CNC MCU acknowledges them (``relay``): the
+  CNC MCU's ``N`` for a kept frame, and 20 ms without an acknowledgement, send it down
+  again (not passed up); a host's copy of a frame the CNC MCU has is answered with
+  its last ``A``.
+- ``R`` real-time commands go down ahead of every queue (``Wire.write_urgent``), sent
+  again every 5 ms until the CNC MCU answers (``urgent.UrgentRelay``); a repeat of one
+  still going down is dropped, of one answered gets the answer again. ``R STOP`` also
+  abandons an upload and ends an SD job. ``!``/0x18 at the start of a line are counted
+  and logged (``L ignored ...``), never acted on.
 - CNC frames go up (``S`` with merged flags), except the answers to the main MCU's own
   commands (ids from ``OWN_ID0``) and, during ``SD RUN``, the stream's ``A``/``N``/``F``.
 - heartbeat: 3 s without a valid host frame while connected (in link time,
   ``SimClock.link_now``: wall-clock seconds at any speed factor, so a host needs no
   knowledge of the factor) -> flag ``L``, ``X HOST_LOST``, LED blinks fast, buzzer
-  beeps, a host job feed-holds (an SD job carries on). The UART hop likewise (it sends
-  the CNC MCU a ``PING`` after every second without sending anything, and every 0.25 s
-  while nothing has come back for a second): ``U``, ``X UART_LOST``; both ends of the
+  beeps, a host job feed-holds (its own ``R HOLD LINK``; an SD job carries on). The
+  UART hop likewise (it sends the CNC MCU a ``PING`` after 0.1 s without sending
+  anything, and every 0.1 s while nothing has come back for 0.1 s): ``U``,
+  ``X UART_LOST``; both ends of the
   UART are the machine's, so it runs on machine time. Until the host has sent one
   valid frame nothing goes up (as USB CDC with no host reading).
 """
@@ -29,10 +39,8 @@ from __future__ import annotations
 
 import enum
 
-from app.comm.deframer import Deframer, Dropped, Realtime
+from app.comm.deframer import Deframer, Dropped, Legacy
 from app.comm.frame import (
-    FEED_HOLD,
-    STOP_FLUSH,
     Ack,
     Alarm,
     Command,
@@ -42,12 +50,15 @@ from app.comm.frame import (
     Info,
     Nak,
     Ok,
+    RealtimeCommand,
     Status,
 )
 from backend_sim import main_sd
 from backend_sim.answer_cache import AnswerCache
 from backend_sim.outgoing import encode_fit
+from backend_sim.relay import DataRelay, Reforward
 from backend_sim.sd_card import SdCard
+from backend_sim.urgent import LegacyCounter, UrgentRelay
 from backend_sim.wire import Wire, to_ms
 
 OWN_ID0 = 1_000_000_000
@@ -61,8 +72,8 @@ class LinkState(enum.Enum):
     LOST = "lost"
 
 
-PING_PERIOD_S = 1.0
-SILENT_PING_S = 0.25
+PING_PERIOD_S = 0.1  # docs/protocol.md: lost pings must not make the CNC MCU hold as UART_LOST
+SILENT_PING_S = 0.1
 HOUSEKEEPING_S = 0.1
 
 
@@ -80,8 +91,10 @@ class MainMcu:
             self.upload.abort()
             self.sd.remove_partials()
         now = self.clock.now
-        self.host_rx = Deframer(realtime=True)
-        self.uart_rx = Deframer(realtime=False)
+        self.host_rx = Deframer(legacy=True)
+        self.uart_rx = Deframer()
+        self.urgent = UrgentRelay()
+        self.legacy = LegacyCounter()
         self.host_link = LinkState.UNKNOWN
         self.uart_link = LinkState.OK
         self.last_host = self.clock.link_now
@@ -94,12 +107,14 @@ class MainMcu:
         self.answers = AnswerCache()
         self.expected = 0
         self.relayed = -1
+        self.relay = DataRelay()  # D frames relayed, not yet acknowledged by the CNC MCU
         self.nak_sent: int | None = None  # N sent in this bad stretch (the main MCU's or passed on)
         self.own_nak: int | None = None  # the N the main MCU sent itself, for a bad host frame
         self.upload = None
         self.sd_job = None
         self.own_id = OWN_ID0
         self.own_pending: dict[int, object] = {}
+        self.reforward = Reforward()
         self.notice = "ready"
 
     # ------------------------------------------------------------------ time
@@ -111,8 +126,11 @@ class MainMcu:
         if self.uart_link is LinkState.OK:
             due = min(due, self.last_uart + self.lost_s)
         job_due = self.sd_job.next_due() if self.sd_job is not None else None
-        if job_due is not None and job_due < due:
-            due = job_due
+        others = (job_due, self.urgent.next_due(), self.legacy.next_due(),
+                  self.reforward.next_due(self._answered), self.relay.next_due())
+        for other in others:
+            if other is not None and other < due:
+                due = other
         due_ms = to_ms(due)
         if self.host_link is LinkState.OK:
             due_ms = min(due_ms, self.clock.ms_at_link(self.last_host + self.lost_s))
@@ -138,6 +156,15 @@ class MainMcu:
             self.next_ping = now + PING_PERIOD_S
             self.last_own_ping = now
             self.send_cnc_own("PING", callback=None)
+        for raw in self.urgent.due(now):
+            self.uart_tx.write_urgent(raw, now)
+        self._down_again(self.relay.probe(now))
+        again = self.reforward.take(now, self._answered)
+        if again is not None:
+            self.to_cnc(again)
+        said = self.legacy.report(now)
+        if said is not None:
+            self.to_host(said)
         self._watchdogs(now)
         if self.sd_job is not None:
             self.sd_job.poll(now)
@@ -150,7 +177,7 @@ class MainMcu:
             self.to_host(Alarm("HOST_LOST", f"no valid host frame for {self.lost_s:g} s"))
             main_sd.abandon_upload(self, "host lost")
             if self.sd_job is None and self.status is not None and self.status.state == "RUN":
-                self.uart_tx.write_urgent(FEED_HOLD, now)
+                self.send_urgent_own("HOLD", "LINK")
         if self.uart_link is LinkState.OK and now - self.last_uart >= self.lost_s:
             self.uart_link = LinkState.LOST
             self.notice = "UART LOST"
@@ -164,8 +191,8 @@ class MainMcu:
 
     def _host_items(self, items: list) -> None:
         for item in items:
-            if isinstance(item, Realtime):
-                self._realtime(item.byte)
+            if isinstance(item, Legacy):
+                self.legacy.seen()
             elif isinstance(item, Dropped):
                 self._host_bad()
             else:
@@ -178,12 +205,32 @@ class MainMcu:
             self.notice = "host back"
         self.host_link = LinkState.OK
 
-    def _realtime(self, byte: bytes) -> None:
-        self.uart_tx.write_urgent(byte, self.clock.now)
-        if byte == STOP_FLUSH:
-            main_sd.abandon_upload(self, "stopped by host")
-            if self.sd_job is not None:
-                main_sd.stop_job(self, "stopped by host")
+    def _host_realtime(self, frame: RealtimeCommand) -> None:
+        """An ``R`` frame of the host: down in the fast lane, once per id (docs/protocol.md)."""
+        if self.urgent.forwarding(frame.id):
+            return
+        answers = self.urgent.recent.answers(frame.id)
+        for raw in answers:
+            self.host_tx.write(raw, self.clock.now)
+        if answers or self.urgent.recent.remembers(frame.id):  # given up on: down again, no side effects
+            if not answers:
+                self._urgent_down(frame)
+            return
+        if frame.verb == "STOP":
+            self._before_stop(frame)
+        elif frame.verb == "RESET":
+            self._before_reset(frame)
+        self._urgent_down(frame)
+
+    def send_urgent_own(self, verb: str, why: str) -> None:
+        """The main MCU's own ``R`` frame (host lost, panel), with the reason it holds."""
+        self.own_id += 1
+        self._urgent_down(RealtimeCommand(self.own_id, verb, why))
+
+    def _urgent_down(self, frame: RealtimeCommand) -> None:
+        raw = encode_fit(frame)
+        self.urgent.forward(frame, raw, self.clock.now)
+        self.uart_tx.write_urgent(raw, self.clock.now)
 
     def _host_bad(self) -> None:
         if self.upload is not None:
@@ -194,7 +241,9 @@ class MainMcu:
         return None
 
     def _host_frame(self, frame: Frame) -> None:
-        if isinstance(frame, Command):
+        if isinstance(frame, RealtimeCommand):
+            self._host_realtime(frame)
+        elif isinstance(frame, Command):
             self._host_command(frame)
         elif isinstance(frame, Data):
             self._host_data(frame)
@@ -207,13 +256,27 @@ class MainMcu:
         if frame.seq == self.expected:
             self.expected += 1
             self.nak_sent = None
-        if frame.seq <= self.relayed:  # a resend: ahead of the new frames waiting for the UART
-            self.uart_tx.write_priority(encode_fit(frame), self.clock.now)
-            self.next_ping = self.clock.now + PING_PERIOD_S
-            return None
+        raw, now = encode_fit(frame), self.clock.now
+        if frame.seq <= self.relayed:  # a resend: answered here, or ahead of the new frames
+            answers = self.relay.answer_for(frame.seq, now)
+            for answer in answers:
+                self.to_host(answer)
+            if answers:
+                return None
+            self.relay.relayed(frame.seq, raw, now)
+            return self._down_again(raw)
+        self.relay.relayed(frame.seq, raw, now)
         self.relayed = frame.seq
         self.to_cnc(frame)
         return None
+
+    def _down_again(self, raw: bytes | None) -> bool:
+        """A ``D`` frame down again in the priority lane; False if there is none."""
+        if raw is None:
+            return False
+        self.uart_tx.write_priority(raw, self.clock.now)
+        self.next_ping = self.clock.now + PING_PERIOD_S
+        return True
 
     def _host_command(self, cmd: Command) -> None:
         handler = _OWN.get(cmd.verb)
@@ -244,18 +307,25 @@ class MainMcu:
         if hook is not None and hook(self, cmd) is False:
             return
         self.to_cnc(cmd)
+        self.reforward.start(cmd, self.clock.now)
+
+    def _answered(self, cmd: Command) -> bool:
+        """``cmd`` is answered, or no longer the remembered command."""
+        return self.answers.id != cmd.id or self.answers.answered
 
     def _before_job(self, cmd: Command) -> bool:
         if self.sd_job is not None or self.upload is not None:
             self.answer(Error(cmd.id, "BUSY", "SD job or upload in progress"))
             return False
         self.expected, self.nak_sent, self.relayed = 0, None, -1
+        self.relay.reset()
         return True
 
     def _before_resume(self, cmd: Command) -> bool:
         if cmd.args[:1] == ("FROM",) and len(cmd.args) == 2 and cmd.args[1].isdigit():
             self.expected, self.nak_sent = int(cmd.args[1]), None
             self.relayed = self.expected - 1
+            self.relay.reset()
         return True
 
     def _before_stop(self, cmd: Command) -> bool:
@@ -317,6 +387,10 @@ class MainMcu:
         if isinstance(frame, Status):
             return self._cnc_status(frame)
         cid = getattr(frame, "id", None)
+        if isinstance(frame, Ok | Error) and self.urgent.answered(cid, encode_fit(frame)):
+            if cid < OWN_ID0:  # the host's R frame: its answer goes up
+                self.to_host(frame)
+            return None
         if isinstance(frame, Ok | Error | Info) and cid is not None and cid >= OWN_ID0:
             return self._own_answer(frame)
         if self.sd_job is not None and main_sd.job_frame(self, frame):
@@ -325,6 +399,7 @@ class MainMcu:
             return self._cnc_nak(frame)
         if isinstance(frame, Ack):
             self.expected = max(self.expected, frame.seq + 1)
+            self.relay.on_ack(frame, self.clock.now)
         if cid is not None and cid == self.last_id and isinstance(frame, Ok | Error | Info):
             return self.answer(frame)
         self.to_host(frame)
@@ -335,7 +410,8 @@ class MainMcu:
             self.own_nak = None
             return
         self.expected, self.nak_sent = frame.seq, frame.seq
-        self.to_host(frame)
+        if not self._down_again(self.relay.resend(frame.seq, self.clock.now)):  # the UART hop is its own
+            self.to_host(frame)
 
     def _cnc_status(self, frame: Status) -> None:
         """Keep the CNC's status; pass it on unless it repeats the last one (ping answers)."""
@@ -368,7 +444,7 @@ class MainMcu:
         flags = self.flags()
         if flags == s.flags:
             return s
-        return Status(s.boot, s.state, s.x, s.y, s.z, s.acc, s.done, s.free, s.rpm, flags)
+        return Status(s.boot, s.state, s.x, s.y, s.z, s.acc, s.done, s.free, s.rpm, flags, s.why)
 
     @property
     def host_connected(self) -> bool:

@@ -7,6 +7,8 @@ opens the simulated machine with ``serial.serial_for_url("sim://?speed=5")``:
   host-facing timers stay in wall-clock time, so the host needs no knowledge of X;
 - ``sd=DIR``: the folder standing for the SD card; ``seed=N``: boot ids and faults.
 
+``sim://grbl[?speed=X]`` is the simulated GRBL 1.1 machine (``backend_sim.grbl``) instead.
+
 The port starts its own ``Simulator`` on a thread and stops it on ``close()``; a
 caller that keeps one machine across connections (the GUI) sets ``port.simulator``
 to a running one before ``open()`` and that simulator is left running. ``clock()``
@@ -26,14 +28,25 @@ def url_options(url: str | None) -> dict[str, str]:
     return {key: values[-1] for key, values in parse_qs(query).items()}
 
 
-def build_simulator(options: dict[str, str], profile=None):
-    """A started ``Simulator`` for ``sim://`` options; ``SerialException`` on a bad option."""
+def is_grbl_url(url: str | None) -> bool:
+    """``sim://grbl[?...]``: the simulated GRBL machine (``backend_sim.grbl``)."""
+    return urlsplit(url or "sim://").netloc.lower() == "grbl"
+
+
+def build_simulator(options: dict[str, str], profile=None, grbl: bool = False):
+    """A started ``Simulator`` (``GrblSimulator`` with ``grbl``) for ``sim://`` options;
+    ``SerialException`` on a bad option."""
+    from backend_sim.grbl.simulator import GrblSimulator
     from backend_sim.simulator import Simulator
 
     speed = _number(options, "speed", "1", float)
     seed = _number(options, "seed", None, int)
     if not speed > 0:
         raise SerialException(f"sim:// speed must be > 0, not {speed:g}")
+    if grbl:
+        sim = GrblSimulator(profile=profile, seed=seed)
+        sim.start(speed=speed)
+        return sim
     sim = Simulator(profile=profile, sd_dir=options.get("sd"), seed=seed)
     sim.start(speed=speed)
     return sim
@@ -63,7 +76,7 @@ class Serial(SerialBase):
             raise SerialException("Port is already open.")
         self.owns_simulator = self.simulator is None
         if self.owns_simulator:
-            self.simulator = build_simulator(url_options(self._port), self.profile)
+            self.simulator = build_simulator(url_options(self._port), self.profile, is_grbl_url(self._port))
         self._host = self.simulator.host_port
         if not self._host.is_open:
             self._host.open()

@@ -3,14 +3,15 @@
 Bytes leave back to back: a write at time ``t`` on an idle wire lands its first byte
 at ``t + latency + byte_time`` and each further byte ``byte_time`` later; a write on a
 busy wire queues behind the bytes already waiting (a UART TX buffer). Delivery is
-event driven: ``next_time()`` is when the next byte that matters (a newline, a
-real-time byte, or the last byte waiting) lands, and ``take(now)`` returns every byte
-landed by ``now``. Nothing is ticked per bit or per byte.
+event driven: ``next_time()`` is when the next byte that matters (a newline, or the
+last byte waiting) lands, and ``take(now)`` returns every byte landed by ``now``.
+Nothing is ticked per bit or per byte.
 
-``write_urgent`` puts a real-time byte right behind the byte being shifted out, ahead
-of everything queued; ``write_priority`` puts whole frames (resent ``D`` frames) behind
-the frame being shifted out and earlier priority frames, ahead of the frames queued
-by ``write``: a TX queue with a fast lane. ``cut`` models an unplugged cable: bytes written are lost.
+A TX queue with two fast lanes, never cutting a frame in two: ``write_urgent`` puts
+whole frames (``R`` real-time commands) behind the frame being shifted out and earlier
+urgent frames, ahead of everything else; ``write_priority`` puts whole frames (resent
+``D`` frames) behind those and earlier priority frames, ahead of the frames queued by
+``write``. ``cut`` models an unplugged cable: bytes written are lost.
 
 The UART between the MCUs runs at 115200 8N1 (10 bits per byte); the USB CDC hop to
 the host is fast but not instant (``USB_LATENCY``, about 1 MB/s).
@@ -27,7 +28,7 @@ from backend_sim.faults import ChannelFaults
 UART_BITS_PER_BYTE = 10
 USB_LATENCY = 0.0005
 USB_BYTE_TIME = 1e-6
-_EVENT = re.compile(rb"[\n!\x18]")
+_EVENT = re.compile(rb"\n")
 
 
 def uart_byte_time(baud: int) -> float:
@@ -55,7 +56,8 @@ class Wire:
         self._delayed: list[tuple[float, int, bytes]] = []
         self._order = 0
         self._taken = 0  # bytes landed and taken so far (positions below are counted from it)
-        self._lane_end = 0  # where the priority lane ends, in bytes since the wire started
+        self._urgent_end = 0  # where the urgent lane ends, in bytes since the wire started
+        self._lane_end = 0  # where the priority lane ends (never before the urgent lane's end)
 
     def write(self, data: bytes, now: float) -> None:
         for piece in self._through_faults(data, now):
@@ -76,29 +78,37 @@ class Wire:
 
     def write_priority(self, data: bytes, now: float) -> None:
         """Send whole frames ahead of the frames queued by ``write`` (behind the frame
-        being shifted out and earlier priority frames): a TX queue with a fast lane."""
+        being shifted out, the urgent frames and earlier priority frames)."""
         for piece in self._through_faults(data, now):
-            if not self._pending:
-                self._queue(piece, now)
-                self._lane_end = self._taken + len(piece)
-            else:
-                index = self._lane_end - self._taken
-                if index <= self._count(now):
-                    index = self._pending.find(b"\n", self._count(now)) + 1 or len(self._pending)
-                self._pending[index:index] = piece
-                self._lane_end = self._taken + index + len(piece)
+            index = self._lane_index(self._lane_end, now)
+            self._insert(index, piece, now)
+            self._lane_end = self._taken + index + len(piece)
 
     def write_urgent(self, data: bytes, now: float) -> None:
-        """Send ``data`` ahead of every queued byte (behind the one in the shifter)."""
-        if self.cut:
-            return
+        """Send whole frames ahead of every queued frame (behind the frame being shifted
+        out and earlier urgent frames)."""
+        for piece in self._through_faults(data, now):
+            index = self._lane_index(self._urgent_end, now)
+            self._insert(index, piece, now)
+            self._urgent_end = self._taken + index + len(piece)
+            self._lane_end = max(self._lane_end + len(piece), self._urgent_end)
+
+    def _lane_index(self, lane_end: int, now: float) -> int:
+        """Where a frame joins a lane ending at ``lane_end``: there, or behind the frame
+        being shifted out if that ends later."""
         if not self._pending:
-            self._queue(data, now)
-            return
-        index = min(len(self._pending), self._count(now) + 1)
-        self._pending[index:index] = data
-        if self._taken + index < self._lane_end:
-            self._lane_end += len(data)
+            return 0
+        index = max(0, lane_end - self._taken)
+        shifted = self._count(now)
+        if index <= shifted:
+            index = self._pending.find(b"\n", shifted) + 1 or len(self._pending)
+        return min(index, len(self._pending))
+
+    def _insert(self, index: int, piece: bytes, now: float) -> None:
+        if not self._pending:
+            self._queue(piece, now)
+        else:
+            self._pending[index:index] = piece
 
     def take(self, now: float) -> bytes:
         """Every byte landed by ``now`` (seconds), in order."""
@@ -128,7 +138,7 @@ class Wire:
     def clear(self) -> None:
         self._pending.clear()
         self._delayed.clear()
-        self._lane_end = self._taken  # no priority frame waits any more
+        self._lane_end = self._urgent_end = self._taken  # no lane frame waits any more
 
     def set_cut(self, cut: bool) -> None:
         self.cut = cut

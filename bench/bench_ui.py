@@ -7,6 +7,19 @@
    preview model and first draw), and the redraw time of pans and zooms. Targets:
    <= 2 s and <= 33 ms. The window is open and its helper process up before Open, as
    when an operator opens a file a few seconds after starting the program.
+3. Opening in the window against ``cnc-gcode check`` (issue 20): per file (the samples,
+   a Fanuc macro program, the 1 M-line file) the check's wall time as an operator runs
+   it, and the window's time from Open to the program shown, less the first picture
+   (preview model + first draw, printed apart). Target: window <= 1.3 x check. The
+   window is up before the first file, so the first one also pays for what a window
+   loads on first use.
+4. The 3-D view (issue 22; under Xvfb with the xcb platform: ``main`` runs it again
+   that way when this process cannot show an OpenGL widget; ``python -m bench.bench_ui
+   3d`` runs it alone): the 1 M-line file's first 3-D frame after its 2-D picture, the
+   longest GUI stall while the 3-D model builds, orbiting frames per second at 1600 x
+   1000 with it and with the 100 k file, the time to full detail after the camera
+   stops, bytes per segment, and the progress update per call. Targets: <= 0.5 s more,
+   <= 50 ms, >= 20 and >= 30 fps, <= 0.3 s, < 80 bytes, <= 2 ms.
 
 The files are built in bench/data/ (git-ignored) from the Inkscape samples; the 1 M
 file is bench_gcode's big.ngc when present.
@@ -318,10 +331,207 @@ def open_file(path: str) -> None:
         bench_big_file(Path(tmp) / "a", Path(path))
 
 
+def bench_3d(config: Path) -> None:
+    """The 3-D view's figures (see the module's docstring)."""
+    from app.ui.preview3d.glview import PathGLView
+
+    app, window = _window(config)
+    window.resize(1600, 1000)
+    view = window.preview3d
+    window.views.setCurrentWidget(view)
+    _wait(app, lambda: view.gl is not None or bool(view.unavailable), 10)
+    if view.unavailable:
+        print(f"3-D view: cannot start ({view.unavailable}); load average {_load()}")
+        return
+    print(f"3-D view on {view.gl.renderer}; load average {_load()}")
+    seen = {}
+    window.preview.frame_drawn.connect(lambda: window.loaded and seen.setdefault("2d", time.perf_counter()))
+    view.gl.frame_drawn.connect(lambda: window.loaded and view.model is window.loaded.preview
+                                and view.gl.drawn[0] != "none" and seen.setdefault("3d", time.perf_counter()))
+    view.gl.frame_drawn.connect(lambda: "3d" in seen and view.gl.drawn[0] == "full"
+                                and seen.setdefault("3d full", time.perf_counter()))
+    path, started = big_file(), time.perf_counter()
+    window.open_file(path)
+    _wait(app, lambda: "3d full" in seen, 300)
+    print(f"  {path.name}: 2-D picture {seen['2d'] - started:.2f} s after Open, first 3-D frame "
+          f"{seen['3d'] - seen['2d']:.2f} s after it (target <= 0.5 s), its full detail "
+          f"{seen['3d full'] - seen['2d']:.2f} s after it; load average {_load()}")
+    prepared = []
+    window.loader.prepared.connect(prepared.append)
+    _wait(app, lambda: bool(prepared) and not view.builder.busy, 300)  # the loader's work done
+    view._built_for = None  # build the 3-D model of the (refined) program again, timed
+    probe = LatenessProbe()
+    tracer = StallTracer(probe) if os.environ.get("BENCH_UI_TRACE") == "1" else None
+    probe.start()
+    if tracer:
+        tracer.start()
+    view._build_mesh()
+    _wait(app, lambda: not view.builder.busy and bool(view.mesh.levels), 120)
+    _wait(app, lambda: False, 0.3)  # the levels' upload
+    probe.stop()
+    if tracer:
+        tracer.stop()
+        print(tracer.report())
+    print(f"  10 ms timer lateness while the 3-D model of {view.mesh.segments:,} segments builds "
+          f"(background) and uploads: {_describe(sorted(probe.samples))} (target max <= 50 ms)")
+    _progress_calls(view, window.loaded.program)
+    gl = PathGLView()
+    gl.resize(1600, 1000)
+    gl.show()
+    for name, mesh in (("1 M-line file", view.mesh), ("100 k-line file", _mesh_of(app, window, job_file()))):
+        _orbit(app, gl, mesh, name)
+    window.close()
+
+
+def _mesh_of(app, window, path: Path):
+    from app.ui.preview3d.mesh import PathMesh
+
+    window.open_file(path)
+    _wait(app, lambda: window.loaded is not None and window.loaded.path == path, 120)
+    mesh = PathMesh.from_geometry(window.loaded.preview.geometry)
+    mesh.build_levels()
+    return mesh
+
+
+def _orbit(app, gl, mesh, name: str, seconds: float = 4.0) -> None:
+    """Frames per second while orbiting (each frame a camera step and a repaint), then the
+    time from the last step to the first full-detail frame."""
+    gl.set_mesh(mesh)
+    gl.levels_ready()
+    _wait(app, lambda: gl.drawn[0] == "full" and gl.levels_on_gpu == len(mesh.levels), 60)
+    full, frames_seen = [], []
+    gl.frame_drawn.connect(lambda: frames_seen.append(gl.drawn))
+    for _ in range(3):  # the whole picture again (a slice of it per frame for a big model)
+        gl.camera.orbit(1.0, 0.0)
+        frames_seen.clear()
+        t = time.perf_counter()
+        gl.update()
+        _wait(app, lambda: bool(frames_seen) and frames_seen[-1][0] == "full", 30)
+        full.append(time.perf_counter() - t)
+    gl.frame_drawn.disconnect()
+    drawn_frames = []
+    gl.frame_drawn.connect(lambda: drawn_frames.append(gl.drawn))
+    steps, started = 0, time.perf_counter()
+    while time.perf_counter() - started < seconds:
+        gl.camera.orbit(2.0, 0.5 if steps % 80 < 40 else -0.5)
+        gl.camera_moved()
+        gl.repaint()
+        steps += 1
+    stopped = time.perf_counter()
+    gl.frame_drawn.disconnect()
+    fps = len(drawn_frames) / (stopped - started)  # frames drawn, not steps asked for
+    drawn = gl.drawn
+    done = []
+    gl.frame_drawn.connect(lambda: gl.drawn[0] == "full" and done.append(time.perf_counter()))
+    _wait(app, lambda: bool(done), 60)
+    gl.frame_drawn.disconnect()
+    done.append(float("nan"))
+    print(f"  {name}: {mesh.segments:,} segments, {mesh.bytes_per_segment():.1f} bytes per segment on the "
+          f"GPU (+ {mesh.level_bytes_per_segment():.1f} for the levels of detail; Candle: 80); orbiting at "
+          f"{gl.width()}x{gl.height()}: {fps:.1f} fps ({drawn[1]:,} segments a frame while moving); a "
+          f"full detail drawn anew {statistics.median(full) * 1000:.0f} ms; after orbiting, full detail "
+          f"{done[0] - stopped:.2f} s after the camera stops (target <= 0.3 s); load average {_load()}")
+
+
+def _progress_calls(view, program) -> None:
+    """What one progress update costs the GUI thread (the job's last finished line to the
+    uniform), over the device lines of the 1 M-line file."""
+    count = program.device_count
+    times = []
+    for seq in range(0, count, max(1, count // 5000)):
+        t = time.perf_counter()
+        view.set_done(seq)
+        times.append(time.perf_counter() - t)
+    times.sort()
+    print(f"  progress update (device line -> vertex -> uniform, no upload) over {len(times):,} calls on "
+          f"{count:,} device lines: median {statistics.median(times) * 1e6:.0f} us, "
+          f"max {times[-1] * 1e3:.2f} ms (target <= 2 ms)")
+
+
+def _bench_3d_somewhere(config: Path) -> None:
+    """The 3-D section here when this process can show an OpenGL widget, else in a child
+    process under xvfb-run with the xcb platform."""
+    import shutil
+    import subprocess
+    import sys
+
+    from app.ui.main import make_app
+    from app.ui.preview3d.view import gl_problem
+
+    make_app()
+    if not gl_problem():
+        bench_3d(config)
+    elif shutil.which("xvfb-run"):
+        env = dict(os.environ, QT_QPA_PLATFORM="xcb")
+        command = [sys.executable, "-m", "bench.bench_ui", "3d"]
+        xvfb = ["xvfb-run", "-a", "-s", "-screen 0 1600x1000x24"]
+        subprocess.run([*xvfb, *command], cwd=ROOT, env=env, check=False)
+    else:
+        print(f"3-D view: no OpenGL widget here ({gl_problem()}) and no xvfb-run")
+def macro_file() -> Path:
+    """A Fanuc 21 macro program of a rectangular pocket, written by ``cnc-gcode feature``."""
+    import subprocess
+    import sys
+
+    path = DATA / "pocket_fanuc21.nc"
+    if not path.exists():
+        DATA.mkdir(parents=True, exist_ok=True)
+        args = ["feature", "pocket-rect", "--x", "20", "--y", "20", "--width", "90", "--height", "60",
+                "--tool-diameter", "3", "--depth", "6", "--stepdown", "0.5", "--macro", "fanuc21"]
+        text = subprocess.run([sys.executable, "-m", "app.gcode", *args], capture_output=True, text=True,
+                              check=True, cwd=ROOT).stdout
+        path.write_text(text)
+    return path
+
+
+def _check_time(path: Path) -> float:
+    """Wall seconds of ``cnc-gcode check FILE``, as an operator runs it (a new process)."""
+    import subprocess
+    import sys
+
+    started = time.perf_counter()
+    subprocess.run([sys.executable, "-m", "app.gcode", "check", str(path)], capture_output=True, cwd=ROOT)
+    return time.perf_counter() - started
+
+
+def bench_open_against_check(config: Path, files: list[Path]) -> None:
+    from app.gcode import workers
+
+    app, window = _window(config)
+    workers.warm_up(wait=10)
+    print(f"open in the window against cnc-gcode check (target: window without the first picture <= 1.3 x "
+          f"check); load average {_load()}")
+    for path in files:
+        check = _check_time(path)
+        window.loaded = None
+        started = time.perf_counter()
+        window.open_file(path)
+        _wait(app, lambda: window.loaded is not None, 300)
+        drawn = time.perf_counter()
+        window.preview.plot.viewport().repaint()
+        shown = time.perf_counter() - started
+        loaded = window.loaded
+        picture = loaded.model_s + (started + shown - drawn)  # the preview model and the first draw
+        without = shown - picture
+        lines = len(loaded.program.lines)
+        print(f"  {path.name} ({lines:,} lines): check {check:.2f} s; window {shown:.2f} s, of which the "
+              f"first picture {picture:.2f} s (model {loaded.model_s:.2f} s); without it {without:.2f} s = "
+              f"{without / check:.2f} x check; load average {_load()}")
+    window.close()
+
+
 def main() -> None:
+    import sys
+
     with tempfile.TemporaryDirectory() as tmp:
+        if sys.argv[1:] == ["3d"]:
+            bench_3d(Path(tmp) / "c")
+            return
+        samples = sorted((ROOT / "resources" / "samples").glob("*.ngc"))
+        bench_open_against_check(Path(tmp) / "c", [*samples, macro_file(), big_file()])
         bench_big_file(Path(tmp) / "a")
         bench_streaming(Path(tmp) / "b")
+        _bench_3d_somewhere(Path(tmp) / "d")
 
 
 if __name__ == "__main__":

@@ -148,7 +148,9 @@ def test_corrupt_window_state_is_ignored_and_kept_aside(tmp_path, text):
 
 @pytest.mark.parametrize("text", ["", "[1, 2]", "{\"version\": 7}", "[" * 10_000 + "]" * 10_000, "\ud800",
                                   "{\"recent_files\": [1], \"dark\": 1}"])
-def test_damaged_prefs_give_the_defaults_and_leave_the_file_alone(tmp_path, text):
+def test_damaged_prefs_give_the_defaults_and_are_set_aside_whole(tmp_path, text):
+    """A file that is no preferences is kept as prefs.json.damaged, byte for byte (a bad
+    value in a good file is only named: that file stays)."""
     from app.ui.settings.prefs import Prefs, load_prefs
 
     path = tmp_path / "prefs.json"
@@ -156,7 +158,9 @@ def test_damaged_prefs_give_the_defaults_and_leave_the_file_alone(tmp_path, text
     before = path.read_bytes()
     loaded = load_prefs(path)
     assert loaded.prefs == Prefs() and "prefs.json" in loaded.problem
-    assert path.read_bytes() == before
+    kept = path if path.exists() else tmp_path / "prefs.json.damaged"
+    assert kept.read_bytes() == before
+    assert path.exists() == ("recent_files" in text)
 
 
 def test_prefs_round_trip_atomically_and_keep_eight_recent_files(tmp_path):

@@ -22,10 +22,17 @@ completed; otherwise it exits 1 with the reason. Exit 2: bad usage or file; 3: t
 port cannot be opened or the link was lost (no valid frame for 3 s, or the port
 went away). At a program stop (``M00``/``M01``/``M06``)
 ``run`` asks on stdin (Enter continues, ``stop`` ends the job), or answers as
-``--at-stops continue|stop`` says. ``--from LINE`` runs FILE from that source line,
+``--at-stops continue|stop`` says. A hold the console did not ask for (panel, cover,
+lost host link, ...: the status says why) is printed with its reason and answered
+the same way: asked on stdin, waited out (``continue``: the operator acts at the
+machine) or the job stopped with exit status 4 (``stop``). ``link`` lines carry the
+resend rate of the last minute. ``--from LINE`` runs FILE from that source line,
 the modal state of the lines before it restored first (as the window's "Start here").
 The heartbeat runs on the wall clock, also against ``cnc-sim --pty --speed N`` (the
 machine keeps its link timers in wall time).
+
+GRBL machines (``--driver grbl``; ``sim://grbl`` and a machine that greets as GRBL are
+found by themselves) get the commands of ``app.comm.grbl.console``.
 
 The parts: ``console_client`` (the session driven over the transport, waiting,
 commands, files), ``console_printer`` (what is printed), ``console_jobs`` (``run``,
@@ -41,6 +48,8 @@ import sys
 
 from app.comm.console_client import ConsoleError, load_lines
 from app.comm.console_jobs import JobCommands
+from app.comm.driver import DRIVERS, kind_for_url, probe
+from app.comm.grbl.console import GrblConsole
 from app.comm.transport import open_transport
 
 __all__ = ["Console", "ConsoleError", "load_lines", "main", "run_commands", "split_commands"]
@@ -73,11 +82,12 @@ class Console(JobCommands):
 
     def cmd_pause(self) -> None:
         self.session.pause()
-        self.wait(lambda: self.session.status.state in ("HOLD", "IDLE"), 10.0, "the hold")
+        self.wait(lambda: not self.session.urgent.pending("HOLD"), 10.0, "the hold")
 
     def cmd_stop(self) -> None:
         self.session.stop()
-        self.wait(lambda: self.session.status.state in ("IDLE", "ALARM"), 30.0, "the stop")
+        self.wait(lambda: not self.session.urgent.pending("STOP")
+                  and self.session.status.state in ("IDLE", "ALARM"), 30.0, "the stop")
 
 
 def split_commands(words: list[str]) -> list[list[str]]:
@@ -101,17 +111,23 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("-q", "--quiet", action="store_true", help="hide D/A/F/S traffic")
     parser.add_argument("--timeout", type=float, default=3600.0, help="seconds to wait per command")
     parser.add_argument("--at-stops", choices=("ask", "continue", "stop"), default="ask",
-                        help="at M00/M01/M06 program stops: ask on stdin, continue or stop the job")
+                        help="at M00/M01/M06 program stops and at holds the machine makes on its own: "
+                             "ask on stdin, continue (wait for the operator at the machine) or stop the job "
+                             "(exit 4 after a hold)")
     parser.add_argument("--from", dest="from_line", type=int, metavar="LINE",
                         help="run FILE from this source line, the modal state before it restored")
+    parser.add_argument("--driver", choices=("auto", *DRIVERS), default="auto",
+                        help="the machine's protocol: this mill's frames or GRBL (auto: detect)")
     args = parser.parse_intermixed_args(argv)
     try:
         transport = open_transport(args.url)
     except (OSError, ValueError) as exc:
         print(f"cannot open {args.url}: {exc}", file=sys.stderr)
         return 3
-    console = Console(transport, quiet=args.quiet, timeout=args.timeout, at_stops=args.at_stops,
-                      from_line=args.from_line)
+    kind = args.driver if args.driver != "auto" else kind_for_url(args.url) or probe(transport) or "frame"
+    console_class = Console if kind == "frame" else GrblConsole
+    console = console_class(transport, quiet=args.quiet, timeout=args.timeout, at_stops=args.at_stops,
+                            from_line=args.from_line)
     given = split_commands(args.command)
     try:
         console.connect()

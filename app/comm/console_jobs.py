@@ -5,7 +5,11 @@
 (from ``from_line`` with the modal state restored, when given), answers its program
 stops as ``at_stops`` says (stdin, ``continue`` or ``stop``) and returns once it
 completed, or raises ``ConsoleError``: 1 if it failed, 3 if the link was lost (the job
-is then interrupted, and ``resume`` carries it on once the link is back). ``resume``
+is then interrupted, and ``resume`` carries it on once the link is back). A hold the
+console did not ask for (the panel, the cover, a lost host link ...: the status's
+``why``) is printed with its reason; ``ask`` asks on stdin (Enter resumes, ``stop``
+ends the job), ``continue`` waits for the operator at the machine, ``stop`` ends the
+job and raises ``ConsoleError`` 4 (``HELD_EXIT``). ``resume``
 without arguments resumes this console's interrupted job as the window does (RESUME
 FROM acc+1 and the missing lines) or leaves a feed hold; ``resume FILE`` takes over a
 job of FILE another client left open; ``resume FROM SEQ`` sends that verb as it is.
@@ -19,6 +23,9 @@ from pathlib import Path
 from app.comm.console_client import ConsoleClient, ConsoleError, load_lines, load_program
 from app.comm.listener import SessionState
 from app.comm.modal import device_index_of, restart_preamble
+
+HELD_EXIT = 4
+"""Exit status of ``run`` when ``--at-stops stop`` ended a job the machine held on its own."""
 
 
 class JobCommands(ConsoleClient):
@@ -84,32 +91,58 @@ class JobCommands(ConsoleClient):
         """Wait for the job started after ``jobs`` ended ones (answering its program stops);
         print how it ended."""
         ended = lambda: len(self.printer.jobs) > jobs or self.session.state is SessionState.INTERRUPTED  # noqa: E731
+        held = None
+        self.printer.holds.clear()
         while not ended():
-            self.wait(lambda: ended() or bool(self.printer.stops), what="the job to end", through_loss=True)
+            asked = lambda: ended() or bool(self.printer.stops or self.printer.holds)  # noqa: E731
+            self.wait(asked, what="the job to end", through_loss=True)
             if self.printer.stops:
                 self.answer_stop(self.printer.stops.pop(0))
+            if self.printer.holds:
+                held = self.answer_hold(self.printer.holds.pop(0)) or held
         job = self.printer.jobs[-1] if len(self.printer.jobs) > jobs else None
         if job is None:
             raise ConsoleError("job interrupted: link lost (type resume when the link is back)", 3)
         self.command("STATUS", timeout=5.0)
         self.print_status()
+        if not job.completed and held is not None:
+            raise ConsoleError(f"job stopped at line {job.done + 1} of {job.total}: the machine held "
+                               f"[{held.why}]: {held.text}", HELD_EXIT)
         if not job.completed:
             raise ConsoleError(f"job failed at line {job.done + 1} of {job.total}: {job.reason}")
         print(f"job completed: {job.total} lines", file=self.out)
 
+    def _answer(self, prompt: str, enter: str) -> str:
+        """``at_stops``, or with ``ask`` the operator's answer on stdin (Enter: ``enter``;
+        no stdin: ``stop``)."""
+        if self.at_stops != "ask":
+            return self.at_stops
+        try:
+            return input(prompt).strip().lower() or enter
+        except EOFError:
+            return "stop"
+
     def answer_stop(self, event) -> None:
         """The machine holds at a program stop: continue or stop, as ``at_stops`` says."""
         print(f"program stop at device line {event.index}: {event.line}", file=self.out)
-        answer = self.at_stops
-        if answer == "ask":
-            try:
-                answer = input("Enter continues, 'stop' ends the job: ").strip().lower() or "continue"
-            except EOFError:
-                answer = "stop"
-        if answer.startswith("s"):
+        if self._answer("Enter continues, 'stop' ends the job: ", "continue").startswith("s"):
             self.session.stop()
         else:
             self.session.resume()
+
+    def answer_hold(self, event):
+        """The machine holds on its own: resume, stop or wait, as ``at_stops`` says; the
+        event if the job was stopped for it."""
+        answer = self._answer("Enter resumes, 'stop' ends the job: ", "resume")
+        if answer.startswith("s"):
+            print("stopping the job", file=self.out)
+            self.session.stop()
+            return event
+        if answer.startswith("r"):
+            self.session.resume()
+        else:
+            print("waiting for the operator at the machine", file=self.out)
+        return None
 
     def cmd_sd(self, action: str, *args) -> None:
         action = action.lower()

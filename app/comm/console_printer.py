@@ -1,16 +1,19 @@
 """What the console client prints: a ``SessionListener`` that writes the traffic (``> ``
 sent, ``< `` received; with ``quiet`` no D/A/F/S frame that checked out), logs, alarms,
-link changes and progress (at most every 0.5 s, and the last line) to ``out``, and keeps
-the command results, finished jobs, errors and unanswered program stops for the
-console to wait on. It never raises and never blocks.
+link changes with the resend rate of the last minute, progress (at most every 0.5 s,
+and the last line) and every hold, stop or alarm the machine explains (``why``) that
+this console did not ask for, to ``out``; it keeps the command results, finished jobs,
+errors, unanswered program stops and unanswered holds for the console to wait on. It
+never raises and never blocks.
 """
 
 from __future__ import annotations
 
 import time
 
-from app.comm.events import FrameEvent
+from app.comm.events import FrameEvent, HoldEvent
 from app.comm.listener import SessionListener
+from app.i18n import localize
 
 QUIET = frozenset("DAFS")
 
@@ -22,6 +25,7 @@ class Printer(SessionListener):
         self.out, self.quiet = out, quiet
         self.results, self.jobs, self.errors = [], [], []
         self.stops: list = []  # program stops not answered yet
+        self.holds: list[HoldEvent] = []  # holds this console did not ask for, not answered yet
         self._last_progress = 0.0
 
     def on_frame(self, event: FrameEvent):
@@ -42,7 +46,19 @@ class Printer(SessionListener):
         print(f"ALARM {event.code} {event.text}", file=self.out)
 
     def on_link_changed(self, event):
-        print(f"link {event.state}" + (" (poor quality)" if event.quality_warning else ""), file=self.out)
+        health = (f", resends {event.resend_rate:.1%} of {event.sent_last_min} frames in the last minute"
+                  if event.sent_last_min else "")
+        poor = " (poor quality)" if event.quality_warning else ""
+        print(f"link {event.state}{health}{poor}", file=self.out)
+
+    def on_hold(self, event: HoldEvent):
+        if not event.why:
+            print("machine: running again", file=self.out)
+        elif not event.asked:
+            what = "HOLDS" if event.state == "HOLD" else f"stopped ({event.state})"
+            print(f"machine {what} [{event.why}, {event.source}]: {localize(event.text)}", file=self.out)
+            if event.state == "HOLD" and event.why != "PROG":  # a program stop has its own prompt
+                self.holds.append(event)
 
     def on_command_done(self, event):
         self.results.append(event)

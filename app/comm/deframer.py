@@ -2,14 +2,18 @@
 
 ``Deframer.feed(chunk, now)`` accepts chunks split anywhere and returns, in order, the
 decoded ``Frame`` objects, ``Dropped`` lines (with the reason, for the log and for
-``N``) and, on the machine's side, ``Realtime`` bytes taken out of the stream.
+``N``) and, on the machine's side, ``Legacy`` items: a ``!`` or 0x18 that began a line,
+taken off it and counted, never a command (docs/protocol.md, "Real-time commands").
 """
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 
-from app.comm.frame import FEED_HOLD, MAX_FRAME, PARTIAL_TIMEOUT, STOP_FLUSH, Frame, FrameError, decode
+from app.comm.frame import LEGACY_BYTES, MAX_FRAME, PARTIAL_TIMEOUT, Frame, FrameError, decode
+
+_FRAME_START = re.compile(rb"[A-Z] ")
 
 
 @dataclass
@@ -20,7 +24,8 @@ class DeframerStats:
     bad: int = 0
     overlength: int = 0
     timeouts: int = 0
-    realtime: int = 0
+    legacy: int = 0
+    resynced: int = 0  # frames found at the end of a line that began with noise
 
 
 @dataclass(frozen=True)
@@ -32,40 +37,45 @@ class Dropped:
 
 
 @dataclass(frozen=True)
-class Realtime:
-    """A real-time byte (``!`` or 0x18) seen outside any frame."""
+class Legacy:
+    """A ``!`` or 0x18 that began a line: taken off it, counted, never acted on."""
 
     byte: bytes
 
 
 @dataclass
 class Deframer:
-    """Incremental deframer: ``feed(chunk, now)`` -> list of Frame | Dropped | Realtime.
+    """Incremental deframer: ``feed(chunk, now)`` -> list of Frame | Dropped | Legacy.
 
     Chunks may split frames anywhere. ``\\r`` is ignored. A line over 96 bytes is
     dropped (once, when its newline arrives); a partial line with no newline for
-    ``PARTIAL_TIMEOUT`` seconds is dropped. With ``realtime=True`` (the machine's
-    side) ``!`` and 0x18 are taken out of the stream wherever they occur.
+    ``PARTIAL_TIMEOUT`` seconds is dropped. With ``legacy=True`` (the machine's
+    side) a ``!`` or 0x18 that begins a line (nothing of it buffered) is taken off and
+    reported as ``Legacy``; anywhere else it is a byte of the line like any other.
+    A line that is no frame is searched for one at its end (``resync``): the longest
+    tail that starts with a kind letter and a space and checks out (CRC and grammar)
+    is taken, so noise glued in front of a frame costs nothing but its own bytes;
+    an over-length line keeps its last 96 bytes for that search.
     """
 
-    realtime: bool = False
+    legacy: bool = False
     stats: DeframerStats = field(default_factory=DeframerStats)
     _buf: bytearray = field(default_factory=bytearray)
     _started: float | None = None
     _overlong: bool = False
 
-    def feed(self, chunk: bytes, now: float) -> list[Frame | Dropped | Realtime]:
-        out: list[Frame | Dropped | Realtime] = self.poll(now)
+    def feed(self, chunk: bytes, now: float) -> list[Frame | Dropped | Legacy]:
+        out: list[Frame | Dropped | Legacy] = self.poll(now)
         parts = chunk.split(b"\n")
         for line in parts[:-1]:
-            if self.realtime:
-                line = self._take_realtime(line, out)
             if self._buf or self._overlong:
                 self._append(line, now)
                 out.append(self._finish())
             else:
-                self._whole(line, out)
-        line = self._take_realtime(parts[-1], out) if self.realtime else parts[-1]
+                self._whole(self._take_legacy(line, out), out)
+        line = parts[-1]
+        if not (self._buf or self._overlong):
+            line = self._take_legacy(line, out)
         self._append(line, now)
         return out
 
@@ -74,9 +84,9 @@ class Deframer:
         if b"\r" in line:
             line = line.replace(b"\r", b"")
         if line:
-            out.append(self._classify(line[:MAX_FRAME], len(line) >= MAX_FRAME))
+            out.append(self._classify(line[-MAX_FRAME:], len(line) >= MAX_FRAME))
 
-    def poll(self, now: float) -> list[Frame | Dropped | Realtime]:
+    def poll(self, now: float) -> list[Frame | Dropped | Legacy]:
         """Drop a partial frame that has waited too long for its newline."""
         if self._started is not None and now - self._started > PARTIAL_TIMEOUT:
             raw = bytes(self._buf)
@@ -89,15 +99,16 @@ class Deframer:
         """Bytes of a partial frame waiting for its newline."""
         return len(self._buf)
 
-    def _take_realtime(self, line: bytes, out: list) -> bytes:
-        if FEED_HOLD not in line and STOP_FLUSH not in line:
+    def _take_legacy(self, line: bytes, out: list) -> bytes:
+        """Take the legacy bytes off the start of a line (machine side only)."""
+        if not self.legacy:
             return line
-        for byte in (FEED_HOLD, STOP_FLUSH):
-            if byte in line:
-                self.stats.realtime += line.count(byte)
-                out.extend(Realtime(byte) for _ in range(line.count(byte)))
-                line = line.replace(byte, b"")
-        return line
+        start = 0
+        while start < len(line) and line[start] in LEGACY_BYTES:
+            out.append(Legacy(line[start:start + 1]))
+            start += 1
+        self.stats.legacy += start
+        return line[start:] if start else line
 
     def _append(self, data: bytes, now: float) -> None:
         data = data.replace(b"\r", b"")
@@ -105,11 +116,10 @@ class Deframer:
             return
         if self._started is None:
             self._started = now
-        if len(self._buf) + len(data) >= MAX_FRAME:
+        self._buf += data
+        if len(self._buf) >= MAX_FRAME:  # keep the tail: a frame may still end it
             self._overlong = True
-            self._buf = self._buf[:MAX_FRAME]
-        else:
-            self._buf += data
+            del self._buf[:-MAX_FRAME]
 
     def _finish(self) -> Frame | Dropped:
         raw, overlong = bytes(self._buf), self._overlong
@@ -117,17 +127,38 @@ class Deframer:
         return self._classify(raw, overlong)
 
     def _classify(self, raw: bytes, overlong: bool) -> Frame | Dropped:
-        """Decode one complete line, counting what is dropped and why."""
+        """Decode one complete line (or a frame at its end), counting what is dropped and why."""
+        reason = "over-length frame"
+        if not overlong:
+            try:
+                frame = decode(raw)
+            except FrameError as exc:
+                reason = str(exc)
+            else:
+                self.stats.frames += 1
+                return frame
+        frame = self._resync(raw)
+        if frame is not None:
+            self.stats.frames += 1
+            self.stats.resynced += 1
+            return frame
         if overlong:
             self.stats.overlength += 1
-            return Dropped("over-length frame", raw)
-        try:
-            frame = decode(raw)
-        except FrameError as exc:
+        else:
             self.stats.bad += 1
-            return Dropped(str(exc), raw)
-        self.stats.frames += 1
-        return frame
+        return Dropped(reason, raw)
+
+    @staticmethod
+    def _resync(raw: bytes) -> Frame | None:
+        """The frame that ends ``raw`` after bytes of noise, if one checks out."""
+        if b"*" not in raw[-6:]:  # no CRC field at the end: nothing to find
+            return None
+        for match in _FRAME_START.finditer(raw, 1):
+            try:
+                return decode(raw[match.start():])
+            except FrameError:
+                continue
+        return None
 
     def _reset(self) -> None:
         self._buf = bytearray()

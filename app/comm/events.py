@@ -32,6 +32,7 @@ class StatusEvent:
     rpm: int
     flags: str
     time: float = 0.0
+    why: str = ""  # why it holds, stopped a job short or is in ALARM ("" none or unknown)
 
     @property
     def homed(self) -> bool:
@@ -55,6 +56,24 @@ class ProgramStopEvent:
     line: str
     code: int
     tool: int | None = None
+
+
+@dataclass(frozen=True)
+class HoldEvent:
+    """The machine holds, stopped a job short or is in ALARM, and says why (``S`` field
+    ``why``, docs/protocol.md "Why the machine holds"), or (``why`` "") runs again.
+
+    ``state`` is the machine's state, ``source`` who or what caused it (``host``,
+    ``panel``, ``cover``, ``link``, ``program``, ``machine``), ``text`` the reason in
+    words (an ``app.i18n`` message) and ``asked`` whether this host asked for it (its
+    own hold or stop): a hold not asked for must reach the operator.
+    """
+
+    why: str
+    state: str
+    source: str = ""
+    text: str = ""
+    asked: bool = False
 
 
 @dataclass(frozen=True)
@@ -82,8 +101,10 @@ class ProgressEvent:
 class LinkEvent:
     """Link health: ``state`` is CONNECTED, DEGRADED, LOST or DISCONNECTED.
 
-    ``silent_s`` is the time since the last valid frame; ``quality_warning`` is set
-    while more than 10 % of the D frames were resends.
+    ``silent_s`` is the time since the last valid frame; ``resend_rate`` the share of
+    the D frames sent in the last minute that were resends (``sent_last_min`` of them,
+    ``resent_last_min`` resends), as Klipper shows its retransmit counter;
+    ``quality_warning`` is set while it is over 10 % (of at least 20 frames).
     """
 
     state: str
@@ -91,6 +112,8 @@ class LinkEvent:
     resend_rate: float = 0.0
     quality_warning: bool = False
     reason: str = ""
+    sent_last_min: int = 0
+    resent_last_min: int = 0
 
 
 @dataclass(frozen=True)
@@ -114,7 +137,7 @@ class LogEvent:
 class FrameEvent:
     """Traffic for the console: ``direction`` "tx" or "rx"; ``ok`` False for a dropped line.
 
-    ``kind`` is the frame letter (``D``, ``A``, ...), ``!``/``^X`` for a real-time byte,
+    ``kind`` is the frame letter (``D``, ``A``, ``R`` ...),
     or ``?`` for a line that was not a valid frame (``text`` then says why).
     """
 

@@ -6,7 +6,7 @@ decodes and deframes; it knows nothing of sessions, threads or Qt.
 
 ``encode(frame) -> bytes`` and ``decode(line) -> Frame`` are exact inverses for
 every frame kind. ``app.comm.deframer.Deframer`` turns arbitrary byte chunks into
-frames, real-time bytes and counted drops.
+frames, counted drops and the legacy bytes `!`/0x18 a machine ignores.
 """
 
 from __future__ import annotations
@@ -21,12 +21,15 @@ MAX_FRAME = 96
 MAX_BODY = MAX_FRAME - 6
 PARTIAL_TIMEOUT = 0.5
 """Seconds after which a partial frame with no newline is dropped."""
-FEED_HOLD = b"!"
-STOP_FLUSH = b"\x18"
-REALTIME_BYTES = FEED_HOLD + STOP_FLUSH
+LEGACY_BYTES = b"!\x18"
+"""Feed hold and stop of earlier copies of the protocol (and GRBL): no longer commands;
+a receiver takes them off the start of a line, counts them and never acts on them."""
 STATES = ("IDLE", "HOMING", "RUN", "HOLD", "JOG", "ALARM")
 FLAG_LETTERS = "HCLUPSW"
 NO_FLAGS = "-"
+REALTIME_VERBS = ("HOLD", "RESUME", "STOP", "RESET")
+WHY_CODES = ("HOST", "PANEL", "COVER", "LINK", "UART", "PROG", "SOFT", "LINE", "LIMIT", "FAULT")
+"""Why the machine holds, stopped a job short or is in ALARM (``Status.why``); ``-``: none."""
 
 
 class FrameError(ValueError):
@@ -114,6 +117,20 @@ class Command(Frame):
 
 
 @dataclass(frozen=True)
+class RealtimeCommand(Frame):
+    """``R <id> <VERB> [why]``: a real-time command (HOLD, RESUME, STOP, RESET) taken in
+    the fast lane; ``why`` only in the main MCU's own frames (``LINK``, ``PANEL``)."""
+
+    KIND: ClassVar[str] = "R"
+    id: int
+    verb: str
+    why: str = ""
+
+    def body(self) -> str:
+        return _join("R", str(self.id), self.verb, self.why)
+
+
+@dataclass(frozen=True)
 class Ack(Frame):
     """``A <seq> <free>``: every D frame up to seq is queued; free slots remain."""
 
@@ -175,7 +192,8 @@ class Error(Frame):
 
 @dataclass(frozen=True)
 class Status(Frame):
-    """``S <boot> <state> <x> <y> <z> <acc> <done> <free> <rpm> <flags>``."""
+    """``S <boot> <state> <x> <y> <z> <acc> <done> <free> <rpm> <flags> <why>``; ``why``
+    (one of ``WHY_CODES``, "" for ``-``) is absent from a machine before issue 18."""
 
     KIND: ClassVar[str] = "S"
     boot: str
@@ -188,11 +206,12 @@ class Status(Frame):
     free: int
     rpm: int
     flags: str = ""
+    why: str = ""
 
     def body(self) -> str:
         return (
             f"S {self.boot} {self.state} {self.x:.3f} {self.y:.3f} {self.z:.3f} "
-            f"{self.acc} {self.done} {self.free} {self.rpm} {self.flags or NO_FLAGS}"
+            f"{self.acc} {self.done} {self.free} {self.rpm} {self.flags or NO_FLAGS} {self.why or NO_FLAGS}"
         )
 
     def has(self, flag: str) -> bool:
@@ -257,7 +276,7 @@ _STATUS = re.compile(
         [_BOOT.pattern.join("()"), "|".join(STATES).join("()")]
         + [_NUM.pattern.join("()")] * 3 + [_SEQ] * 2 + [_COUNT] * 2
         + [f"(-|[{FLAG_LETTERS}]+)"]
-    )
+    ) + "(?: (" + "|".join(("-",) + WHY_CODES) + "))?"
 )
 """A well-formed status body after ``S ``: the hot path; anything else is parsed field by field."""
 
@@ -308,6 +327,19 @@ def _command(rest: str) -> Command:
     return Command(_int(fields[0], "command id"), _word(fields[1], "verb"), tuple(fields[2:]))
 
 
+def _realtime(rest: str) -> RealtimeCommand:
+    """The strict grammar of docs/protocol.md: id, one of the four verbs, an optional why."""
+    fields = rest.split(" ")
+    if not 2 <= len(fields) <= 3 or "" in fields:
+        raise FrameError("R frame needs an id, a verb and at most a why, single-spaced")
+    if fields[1] not in REALTIME_VERBS:
+        raise FrameError(f"bad real-time verb {fields[1]!r}")
+    why = fields[2] if len(fields) == 3 else ""
+    if why and why not in WHY_CODES:
+        raise FrameError(f"bad why {why!r}")
+    return RealtimeCommand(_int(fields[0], "command id"), fields[1], why)
+
+
 def _ack(rest: str) -> Ack:
     seq, free = _exact(rest, 2, "A")
     return Ack(_int(seq, "seq", -1), _int(free, "free"))
@@ -336,17 +368,22 @@ def _error(rest: str) -> Error:
 def _status(rest: str) -> Status:
     match = _STATUS.fullmatch(rest)
     if match:
-        boot, state, x, y, z, acc, done, free, rpm, flags = match.groups()
+        boot, state, x, y, z, acc, done, free, rpm, flags, why = match.groups()
         return Status(
             boot, state, float(x), float(y), float(z), int(acc), int(done), int(free), int(rpm),
-            "" if flags == NO_FLAGS else flags,
+            "" if flags == NO_FLAGS else flags, "" if why in (None, NO_FLAGS) else why,
         )
     return _status_fields(rest)
 
 
 def _status_fields(rest: str) -> Status:
     """The slow path of ``_status``: names the first bad field."""
-    f = _exact(rest, 10, "S")
+    f = rest.split(" ")
+    if len(f) == 10:
+        f.append(NO_FLAGS)
+    f = _exact(" ".join(f), 11, "S")
+    if f[10] != NO_FLAGS and f[10] not in WHY_CODES:
+        raise FrameError(f"bad why {f[10]!r}")
     if not _BOOT.fullmatch(f[0]):
         raise FrameError(f"bad boot id {f[0]!r}")
     if f[1] not in STATES:
@@ -357,7 +394,7 @@ def _status_fields(rest: str) -> Status:
     return Status(
         f[0], f[1], _num(f[2], "x"), _num(f[3], "y"), _num(f[4], "z"),
         _int(f[5], "acc", -1), _int(f[6], "done", -1), _int(f[7], "free"),
-        _int(f[8], "rpm"), flags,
+        _int(f[8], "rpm"), flags, "" if f[10] == NO_FLAGS else f[10],
     )
 
 
@@ -383,7 +420,7 @@ def _exact(rest: str, count: int, kind: str) -> list[str]:
 
 
 _PARSERS = {
-    "D": _data, "C": _command, "A": _ack, "F": _finished, "N": _nak, "O": _ok,
+    "D": _data, "C": _command, "R": _realtime, "A": _ack, "F": _finished, "N": _nak, "O": _ok,
     "E": _error, "S": _status, "X": _alarm, "I": _info, "L": _log,
 }
 

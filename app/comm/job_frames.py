@@ -3,7 +3,7 @@ an upload as ``A``/``N``/``F``/``S``/``E -``/``X`` frames come in, and sends its
 frames as time passes.
 
 ``StreamFrames`` is mixed into ``Session`` through ``JobControl`` (it uses the
-session's ``stream``, ``state``, ``commands``, ``realtime``, listener and clock).
+session's ``stream``, ``state``, ``commands``, ``urgent``, ``health``, listener and clock).
 Contract: ``_tick_stream`` sends what the window allows (nothing before an upload's
 ``SD PUT`` has gone out) and ends the stream when a line ran out of retries; ``A``/``N``
 /``F`` and the ``acc``/``done``/``free`` of ``S`` move the window and the progress (in
@@ -48,15 +48,17 @@ class StreamFrames:
             return
         if self.commands.is_waiting(stream.opener):  # SD PUT still behind another command:
             return  # a D frame before it would reach a machine with no upload open (BAD_SEQ)
-        for frame in stream.window.due(now):
+        window = stream.window
+        sent, resent = window.sent, window.resent
+        for frame in window.due(now):
             self._send(frame)
-        if stream.window.failed:
-            self._error("RETRIES_EXHAUSTED", stream.window.failed)
+        self.health.add(now, window.sent - sent, window.resent - resent)
+        if window.failed:
+            self._error("RETRIES_EXHAUSTED", window.failed)
             if stream.kind == "job":
-                self.realtime.request(fr.STOP_FLUSH, now)
-            self._finish_stream(False, stream.window.failed)
+                self.urgent.request("STOP", now)
+            self._finish_stream(False, window.failed)
             return
-        self._check_quality()
         self._report_progress(now)
 
     def _on_ack(self, frame: fr.Ack, now: float) -> None:
@@ -110,6 +112,10 @@ class StreamFrames:
         if self.state is S.INTERRUPTED:
             if self.link.state.value == "CONNECTED":
                 self._offer_recovery(event)
+            return
+        if self.state is S.STOPPING:
+            if self._stop_taken and event.state in ("IDLE", "ALARM"):
+                self._stopped()
             return
         if stream.kind != "job" or self.state not in SENDING_STATES:
             return

@@ -10,9 +10,10 @@ the answers to the commands they send. Contract of the operator calls:
   is open. With ``start`` > 0 (start from a line) the stream is the restore preamble
   of ``modal.restart_preamble`` followed by lines ``start..``; progress stays in
   program line indices.
-- ``pause()`` sends ``!`` (repeated until the status shows HOLD); ``resume()`` sends
-  ``RESUME``; ``stop()`` sends 0x18 (repeated until IDLE) and an urgent ``STOP``; no
-  D frame is sent after a stop.
+- ``pause()``, ``resume()`` and ``stop()`` send the real-time commands ``R HOLD``,
+  ``R RESUME`` and ``R STOP`` (repeated until answered, ``realtime.py``); a stopped job
+  ends once the ``STOP`` is answered and a status shows IDLE or ALARM; no D frame is
+  sent after a stop.
 - ``upload_to_sd(name, lines)`` sends ``SD PUT name n crc32`` and streams the lines.
 - ``resume_after_reconnect()`` (RESUME_OFFERED) sends ``RESUME FROM acc+1`` and the
   missing frames; ``confirm_restart()`` (RESTART_REQUIRED, homed) restarts at done+1.
@@ -62,12 +63,13 @@ class JobControl(StreamFrames, Recovery):
                                                  start=start,
                                                  last=len(lines) - 1))
         self.lines = lines
+        self.asked_hold = False
         free = self.status.free if self.status else 1
         pre = restart_preamble(lines, start)
         self.stream = Stream.job(lines, self.rtt, free, start, pre, boot=self.boot or "",
                                  max_window=self.max_window)
         self._set_state(S.STARTING)
-        self.submit("JOB", len(lines), then=self._job_opened)
+        self.submit("JOB", self.stream.window.total, then=self._job_opened)  # the lines this stream sends
         return True
 
     def upload_to_sd(self, name: str, lines) -> bool:
@@ -100,29 +102,33 @@ class JobControl(StreamFrames, Recovery):
         return self.submit("JOG", axis.upper(), plain_number(distance_mm), plain_number(feed_mm_min))
 
     def pause(self) -> bool:
-        """Feed hold now (real-time ``!``, repeated until the status shows HOLD)."""
+        """Feed hold now (``R HOLD``, repeated until answered or the status shows HOLD)."""
         if not self.attached:
             return self._refuse("NOT_CONNECTED", msg("not connected"))
-        self.realtime.request(fr.FEED_HOLD, self.clock())
-        self.tick()
+        self.asked_hold = True
+        self.request_urgent("HOLD")
         return True
 
     def resume(self) -> bool:
-        """Leave a feed hold (``RESUME``); a job after a reconnect uses resume_after_reconnect."""
+        """Leave a feed hold or a program stop (``R RESUME``); a job after a reconnect uses
+        resume_after_reconnect."""
         if self.state is S.RESUME_OFFERED:
             return self.resume_after_reconnect()
-        self.submit("RESUME")
+        if not self.attached:
+            return self._refuse("NOT_CONNECTED", msg("not connected"))
+        self.asked_hold = False
+        self.request_urgent("RESUME")
         return True
 
     def stop(self) -> bool:
-        """Stop and flush now (0x18 repeated until IDLE, and an urgent ``STOP``)."""
+        """Stop and flush now (``R STOP``, repeated until answered)."""
         if self.state in RECOVERY_STATES:
             self._finish_stream(False, msg("abandoned by the operator"))
         if self.attached:
-            self.realtime.request(fr.STOP_FLUSH, self.clock())
+            self.asked_hold, self._stop_taken = True, False
             if self.state in JOB_STATES or self.state is S.UPLOADING:
                 self._stop_stream()
-            self.submit("STOP", urgent=True, then=self._stop_answered)
+            self.request_urgent("STOP")
         return True
 
     def resume_after_reconnect(self) -> bool:
@@ -218,8 +224,19 @@ class JobControl(StreamFrames, Recovery):
         if self.status is not None and self.status.state == "HOLD" and "W" not in self.status.flags:
             self.submit("RESUME")  # a feed hold of the link loss (a program stop waits for the operator)
 
-    def _stop_answered(self, result: CommandResult) -> None:
-        if result.ok and self.state is S.STOPPING:
+    def _urgent_answered(self, frame: fr.RealtimeCommand, ok: bool, info: str) -> None:
+        """The machine answered ``R STOP``: the job is stopped once it stands still."""
+        if frame.verb == "STOP" and ok:
+            self._stop_taken = True
+            if info in ("IDLE", "ALARM"):  # a later status says when a stop still under way ends
+                self._stopped()
+
+    def _urgent_unanswered(self, frame: fr.RealtimeCommand) -> None:
+        if frame.verb == "STOP" and self.state is S.STOPPING:
+            self._finish_stream(False, msg("the machine did not confirm the stop"))
+
+    def _stopped(self) -> None:
+        if self.state is S.STOPPING:
             self._finish_stream(False, msg("stopped by the operator"))
 
     def _stop_stream(self) -> None:
@@ -228,6 +245,3 @@ class JobControl(StreamFrames, Recovery):
         elif self.state is not S.STOPPING:
             self._set_state(S.STOPPING)
 
-    def _realtime_confirmed(self, byte: bytes) -> None:
-        if byte == fr.STOP_FLUSH and self.state is S.STOPPING:
-            self._finish_stream(False, msg("stopped by the operator"))

@@ -17,6 +17,7 @@ from app.comm.events import (
     CommandResult,
     ErrorEvent,
     FrameEvent,
+    HoldEvent,
     JobEvent,
     LinkEvent,
     LogEvent,
@@ -93,3 +94,5 @@ class SessionListener:
     def on_resume_offer(self, event: ResumeOffer) -> None: ...
 
     def on_program_stop(self, event: ProgramStopEvent) -> None: ...
+
+    def on_hold(self, event: HoldEvent) -> None: ...

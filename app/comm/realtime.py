@@ -1,62 +1,91 @@
-"""Real-time bytes (``!`` feed hold, 0x18 stop and flush), repeated until confirmed.
+"""Real-time commands (``R <id> <VERB>``), repeated until the machine answers them.
 
-docs/protocol.md: the host repeats a real-time byte every 100 ms until the status
-shows the hold or stop. ``RealtimeRepeater.due(now)`` gives the bytes to write now;
-``confirm(state)`` takes the state of every ``S`` frame received after the first send.
-A byte not confirmed within ``give_up_s`` is reported by ``expired`` and dropped.
+docs/protocol.md, "Real-time commands": the host writes each ``R`` frame twice back to
+back, then once every ``REPEAT_S`` until its ``O``/``E`` arrives (or, for ``HOLD``, a
+status in HOLD or ALARM: a stale IDLE or RUN status could predate it), and gives up
+after ``GIVE_UP_S``. ``UrgentCommands.request(verb, now)`` queues one (a new id from the
+session's command sequence; a request of a verb already waiting is that one); ``due(now)``
+gives the frames to write now; ``on_answer(frame)`` and ``on_status(state)`` end them;
+``expired(now)`` gives those that never got an answer. A ``STOP`` drops a waiting
+``HOLD``/``RESUME`` and a ``HOLD`` a waiting ``RESUME`` (and the other way round): an
+operator's later click is the one that counts.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from collections.abc import Callable
+from dataclasses import dataclass
 
-from app.comm.frame import FEED_HOLD, STOP_FLUSH
+from app.comm.frame import Error, Ok, RealtimeCommand
 
-REPEAT_S = 0.1
+REPEAT_S = 0.01
+FIRST_COPIES = 2
 GIVE_UP_S = 5.0
-CONFIRMS = {FEED_HOLD: frozenset({"HOLD", "IDLE", "ALARM"}), STOP_FLUSH: frozenset({"IDLE", "ALARM"})}
-NAMES = {FEED_HOLD: "feed hold", STOP_FLUSH: "stop"}
+CONFIRMS = {"HOLD": frozenset({"HOLD", "ALARM"})}
+NAMES = {"HOLD": "feed hold", "RESUME": "resume", "STOP": "stop", "RESET": "reset"}
+SUPERSEDES = {"STOP": ("HOLD", "RESUME"), "HOLD": ("RESUME",), "RESUME": ("HOLD",),
+              "RESET": ("HOLD", "RESUME", "STOP")}
 
 
 @dataclass
-class RealtimeRepeater:
-    """Pending real-time bytes with their first and last send times."""
+class Urgent:
+    """One ``R`` frame waiting for its answer."""
 
-    repeat_s: float = REPEAT_S
-    give_up_s: float = GIVE_UP_S
-    _pending: dict[bytes, list[float]] = field(default_factory=dict)
+    frame: RealtimeCommand
+    first: float
+    last: float | None = None
 
-    def request(self, byte: bytes, now: float) -> None:
-        """Send ``byte`` at the next ``due`` and repeat it until confirmed."""
-        if byte not in self._pending:
-            self._pending[byte] = [now, now - self.repeat_s]
-        if byte == STOP_FLUSH:
-            self._pending.pop(FEED_HOLD, None)
 
-    def pending(self, byte: bytes) -> bool:
-        return byte in self._pending
+class UrgentCommands:
+    """Pending ``R`` frames and their repeats (see the module docstring)."""
 
-    def due(self, now: float) -> bytes:
-        """The bytes to write at ``now`` (empty if none)."""
-        out = b""
-        for byte, times in self._pending.items():
-            if now - times[1] >= self.repeat_s - 1e-9:
-                times[1] = now
-                out += byte
+    def __init__(self, ids: Callable[[], int]) -> None:
+        self.ids = ids
+        self._pending: dict[str, Urgent] = {}
+
+    def request(self, verb: str, now: float) -> RealtimeCommand:
+        """Send ``R <id> verb`` at the next ``due`` and repeat it until answered."""
+        for older in SUPERSEDES.get(verb, ()):
+            self._pending.pop(older, None)
+        if verb not in self._pending:
+            self._pending[verb] = Urgent(RealtimeCommand(self.ids(), verb), now)
+        return self._pending[verb].frame
+
+    def pending(self, verb: str) -> bool:
+        return verb in self._pending
+
+    def due(self, now: float) -> list[RealtimeCommand]:
+        """The frames to write at ``now`` (two copies the first time)."""
+        out = []
+        for urgent in self._pending.values():
+            if urgent.last is None:
+                urgent.last = now
+                out += [urgent.frame] * FIRST_COPIES
+            elif now - urgent.last >= REPEAT_S - 1e-9:
+                urgent.last = now
+                out.append(urgent.frame)
         return out
 
-    def confirm(self, machine_state: str) -> list[bytes]:
-        """A status with ``machine_state`` arrived: drop and return the bytes it confirms."""
-        done = [b for b in self._pending if machine_state in CONFIRMS[b]]
-        for byte in done:
-            del self._pending[byte]
+    def on_answer(self, frame: Ok | Error) -> RealtimeCommand | None:
+        """An ``O``/``E``: the ``R`` frame it answers (no longer repeated), else None."""
+        for verb, urgent in self._pending.items():
+            if urgent.frame.id == frame.id:
+                del self._pending[verb]
+                return urgent.frame
+        return None
+
+    def on_status(self, machine_state: str) -> list[RealtimeCommand]:
+        """A status in ``machine_state``: the ``R`` frames it shows took effect (dropped)."""
+        done = [u.frame for verb, u in self._pending.items() if machine_state in CONFIRMS.get(verb, ())]
+        for frame in done:
+            del self._pending[frame.verb]
         return done
 
-    def expired(self, now: float) -> list[bytes]:
-        """Drop and return the bytes unconfirmed for ``give_up_s``."""
-        gone = [b for b, (first, _) in self._pending.items() if now - first > self.give_up_s]
-        for byte in gone:
-            del self._pending[byte]
+    def expired(self, now: float) -> list[RealtimeCommand]:
+        """Drop and return the frames unanswered for ``GIVE_UP_S``."""
+        gone = [u.frame for u in self._pending.values() if now - u.first > GIVE_UP_S]
+        for frame in gone:
+            del self._pending[frame.verb]
         return gone
 
     def clear(self) -> None:

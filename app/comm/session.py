@@ -12,9 +12,13 @@ are the process's sequence (``commands.next_command_id``).
 Everything observable goes to the ``SessionListener`` as frozen events. Streams
 (``stream.py``) use the selective-repeat credit window of ``window.py``; commands
 (``commands.py``) carry one outstanding id retried with the same id; the link
-monitor (``heartbeat.py``) pings every second (also while a command is outstanding)
+monitor (``heartbeat.py``) pings every 0.25 s (also while a command is outstanding)
 and calls the link degraded after 2 s and lost after 3 s of silence; real-time
-bytes (``realtime.py``) repeat every 100 ms until a status confirms them. Job
+commands (``R`` frames, ``realtime.py``) go out twice, then every 10 ms until answered;
+the resend rate of the last minute (``link_health.py``) rides on every ``LinkEvent``
+(at most one a second while it changes); each hold, stop or alarm the status explains
+(``why``, ``holds.py``) is reported once with ``on_hold``, and logged when this host
+did not ask for it. Job
 recovery after a link loss: same boot id ->
 ``RESUME_OFFERED`` (``resume_after_reconnect``); new boot id -> ``RESTART_REQUIRED``
 (home, then ``confirm_restart`` restarts at done+1 behind the modal preamble).
@@ -41,9 +45,11 @@ from app.comm.events import (
     StatusEvent,
 )
 from app.comm.heartbeat import LinkMonitor, LinkState
+from app.comm.holds import HoldWatch, source_words
 from app.comm.jobs import UNKNOWN_BOOT, JobControl
+from app.comm.link_health import ResendMeter
 from app.comm.listener import JOB_STATES, SENDING_STATES, TRANSITIONS, SessionListener, SessionState
-from app.comm.realtime import NAMES, RealtimeRepeater
+from app.comm.realtime import NAMES, UrgentCommands
 from app.comm.rtt import RttEstimator
 from app.comm.stops import StopWatch
 from app.comm.stream import Stream
@@ -52,8 +58,7 @@ from app.i18n import msg
 from app.profile import Link
 
 S = SessionState
-QUALITY_LIMIT = 0.10
-QUALITY_MIN_FRAMES = 20
+HEALTH_EVERY_S = 1.0
 
 
 class Session(JobControl):
@@ -69,7 +74,11 @@ class Session(JobControl):
         self.state = S.DISCONNECTED
         self.link = LinkMonitor(link.heartbeat_s, link.degraded_s, link.lost_s)
         self.commands = CommandQueue(ids=ids or next_command_id)
-        self.realtime = RealtimeRepeater()
+        self.urgent = UrgentCommands(self.commands.take_id)
+        self.health = ResendMeter()
+        self.holds = HoldWatch()
+        self.asked_hold = False  # this host asked for the hold or stop under way
+        self._stop_taken = False  # the machine answered this host's R STOP
         self.deframer = dfr.Deframer()
         self.rtt = RttEstimator()
         self.stream: Stream | None = None
@@ -83,12 +92,13 @@ class Session(JobControl):
         self._out = bytearray()
         self._then: dict[int, Callable[[CommandResult], None]] = {}
         self._warned = False
+        self._health_shown: tuple[int, float] = (0, float("-inf"))  # percent shown, when
         self._last_progress = (None, float("-inf"))
         self._handlers: dict[str, Callable] = {
             "A": self._on_ack, "N": self._on_nak, "F": self._on_finished, "O": self._on_answer,
             "E": self._on_answer, "I": self._on_answer, "S": self._on_status,
             "X": self._on_alarm, "L": self._on_machine_log, "D": self._on_unexpected,
-            "C": self._on_unexpected,
+            "C": self._on_unexpected, "R": self._on_unexpected,
         }
 
     # ------------------------------------------------------------------ connection
@@ -97,7 +107,8 @@ class Session(JobControl):
         """A transport was opened: start talking (ask for a status)."""
         self._write = write
         self.deframer = dfr.Deframer()
-        self.realtime.clear()
+        self.urgent.clear()
+        self.holds.forget()
         self._last_progress = (None, float("-inf"))
         self.program_stops.forget()
         self.link.attach(self.clock())
@@ -143,6 +154,7 @@ class Session(JobControl):
         self._tick_realtime(now)
         self._tick_commands(now)
         self._tick_stream(now)
+        self._check_quality(now)
         self._flush()
 
     # ------------------------------------------------------------------ commands
@@ -188,24 +200,26 @@ class Session(JobControl):
 
     # ------------------------------------------------------------------ real time
 
+    def request_urgent(self, verb: str) -> None:
+        """Send ``R <id> verb`` now and repeat it until answered (docs/protocol.md)."""
+        self.urgent.request(verb, self.clock())
+        self.tick()
+
     def _tick_realtime(self, now: float) -> None:
-        for byte in self.realtime.expired(now):
-            what = NAMES[byte]
+        for frame in self.urgent.expired(now):
+            what = NAMES[frame.verb]
             self._error("REALTIME_UNCONFIRMED", msg("the machine did not confirm the {what}", what=what))
-        data = self.realtime.due(now) if self.attached else b""
-        if data:
-            self._out += data
-            for byte in data:
-                self.listener.on_frame(FrameEvent("tx", "!" if byte == 0x21 else "^X", NAMES[bytes([byte])]))
+            self._urgent_unanswered(frame)
+        if self.attached:
+            for frame in self.urgent.due(now):
+                self._send(frame)
 
     # ------------------------------------------------------------------ incoming
 
-    def _receive(self, item: fr.Frame | dfr.Dropped | dfr.Realtime, now: float) -> None:
+    def _receive(self, item: fr.Frame | dfr.Dropped, now: float) -> None:
         if isinstance(item, dfr.Dropped):
             text = item.raw.decode("ascii", "replace")
             self.listener.on_frame(FrameEvent("rx", "?", f"{item.reason}: {text!r}", ok=False))
-            return
-        if isinstance(item, dfr.Realtime):
             return
         self.link.heard(now)
         if self.link.update(now):
@@ -219,6 +233,13 @@ class Session(JobControl):
     def _on_answer(self, frame: fr.Ok | fr.Error | fr.Info, now: float) -> None:
         if isinstance(frame, fr.Error) and frame.id is None:
             self._line_refused(frame)
+            return
+        urgent = self.urgent.on_answer(frame) if not isinstance(frame, fr.Info) else None
+        if urgent is not None:
+            ok = isinstance(frame, fr.Ok)
+            info = frame.info if ok else frame.text
+            self._command_done(CommandResult(frame.id, urgent.verb, (), ok, info, "" if ok else frame.code))
+            self._urgent_answered(urgent, ok, info)
             return
         result = self.commands.on_answer(frame)
         if result is not None:
@@ -234,7 +255,7 @@ class Session(JobControl):
 
     def _on_status(self, frame: fr.Status, now: float) -> None:
         event = StatusEvent(frame.boot, frame.state, frame.x, frame.y, frame.z, frame.acc,
-                            frame.done, frame.free, frame.rpm, frame.flags, now)
+                            frame.done, frame.free, frame.rpm, frame.flags, now, frame.why)
         self.status = event
         self.listener.on_status(event)
         old_boot = self.boot
@@ -249,9 +270,20 @@ class Session(JobControl):
         result = self.commands.on_status()
         if result is not None:
             self._command_done(result)
-        for byte in self.realtime.confirm(event.state):
-            self._realtime_confirmed(byte)
+        self.urgent.on_status(event.state)
         self._job_status(event, now)
+        self._report_hold(event)
+
+    def _report_hold(self, event: StatusEvent) -> None:
+        """Tell the listener (and the log, when not asked for) why the machine holds."""
+        hold = self.holds.update(event, self.asked_hold)
+        if hold is None:
+            return
+        if hold.why and not hold.asked:
+            said = {"source": source_words(hold.source), "reason": hold.text}
+            self._log("warning", msg("the machine holds ({source}): {reason}", **said) if hold.state == "HOLD"
+                      else msg("the machine stopped ({source}): {reason}", **said))
+        self.listener.on_hold(hold)
 
     # ------------------------------------------------------------------ link
 
@@ -262,18 +294,29 @@ class Session(JobControl):
             self._command_done(result)
 
     def _emit_link(self, reason: str = "") -> None:
-        rate = self.stream.window.resend_rate if self.stream else 0.0
-        silent = self.link.silent_for(self.clock()) if self.attached else 0.0
-        self.listener.on_link_changed(LinkEvent(self.link.state.value, silent, rate, self._warned, reason))
+        now = self.clock()
+        rate = self.health.rate(now)
+        silent = self.link.silent_for(now) if self.attached else 0.0
+        self._health_shown = (round(rate * 100), now)
+        self.listener.on_link_changed(LinkEvent(self.link.state.value, silent, rate, self._warned, reason,
+                                                self.health.sent(now), self.health.resent(now)))
 
-    def _check_quality(self) -> None:
-        window = self.stream.window if self.stream else None
-        bad = bool(window and window.sent >= QUALITY_MIN_FRAMES and window.resend_rate > QUALITY_LIMIT)
+    def _check_quality(self, now: float) -> None:
+        """The resend rate of the last minute: warn while it is high (logged when the
+        warning starts and ends), and show its figure at most once a second."""
+        bad = self.health.warning(now)
         if bad != self._warned:
             self._warned = bad
+            said = {"rate": float(self.health.rate(now)), "sent": self.health.sent(now)}
             if bad:
-                self._log("warning", msg("poor link: {rate:.0%} of the frames were resent",
-                                           rate=float(window.resend_rate)))
+                self._log("warning", msg("poor link: {rate:.0%} of the {sent} frames of the last minute "
+                                         "were resent", **said))
+            else:
+                self._log("info", msg("link quality back: {rate:.0%} of the {sent} frames of the last "
+                                      "minute were resent", **said))
+            self._emit_link()
+        shown, when = self._health_shown
+        if round(self.health.rate(now) * 100) != shown and now - when >= HEALTH_EVERY_S:
             self._emit_link()
 
     # ------------------------------------------------------------------ output and helpers
@@ -315,7 +358,6 @@ class Session(JobControl):
                              stream.program_total, stream.name, stream.refused)
             self.listener.on_progress(stream.progress())
             self.listener.on_job_finished(event)
-        self._warned = False
         self._set_state(S.READY if self.attached else S.DISCONNECTED)
 
     def _offer(self, offer: ResumeOffer, state: SessionState) -> None:

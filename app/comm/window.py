@@ -52,6 +52,7 @@ class SendWindow:
     _first_sent: dict[int, float] = field(default_factory=dict)
     _resent_seqs: set[int] = field(default_factory=set)
     _retries: dict[int, int] = field(default_factory=dict)
+    _first_retry: dict[int, float] = field(default_factory=dict)
     _timer: float | None = None
     _repeat: set[int] = field(default_factory=set)
     _last_sent: dict[int, float] = field(default_factory=dict)
@@ -130,6 +131,7 @@ class SendWindow:
         self.room_end = self.acked + free
         self._timer = None
         self._retries.clear()
+        self._first_retry.clear()
         self._repeat.clear()
         self._repeated_at.clear()
 
@@ -163,6 +165,7 @@ class SendWindow:
             self._first_sent.pop(old, None)
             self._resent_seqs.discard(old)
             self._retries.pop(old, None)
+            self._first_retry.pop(old, None)
             self._repeated_at.pop(old, None)
         self.acked = seq
         self.next_seq = max(self.next_seq, seq + 1)
@@ -179,11 +182,11 @@ class SendWindow:
 
     def _count_retry(self, seq: int, now: float = 0.0) -> bool:
         """One more resend of ``seq``; False (and ``failed`` set) past ``max_retries``
-        resends that took at least ``MIN_FAIL_S`` since it was first sent."""
+        resends that took at least ``MIN_FAIL_S`` since its first resend."""
         tries = self._retries.get(seq, 0) + 1
         self._retries[seq] = tries
-        first = self._first_sent.get(seq, now)
-        if tries > self.max_retries and now - first >= MIN_FAIL_S:
+        first = self._first_retry.setdefault(seq, now)  # not the first send: a frame deep in
+        if tries > self.max_retries and now - first >= MIN_FAIL_S:  # the window waits its turn
             self.failed = msg("line {seq} was resent {count} times without an acknowledgement", seq=seq,
                               count=self.max_retries)
             return False

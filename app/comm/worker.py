@@ -14,7 +14,7 @@ Signals (all carry one frozen dataclass of ``app.comm.events`` unless said other
 ``status_changed``            ``StatusEvent``: every ``S`` frame (position, state, flags, ...)
 ``progress_changed``          ``ProgressEvent``: job/upload progress in program line indices
 ``link_changed``              ``LinkEvent``: CONNECTED / DEGRADED / LOST / DISCONNECTED,
-                              resend rate and link-quality warning
+                              resend rate of the last minute and link-quality warning
 ``alarm_raised``              ``AlarmEvent``: an ``X`` frame (LIMIT, HOST_LOST, BOOT, ...)
 ``log_added``                 ``LogEvent``: a line for the log (host or machine)
 ``frame_logged``              ``FrameEvent``: console traffic; D/A/F/S only when verbose
@@ -23,7 +23,10 @@ Signals (all carry one frozen dataclass of ``app.comm.events`` unless said other
 ``error_occurred``            ``ErrorEvent``: LINK_LOST, RETRIES_EXHAUSTED, MACHINE_RESET, ...
 ``resume_offered``            ``ResumeOffer``: after a reconnect mid-job (same or new boot)
 ``program_stopped``           ``ProgramStopEvent``: the machine holds at M00/M01/M06 (RESUME goes on)
+``hold_reported``             ``HoldEvent``: why the machine holds or stopped (status ``why``), once
 ``connected``                 ``str``: the URL just opened
+``capabilities_changed``      ``driver.Capabilities`` of the machine just connected
+``machine_info_changed``      ``grbl.events.MachineInfo``: a GRBL machine's welcome and ``$I``
 ``connect_failed``            ``str``: why a URL could not be opened
 ``disconnected``              ``str``: why the transport closed (operator, unplug, ...)
 ``finished``                  no argument: the worker has shut down (thread may quit)
@@ -39,7 +42,10 @@ Slots (call them through ``SerialController`` of the same name, or a queued sign
 (a ``Program`` or a list of device lines), ``pause()``, ``resume()``, ``stop()``,
 ``jog(axis, distance_mm, feed_mm_min)``, ``home(mode)``, ``upload_to_sd(name, lines)``,
 ``run_from_sd(name)``, ``list_sd()``, ``delete_sd(name)``, ``resume_after_reconnect()``,
-``confirm_restart()``, ``set_verbose_frames(on)``, ``shutdown()``. The session's timers
+``confirm_restart()``, ``set_verbose_frames(on)``, ``shutdown()``, ``machine_call(name, args)``
+(what only some drivers have: overrides, jog cancel, unlock, ...). ``connect_to(url, driver)``
+picks the session: the frame protocol's ``Session`` or ``GrblSession`` (``app/comm/driver.py``).
+The session's timers
 run on the wall clock (a machine simulated N times faster keeps its link timers in
 wall-clock time), on the transport's ``clock()`` if it has one (``sim://``), or on
 the ``clock`` given to the worker (tests).
@@ -52,6 +58,7 @@ import time
 
 from PySide6.QtCore import QObject, Qt, QThread, QTimer, Signal, Slot
 
+from app.comm.driver import DRIVERS, FRAME_CAPABILITIES, kind_for_url, make_session, probe
 from app.comm.events import FrameEvent, LogEvent
 from app.comm.listener import SessionListener
 from app.comm.session import Session
@@ -61,11 +68,15 @@ SLOT_NAMES = frozenset({
     "connect_to", "disconnect_from", "send_command", "start_job", "pause", "resume", "stop",
     "jog", "home", "upload_to_sd", "run_from_sd", "list_sd", "delete_sd",
     "resume_after_reconnect", "confirm_restart", "set_verbose_frames", "shutdown",
+    "machine_call",
 })
+MACHINE_CALLS = frozenset({"set_feed_override", "set_rapid_override", "set_spindle_override", "jog_cancel",
+                           "jog_to_limit", "unlock", "reset", "read_settings", "write_setting"})
 PUMP_MS = 5
+GRBL_PUMP_MS = 2  # GRBL's only window is its 128-byte buffer (11 ms at 115200): answer its oks sooner
 IDLE_PUMP_MS = 50  # with no port open: nothing arrives, the session's timers are coarse
 READ_CHUNK = 65536
-QUIET_KINDS = frozenset("DAFS")
+QUIET_KINDS = frozenset({*"DAFS", "job", "preamble", "sync", "<", "ok"})  # GRBL's stream kinds too
 
 
 class _Relay(SessionListener):
@@ -111,6 +122,12 @@ class _Relay(SessionListener):
     def on_program_stop(self, event):
         self.w.program_stopped.emit(event)
 
+    def on_hold(self, event):
+        self.w.hold_reported.emit(event)
+
+    def on_machine_info(self, event):
+        self.w.machine_info_changed.emit(event)
+
 
 class SerialWorker(QObject):
     """Owns transport and Session in the worker thread (see the module docstring)."""
@@ -127,7 +144,10 @@ class SerialWorker(QObject):
     error_occurred = Signal(object)
     resume_offered = Signal(object)
     program_stopped = Signal(object)
+    hold_reported = Signal(object)
     connected = Signal(str)
+    capabilities_changed = Signal(object)  # driver.Capabilities of the session just connected
+    machine_info_changed = Signal(object)  # grbl.events.MachineInfo: welcome and $I
     connect_failed = Signal(str)
     disconnected = Signal(str)
     finished = Signal()
@@ -136,6 +156,7 @@ class SerialWorker(QObject):
         super().__init__()
         self._fixed_clock = clock
         self.session = Session(None, _Relay(self), clock or time.monotonic)
+        self.session.capabilities = FRAME_CAPABILITIES
         self.transport = None
         self.url = ""
         self.verbose_frames = False
@@ -186,7 +207,9 @@ class SerialWorker(QObject):
         getattr(self, name)(*args)
 
     @Slot(str)
-    def connect_to(self, url: str) -> None:
+    def connect_to(self, url: str, driver: str = "") -> None:
+        """Open ``url`` and talk to it with ``driver``: "frame", "grbl", "auto" (by the URL,
+        else by what the machine says first: ``driver.probe``); "" by the URL, else frame."""
         self._close("reconnecting")
         try:
             self.transport = self._opener(url)
@@ -196,10 +219,28 @@ class SerialWorker(QObject):
             self.connect_failed.emit(str(exc))
             return
         self.url = url
+        kind = driver if driver in DRIVERS else kind_for_url(url) or (
+            driver == "auto" and probe(self.transport)) or "frame"
+        if getattr(self.session, "capabilities", FRAME_CAPABILITIES).driver != kind:
+            self.session = make_session(kind, _Relay(self))
         self.session.clock = self._clock_for(self.transport)
         self.session.attach(self._write)
-        self._pump_every(PUMP_MS)
+        early = getattr(self.transport, "probe_bytes", b"")
+        if early:
+            self.session.feed(early)
+        self._pump_every(GRBL_PUMP_MS if kind == "grbl" else PUMP_MS)
+        self.capabilities_changed.emit(getattr(self.session, "capabilities", FRAME_CAPABILITIES))
         self.connected.emit(url)
+
+    @Slot(str, object)
+    def machine_call(self, name: str, args: tuple = ()) -> None:
+        """A call only some drivers have (overrides, jog cancel, unlock...): ignored by the
+        session that has none (its capabilities say so)."""
+        if name not in MACHINE_CALLS:
+            raise AttributeError(f"no machine call {name!r}")
+        method = getattr(self.session, name, None)
+        if method is not None:
+            method(*args)
 
     @Slot()
     def disconnect_from(self) -> None:

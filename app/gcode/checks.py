@@ -101,22 +101,25 @@ def _candidates(ops: Ops, limits: np.ndarray, first: int, stop: int) -> np.ndarr
 
 
 def _violations(ops: Ops, limits: np.ndarray, shown: int = 1):
-    """Per axis and direction past ``limits``: (axis name, sign, limit, rows, values), in
-    work coordinates, rows in program order. Every row is found; the values are exact for
-    the first ``shown`` rows of each (the arcs' quadrant points are worked out only for
-    arcs the ends of which do not already decide, and for those shown). Rows are taken
-    ``BLOCK`` at a time, so the temporaries stay small whatever the program's size."""
-    found: dict[tuple[int, str], tuple[float, list, list]] = {}
+    """Per axis and direction past ``limits``: (axis name, sign, limit, rows, values,
+    count), in work coordinates: the first ``shown`` rows in program order with their
+    exact values (the arcs' quadrant points are worked out only for arcs the ends of
+    which do not already decide, and for those shown), and how many rows there are in
+    all. Rows are taken ``BLOCK`` at a time, so memory stays small whatever the
+    program's size (a file mostly outside the travel keeps no list of its rows)."""
+    found: dict[tuple[int, str], list] = {}
     for first in range(0, len(ops), BLOCK):
         for axis, sign, limit, rows, values in _block(ops, limits, shown, first, first + BLOCK):
-            _, all_rows, all_values = found.setdefault((axis, sign), (limit, [], []))
-            all_rows.append(rows)
-            all_values.append(values)
+            entry = found.setdefault((axis, sign), [limit, [], [], 0])
+            room = max(shown - sum(len(r) for r in entry[1]), 0)
+            entry[1].append(rows[:room])
+            entry[2].append(values[:room])
+            entry[3] += len(rows)
     for axis in range(3):
         for sign in "+-":
             if (axis, sign) in found:
-                limit, rows, values = found[axis, sign]
-                yield "XYZ"[axis], sign, limit, np.concatenate(rows), np.concatenate(values)
+                limit, rows, values, count = found[axis, sign]
+                yield "XYZ"[axis], sign, limit, np.concatenate(rows), np.concatenate(values), count
 
 
 def _block(ops: Ops, limits: np.ndarray, shown: int, first: int, stop: int) -> list:
@@ -163,8 +166,8 @@ def _exact_arcs(ops: Ops, moves: np.ndarray, rows: np.ndarray, low, high, exact)
 
 def _envelope(ops: Ops, profile: MachineProfile, lines: list[str], report: Report) -> Envelope:
     limits, found, seen = _limits(profile), [], {}
-    for name, sign, limit, out, vals in _violations(ops, limits, report.limit):
-        found.append((name, sign, limit, int(out[0]), float(vals[0]), len(out)))
+    for name, sign, limit, out, vals, count in _violations(ops, limits, report.limit):
+        found.append((name, sign, limit, int(out[0]), float(vals[0]), count))
         rel = ">" if sign == "+" else "<"
         for row, value in zip(out[: report.limit].tolist(), vals[: report.limit].tolist(), strict=True):
             line = int(ops.main_lines()[row])  # a subprogram's row: its calling line
@@ -172,7 +175,7 @@ def _envelope(ops: Ops, profile: MachineProfile, lines: list[str], report: Repor
                            msg("{axis}{sign} beyond travel ({value:.3f} {rel} {limit:g})", axis=name,
                                sign=sign, value=float(value), rel=rel, limit=float(limit)),
                            f"{name}{sign} beyond travel")
-        report.overflow("warning", f"{name}{sign} beyond travel", len(out) - report.limit)
+        report.overflow("warning", f"{name}{sign} beyond travel", count - report.limit)
     return Envelope(limits, found)
 
 
@@ -202,8 +205,8 @@ def preflight(ops: Ops, profile: MachineProfile, lines: list[str], offset,
     if known is not None and np.array_equal(known.limits, limits):
         found = known.found  # the load checked these limits already: no second pass
     else:
-        found = [(name, sign, limit, int(rows[0]), float(values[0]), len(rows))
-                 for name, sign, limit, rows, values in _violations(ops, limits)]
+        found = [(name, sign, limit, int(rows[0]), float(values[0]), count)
+                 for name, sign, limit, rows, values, count in _violations(ops, limits)]
     out = []
     for name, sign, limit, row, value, count in found:
         line = int(ops.main_lines()[row])

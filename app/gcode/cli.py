@@ -40,6 +40,7 @@ def _summary(p: Program) -> str:
     """The ``check`` report in the language of LANG / LC_MESSAGES (``app.i18n``)."""
     tp = p.toolpath
     low, high = tp.bounds
+    planned = p.planned  # the planner's time becomes the toolpath's
     minutes, seconds = divmod(tp.estimated_time, 60)
     bounds = "  ".join(f"{a} {localize(msg('{lo:.3f}..{hi:.3f}', lo=float(lo), hi=float(hi)))}"
                        for a, lo, hi in zip("XYZ", low, high, strict=True))
@@ -52,6 +53,9 @@ def _summary(p: Program) -> str:
         msg("cut length: {cut:.1f} mm  rapid length: {rapid:.1f} mm", cut=float(tp.cut_length),
             rapid=float(tp.rapid_length)),
         msg("estimated time: {minutes} min {seconds:.0f} s", minutes=int(minutes), seconds=float(seconds)),
+        msg("program stops: {stops} (tool changes: {changes}), not counted: {seconds:.0f} s of machine "
+            "moves around them, plus the operator's wait", stops=planned.stops, changes=planned.tool_changes,
+            seconds=float(planned.stop_seconds)),
         msg("warnings: {warnings}  errors: {errors}", warnings=len(p.warnings), errors=len(p.errors)),
     ]
     rows = [localize(row) for row in rows]

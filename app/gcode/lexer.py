@@ -4,11 +4,11 @@ Accepted (as LinuxCNC's rs274ngc reads it): words of one letter and a number, in
 either case (``g1x10Y-2.5``), and LinuxCNC's polar words ``@`` (radius) and ``^``
 (angle); spaces and tabs anywhere outside comments, even inside
 a number (``X1 0.5`` is ``X10.5``); numbers ``1``, ``.5``, ``-0.``, ``+3``; comments
-``( ... )`` anywhere and ``; ...`` to the end of the line; a ``%`` line; a leading
+``( ... )`` anywhere (not nested) and ``; ...`` to the end of the line; a ``%`` line; a leading
 ``/`` (block delete: the line is skipped); a ``*checksum`` suffix (ignored).
 
 Refused with the line and the 1-based column: ``#`` parameters, ``[`` expressions,
-o-words, an unclosed comment, a letter without a number, any other character, and a
+o-words, an unclosed or nested comment, a letter without a number, any other character, and a
 number ``limits.word_problem`` refuses (too large, a negative feed or speed, ...).
 ``lex_line`` never raises. The fast path (``bulk.py``) reads the common shapes of
 line in bulk and hands every line it is unsure of to this module.
@@ -86,10 +86,16 @@ def _number_ok(token: str) -> bool:
     return any(c in _DIGITS for c in token)
 
 
-def _skip_comment(text: str, i: int) -> int:
-    """Index after the ``)`` closing the comment opened at ``i``, or -1."""
+def _comment_end(text: str, i: int, line_no: int) -> tuple[int, LexedLine | None]:
+    """Index after the ``)`` closing the comment opened at ``i``, or the error of a
+    comment that is not closed or holds another ``(`` (rs274: "Nested comment found")."""
     end = text.find(")", i + 1)
-    return -1 if end < 0 else end + 1
+    inner = text.find("(", i + 1, len(text) if end < 0 else end)
+    if inner >= 0:
+        return i, _fail(line_no, inner, msg("nested comment: '(' inside a comment"))
+    if end < 0:
+        return i, _fail(line_no, i, msg("comment '(' is not closed on this line"))
+    return end + 1, None
 
 
 def _lead(text: str, line_no: int) -> tuple[int, LexedLine | None]:
@@ -116,9 +122,9 @@ def lex_line(text: str, line_no: int) -> LexedLine:
         if c in _SPACE:
             i += 1
         elif c == "(":
-            i = _skip_comment(text, i)
-            if i < 0:
-                return _fail(line_no, text.index("("), msg("comment '(' is not closed on this line"))
+            i, failed = _comment_end(text, i, line_no)
+            if failed:
+                return failed
         elif c == ";" or c == "*":
             break
         elif c.lower() in _SPECIAL:

@@ -70,8 +70,16 @@ class Ops:
     def starts(self) -> np.ndarray:
         """Start point of every row: the previous row's end (``origin`` for the first).
 
-        Computed once; treat the result as read-only."""
+        Computed once; treat the result as read-only. When ``end`` is the tail of an
+        array of points whose first row is the origin (as ``OpBuffer.finish`` makes it),
+        the starts are a view of that array: no copy."""
         if self._starts is None:
+            points = self.end.base
+            if (isinstance(points, np.ndarray) and points.shape == (len(self.end) + 1, 3)
+                    and points[1:].ctypes.data == self.end.ctypes.data and points.flags.writeable):
+                points[0] = self.origin  # the spare first row is the origin's (start.py)
+                self._starts = points[:-1]
+                return self._starts
             start = np.empty_like(self.end)
             if len(start):
                 start[0] = self.origin
@@ -109,6 +117,11 @@ class OpBuffer:
         plane = np.zeros(n, np.int8)
         self.blocks.append((line, kind, end, center, plane, turn, value))
 
+    def flush(self) -> None:
+        """Turn the single rows gathered so far into one array block (a caller that adds
+        many rows one at a time keeps its memory in arrays, not tuples of floats)."""
+        self._flush()
+
     def _flush(self) -> None:
         if not self.rows:
             return
@@ -131,6 +144,11 @@ class OpBuffer:
         dtypes = (np.int64, np.int8, np.float64, np.float64, np.int8, np.int32, np.float64)
         arrays = []
         for i, dtype in enumerate(dtypes):
-            arrays.append(np.concatenate(cols[i]).astype(dtype, copy=False))
+            if i == 2:  # the ends after a row of zeros: ``Ops.starts`` is then a view
+                points = np.empty((sum(len(part) for part in cols[i]) + 1, 3))
+                points[0] = 0.0
+                arrays.append(np.concatenate(cols[i], out=points[1:]))
+            else:
+                arrays.append(np.concatenate(cols[i]).astype(dtype, copy=False))
             cols[i] = None  # free each column's pieces once joined
         return Ops(*arrays, messages=self.messages)

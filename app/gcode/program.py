@@ -25,6 +25,8 @@ from app.profile import MachineProfile
 from . import bulk, checks, normalize, runner, sniff
 from . import start as job_start
 from .diagnostics import ERROR, WARNING, Diagnostic, Report
+from .estimate import Estimate, estimate
+from .estimate_lines import EventLines
 from .limits import program_checks
 from .moves import moves_of
 from .offsets import ACTIVE_SYSTEM
@@ -122,6 +124,16 @@ class Program:
     def moves_per_line(self) -> np.ndarray:
         """Number of moves each 1-based line of the main program produced (index 0 unused)."""
         return np.bincount(self.toolpath.source_line, minlength=len(self.lines) + 1)
+
+    @cached_property
+    def planned(self) -> Estimate:
+        """The machine planner's time (``estimate.py``; about 0.5 s for a million lines, so
+        in the background; the device lines need not be rendered). From then on the
+        toolpath's ``time``, and with it ``estimated_time`` and the progress per line, are
+        the planner's figures."""
+        est = estimate(self.toolpath, EventLines(self.ops, self.plan), self.profile)
+        self.toolpath.time = est.row_seconds
+        return est
 
     @cached_property
     def moves(self) -> list[dict]:

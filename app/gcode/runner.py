@@ -3,7 +3,9 @@
 Simple lines (``bulk.Scan``) in a state the fast path handles go to ``vector.run``
 in runs; every other line is lexed and interpreted by the general path. After a
 line the general path refused, the next ``SLOW_AFTER_ERROR`` lines also take the
-general path so a file full of errors costs linear time. After M2/M30 nothing more
+general path so a file full of errors costs linear time; the general path's rows
+become arrays every ``FLUSH_ROWS`` rows (a file read line by line costs no more
+memory per move than the fast path). After M2/M30 nothing more
 is interpreted; words after it earn one warning.
 """
 
@@ -24,6 +26,7 @@ from .state import State
 SLOW_AFTER_ERROR = 64
 RUN_MAX = 1 << 16
 RUN_AFTER_ERROR = 256
+FLUSH_ROWS = 1 << 14  # rows of the general path kept as tuples (~200 bytes each) before they become arrays
 
 
 def _general(state: State, text: str, line_no: int, ops: OpBuffer, report: Report) -> tuple[State, bool]:
@@ -73,6 +76,8 @@ class Runner:
             state, refused = _general(state, self.lines[i], i + 1, self.ops, self.report)
             if refused:
                 self.slow_until = i + 1 + SLOW_AFTER_ERROR
+            elif len(self.ops.rows) >= FLUSH_ROWS:
+                self.ops.flush()
             i += 1
         self.state, self.i = state, i
 

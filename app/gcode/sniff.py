@@ -2,19 +2,33 @@
 
 ``needs_expander(raw)``: ``#``, ``[``, an ``O`` word, ``WHILE``/``END``/``GOTO``/``DO``
 outside comments, ``M98``/``M99``/``G65``. It lives apart from ``macro`` so that loading
-a plain program never imports the expander.
+a plain program never imports the expander. A nested comment ``(a (b) c)`` counts as a
+comment here: no control reads it, but the line's error is the plain path's to report
+(the expander would cost a plain file its speed and far more memory).
 """
 
 from __future__ import annotations
 
 import re
 
-_COMMENTS = re.compile(rb"\([^()\n]*\)|;[^\n]*")
+_LINE_PARENS = re.compile(rb"\([^()\n]*\)")
+_SEMI = re.compile(rb";[^\n]*")
 _PARENS = re.compile(rb"\([^()]*\)")
 _PLAIN = b" \t\r0123456789.-+GXYZIJKFMSNRTgxyzijkfmsnrt"  # what plain lines are made of
 _MACRO_BYTES = b"#[oOwWeE"  # parameters, expressions, o-words, O numbers, GOTO, DO, WHILE, END
 _UPPER = bytes.maketrans(b"abcdefghijklmnopqrstuvwxyz", b"ABCDEFGHIJKLMNOPQRSTUVWXYZ")
+NESTING = 8  # levels of nested comments looked through (each costs a pass over the comments)
 _CALLS = (b"M98", b"M99", b"G65", b"M098", b"M099", b"G065")
+
+
+def _without_comments(rest: bytes, parens: re.Pattern) -> bytes:
+    """``rest`` without its comments: parentheses first (nested ones too, one pass per
+    level, up to ``NESTING`` levels), then ``;`` to the end of the line."""
+    for _ in range(NESTING):
+        rest, count = parens.subn(b"", rest)
+        if not count or b"(" not in rest:
+            break
+    return _SEMI.sub(b"", rest) if b";" in rest else rest
 
 
 def needs_expander(raw: bytes) -> bool:
@@ -24,9 +38,9 @@ def needs_expander(raw: bytes) -> bool:
     so only comments and unusual letters are left to look at."""
     rest = raw.translate(None, _PLAIN)
     if b";" in rest:
-        rest = _COMMENTS.sub(b"", rest)
+        rest = _without_comments(rest, _LINE_PARENS)
     elif b"(" in rest:  # lines need not be told apart: drop the newlines before the comments
-        rest = _PARENS.sub(b"", rest.translate(None, b"\n"))
+        rest = _without_comments(rest.translate(None, b"\n"), _PARENS)
     if any(rest.find(c) >= 0 for c in (bytes([b]) for b in _MACRO_BYTES)):
         return True
     if any(c in rest for c in (b"P", b"p", b"L", b"l")):  # M98 P, G65 P, L counts

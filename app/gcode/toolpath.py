@@ -7,7 +7,7 @@ rows): ``start``/``end`` (n, 3) mm, ``kind`` (RAPID, FEED, ARC_CW, ARC_CCW, DWEL
 at the profile's rapid rate, feeds capped at its maximum), ``length`` mm and ``time``
 s. The time of a move is a trapezoid: accelerate at ``accel_mm_s2`` to the feed,
 cruise, decelerate to a stop (a triangle when the move is too short); a dwell takes its
-seconds. ``polyline(tolerance)`` gives drawable points with arcs as chords.
+seconds. ``Program.planned`` replaces ``time`` with the machine planner's (``estimate.py``). ``polyline(tolerance)`` gives drawable points with arcs as chords.
 """
 
 from __future__ import annotations
@@ -25,6 +25,7 @@ from .ops import ARC_CCW, ARC_CW, DWELL, FEED, PLANE_AXES, RAPID, Ops
 KIND_NAMES = {RAPID: "rapid", FEED: "feed", ARC_CW: "arc", ARC_CCW: "arc", DWELL: "dwell"}
 PARALLEL_ARCS = 50_000  # arcs from which chords are computed on two threads
 PIECE_ARCS = 65_536  # arcs per call when chords are computed in the background
+BLOCK = 1 << 16  # rows whose lengths and times are worked out at a time (small temporaries)
 
 
 def move_times(length, feed_mm_min, accel: float) -> np.ndarray:
@@ -83,13 +84,15 @@ class Toolpath:
         ends = self.end.T  # a dwell ends where it starts: every row's end is a visited point
         low = np.minimum(self.start[moves[0]], [column.min() for column in ends])
         high = np.maximum(self.start[moves[0]], [column.max() for column in ends])
-        arcs = moves[(self.kind[moves] == ARC_CW) | (self.kind[moves] == ARC_CCW)]
-        arcs = arcs[self._may_bulge_out(arcs, low, high)]  # only these can widen the box
-        if len(arcs):
-            axes = np.array(PLANE_AXES)[self.plane[arcs]]
-            ends = (self.start[arcs], self.end[arcs], self.center[arcs])
-            arc_low, arc_high = arc_box(*ends, axes, self.turn[arcs])
-            low, high = np.minimum(low, arc_low.min(axis=0)), np.maximum(high, arc_high.max(axis=0))
+        all_arcs = moves[(self.kind[moves] == ARC_CW) | (self.kind[moves] == ARC_CCW)]
+        for first in range(0, len(all_arcs), BLOCK):  # a block at a time: small temporaries
+            arcs = all_arcs[first : first + BLOCK]
+            arcs = arcs[self._may_bulge_out(arcs, low, high)]  # only these can widen the box
+            if len(arcs):
+                axes = np.array(PLANE_AXES)[self.plane[arcs]]
+                ends = (self.start[arcs], self.end[arcs], self.center[arcs])
+                arc_low, arc_high = arc_box(*ends, axes, self.turn[arcs])
+                low, high = np.minimum(low, arc_low.min(axis=0)), np.maximum(high, arc_high.max(axis=0))
         return low, high
 
     def _may_bulge_out(self, arcs: np.ndarray, low: np.ndarray, high: np.ndarray) -> np.ndarray:
@@ -153,34 +156,79 @@ class Toolpath:
         return np.concatenate([start, pts]), np.concatenate([[moves[0]], index])
 
 
+def _picker(rows: np.ndarray):
+    """(``pick(column)``: those rows of a column, whether it gives views). When the rows
+    are one run (events such as the spindle only before and after the moves) it gives
+    read-only views, so the Toolpath shares the interpreted rows' memory (60 MB of a
+    1 M-move file) instead of copying it; else copies (``take``: a faster gather)."""
+    if len(rows) and int(rows[-1]) - int(rows[0]) + 1 == len(rows):
+        first, stop = int(rows[0]), int(rows[-1]) + 1
+
+        def view(column: np.ndarray) -> np.ndarray:
+            part = column[first:stop]
+            part.flags.writeable = False
+            return part
+
+        return view, True
+    return (lambda column: column.take(rows, axis=0)), False
+
+
 def build(ops: Ops, device_first: np.ndarray, profile: MachineProfile) -> Toolpath:
-    """The Toolpath of interpreted rows; ``device_first`` from the normaliser's plan."""
+    """The Toolpath of interpreted rows; ``device_first`` from the normaliser's plan. Its
+    position, kind and line columns may be read-only views of ``ops``'s and ``device_first``."""
     rows = np.flatnonzero(ops.kind <= DWELL)
-    start = ops.starts().take(rows, axis=0)  # take: a faster gather than indexing
-    end = ops.end.take(rows, axis=0)
-    kind = ops.kind[rows]
-    center = ops.center.take(rows, axis=0)
-    plane, turn = ops.plane[rows], ops.turn[rows]
+    pick, views = _picker(rows)
+    start, end = _ends(ops, rows, pick) if len(rows) and not views else (pick(ops.starts()), pick(ops.end))
+    center = pick(ops.center)
+    kind, plane, turn = pick(ops.kind), pick(ops.plane), pick(ops.turn)
     motion = profile.motion
-    value = ops.value[rows]
+    feed, length, time = (np.empty(len(rows)) for _ in range(3))
+    for a in range(0, len(rows), BLOCK):  # a block at a time: small temporaries
+        part = slice(a, a + BLOCK)
+        value = ops.value.take(rows[part])
+        feed[part], length[part], time[part] = _timing(start[part], end[part], center[part], kind[part],
+                                                       plane[part], turn[part], value, motion)
+    source, device = pick(ops.main_lines()), pick(device_first)
+    return Toolpath(start, end, kind, center, plane, turn, source, device, feed, length, time)
+
+
+def _ends(ops: Ops, rows: np.ndarray, pick) -> tuple[np.ndarray, np.ndarray]:
+    """(start, end) of the rows: views of one (n + 1, 3) array of points, each move
+    starting where the one before ended (the rows left out, the events, keep the
+    position: checked, else the starts are a copy of their own)."""
+    events = np.flatnonzero(ops.kind > DWELL)
+    before = np.maximum(events - 1, 0)
+    still = np.where(events[:, None] > 0, ops.end[before], 0.0)
+    if not np.array_equal(ops.end[events], still):  # an event that moves: not the case today
+        return pick(ops.starts()), pick(ops.end)
+    points = np.empty((len(rows) + 1, 3))
+    points[0] = ops.starts()[rows[0]]
+    ops.end.take(rows, axis=0, out=points[1:])
+    start, end = points[:-1], points[1:]
+    start.flags.writeable = end.flags.writeable = False  # they share their memory
+    return start, end
+
+
+def _timing(start, end, center, kind, plane, turn, value, motion):
+    """(feed, length, time) of some rows of a Toolpath (see the module docstring)."""
     feed = np.minimum(value, motion.max_feed_mm_min)
-    feed = np.where(feed > 0, feed, motion.max_feed_mm_min)
+    feed[~(feed > 0)] = motion.max_feed_mm_min
     feed[kind == RAPID] = motion.rapid_mm_min
-    step = end - start
-    step *= step  # the same sum of squares as before, with fewer temporaries
-    length = step[:, 0] + step[:, 1]
-    length += step[:, 2]
-    del step
+    length = np.zeros(len(kind))
+    for axis in range(3):
+        step = end[:, axis] - start[:, axis]
+        step *= step
+        length += step
     np.sqrt(length, out=length)
     arc = np.flatnonzero((kind == ARC_CW) | (kind == ARC_CCW))
-    length[arc] = arc_length(start.take(arc, axis=0), end.take(arc, axis=0), center.take(arc, axis=0),
-                             np.take(PLANE_AXES, plane[arc], axis=0), turn[arc])
+    if len(arc):
+        length[arc] = arc_length(start.take(arc, axis=0), end.take(arc, axis=0), center.take(arc, axis=0),
+                                 np.take(PLANE_AXES, plane[arc], axis=0), turn[arc])
     time = move_times(length, feed, motion.accel_mm_s2)
     dwell = kind == DWELL
     time[dwell] = value[dwell]
     feed[dwell] = 0.0
-    source, device = ops.main_lines()[rows], device_first[rows]
-    return Toolpath(start, end, kind, center, plane, turn, source, device, feed, length, time)
+    return feed, length, time
 
 
 def _joined(parts: list[tuple[np.ndarray, np.ndarray]], sizes: list[int]) -> tuple[np.ndarray, np.ndarray]:

@@ -2,9 +2,12 @@
 
 Qt-free. The file sits next to ``settings.json`` in the per-user config folder
 (``default_path()``, from platformdirs; the GUI may pass its own). ``load_tools(path)``
-never raises: a missing file is an empty table, a damaged or out-of-range one is an
-empty table plus a message naming what was wrong. ``save_tools`` writes a temporary
-file and renames it over the old one, so a crash never leaves half a table.
+never raises: a missing file is an empty table; a file that cannot be a table (not a
+regular file, too big, nested too deep, not JSON: ``reading.load_json``) is set aside
+as ``tools.json.damaged`` and the table is empty, with a message; an out-of-range value
+gives an empty table and a message naming it. ``save_tools`` writes through
+``app.atomic.write_atomic`` (a unique temporary name, fsync, rename), so two windows
+saving at once never fail nor leave a reader an empty or half table.
 
 The interpreter reads the table as ``dict[int, Tool]`` (``State.tools``): ``T``/``M6``
 and ``M61`` pick a tool, ``G43 H`` applies its length, ``G41 D``/``G42 D`` its radius.
@@ -14,11 +17,13 @@ from __future__ import annotations
 
 import json
 import math
-import os
 from dataclasses import asdict, dataclass
 from pathlib import Path
 
+from app.atomic import aside_note, write_atomic
 from app.i18n import Message, msg
+
+from .reading import SourceError, load_json
 
 VERSION = 1
 FILE_NAME = "tools.json"
@@ -102,14 +107,17 @@ def to_data(tools: dict[int, Tool]) -> dict:
 def load_tools(path: Path) -> LoadedTools:
     """Read the table at ``path`` (see the module docstring); never raises."""
     try:
-        text = Path(path).read_text(encoding="utf-8")
+        data = load_json(path)
     except FileNotFoundError:
         return LoadedTools({})
-    except (OSError, UnicodeDecodeError) as exc:
+    except SourceError as exc:
+        damaged = msg("{path}: the tool table is damaged ({error})", path=str(path), error=_reason(exc))
+        return LoadedTools({}, aside_note(path, damaged))
+    except OSError as exc:
         return LoadedTools({}, msg("{path}: cannot read the tool table ({error}); the table is empty",
                                    path=str(path), error=str(exc)))
     try:
-        return LoadedTools(from_data(json.loads(text)))
+        return LoadedTools(from_data(data))
     except (ValueError, TypeError) as exc:
         return LoadedTools({}, msg("{path}: the tool table is damaged ({error}); the table is empty",
                                    path=str(path), error=_reason(exc)))
@@ -121,9 +129,5 @@ def _reason(exc: Exception):
 
 
 def save_tools(path: Path, tools: dict[int, Tool]) -> None:
-    """Write the table atomically (temporary file, then ``os.replace``)."""
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    tmp = path.with_name(path.name + ".tmp")
-    tmp.write_text(json.dumps(to_data(tools), indent=2), encoding="utf-8")
-    os.replace(tmp, path)
+    """Write the table atomically (``app.atomic.write_atomic``); OSError if it cannot."""
+    write_atomic(path, json.dumps(to_data(tools), indent=2))

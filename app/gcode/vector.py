@@ -100,7 +100,7 @@ def _geometry(run: _Run, stop: int, rows: np.ndarray, state: State):
     mm = [run.v[c][:stop] if run.metric else run.v[c][:stop] * scale for c in "XYZ"]
     if state.absolute:  # program values plus the work offsets in force (offsets.py)
         total = state.offsets.total()
-        end = [_ffill(mm[i] + total[i] if total[i] else mm[i], state.pos[i]) for i in range(3)]
+        end = [_ffill(mm[i] + total[i], state.pos[i]) for i in range(3)]  # -0.0 + 0.0 is 0.0, as motion.py
     else:  # G91: every axis word is a step from where the tool is
         steps = [np.nan_to_num(m) for m in mm]
         end = [np.cumsum(np.concatenate(([state.pos[i]], steps[i])))[1:] for i in range(3)]

@@ -37,3 +37,38 @@ def commanded_position(model, executing_seq: int, measured) -> np.ndarray:
     hi = int(np.searchsorted(geometry.move[1:], last, "right")) + 1
     points = geometry.points[lo:hi]
     return nearest_on_polyline(points, p) if len(points) else p
+
+
+class SpindleTrack:
+    """The commanded spindle speed along a job's device lines. ``at(seq)`` is the speed in
+    force while line ``seq`` runs; the lines are folded in as the job goes (a job only
+    moves forward), so no pass over a big program happens at its start. ``lines`` may be
+    a function giving them, called at the first question (a program renders its device
+    lines on first use: by then the job's start has done it)."""
+
+    def __init__(self, lines, start_rpm: float = 0.0):
+        self._lines, self.start_rpm = lines, start_rpm
+        self._restart()
+
+    @property
+    def lines(self):
+        if callable(self._lines):
+            self._lines = self._lines()
+        return self._lines
+
+    def _restart(self) -> None:
+        from app.comm.modal import ModalState
+
+        self.state = ModalState(spindle_rpm=self.start_rpm or None)
+        self.folded = 0  # lines[:folded] are in ``state``
+
+    def at(self, seq: int) -> float:
+        if seq + 1 < self.folded:
+            self._restart()  # asked about an earlier line: fold again from the start
+        lines, state = self.lines, self.state
+        for index in range(self.folded, min(seq + 1, len(lines))):
+            line = lines[index]
+            if line.startswith(("M", "m")):  # the dialect's spindle words ride on M lines only
+                state.apply(line)
+        self.folded = max(self.folded, min(seq + 1, len(lines)))
+        return float(state.spindle_rpm or 0.0)

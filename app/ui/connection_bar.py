@@ -1,5 +1,6 @@
-"""Connection bar: port (simulator first, refreshed when the list opens), baud,
-Connect / Disconnect, the link indicator and the machine's state."""
+"""Connection bar: port (simulators first, refreshed when the list opens), baud, the
+protocol (auto, this mill's frames, GRBL), Connect / Disconnect, the link indicator, what
+the machine says it is (a GRBL's welcome and ``$I``) and the machine's state."""
 
 from __future__ import annotations
 
@@ -33,6 +34,11 @@ MACHINE_STATES = {
     "JOG": QT_TRANSLATE_NOOP("MachineState", "JOG"),
     "ALARM": QT_TRANSLATE_NOOP("MachineState", "ALARM"),
 }
+DRIVERS = (  # the connection bar's protocol choice: (driver for the worker, shown name)
+    ("auto", QT_TRANSLATE_NOOP("Drivers", "Auto")),
+    ("frame", QT_TRANSLATE_NOOP("Drivers", "This mill")),
+    ("grbl", QT_TRANSLATE_NOOP("Drivers", "GRBL")),
+)
 FLAG_WORDS = {
     "H": QT_TRANSLATE_NOOP("MachineFlags", "homed"),
     "C": QT_TRANSLATE_NOOP("MachineFlags", "cover open"),
@@ -90,16 +96,22 @@ class ConnectionBar(QWidget):
         for rate in BAUDS:
             self.baud.addItem(str(rate), rate)
         self.baud.setCurrentText("115200")
+        self.driver = QComboBox()
+        for _ in DRIVERS:
+            self.driver.addItem("")
         self.button = QPushButton()
         self.button.clicked.connect(self._clicked)
         self.link = QLabel()
         self.state = QLabel("—")
         self.state.setMinimumWidth(160)
         self.port_label, self.baud_label, self.machine_label = QLabel(), QLabel(), QLabel()
+        self.driver_label, self.info = QLabel(), QLabel()
         layout = QHBoxLayout(self)
         layout.setContentsMargins(4, 0, 4, 0)
-        for widget in (self.port_label, self.ports, self.baud_label, self.baud, self.button, self.link):
+        for widget in (self.port_label, self.ports, self.baud_label, self.baud, self.driver_label,
+                       self.driver, self.button, self.link):
             layout.addWidget(widget)
+        layout.addWidget(self.info)
         layout.addWidget(self.machine_label)
         layout.addWidget(self.state)
         self.connected = False
@@ -111,6 +123,9 @@ class ConnectionBar(QWidget):
         self.port_label.setText(self.tr("Port"))
         self.baud_label.setText(self.tr("Baud"))
         self.machine_label.setText(self.tr("Machine:"))
+        self.driver_label.setText(self.tr("Protocol"))
+        for at, (_key, name) in enumerate(DRIVERS):
+            self.driver.setItemText(at, QCoreApplication.translate("Drivers", name))
         self.set_connected(self.connected)
         self.set_link(*self._link_shown)
         state, flags = self._state_shown
@@ -133,6 +148,18 @@ class ConnectionBar(QWidget):
         self.button.setText(self.tr("Disconnect") if connected else self.tr("Connect"))
         self.ports.setEnabled(not connected)
         self.baud.setEnabled(not connected)
+        self.driver.setEnabled(not connected)
+        if not connected:
+            self.info.clear()
+
+    def driver_choice(self) -> str:
+        """"auto", "frame" or "grbl" (``app.comm.driver``)."""
+        return DRIVERS[max(self.driver.currentIndex(), 0)][0]
+
+    def set_machine_info(self, text: str) -> None:
+        """What the machine says it is (e.g. ``Grbl 1.1h · 1.1h.20190830``), shown as it is."""
+        self.info.setText(text)
+        self.info.setToolTip(text)
 
     def set_link(self, state: str, detail: str = "") -> None:
         """``detail`` is shown as it is: the caller translates it."""

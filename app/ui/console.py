@@ -27,6 +27,16 @@ from app.ui.numbers import decimal, fill, integer
 
 MAX_LINES = 4000
 NOISY_KINDS = frozenset("SAFD")  # status and stream frames, hidden unless asked for
+HEARTBEAT_VERBS = frozenset({"PING", "STATUS"})  # the heartbeat and its answers: hidden with them
+
+
+def is_noise(kind: str, text: str) -> bool:
+    """A status or stream frame, or the heartbeat's command (``C <id> PING``) and its
+    answer: what the "stream/status frames" box shows, hidden by default."""
+    if kind in NOISY_KINDS:
+        return True
+    words = text.split()
+    return kind in "CO" and len(words) >= 3 and words[2] in HEARTBEAT_VERBS
 
 
 class ConsoleView(QWidget):
@@ -105,7 +115,7 @@ class ConsoleView(QWidget):
             direction == "rx" and not self.show_rx.isChecked()
         ):
             return False
-        if kind in NOISY_KINDS and not self.show_stream.isChecked():
+        if is_noise(kind, text) and not self.show_stream.isChecked():
             return False
         needle = self.filter.text().strip().lower()
         return not needle or needle in text.lower()

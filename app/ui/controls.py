@@ -1,5 +1,5 @@
 """Machine controls: homing, job start / pause / resume / stop, spindle, work zero and
-check mode. Emits requests; ``set_state`` enables what makes sense now."""
+check mode. Emits requests; the window's state table (``app/ui/enabler.py``) enables them."""
 
 from __future__ import annotations
 
@@ -58,7 +58,10 @@ class MachineControls(QWidget):
         layout.addWidget(self._zero_box())
         layout.addStretch(1)
         self._rpm_measured: int | None = None
-        self.set_state(connected=False, busy=False, paused=False, has_program=False)
+        self._rpm_commanded: float | None = None
+        widgets = [*self.buttons.values(), *self.jog.buttons.values(), self.check_mode, self.override_travel]
+        for widget in widgets:
+            widget.setEnabled(False)  # until the window's state table says otherwise
         self.retranslate_ui()
 
     def retranslate_ui(self) -> None:
@@ -75,7 +78,7 @@ class MachineControls(QWidget):
         self.rpm.setSuffix(self.tr(" rpm"))
         self.zero_box.setTitle(self.tr("Work zero (here)"))
         self.rpm_label.clear()
-        self.set_rpm(self._rpm_measured)
+        self.set_rpm(self._rpm_measured, self._rpm_commanded)
 
     def changeEvent(self, event) -> None:  # noqa: N802 (Qt override)
         if event.type() == QEvent.Type.LanguageChange:
@@ -139,25 +142,12 @@ class MachineControls(QWidget):
     def _zero(self, axes: str) -> None:
         self.zero_requested.emit(axes)
 
-    def set_state(self, connected: bool, busy: bool, paused: bool, has_program: bool) -> None:
-        """Enable the buttons that make sense: ``busy`` = a job or upload is running."""
-        idle = connected and not busy
-        enable = {
-            "home": idle, "home_recover": idle, "start": idle and has_program,
-            "pause": connected and busy and not paused, "resume": connected and paused,
-            "stop": connected, "spindle_on": idle, "spindle_off": connected,
-        }
-        for key, button in self.buttons.items():
-            button.setEnabled(enable.get(key, idle))
-        self.jog.setEnabled(idle)
-        self.check_mode.setEnabled(idle)
-        self.override_travel.setEnabled(idle and self.check_mode.isChecked())
-
-    def set_rpm(self, rpm: int | None) -> None:
-        if rpm == self._rpm_measured and self.rpm_label.text():
+    def set_rpm(self, rpm: int | None, commanded: float | None = None) -> None:
+        """The measured speed beside the commanded one (None: not known)."""
+        if (rpm, commanded) == (self._rpm_measured, self._rpm_commanded) and self.rpm_label.text():
             return
-        self._rpm_measured = rpm
-        if rpm is None:
-            self.rpm_label.setText(self.tr("measured —"))
-        else:
-            self.rpm_label.setText(self.tr("measured %1 rpm").replace("%1", integer(rpm)))
+        self._rpm_measured, self._rpm_commanded = rpm, commanded
+        asked = "—" if commanded is None else integer(round(commanded))
+        got = "—" if rpm is None else integer(rpm)
+        text = self.tr("commanded %1 · measured %2 rpm")
+        self.rpm_label.setText(text.replace("%1", asked).replace("%2", got))

@@ -47,5 +47,7 @@ class CoverBanner(QObject):
         self.bar.setVisible(is_open)
         if is_open:
             self.w.status.showMessage(self.tr("COVER OPEN - close to continue"))
-        else:
+        elif event.state == "HOLD":  # a job held by the cover: Resume brings it back
             self.w.status.showMessage(self.tr("Cover closed: press Resume to go on"), 10000)
+        else:
+            self.w.status.showMessage(self.tr("Cover closed"), 10000)

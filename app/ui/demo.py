@@ -49,12 +49,19 @@ class DemoRunner(QObject):
         self._fail(text)
 
     def _status(self, status) -> None:
-        if self.step == "connect":
+        """Each step once the window's state table allows it (as an operator waits for the
+        button to light up)."""
+        if self.step == "connect" and self._allowed("home"):
             self.step = "home"
             self.w.operator.home("NORMAL")
-        elif self.step == "homed" and status.homed and status.state == "IDLE":
+        elif self.step == "homed" and status.homed and status.state == "IDLE" and self._allowed("start"):
             self.step = "run"
             self.w.operator.start()
+
+    def _allowed(self, control: str) -> bool:
+        from app.ui.state_table import decide
+
+        return decide(control, self.w.binder.inputs()).allowed
 
     def _command(self, result) -> None:
         if self.step != "home" or result.verb != "HOME":

@@ -13,6 +13,7 @@ import threading
 
 from PySide6.QtCore import QObject, QTimer
 
+from app.capabilities import FRAME_PROTOCOL, Capabilities
 from app.comm.transport import is_sim, open_transport
 from app.comm.worker import SerialController, SerialWorker
 
@@ -62,6 +63,7 @@ class MachineLink(QObject):
         self.controller = SerialController(self, SerialWorker(opener=self.opener))
         self.worker = self.controller.worker
         self.url = ""
+        self.driver = ""
         if profile is not None:
             _apply_link_timing(self.worker, profile.link)  # before the thread starts
         self.controller.start()
@@ -69,6 +71,12 @@ class MachineLink(QObject):
     def set_link_timing(self, link) -> None:
         """New heartbeat / degraded / lost periods, applied in the worker's thread."""
         QTimer.singleShot(0, self.worker, lambda: _apply_link_timing(self.worker, link))
+
+    @property
+    def capabilities(self) -> Capabilities:
+        """What the connected machine can do, as its driver says (the frame protocol's
+        mill until a driver provides its own ``capabilities``)."""
+        return getattr(self.worker.session, "capabilities", FRAME_PROTOCOL)
 
     @property
     def sim(self):
@@ -82,9 +90,12 @@ class MachineLink(QObject):
     def call(self, name: str, *args) -> None:
         self.controller.call(name, *args)
 
-    def connect_to(self, url: str) -> None:
+    def connect_to(self, url: str, driver: str | None = None) -> None:
+        """Open ``url``; ``driver`` "auto", "frame" or "grbl" (None: the last one chosen)."""
         self.url = url
-        self.controller.call("connect_to", url)
+        if driver is not None:
+            self.driver = driver
+        self.controller.call("connect_to", url, self.driver)
 
     def shutdown(self) -> None:
         self.controller.shutdown()

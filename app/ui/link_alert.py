@@ -10,26 +10,42 @@ from PySide6.QtWidgets import QApplication, QDialog, QHBoxLayout, QLabel, QPushB
 from app.i18n import localize
 from app.ui.numbers import integer
 
+# What was lost, by its cause: the port failed (unplugged, the machine's process ended),
+# the machine went silent, the machine's own internal link.
 LOST_TEXT = {
-    "usb": QT_TRANSLATE_NOOP("LinkAlert", "The USB link between this computer and the machine is lost: "
-                                          "no valid frame for 3 s."),
+    "port": QT_TRANSLATE_NOOP("LinkAlert", "The serial port to the machine failed (cable unplugged, or the "
+                                           "machine switched off); the details are in the console."),
+    "silence": QT_TRANSLATE_NOOP("LinkAlert", "The machine has not answered for 3 s: no valid frame came "
+                                              "over the link."),
     "uart": QT_TRANSLATE_NOOP("LinkAlert", "The machine's internal link (UART between the main board and the "
                                            "motion board) is lost."),
 }
+HEADLINE_LOST = "font-size: 14pt; font-weight: bold; color: #e03030;"
+HEADLINE_OK = "font-size: 14pt; font-weight: bold; color: #39a353;"
 
 
 def _t(text: str) -> str:
     return QCoreApplication.translate("LinkAlert", text)
 
 
-def machine_action(job_running: bool, from_sd: bool) -> str:
+def machine_action(job_running: bool, from_sd: bool, what: str = "silence", last_state: str = "") -> str:
+    """What the machine does now, as far as this computer can know: the machine's rule
+    (docs/protocol.md: a streamed job holds once the host is missed for 3 s, an SD job
+    carries on) and the last state it reported; only the machine's own report of a
+    lost internal link says what it did."""
+    said = QCoreApplication.translate("LinkAlert", "Last state seen: %1.").replace("%1", last_state or "—")
+    translate = QCoreApplication.translate
     if from_sd:
-        return QCoreApplication.translate("LinkAlert",
-                                          "The machine carries on with the job from its SD card.")
-    if job_running:
-        return QCoreApplication.translate("LinkAlert", "The machine holds the job on the path (feed hold), "
-                                                       "spindle as it was: it has not lost its place.")
-    return QCoreApplication.translate("LinkAlert", "No job was running; the machine stays where it is.")
+        rule = translate("LinkAlert", "A job from the SD card carries on without this computer.")
+    elif job_running and what == "uart":
+        rule = translate("LinkAlert", "The main board holds the job: the motion board did not answer it.")
+    elif job_running:
+        rule = translate("LinkAlert", "If the machine is still powered, it holds the job on the path once "
+                                      "it has missed this computer for 3 s; it keeps its place unless it "
+                                      "was reset.")
+    else:
+        rule = translate("LinkAlert", "No job was running.")
+    return f"{rule} {said}"
 
 
 class LinkAlert(QDialog):
@@ -43,7 +59,7 @@ class LinkAlert(QDialog):
         self.setWindowModality(Qt.WindowModality.NonModal)
         self.setMinimumWidth(460)
         self.headline = QLabel()
-        self.headline.setStyleSheet("font-size: 14pt; font-weight: bold; color: #e03030;")
+        self.headline.setStyleSheet(HEADLINE_LOST)
         self.body = QLabel()
         self.body.setWordWrap(True)
         self.reconnect, self.resume, self.restart = QPushButton(), QPushButton(), QPushButton()
@@ -86,12 +102,15 @@ class LinkAlert(QDialog):
             button.setVisible(button in visible)
 
     def show_lost(self, what: str, job_running: bool, from_sd: bool = False, detail: str = "",
-                  again: bool = False) -> None:
-        """At once: what was lost (``"usb"`` or ``"uart"``) and what the machine did.
-        ``detail`` may be a core message (``app.i18n``): it is shown in the window's language."""
-        self._shown = (self.show_lost, (what, job_running, from_sd, detail))
+                  last_state: str = "", again: bool = False) -> None:
+        """At once: what was lost (``"port"``, ``"silence"`` or ``"uart"``), what the machine
+        does by its rules and the state it last reported. ``detail`` may be a core message
+        (``app.i18n``): it is shown in the window's language."""
+        self._shown = (self.show_lost, (what, job_running, from_sd, detail, last_state))
         self.headline.setText(self.tr("⚠ Link to the machine lost"))
-        text = [_t(LOST_TEXT[what]) if what in LOST_TEXT else what, machine_action(job_running, from_sd)]
+        self.headline.setStyleSheet(HEADLINE_LOST)
+        text = [_t(LOST_TEXT[what]) if what in LOST_TEXT else what,
+                machine_action(job_running, from_sd, what, last_state)]
         if detail:
             text.append(localize(detail))
         text.append(self.tr("Check the cable and the machine's power, then reconnect."))
@@ -106,10 +125,12 @@ class LinkAlert(QDialog):
         self.raise_()
 
     def show_offer(self, same_boot: bool, from_line: int, total: int, again: bool = False) -> None:
-        """After reconnecting: resume where it stopped, or (machine reset) home and restart."""
+        """After reconnecting: resume where it stopped, or (machine reset) home and restart;
+        ``from_line`` and ``total`` are source lines of the file the operator opened."""
         self._shown = (self.show_offer, (same_boot, from_line, total))
         self.headline.setText(self.tr("✓ Link restored"))
-        line, lines = integer(from_line + 1), integer(total)
+        self.headline.setStyleSheet(HEADLINE_OK)
+        line, lines = integer(from_line), integer(total)
         if same_boot:
             text = self.tr("The machine kept its position. Resume the job at line %1 of %2: "
                            "no line runs twice, none is skipped.")
@@ -128,6 +149,7 @@ class LinkAlert(QDialog):
         self._shown = (self.show_restored, ())
         self.beeper.stop()
         self.headline.setText(self.tr("✓ Link restored"))
+        self.headline.setStyleSheet(HEADLINE_OK)
         self.body.setText(self.tr("The machine answers again."))
         if not again:
             self._buttons()

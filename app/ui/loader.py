@@ -118,9 +118,11 @@ def _yield_cpu() -> None:
 
 
 def _warm(program) -> None:
-    """Render the device lines now, off the GUI thread, so Start and Save to SD need not wait."""
+    """Render the device lines now, off the GUI thread, so Start and Save to SD need not
+    wait; then the machine planner's time estimate, which the toolpath's times become."""
     with contextlib.suppress(Exception):  # the job start reports any problem itself
         program.device_lines  # noqa: B018 (a cached property)
+        program.planned  # noqa: B018
 
 
 class LoadError(Exception):

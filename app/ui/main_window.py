@@ -38,6 +38,7 @@ from app.ui.plot.diagnostics import DiagnosticsView
 from app.ui.plot.history import PositionHistory
 from app.ui.plot.position_plot import PositionPlot
 from app.ui.preview.widget import PreviewWidget
+from app.ui.preview3d.view import Preview3D
 from app.ui.program.program_panel import ProgramPanel
 from app.ui.sd_panel import SdPanel
 from app.ui.settings.prefs import FILE_NAME as PREFS_FILE
@@ -92,12 +93,13 @@ class MainWindow(QMainWindow):
 
         self.operator = OperatorActions(self)
         self.binder = SessionBinder(self)
+        self.preview3d.follow(self)
         self.program_stops = ProgramStops(self)
         self.cover_banner = CoverBanner(self)
         self.preflight = Preflight(self)
         self.start_here = StartHere(self)
         self.actions_by_name = build_menus(self)
-        self.retranslate_ui()
+        self.retranslate_ui()  # applies the state table too
         if restore:
             self.restore_state()
         for problem in (prefs_problem, loaded.problem):
@@ -110,7 +112,13 @@ class MainWindow(QMainWindow):
         travel = (self.profile.travel.x_max, self.profile.travel.y_max)
         offset = self.profile.travel.work_offset()[:2]
         self.preview = PreviewWidget(travel=travel, offset=offset)
-        self.setCentralWidget(self.preview)
+        self.preview3d = Preview3D(travel=travel + (self.profile.travel.z_max,),
+                                   offset=self.profile.travel.work_offset())
+        self.views = QTabWidget()  # 2-D, 3-D (the 2-D view where OpenGL cannot start)
+        self.views.addTab(self.preview, "")
+        self.views.addTab(self.preview3d, "")
+        self.preview3d.gl_failed.connect(lambda: self.views.setCurrentWidget(self.preview))
+        self.setCentralWidget(self.views)
         kwargs = {"lister": port_lister} if port_lister else {}
         self.connection = ConnectionBar(**kwargs)
         bar = self.connection_toolbar = self.addToolBar("")
@@ -184,6 +192,8 @@ class MainWindow(QMainWindow):
         title = self.tr("CNC mill controller")
         self.setWindowTitle(f"{name} — {title}" if name else title)
         self.connection_toolbar.setWindowTitle(self.tr("Connection"))
+        self.views.setTabText(0, self.tr("2-D view"))
+        self.views.setTabText(1, self.tr("3-D view"))
         self.plots.setTabText(0, self.tr("Position"))
         self.plots.setTabText(1, self.tr("Diagnostics (commanded vs measured)"))
         for key, dock in self.docks.items():
@@ -192,6 +202,7 @@ class MainWindow(QMainWindow):
             from app.ui.menus import retranslate_menus
 
             retranslate_menus(self)
+            self.binder.refresh_enabled()  # the state table's reasons, in the new language
 
     def changeEvent(self, event) -> None:  # noqa: N802 (Qt override)
         if event.type() == QEvent.Type.LanguageChange:

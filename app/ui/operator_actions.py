@@ -1,25 +1,28 @@
 """What the operator asks for, turned into worker calls (every call returns at once).
 
-Checks that need no machine are made here so the message is immediate and clear: no
-program open, a program with errors, a bad SD name, not homed.
+Every request first asks the window's state table (``allowed``): one the table forbids
+now (a stale click, a shortcut, an MDI line) is refused with the reason in the status
+bar and the console, never sent or queued. Checks that need no machine are made here
+too so the message is immediate and clear: no program open, a program with errors, a
+bad SD name, not homed.
 """
 
 from __future__ import annotations
 
 import gc
 
-from PySide6.QtCore import QObject
+from PySide6.QtCore import QCoreApplication, QObject
 
 from app.gcode.checks import preflight
 from app.i18n import localize
+from app.ui.enabler import reason_text
+from app.ui.mdi import classify
 from app.ui.numbers import decimal, fill, integer
 from app.ui.program.summary import device_count
 from app.ui.recent import add_recent
 from app.ui.settings.dialog import SettingsDialog
 from app.ui.settings.store import FILE_NAME, machine_settings, save_settings
-
-VERBS = frozenset({"PING", "STATUS", "HOME", "PAUSE", "RESUME", "STOP", "RESET", "JOG", "SPINDLE",
-                   "SET", "GET", "ZERO", "SD"})
+from app.ui.state_table import LABELS, decide
 
 
 class OperatorActions(QObject):
@@ -27,6 +30,7 @@ class OperatorActions(QObject):
         super().__init__(window)
         self.w = window
         self.link = window.link
+        self.refused: list[tuple[str, str]] = []  # (control, reason) of every refusal, for tests
         self._connect_widgets()
 
     def _connect_widgets(self) -> None:
@@ -43,8 +47,8 @@ class OperatorActions(QObject):
         c.check_mode_toggled.connect(self.set_check_mode)
         c.jog.jog_requested.connect(self.jog)
         w.sd_panel.upload_requested.connect(self.upload)
-        w.sd_panel.list_requested.connect(lambda: self.link.call("list_sd"))
-        w.sd_panel.delete_requested.connect(lambda name: self.link.call("delete_sd", name))
+        w.sd_panel.list_requested.connect(lambda: self._send("sd_list", "list_sd"))
+        w.sd_panel.delete_requested.connect(lambda name: self._send("sd_delete", "delete_sd", name))
         w.sd_panel.run_requested.connect(self.run_from_sd)
         w.console.mdi_submitted.connect(self.mdi)
         w.alert.reconnect_requested.connect(self.reconnect)
@@ -53,11 +57,29 @@ class OperatorActions(QObject):
         w.alert.abandon_requested.connect(self.abandon)
         w.program_panel.line_activated.connect(self.show_source_line)
 
+    def allowed(self, control: str) -> bool:
+        """Whether the state table allows ``control`` now; if not, the operator is told why."""
+        verdict = decide(control, self.w.binder.inputs())
+        if not verdict.allowed:
+            label = QCoreApplication.translate("StateTable", LABELS[control])
+            text = self.tr("%1 refused: %2").replace("%1", label).replace("%2", reason_text(verdict))
+            self.w.status.showMessage(text, 10000)
+            self.w.console.add_log("warning", text)
+            self.refused.append((control, verdict.reason))
+        return verdict.allowed
+
+    def _send(self, control: str, verb: str, *args) -> bool:
+        """Call the worker's ``verb`` if the table allows ``control`` now."""
+        if not self.allowed(control):
+            return False
+        self.link.call(verb, *args)
+        return True
+
     # -- connection -----------------------------------------------------------------
 
     def connect_to(self, url: str, baud: int = 115200) -> None:
         self.w.connection.set_link("CONNECTING")
-        self.link.connect_to(url)
+        self.link.connect_to(url, self.w.connection.driver_choice())
 
     def disconnect(self) -> None:
         self.link.call("disconnect_from")
@@ -69,10 +91,16 @@ class OperatorActions(QObject):
     # -- job ------------------------------------------------------------------------
 
     def home(self, mode: str = "NORMAL") -> None:
-        self.link.call("home", mode)
+        if self._send("home_recover" if mode == "RECOVER" else "home", "home", mode):
+            self._motion_sent("HOME")
+
+    def _motion_sent(self, verb: str) -> None:
+        """Until its answer, a HOME, JOG or SPINDLE counts as running (nothing is queued behind it)."""
+        self.w.binder.pending_motion = verb
+        self.w.binder.refresh_enabled()
 
     def start(self) -> None:
-        if self.can_start():
+        if self.allowed("start") and self.can_start():
             job = self.from_machine(self.w.loaded.program)
             problems = job.errors or (job is not self.w.loaded.program and preflight(
                 job.ops, self.w.profile, job.lines, self.w.preflight.current_offset()))
@@ -114,25 +142,33 @@ class OperatorActions(QObject):
         return True
 
     def pause(self) -> None:
-        self.link.call("pause")
+        self._send("pause", "pause")
 
     def resume(self) -> None:
-        self.link.call("resume")
+        self._send("resume", "resume")
 
     def stop(self) -> None:
-        self.link.call("stop")
+        self._send("stop", "stop")
 
     def jog(self, axis: str, distance: float, feed: float) -> None:
-        self.link.call("jog", axis, float(distance), float(feed))
+        if self._send("jog", "jog", axis, float(distance), float(feed)):
+            self._motion_sent("JOG")
 
     def spindle(self, rpm: int) -> None:
-        self.link.call("send_command", f"SPINDLE {rpm}" if rpm > 0 else "SPINDLE OFF")
+        control = "spindle_on" if rpm > 0 else "spindle_off"
+        if self._send(control, "send_command", f"SPINDLE {rpm}" if rpm > 0 else "SPINDLE OFF"):
+            self.w.binder.spindle_asked = float(max(rpm, 0))
+            self._motion_sent("SPINDLE")
 
     def zero(self, axes: str) -> None:
-        self.link.call("send_command", f"ZERO {axes}")
+        self._send("zero", "send_command", f"ZERO {axes}")
 
     def set_check_mode(self, on: bool) -> None:
-        self.link.call("send_command", f"SET CHECK {1 if on else 0}")
+        if not self._send("check_mode", "send_command", f"SET CHECK {1 if on else 0}"):
+            box = self.w.controls.check_mode
+            box.blockSignals(True)
+            box.setChecked(not on)  # the switch shows what the machine has
+            box.blockSignals(False)
 
     def resume_after_reconnect(self) -> None:
         self.w.alert.hide()
@@ -154,6 +190,8 @@ class OperatorActions(QObject):
     # -- SD card --------------------------------------------------------------------
 
     def upload(self, name: str) -> None:
+        if not self.allowed("sd_save"):
+            return
         if self.w.loaded is None:
             self.w.notifier.warning(self.tr("No program"),
                                     self.tr("Open a G-code file to save it to the card."))
@@ -163,14 +201,25 @@ class OperatorActions(QObject):
         self.link.call("upload_to_sd", name, program)  # the worker thread renders the lines
 
     def run_from_sd(self, name: str) -> None:
-        self.link.call("run_from_sd", name)
+        if self._send("sd_run", "run_from_sd", name):
+            self.w.binder.begin_sd_job(name, self.w.sd_panel.lines_of(name))
 
     # -- MDI ------------------------------------------------------------------------
 
     def mdi(self, text: str) -> None:
-        words = text.split()
-        if words and words[0].upper() in VERBS:
-            self.link.call("send_command", text)
+        """One MDI line: a command or a spindle switch is sent as the command its control
+        sends (the same rule as that control), any other G-code line as a one-line job."""
+        line = classify(text)
+        if not self.allowed(line.control):
+            return
+        if line.command is not None:
+            self.link.call("send_command", line.command)
+            words = line.command.upper().split()
+            verb = words[0]
+            if verb == "SPINDLE" and len(words) > 1:
+                self.w.binder.spindle_asked = 0.0 if words[1] == "OFF" else float(words[1])
+            if verb in ("HOME", "JOG", "SPINDLE"):
+                self._motion_sent(verb)
             return
         from app.gcode import load_text
 
@@ -205,6 +254,11 @@ class OperatorActions(QObject):
             text = self.tr("%1: %n error(s); see the Problems list. It can be previewed but not run.", "",
                            len(errors))
             self.w.notifier.warning(self.tr("Program has errors"), text.replace("%1", loaded.path.name))
+
+    def program_prepared(self, loaded) -> None:
+        """The device lines and the planner's time estimate are ready: the summary says it."""
+        if self.w.program_panel.program is loaded.program:
+            self.w.program_panel.show_program(loaded.program, loaded.path.name, keep_tab=True)
 
     def program_refined(self, loaded) -> None:
         """The preview of the open program at the real tolerance (the first was coarser)."""

@@ -1,6 +1,11 @@
-"""Port discovery for the connection bar: the simulator first, then serial ports."""
+"""Port discovery for the connection bar: the simulators first (the mill's, then a GRBL
+machine's), then serial ports, then the pseudo-terminals of ``cnc-sim --pty`` processes
+running on this computer."""
 
 from __future__ import annotations
+
+import os
+from pathlib import Path
 
 from PySide6.QtCore import QCoreApplication
 
@@ -9,6 +14,10 @@ from app.i18n import localize
 
 def _simulator() -> tuple[str, str]:
     return "sim://", QCoreApplication.translate("Ports", "Built-in simulator (sim://)")
+
+
+def _grbl_simulator() -> tuple[str, str]:
+    return "sim://grbl", QCoreApplication.translate("Ports", "Built-in GRBL 1.1 simulator (sim://grbl)")
 
 
 def available_ports() -> list[tuple[str, str]]:
@@ -22,7 +31,41 @@ def available_ports() -> list[tuple[str, str]]:
     ports = [_pair(entry) for entry in found]
     if not any(url.startswith("sim://") for url, _ in ports):
         ports.insert(0, _simulator())
+    if not any(url.startswith("sim://grbl") for url, _ in ports):
+        ports.insert(1, _grbl_simulator())
+    listed = {url for url, _ in ports}
+    said = QCoreApplication.translate("Ports", "simulated machine (cnc-sim, process %1)")
+    for path, pid in sim_ptys():
+        if path not in listed:
+            ports.append((path, f"{path} — {said.replace('%1', str(pid))}"))
     return ports
+
+
+SIM_NAMES = ("backend_sim", "cnc-sim")
+
+
+def sim_ptys(proc: Path = Path("/proc")) -> list[tuple[str, int]]:
+    """(pseudo-terminal, process id) of every ``cnc-sim --pty`` this user can see: the
+    ``/dev/pts/N`` its process holds open beyond its own standard streams (Linux; [] where
+    there is no ``/proc``). Never raises: a process that ends meanwhile is left out."""
+    found = []
+    try:
+        entries = [p for p in proc.iterdir() if p.name.isdigit()]
+    except OSError:
+        return []
+    for entry in entries:
+        try:
+            args = (entry / "cmdline").read_bytes().split(b"\0")
+            if not any(name.encode() in arg for arg in args for name in SIM_NAMES) or b"--pty" not in args:
+                continue
+            for fd in (entry / "fd").iterdir():
+                target = os.readlink(fd)
+                held = (target, int(entry.name))
+                if int(fd.name) > 2 and target.startswith("/dev/pts/") and held not in found:
+                    found.append(held)
+        except (OSError, ValueError):
+            continue
+    return sorted(found)
 
 
 def _pair(entry) -> tuple[str, str]:

@@ -18,6 +18,12 @@ from app.i18n import localize
 OFFSET_NAMES = ("OFFSET_X", "OFFSET_Y", "OFFSET_Z")
 
 
+def sentence(text: str) -> str:
+    """``text`` ending as a sentence (a full stop added unless it ends with one already)."""
+    text = text.rstrip()
+    return text if not text or text[-1] in ".!?…:" else text + "."
+
+
 class Preflight(QObject):
     def __init__(self, window) -> None:
         super().__init__(window)
@@ -76,7 +82,7 @@ class Preflight(QObject):
         if more:
             text += " " + self.tr("(and %n more axis/direction(s))", "", more)
         advice = self.tr("Move the work zero or fix the program; in check mode it may be overridden.")
-        return text + " " + advice
+        return sentence(text) + " " + advice
 
     def blocks_start(self) -> bool:
         if not self.errors:

@@ -1,7 +1,9 @@
 """Job progress (no Qt): percent by executed line, elapsed time, and the remaining
 time from the program's estimate corrected by the rate measured so far. Time spent
 held (a program stop waiting for the operator, a feed hold) is not motion: it counts
-in the elapsed time but not in the measured rate (``hold(now)``/``release(now)``)."""
+in the elapsed time but not in the measured rate (``hold(now)``/``release(now)``).
+``finish(now, completed)`` stops the clock; a run that did not complete shows no
+remaining time (a stale figure would mislead)."""
 
 from __future__ import annotations
 
@@ -41,6 +43,14 @@ class ProgressTracker:
         self.done = first
         self.held_s = 0.0
         self._held_since: float | None = None
+        self.ended: float | None = None  # when the run ended (the clock stops there)
+        self.completed = False
+
+    def finish(self, now: float, completed: bool) -> None:
+        """The run ended: the elapsed time stops; an unfinished run has no remaining time."""
+        if self.ended is None:
+            self.release(now)
+            self.ended, self.completed = now, completed
 
     def hold(self, now: float) -> None:
         if self._held_since is None:
@@ -60,7 +70,11 @@ class ProgressTracker:
         self.done = max(self.done, min(done_lines, self.total))
 
     def view(self, now: float) -> ProgressView:
+        if self.ended is not None:
+            now = self.ended
         elapsed = max(now - self.started, 0.0)
+        if self.ended is not None and not self.completed:
+            return ProgressView(self.done, self.total, elapsed, None)  # stopped: nothing remains to wait for
         return ProgressView(self.done, self.total, elapsed, self._remaining(self.moving(now)))
 
     def _remaining(self, elapsed: float) -> float | None:

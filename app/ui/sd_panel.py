@@ -69,7 +69,8 @@ class SdPanel(QWidget):
         layout.addWidget(self.result)
         layout.addWidget(self.files, 1)
         layout.addLayout(file_row)
-        self.set_enabled(connected=False, has_program=False, busy=False)
+        for button in (self.save, self.refresh, self.delete, self.run):
+            button.setEnabled(False)  # until the window's state table says otherwise
         self.retranslate_ui()
 
     def retranslate_ui(self) -> None:
@@ -105,11 +106,13 @@ class SdPanel(QWidget):
         if item is not None:
             signal.emit(item.text(0))
 
-    def set_enabled(self, connected: bool, has_program: bool, busy: bool) -> None:
-        idle = connected and not busy
-        self.save.setEnabled(idle and has_program)
-        for button in (self.refresh, self.delete, self.run):
-            button.setEnabled(idle)
+    def lines_of(self, name: str) -> int:
+        """The line count the card listed for ``name`` (0 if not listed)."""
+        for index in range(self.files.topLevelItemCount()):
+            item = self.files.topLevelItem(index)
+            if item.text(0) == name and item.text(2).isdigit():
+                return int(item.text(2))
+        return 0
 
     def set_progress(self, done: int, total: int) -> None:
         self.progress.setMaximum(max(total, 1))

@@ -22,6 +22,17 @@ def _fill(text: str, *values) -> str:
     return text
 
 
+def tool_before(lines: list[str], index: int) -> int | None:
+    """The tool of the last ``M06 [T<n>]`` device line before ``index`` (0: an M06 that
+    names no tool; None: no tool change before it)."""
+    for line in reversed(lines[:index]):
+        if line.startswith("M06"):
+            words = line.split()
+            named = [w[1:] for w in words[1:] if w.startswith("T") and w[1:].isdigit()]
+            return int(named[0]) if named else 0
+    return None
+
+
 class StartHere(QObject):
     def __init__(self, window) -> None:
         super().__init__(window)
@@ -33,7 +44,7 @@ class StartHere(QObject):
     def ask(self, source_line: int) -> None:
         """Show the confirmation for starting at ``source_line`` (if the program may start)."""
         loaded = self.w.loaded
-        if not self.w.operator.can_start():
+        if not self.w.operator.allowed("start_here") or not self.w.operator.can_start():
             return
         index = device_index_of(loaded.program.line_map.tolist(), source_line)
         if index is None:
@@ -43,20 +54,23 @@ class StartHere(QObject):
         lines = loaded.program.device_lines
         self.pending = index
         self.dialog = box = QMessageBox(QMessageBox.Icon.Question, self.tr("Start here"),
-                                        self._text(source_line, index, len(lines)), parent=self.w)
+                                        self._text(source_line, len(loaded.program.lines)), parent=self.w)
         box.setInformativeText(self._state(lines, index))
         box.setDetailedText("\n".join(restart_preamble(lines, index)) or self.tr("(nothing to restore)"))
         self.start_button = box.addButton(self.tr("Start"), QMessageBox.ButtonRole.AcceptRole)
         box.addButton(QMessageBox.StandardButton.Cancel)
         box.buttonClicked.connect(self._answered)
         box.open()
+        self.w.binder.refresh_enabled()  # a dialog waits
 
-    def _text(self, source_line: int, index: int, total: int) -> str:
-        return _fill(self.tr("Start the job at line %1 (device line %2 of %3)?"), source_line, index, total)
+    def _text(self, source_line: int, total: int) -> str:
+        """The question, in source lines of the file the operator opened."""
+        return _fill(self.tr("Start the job at line %1 of %2?"), source_line, total)
 
     def _state(self, lines: list[str], index: int) -> str:
         state = modal_state(lines, index)
-        rows = [self.tr("Units mm, absolute distances, XY plane (the machine's dialect).")]
+        rows = [self._tool(lines, index)]
+        rows.append(self.tr("Units mm, absolute distances, XY plane (the machine's dialect)."))
         rows.append(_fill(self.tr("Feed F%1."), f"{state.feed:g}") if state.feed else self.tr("No feed yet."))
         if state.spindle_rpm is not None:
             spindle = self.tr("Spindle on at S%1, up to speed before moving.")
@@ -68,9 +82,24 @@ class StartHere(QObject):
                               *(f"{v:.3f}" for v in (state.top_z, state.x, state.y, state.z))))
         return "\n".join(rows)
 
+    def _tool(self, lines: list[str], index: int) -> str:
+        """Which tool must be in the spindle at ``index``: the last tool change before it."""
+        tool = tool_before(lines, index)
+        if tool is None:
+            return self.tr("No tool change comes before this line: the tool the program starts with must be "
+                           "in the spindle.")
+        if tool == 0:
+            return self.tr("The tool of the last tool change before this line (it names no number) must be "
+                           "in the spindle.")
+        text = self.tr("Tool T%1 must be in the spindle (the last tool change before this line).")
+        return _fill(text, tool)
+
     def _answered(self, button) -> None:
         index, self.pending = self.pending, None
-        if button is not self.start_button or index is None or not self.w.operator.can_start():
+        self.w.binder.refresh_enabled()
+        if button is not self.start_button or index is None:
+            return
+        if not self.w.operator.allowed("start_here") or not self.w.operator.can_start():
             return
         self.w.binder.begin_job(self.w.loaded, index)
         self.w.link.call("start_job", self.w.loaded.program, index)

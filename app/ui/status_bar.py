@@ -46,11 +46,21 @@ class JobStatusBar(QStatusBar):
         shown = (f"{axis} {decimal(value, 3):>8}" for axis, value in zip("XYZ", (x, y, z), strict=True))
         self.position.setText("   ".join(shown))
 
-    def set_progress(self, view: ProgressView, label: str = "") -> None:
-        self._shown = (view, label)
+    def set_progress(self, view: ProgressView, label: str = "", line: tuple[int, int] | None = None) -> None:
+        """``view``'s percent and times; ``line``: (current line, lines) of the file the operator
+        opened (source lines; an SD file's own lines), else the view's counts."""
+        self._shown = (view, label, line)
         self.progress.setValue(int(round(view.percent * 10)))
         self.progress.setFormat(f"{decimal(view.percent, 1)} %")
         remaining = "—" if view.remaining is None else format_duration(view.remaining)
+        current, lines = line if line is not None else (view.done, view.total)
         text = self.tr("line %1/%2 · elapsed %3 · remaining %4")
-        self.progress_text.setText(label + fill(text, integer(view.done), integer(view.total),
+        self.progress_text.setText(label + fill(text, integer(current), integer(lines),
                                                 format_duration(view.elapsed), remaining))
+
+    def clear_progress(self) -> None:
+        """No job: no figures of an earlier one stay."""
+        self._shown = None
+        self.progress.setValue(0)
+        self.progress.setFormat("%p %")
+        self.progress_text.setText(self.tr("no job"))

@@ -2,20 +2,21 @@
 
 No Qt here: the window passes the bytes of ``saveGeometry()``/``saveState()``.
 ``load_window_state(path)`` never raises: a missing file gives nothing to restore; a
-damaged one is renamed ``<name>.damaged`` (kept for the operator, never overwritten
-silently), nothing is restored, and ``problem`` says so.
+damaged one (``reading.load_json``: not a regular file, too big, too deep, not JSON)
+is renamed ``<name>.damaged`` (kept for the operator, never overwritten silently),
+nothing is restored, and ``problem`` says so.
 """
 
 from __future__ import annotations
 
 import base64
 import binascii
-import contextlib
 import json
 from dataclasses import dataclass
 from pathlib import Path
 
-from app.atomic import write_atomic
+from app.atomic import set_aside, write_atomic
+from app.gcode.reading import SourceError, load_json
 
 FILE_NAME = "window.json"
 
@@ -34,17 +35,16 @@ def save_window_state(path: Path, geometry: bytes, state: bytes) -> None:
 
 def load_window_state(path: Path) -> WindowState:
     try:
-        text = path.read_text(encoding="utf-8")
+        data = load_json(path)
     except FileNotFoundError:
         return WindowState()
-    except (OSError, UnicodeDecodeError) as exc:
+    except (OSError, SourceError) as exc:
         return _damaged(path, str(exc))
     try:
-        data = json.loads(text)
         if not isinstance(data, dict):
             raise ValueError("not a JSON object")
         return WindowState(_field(data, "geometry"), _field(data, "state"))
-    except (ValueError, TypeError, RecursionError, binascii.Error) as exc:
+    except (ValueError, TypeError, binascii.Error) as exc:
         return _damaged(path, str(exc) or type(exc).__name__)
 
 
@@ -58,8 +58,7 @@ def _field(data: dict, key: str) -> bytes | None:
 
 
 def _damaged(path: Path, why: str) -> WindowState:
-    aside = path.with_name(path.name + ".damaged")
-    with contextlib.suppress(OSError):
-        path.replace(aside)
+    aside = set_aside(path)
+    kept = aside.name if aside is not None else path.name
     return WindowState(problem=f"The window layout file {path} is damaged ({why}); the default layout is "
-                               f"used and the damaged file kept as {aside.name}.")
+                               f"used and the damaged file kept as {kept}.")

@@ -16,6 +16,10 @@
         <translation>Máy:</translation>
     </message>
     <message>
+        <source>Protocol</source>
+        <translation>Giao thức</translation>
+    </message>
+    <message>
         <source>Disconnect</source>
         <translation>Ngắt kết nối</translation>
     </message>
@@ -85,12 +89,31 @@
         <source>Cover closed: press Resume to go on</source>
         <translation>Nắp che đã đóng: nhấn Tiếp tục để chạy tiếp</translation>
     </message>
+    <message>
+        <source>Cover closed</source>
+        <translation>Nắp che đã đóng</translation>
+    </message>
 </context>
 <context>
     <name>DiagnosticsView</name>
     <message>
         <source>%1 error mm</source>
         <translation>lệch %1 mm</translation>
+    </message>
+</context>
+<context>
+    <name>Drivers</name>
+    <message>
+        <source>Auto</source>
+        <translation>Tự động</translation>
+    </message>
+    <message>
+        <source>This mill</source>
+        <translation>Máy này</translation>
+    </message>
+    <message>
+        <source>GRBL</source>
+        <translation>GRBL</translation>
     </message>
 </context>
 <context>
@@ -426,24 +449,36 @@
 <context>
     <name>LinkAlert</name>
     <message>
-        <source>The USB link between this computer and the machine is lost: no valid frame for 3 s.</source>
-        <translation>Mất kết nối USB giữa máy tính và máy CNC: không nhận được khung hợp lệ nào trong 3 s.</translation>
-    </message>
-    <message>
         <source>The machine&apos;s internal link (UART between the main board and the motion board) is lost.</source>
         <translation>Mất liên kết bên trong máy (UART giữa bo mạch chính và bo điều khiển động cơ).</translation>
     </message>
     <message>
-        <source>The machine carries on with the job from its SD card.</source>
-        <translation>Máy tiếp tục chạy chương trình từ thẻ SD của nó.</translation>
+        <source>The serial port to the machine failed (cable unplugged, or the machine switched off); the details are in the console.</source>
+        <translation>Cổng nối tiếp tới máy bị lỗi (rút cáp, hoặc máy đã tắt); chi tiết ở cửa sổ lệnh.</translation>
     </message>
     <message>
-        <source>The machine holds the job on the path (feed hold), spindle as it was: it has not lost its place.</source>
-        <translation>Máy giữ dao tại chỗ trên đường chạy (tạm dừng chạy dao), trục chính giữ nguyên: máy không mất vị trí.</translation>
+        <source>The machine has not answered for 3 s: no valid frame came over the link.</source>
+        <translation>Máy không trả lời đã 3 giây: không có khung dữ liệu hợp lệ nào về qua đường truyền.</translation>
     </message>
     <message>
-        <source>No job was running; the machine stays where it is.</source>
-        <translation>Không có chương trình nào đang chạy; máy đứng yên tại chỗ.</translation>
+        <source>Last state seen: %1.</source>
+        <translation>Trạng thái thấy lần cuối: %1.</translation>
+    </message>
+    <message>
+        <source>A job from the SD card carries on without this computer.</source>
+        <translation>Chương trình chạy từ thẻ SD vẫn tiếp tục mà không cần máy tính này.</translation>
+    </message>
+    <message>
+        <source>The main board holds the job: the motion board did not answer it.</source>
+        <translation>Mạch chính giữ chương trình lại: mạch điều khiển chuyển động không trả lời.</translation>
+    </message>
+    <message>
+        <source>If the machine is still powered, it holds the job on the path once it has missed this computer for 3 s; it keeps its place unless it was reset.</source>
+        <translation>Nếu máy vẫn còn điện, máy sẽ dừng chương trình trên đường chạy dao sau 3 giây không nghe thấy máy tính này; máy giữ nguyên vị trí trừ khi đã bị khởi động lại.</translation>
+    </message>
+    <message>
+        <source>No job was running.</source>
+        <translation>Không có chương trình nào đang chạy.</translation>
     </message>
     <message>
         <source>Link lost</source>
@@ -719,6 +754,10 @@
         <translation>Đặt gốc phôi (tại đây)</translation>
     </message>
     <message>
+        <source>commanded %1 · measured %2 rpm</source>
+        <translation>đặt %1 · đo được %2 vòng/phút</translation>
+    </message>
+    <message>
         <source>Optional stop (M01 holds the job)</source>
         <translation>Dừng tùy chọn (M01 dừng chương trình)</translation>
     </message>
@@ -729,14 +768,6 @@
     <message>
         <source>run a program that leaves the travel as a dry run</source>
         <translation>chạy thử một chương trình vượt hành trình</translation>
-    </message>
-    <message>
-        <source>measured —</source>
-        <translation>đo được —</translation>
-    </message>
-    <message>
-        <source>measured %1 rpm</source>
-        <translation>đo được %1 vòng/phút</translation>
     </message>
 </context>
 <context>
@@ -869,6 +900,14 @@
     <message>
         <source>Connection</source>
         <translation>Kết nối</translation>
+    </message>
+    <message>
+        <source>2-D view</source>
+        <translation>Hình 2-D</translation>
+    </message>
+    <message>
+        <source>3-D view</source>
+        <translation>Hình 3-D</translation>
     </message>
     <message>
         <source>Position</source>
@@ -1107,6 +1146,10 @@ Nếu mất kết nối, máy giữ nguyên vị trí; kết nối lại và ch�
 <context>
     <name>OperatorActions</name>
     <message>
+        <source>%1 refused: %2</source>
+        <translation>Không thực hiện %1: %2</translation>
+    </message>
+    <message>
         <source>Reconnecting…</source>
         <translation>Đang kết nối lại…</translation>
     </message>
@@ -1178,6 +1221,17 @@ Nếu mất kết nối, máy giữ nguyên vị trí; kết nối lại và ch�
     </message>
 </context>
 <context>
+    <name>PathGLView</name>
+    <message>
+        <source>no OpenGL context could be created</source>
+        <translation>không tạo được ngữ cảnh OpenGL</translation>
+    </message>
+    <message>
+        <source>the OpenGL driver has no glDrawElements</source>
+        <translation>trình điều khiển OpenGL không có glDrawElements</translation>
+    </message>
+</context>
+<context>
     <name>PointImportDialog</name>
     <message>
         <source>Import points: %1</source>
@@ -1230,6 +1284,14 @@ Nếu mất kết nối, máy giữ nguyên vị trí; kết nối lại và ch�
         <source>Built-in simulator (sim://)</source>
         <translation>Bộ mô phỏng có sẵn (sim://)</translation>
     </message>
+    <message>
+        <source>Built-in GRBL 1.1 simulator (sim://grbl)</source>
+        <translation>Bộ mô phỏng GRBL 1.1 có sẵn (sim://grbl)</translation>
+    </message>
+    <message>
+        <source>simulated machine (cnc-sim, process %1)</source>
+        <translation>máy mô phỏng (cnc-sim, tiến trình %1)</translation>
+    </message>
 </context>
 <context>
     <name>PositionPlot</name>
@@ -1261,6 +1323,83 @@ Nếu mất kết nối, máy giữ nguyên vị trí; kết nối lại và ch�
     <message>
         <source>Move the work zero or fix the program; in check mode it may be overridden.</source>
         <translation>Hãy dời gốc phôi hoặc sửa chương trình; khi chạy thử có thể bỏ qua kiểm tra này.</translation>
+    </message>
+</context>
+<context>
+    <name>Preview3D</name>
+    <message>
+        <source>the %1 platform cannot show OpenGL widgets</source>
+        <translation>nền tảng %1 không hiển thị được widget OpenGL</translation>
+    </message>
+    <message>
+        <source>no OpenGL context could be created on this display</source>
+        <translation>không tạo được ngữ cảnh OpenGL trên màn hình này</translation>
+    </message>
+    <message>
+        <source>the OpenGL context could not be used</source>
+        <translation>không dùng được ngữ cảnh OpenGL</translation>
+    </message>
+    <message>
+        <source>OpenGL %1.%2 found, 3.3 needed</source>
+        <translation>có OpenGL %1.%2, cần 3.3</translation>
+    </message>
+    <message>
+        <source>Top</source>
+        <translation>Trên</translation>
+    </message>
+    <message>
+        <source>Front</source>
+        <translation>Trước</translation>
+    </message>
+    <message>
+        <source>Side</source>
+        <translation>Cạnh</translation>
+    </message>
+    <message>
+        <source>Isometric</source>
+        <translation>Đẳng cự</translation>
+    </message>
+    <message>
+        <source>Fit</source>
+        <translation>Vừa khung</translation>
+    </message>
+    <message>
+        <source>Largest deviation</source>
+        <translation>Sai lệch lớn nhất</translation>
+    </message>
+    <message>
+        <source>Show where the measured path strayed farthest from the programmed one</source>
+        <translation>Chỉ ra chỗ đường đo được lệch xa nhất khỏi đường đã lập trình</translation>
+    </message>
+    <message>
+        <source>drag: orbit · right drag or Shift+drag: pan · wheel: zoom at the cursor</source>
+        <translation>kéo: xoay quanh · kéo chuột phải hoặc Shift+kéo: dịch · con lăn: phóng to tại con trỏ</translation>
+    </message>
+    <message>
+        <source>The 3-D view starts when it is shown.</source>
+        <translation>Hình 3-D khởi động khi được hiển thị.</translation>
+    </message>
+    <message>
+        <source>The 3-D view cannot start: %1.
+The 2-D view shows the program.</source>
+        <translation>Hình 3-D không khởi động được: %1.
+Hình 2-D hiển thị chương trình.</translation>
+    </message>
+    <message>
+        <source>done</source>
+        <translation>đã xong</translation>
+    </message>
+    <message>
+        <source>measured:</source>
+        <translation>đo được:</translation>
+    </message>
+    <message>
+        <source>no cut measured yet</source>
+        <translation>chưa đo được lần cắt nào</translation>
+    </message>
+    <message>
+        <source>largest deviation %1 mm at X %2 Y %3 Z %4</source>
+        <translation>sai lệch lớn nhất %1 mm tại X %2 Y %3 Z %4</translation>
     </message>
 </context>
 <context>
@@ -1564,12 +1703,44 @@ Nếu mất kết nối, máy giữ nguyên vị trí; kết nối lại và ch�
         <translation>cổng bị lỗi; chi tiết ở bảng lệnh</translation>
     </message>
     <message>
-        <source>The serial port reported an error; the details are in the console.</source>
-        <translation>Cổng serial báo lỗi; chi tiết kỹ thuật ở bảng lệnh.</translation>
-    </message>
-    <message>
         <source>%1 % resends</source>
         <translation>%1 % gửi lại</translation>
+    </message>
+    <message>
+        <source>resends in the last minute: %1 % of %2 frames</source>
+        <translation>gửi lại trong phút vừa qua: %1 % của %2 khung</translation>
+    </message>
+    <message>
+        <source>this computer</source>
+        <translation>máy tính này</translation>
+    </message>
+    <message>
+        <source>the machine&apos;s panel</source>
+        <translation>bảng điều khiển của máy</translation>
+    </message>
+    <message>
+        <source>the cover</source>
+        <translation>nắp che</translation>
+    </message>
+    <message>
+        <source>the link</source>
+        <translation>kết nối</translation>
+    </message>
+    <message>
+        <source>the program</source>
+        <translation>chương trình</translation>
+    </message>
+    <message>
+        <source>the machine</source>
+        <translation>máy</translation>
+    </message>
+    <message>
+        <source>Machine holds (%1): %2</source>
+        <translation>Máy đang tạm dừng (%1): %2</translation>
+    </message>
+    <message>
+        <source>Machine stopped (%1): %2</source>
+        <translation>Máy đã dừng (%1): %2</translation>
     </message>
     <message>
         <source>Machine alarm</source>
@@ -1598,8 +1769,16 @@ Nếu mất kết nối, máy giữ nguyên vị trí; kết nối lại và ch�
         <translation>Chương trình chưa chạy hết: %1</translation>
     </message>
     <message>
-        <source> (at source line %1; %2 device lines ran, see the console)</source>
-        <translation> (tại dòng %1 của chương trình; đã chạy %2 dòng lệnh máy, xem bảng điều khiển lệnh)</translation>
+        <source>line %1 was refused: %2</source>
+        <translation>dòng %1 bị máy từ chối: %2</translation>
+    </message>
+    <message>
+        <source> (at line %1; the console has the details)</source>
+        <translation> (tại dòng %1; chi tiết ở cửa sổ lệnh)</translation>
+    </message>
+    <message>
+        <source>SD %1 · </source>
+        <translation>SD %1 · </translation>
     </message>
     <message>
         <source>Machine refused</source>
@@ -1863,6 +2042,38 @@ Nếu mất kết nối, máy giữ nguyên vị trí; kết nối lại và ch�
         <source>after the job: 0 stay, 1 lift Z, 2 work zero X0 Y0, 3 home</source>
         <translation>sau khi chạy xong: 0 đứng yên, 1 nâng Z, 2 về X0 Y0 của gốc phôi, 3 về gốc máy</translation>
     </message>
+    <message>
+        <source>stay where it ends</source>
+        <translation>đứng yên tại chỗ kết thúc</translation>
+    </message>
+    <message>
+        <source>lift Z to the top</source>
+        <translation>nâng Z lên trên cùng</translation>
+    </message>
+    <message>
+        <source>lift Z, then go to work X0 Y0</source>
+        <translation>nâng Z, rồi về X0 Y0 của phôi</translation>
+    </message>
+    <message>
+        <source>home the machine</source>
+        <translation>về gốc máy</translation>
+    </message>
+    <message>
+        <source>skip M01</source>
+        <translation>bỏ qua M01</translation>
+    </message>
+    <message>
+        <source>hold at M01</source>
+        <translation>dừng tại M01</translation>
+    </message>
+    <message>
+        <source>keep the spindle turning</source>
+        <translation>giữ trục chính quay</translation>
+    </message>
+    <message>
+        <source>stop the spindle</source>
+        <translation>dừng trục chính</translation>
+    </message>
 </context>
 <context>
     <name>SourceModel</name>
@@ -1902,8 +2113,8 @@ Nếu mất kết nối, máy giữ nguyên vị trí; kết nối lại và ch�
         <translation>Chạy</translation>
     </message>
     <message>
-        <source>Start the job at line %1 (device line %2 of %3)?</source>
-        <translation>Chạy chương trình từ dòng %1 (dòng lệnh máy %2 trên %3)?</translation>
+        <source>Start the job at line %1 of %2?</source>
+        <translation>Chạy chương trình từ dòng %1 trên %2?</translation>
     </message>
     <message>
         <source>Units mm, absolute distances, XY plane (the machine&apos;s dialect).</source>
@@ -1928,6 +2139,209 @@ Nếu mất kết nối, máy giữ nguyên vị trí; kết nối lại và ch�
     <message>
         <source>Retract to Z%1, rapid to X%2 Y%3, feed down to Z%4.</source>
         <translation>Rút dao lên Z%1, chạy nhanh tới X%2 Y%3, ăn dao xuống Z%4.</translation>
+    </message>
+    <message>
+        <source>No tool change comes before this line: the tool the program starts with must be in the spindle.</source>
+        <translation>Không có lần thay dao nào trước dòng này: dao mà chương trình bắt đầu với nó phải đang lắp trên trục chính.</translation>
+    </message>
+    <message>
+        <source>The tool of the last tool change before this line (it names no number) must be in the spindle.</source>
+        <translation>Dao của lần thay dao cuối cùng trước dòng này (không ghi số dao) phải đang lắp trên trục chính.</translation>
+    </message>
+    <message>
+        <source>Tool T%1 must be in the spindle (the last tool change before this line).</source>
+        <translation>Dao T%1 phải đang lắp trên trục chính (lần thay dao cuối cùng trước dòng này).</translation>
+    </message>
+</context>
+<context>
+    <name>StateTable</name>
+    <message>
+        <source>Not now: %1</source>
+        <translation>Chưa được lúc này: %1</translation>
+    </message>
+    <message>
+        <source>not connected</source>
+        <translation>chưa kết nối</translation>
+    </message>
+    <message>
+        <source>still connecting</source>
+        <translation>đang kết nối</translation>
+    </message>
+    <message>
+        <source>the link is unsteady: only Pause, Stop and Spindle off</source>
+        <translation>đường truyền chập chờn: chỉ được Tạm dừng, Dừng và Tắt trục chính</translation>
+    </message>
+    <message>
+        <source>the link is lost: reconnect first</source>
+        <translation>mất kết nối: hãy kết nối lại trước</translation>
+    </message>
+    <message>
+        <source>the machine is homing</source>
+        <translation>máy đang về gốc</translation>
+    </message>
+    <message>
+        <source>the machine is moving (jog)</source>
+        <translation>máy đang di chuyển (chạy tay)</translation>
+    </message>
+    <message>
+        <source>the spindle is changing speed</source>
+        <translation>trục chính đang đổi tốc độ</translation>
+    </message>
+    <message>
+        <source>a job is running</source>
+        <translation>đang chạy một chương trình</translation>
+    </message>
+    <message>
+        <source>a job is running from the SD card</source>
+        <translation>đang chạy một chương trình từ thẻ SD</translation>
+    </message>
+    <message>
+        <source>a program is being saved to the SD card</source>
+        <translation>đang lưu một chương trình vào thẻ SD</translation>
+    </message>
+    <message>
+        <source>the job is held: resume or stop it first</source>
+        <translation>chương trình đang tạm dừng: hãy tiếp tục hoặc dừng nó trước</translation>
+    </message>
+    <message>
+        <source>the job waits at a program stop</source>
+        <translation>chương trình đang chờ tại một điểm dừng</translation>
+    </message>
+    <message>
+        <source>the machine is in alarm: home it first</source>
+        <translation>máy đang báo động: hãy về gốc trước</translation>
+    </message>
+    <message>
+        <source>the cover is open</source>
+        <translation>nắp che đang mở</translation>
+    </message>
+    <message>
+        <source>nothing is moving</source>
+        <translation>không có gì đang chuyển động</translation>
+    </message>
+    <message>
+        <source>nothing is held</source>
+        <translation>không có gì đang tạm dừng</translation>
+    </message>
+    <message>
+        <source>only in check mode</source>
+        <translation>chỉ khi chạy thử</translation>
+    </message>
+    <message>
+        <source>check mode is on</source>
+        <translation>đang bật chạy thử</translation>
+    </message>
+    <message>
+        <source>home the machine first</source>
+        <translation>hãy cho máy về gốc trước</translation>
+    </message>
+    <message>
+        <source>answer the open dialog first</source>
+        <translation>hãy trả lời hộp thoại đang mở trước</translation>
+    </message>
+    <message>
+        <source>open a program that can run first</source>
+        <translation>hãy mở một chương trình chạy được trước</translation>
+    </message>
+    <message>
+        <source>this machine has no SD card</source>
+        <translation>máy này không có thẻ SD</translation>
+    </message>
+    <message>
+        <source>this machine has no panel of its own</source>
+        <translation>máy này không có bảng điều khiển riêng</translation>
+    </message>
+    <message>
+        <source>this machine has no cover switch</source>
+        <translation>máy này không có công tắc nắp che</translation>
+    </message>
+    <message>
+        <source>Home</source>
+        <translation>Về gốc máy</translation>
+    </message>
+    <message>
+        <source>Home after a fault</source>
+        <translation>Về gốc sau sự cố</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Chạy</translation>
+    </message>
+    <message>
+        <source>Start here</source>
+        <translation>Chạy từ đây</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Tạm dừng</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>Tiếp tục</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Dừng</translation>
+    </message>
+    <message>
+        <source>Jog</source>
+        <translation>Chạy tay (jog)</translation>
+    </message>
+    <message>
+        <source>Spindle on</source>
+        <translation>Bật trục chính</translation>
+    </message>
+    <message>
+        <source>Spindle off</source>
+        <translation>Tắt trục chính</translation>
+    </message>
+    <message>
+        <source>Work zero</source>
+        <translation>Đặt gốc phôi</translation>
+    </message>
+    <message>
+        <source>Check mode</source>
+        <translation>Chạy thử</translation>
+    </message>
+    <message>
+        <source>Override travel check</source>
+        <translation>Bỏ qua kiểm tra hành trình</translation>
+    </message>
+    <message>
+        <source>Save to SD</source>
+        <translation>Lưu vào SD</translation>
+    </message>
+    <message>
+        <source>SD card list</source>
+        <translation>Danh sách thẻ SD</translation>
+    </message>
+    <message>
+        <source>Delete from SD</source>
+        <translation>Xóa khỏi SD</translation>
+    </message>
+    <message>
+        <source>Run from SD</source>
+        <translation>Chạy từ SD</translation>
+    </message>
+    <message>
+        <source>MDI line</source>
+        <translation>Dòng MDI</translation>
+    </message>
+    <message>
+        <source>MDI command</source>
+        <translation>Lệnh MDI</translation>
+    </message>
+    <message>
+        <source>Connect</source>
+        <translation>Kết nối</translation>
+    </message>
+    <message>
+        <source>Machine panel</source>
+        <translation>Bảng điều khiển máy</translation>
+    </message>
+    <message>
+        <source>Cover switch</source>
+        <translation>Công tắc nắp che</translation>
     </message>
 </context>
 <context>

@@ -58,6 +58,13 @@ class Host:
             self.free += frame.seq - max(self.done, -1)
             self.done = frame.seq
 
+    def realtime(self, verb: str, why: str = "") -> int:
+        """Send the real-time command ``R <id> verb`` once; its id."""
+        cid = self.next_id
+        self.next_id += 1
+        self.send(f"R {cid} {verb} {why}".rstrip())
+        return cid
+
     def wait(self, match: Callable[[Frame], bool], timeout: float = 10.0, start: int | None = None) -> Frame:
         """The first frame matching, among those not yet pumped when called (or from ``start``)."""
         found: list[Frame] = []

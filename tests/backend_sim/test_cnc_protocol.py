@@ -178,15 +178,39 @@ def test_pause_answers_when_held_then_resume_finishes(sim, host):
     finished_all(host, 1)
 
 
-def test_realtime_bytes_hold_and_stop(sim, host):
+def test_realtime_commands_hold_and_stop_once_per_id(sim, host):
     host.home()
     host.stream(["G01 X40 F600", "G01 X0"])
     host.wait(lambda f: isinstance(f, Status) and f.state == "RUN" and f.x > 5)
-    host.port.write(b"!")
-    host.wait(lambda f: isinstance(f, Status) and f.state == "HOLD")
-    host.port.write(b"\x18")
-    host.wait(lambda f: isinstance(f, Status) and f.state == "IDLE")
-    assert not sim.cnc.job.open
+    hold = host.realtime("HOLD")
+    assert host.answer(hold) == Ok(hold, "HOLD", "HOLD")
+    status = host.wait(lambda f: isinstance(f, Status) and f.state == "HOLD")
+    assert status.why == "HOST"
+    resume = host.realtime("RESUME")
+    assert isinstance(host.answer(resume), Ok)
+    host.wait(lambda f: isinstance(f, Status) and f.state == "RUN" and not f.why)
+    start = len(host.frames)
+    host.send(f"R {hold} HOLD")  # a late copy of the first hold: answered again, not carried out
+    host.wait(lambda f: isinstance(f, Ok) and f.id == hold, start=start)
+    sim.run_for(0.2)
+    assert sim.cnc.mc.state == "RUN"
+    stop = host.realtime("STOP")
+    assert isinstance(host.answer(stop), Ok)
+    status = host.wait(lambda f: isinstance(f, Status) and f.state == "IDLE")
+    assert not sim.cnc.job.open and status.why == "HOST"
+
+
+def test_legacy_bytes_are_counted_and_logged_never_acted_on(sim, host):
+    host.home()
+    host.stream(["G01 X40 F600", "G01 X0"])
+    host.wait(lambda f: isinstance(f, Status) and f.state == "RUN" and f.x > 5)
+    host.port.write(b"!\x18!")
+    log = host.wait(lambda f: isinstance(f, Log) and f.text.startswith("ignored"))
+    assert log.text == "ignored 3 real-time byte(s) (use R frames)"
+    assert sim.cnc.mc.state == "RUN" and sim.cnc.job.open and sim.main.legacy.total == 3
+    sim.main.uart_tx.write(b"\x18!", sim.clock.now)  # straight onto the UART: the CNC MCU ignores them too
+    host.wait(lambda f: isinstance(f, Log) and f.text == "ignored 2 real-time byte(s) (use R frames)")
+    assert sim.cnc.mc.state == "RUN" and sim.cnc.legacy.total == 2
 
 
 def test_reset_gives_a_new_boot_and_forgets_homing(sim, host):

@@ -1,4 +1,4 @@
-"""The links: UART byte timing, urgent bytes, frame faults, random rates, the host port."""
+"""The links: UART byte timing, the fast lanes, honest frame faults and random rates, the host port."""
 
 from __future__ import annotations
 
@@ -31,11 +31,16 @@ def test_a_frame_of_96_bytes_takes_8_3_ms_on_the_uart():
     assert wire.take(96 * BYTE - 1e-7) == b"x" * 95
 
 
-def test_urgent_byte_overtakes_the_queue_but_not_the_byte_on_the_wire():
+def test_urgent_frames_overtake_every_lane_but_never_cut_the_frame_on_the_wire():
     wire = Wire("uart_down", BYTE)
-    wire.write(b"D 1 G00 X1*ABCD\n", 0.0)
-    wire.write_urgent(b"!", BYTE * 0.5)
-    assert wire.take(BYTE * 2.01) == b"D!"
+    wire.write(b"D 7 a\nD 8 b\n", 0.0)
+    wire.write_priority(b"D 3 x\n", BYTE * 0.5)
+    wire.write_urgent(b"R 1 HOLD\n", BYTE * 1.5)  # "D 7 a" is being shifted out: whole
+    wire.write_urgent(b"R 2 STOP\n", BYTE * 2.5)  # behind the earlier urgent frame
+    wire.write_priority(b"D 4 y\n", BYTE * 3.5)  # resends stay behind the urgent lane
+    assert wire.take(1.0) == b"D 7 a\nR 1 HOLD\nR 2 STOP\nD 3 x\nD 4 y\nD 8 b\n"
+    wire.write_urgent(b"R 3 RESUME\n", 2.0)  # an idle wire: sent at once
+    assert wire.take(2.0 + 11.01 * BYTE) == b"R 3 RESUME\n"
 
 
 def test_priority_frames_overtake_queued_frames_but_not_the_frame_on_the_wire():
@@ -101,12 +106,18 @@ def test_frame_faults(kind, params, expect):
     assert faults.process(FRAME) == [(0.0, FRAME)]
 
 
-def test_corrupt_flips_one_bit_and_keeps_the_newline():
-    faults = ChannelFaults("usb_down", seed=1)
-    faults.arm("corrupt")
-    (_, out), = faults.process(FRAME)
-    diff = [a ^ b for a, b in zip(out, FRAME, strict=True) if a != b]
-    assert len(diff) == 1 and bin(diff[0]).count("1") == 1 and out.endswith(b"\n")
+def test_corrupt_flips_one_bit_of_any_byte_newline_included():
+    positions, bits = set(), set()
+    for seed in range(400):
+        faults = ChannelFaults("usb_down", seed=seed)
+        faults.arm("corrupt")
+        (_, out), = faults.process(FRAME)
+        diff = [(i, a ^ b) for i, (a, b) in enumerate(zip(out, FRAME, strict=True)) if a != b]
+        assert len(diff) == 1 and bin(diff[0][1]).count("1") == 1
+        positions.add(diff[0][0])
+        bits.add(diff[0][1])
+    assert len(FRAME) - 1 in positions  # the newline too
+    assert bits == {1 << b for b in range(8)}  # the 8th bit too
 
 
 def test_delay_reorder_and_noise():
@@ -118,13 +129,13 @@ def test_delay_reorder_and_noise():
     assert [p for _, p in faults.process(b"second\n")] == [b"second\n", b"first\n"]
     faults.arm("noise", nbytes=4)
     (_, out), = faults.process(FRAME)
-    assert out.endswith(b"\n" + FRAME) and len(out) == len(FRAME) + 5 and b"!" not in out
+    assert out.endswith(b"\n" + FRAME) and len(out) == len(FRAME) + 5
 
 
-def test_realtime_bytes_are_not_frame_faulted():
+def test_real_time_frames_are_frame_faulted_like_any_line():
     faults = ChannelFaults("usb_down", seed=1)
     faults.arm("drop")
-    assert faults.process(b"!") == [(0.0, b"!")]
+    assert faults.process(b"R 1 HOLD*6E51\n") == []
 
 
 def test_random_rates_are_deterministic_for_a_seed():
@@ -139,7 +150,26 @@ def test_random_rates_are_deterministic_for_a_seed():
     assert run(7) == (out1, counts1)
     assert run(8)[0] != out1
     assert 10 < counts1["rate_corrupt"] < 70 and 10 < counts1["rate_drop"] < 70
-    assert b"!" not in out1 and b"\x18" not in out1
+
+
+def test_random_faults_reach_the_whole_byte_space():
+    """Issue 18: flips make whatever byte they make (newline, ``!``, 0x18 ...), noise
+    bursts draw from all 256 values, duplicates and drops hit newlines too."""
+    data = FRAME * 20000
+
+    def faulted(**rates):
+        faults = ChannelFaults("uart_down")
+        faults.set_rates(seed=3, **rates)
+        return b"".join(p for _, p in faults.process(data))
+
+    flipped = faulted(corrupt=1e-2)
+    assert len(flipped) == len(data)
+    made = {b for a, b in zip(data, flipped, strict=True) if a != b}
+    assert {ord("\n"), ord("!"), 0x18} <= made and max(made) >= 0x80
+    assert flipped.count(b"\n") != data.count(b"\n")  # newlines made and unmade
+    noisy = faulted(noise=1e-2)
+    assert set(noisy) == set(range(256))
+    assert faulted(drop=1e-2).count(b"\n") < data.count(b"\n") < faulted(duplicate=1e-2).count(b"\n")
 
 
 def test_host_port_read_timeout_runs_the_simulated_clock(sim):
@@ -215,7 +245,7 @@ def test_threaded_run_at_a_speed_factor(tmp_path):
 
 
 def test_a_forwarded_command_takes_its_uart_time_both_ways(sim, host):
-    sim.run_for(0.1)
+    sim.run_for(0.13)  # between the main MCU's pings (every 0.1 s of UART silence)
     start = sim.clock.now
     cid = host.command("GET KP_X")
     answer = host.answer(cid)

@@ -3,7 +3,7 @@ its partial file is removed and the card's files are never touched by it."""
 
 import pytest
 
-from app.comm.frame import STOP_FLUSH, Data, Log, Ok
+from app.comm.frame import Data, Log, Ok
 from backend_sim.sd_card import SdCard, crc32_of_lines
 from tests.backend_sim.test_main_mcu import PROGRAM, put
 
@@ -37,8 +37,8 @@ def abandon_by_stop(sim, host):
     host.ok("STOP")
 
 
-def abandon_by_stop_byte(sim, host):
-    host.port.write(STOP_FLUSH)
+def abandon_by_realtime_stop(sim, host):
+    assert isinstance(host.answer(host.realtime("STOP")), Ok)
     sim.run_for(0.3)
 
 
@@ -53,7 +53,7 @@ def abandon_by_host_loss(sim, host):
     host.heartbeat = True
 
 
-@pytest.mark.parametrize("abandon", [abandon_by_stop, abandon_by_stop_byte, abandon_by_reset,
+@pytest.mark.parametrize("abandon", [abandon_by_stop, abandon_by_realtime_stop, abandon_by_reset,
                                      abandon_by_host_loss])
 def test_unfinished_upload_is_abandoned(sim, host, tmp_path, abandon):
     half_upload(sim, host)

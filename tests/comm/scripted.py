@@ -67,11 +67,11 @@ class Harness:
             self.session.tick()
 
     def take(self) -> list:
-        """Frames and real-time bytes written since the last take, decoded."""
+        """Frames written since the last take, decoded (a legacy byte as its bytes)."""
         data, self.wire[:] = bytes(self.wire), b""
         out = []
-        for item in dfr.Deframer(realtime=True).feed(data, 0.0):
-            out.append(item.byte if isinstance(item, dfr.Realtime) else item)
+        for item in dfr.Deframer(legacy=True).feed(data, 0.0):
+            out.append(item.byte if isinstance(item, dfr.Legacy) else item)
         return out
 
     def take_data(self) -> list[int]:

@@ -7,7 +7,6 @@ lines written on that wire for which ``match(line)`` is true, with ``mutate(line
 
 from __future__ import annotations
 
-SPECIAL = frozenset(b"\n!\x18")
 WIRES = ("usb_down", "usb_up", "uart_down", "uart_up")
 
 
@@ -46,16 +45,25 @@ def frame_of(kind: str, seq: int):
 
 
 def flip(position: int, bit: int = 0):
-    """Flip one bit of the byte at ``position``; never into a newline or real-time byte."""
+    """Flip bit ``bit`` (0-7) of the byte at ``position``, whatever byte that makes (a
+    newline, ``!``, 0x18 ... : the wire spares nothing)."""
 
     def mutate(line: bytes) -> bytes:
         buf = bytearray(line)
-        for step in range(8):
-            value = buf[position] ^ (1 << ((bit + step) % 7))
-            if value not in SPECIAL:
-                buf[position] = value
-                break
+        buf[position] ^= 1 << bit
         return bytes(buf)
+
+    return mutate
+
+
+def flip_into(value: int, index: int = 0):
+    """Flip the one bit of the ``index``-th byte of a line that is a single bit away from
+    ``value`` (e.g. a space into ``!``, ``8`` into 0x18, ``*`` into a newline)."""
+
+    def mutate(line: bytes) -> bytes:
+        near = [i for i, b in enumerate(line) if bin(b ^ value).count("1") == 1]
+        position = near[index]
+        return flip(position, (line[position] ^ value).bit_length() - 1)(line)
 
     return mutate
 

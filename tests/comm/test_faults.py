@@ -9,7 +9,7 @@ import pytest
 
 from app.comm.listener import SessionState
 from tests.comm.simlink import SimLink, assert_oracle, dialect_program
-from tests.comm.tamper import Tamper, drop_byte, flip, frame_of, swap_adjacent_digits
+from tests.comm.tamper import Tamper, drop_byte, flip, flip_into, frame_of, swap_adjacent_digits
 
 LINES = dialect_program(30)
 TARGET = 10
@@ -50,13 +50,26 @@ def test_bit_flip_at_every_byte_position(tmp_path, wire):
     link = SimLink(seed=3, sd_dir=tmp_path)
     size = len(wire_bytes(link, wire))
     for position in range(size):
-        tamper = Tamper(link.sim, wire, target_frame(wire), flip(position, position % 7))
+        tamper = Tamper(link.sim, wire, target_frame(wire), flip(position, position % 8))
         try:
             completes(link)
         except AssertionError as exc:
             raise AssertionError(f"{wire}: bit flip at byte {position}: {exc}") from exc
         assert tamper.hits == 1, f"{wire}: byte {position}: the fault never fired"
         tamper.remove()
+
+
+@pytest.mark.parametrize("wire", ALL)
+@pytest.mark.parametrize(("value", "index"), [(0x21, 0), (0x21, 1), (0x18, 0), (0x0A, 0), (0x0A, -1)],
+                         ids=["space->!", "space2->!", "8->0x18", "first->newline", "last->newline"])
+def test_a_flip_that_makes_a_special_byte_costs_one_resend(link, wire, value, index):
+    """Issue 18: a flip makes whatever it makes; ``!``, 0x18 or a newline inside a frame
+    is caught by the CRC like any byte: never a hold or stop, the job completes exactly."""
+    target = target_frame(wire, 18)  # "D 18 ..." has an 8 to turn into 0x18
+    tamper = Tamper(link.sim, wire, target, flip_into(value, index))
+    completes(link)
+    assert tamper.hits == 1
+    assert not [s for s in link.rec.of("on_status") if s.state == "HOLD"]
 
 
 @pytest.mark.parametrize("wire", ALL)
@@ -87,9 +100,7 @@ def test_frame_cut_short_then_silence(link, wire):
 
 @pytest.mark.parametrize("wire", ALL)
 def test_noise_bursts_between_frames(link, wire):
-    bursts = [b"~~~\n", b"!?~ x\x00\xff\n", b"ok\r\n", b"\x7f\x80~garbage*12AB\n"]
-    if wire.endswith("down"):
-        bursts[1] = b"~?~ x\x00\xff\n"  # '!' here would hold the machine (see the motion suite)
+    bursts = [b"~~~\n", b"!?~ x\x00\xff\n", b"\x18!\r\n", b"\x7f\x80~garbage*12AB\n"]
     queue = list(bursts)
     tamper = Tamper(link.sim, wire, lambda line: line.startswith((b"D", b"A")),
                     lambda line: (queue.pop(0) if queue else b"") + line, times=len(bursts))
@@ -98,16 +109,15 @@ def test_noise_bursts_between_frames(link, wire):
 
 
 @pytest.mark.parametrize("wire", DOWN)
-def test_stop_byte_in_noise_only_ever_stops(link, wire):
-    """0x18 inside noise stops and flushes: the job ends with a named error, nothing runs twice."""
-    Tamper(link.sim, wire, frame_of("D", TARGET), lambda line: b"\x18" + line)
-    mark = len(link.executed())
-    job = link.run_job(LINES, timeout=40.0)
-    executed = link.executed()[mark:]
-    # the machine answers the frames after the stop "E - BAD_SEQ <seq> no job open" (issue 14)
-    assert not job.completed and "BAD_SEQ" in job.reason and "no job open" in job.reason
-    assert [s for s, _ in executed] == list(range(len(executed))) and len(executed) <= TARGET
-    assert "LINE_REFUSED" in [e.code for e in link.rec.of("on_error")]
+def test_old_real_time_bytes_in_noise_never_hold_or_stop(link, wire):
+    """Issue 18: ``!`` and 0x18 are no commands: before a frame they are counted and
+    logged, inside one the CRC drops it; the job completes exactly, never held."""
+    Tamper(link.sim, wire, frame_of("D", TARGET), lambda line: b"\x18!" + line)
+    Tamper(link.sim, wire, frame_of("D", TARGET + 2), lambda line: line[:4] + b"\x18" + line[4:])
+    completes(link)
+    assert not [s for s in link.rec.of("on_status") if s.state in ("HOLD", "ALARM") and s.boot != "0"]
+    logs = [e.text for e in link.rec.of("on_log") if e.source == "machine"]
+    assert any(text.startswith("ignored 2 real-time byte(s)") for text in logs)
 
 
 # ---------------------------------------------------------------------- whole frames

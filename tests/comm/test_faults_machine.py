@@ -6,7 +6,6 @@ session is ticked every 2 ms of it. Time bounds are simulated seconds.
 
 import pytest
 
-from app.comm import frame as fr
 from app.comm.listener import SessionState
 from tests.comm.simlink import FAST_HOMING, SimLink, assert_oracle
 from tests.comm.tamper import Tamper, frame_of
@@ -200,14 +199,26 @@ def test_stop_under_a_full_queue(link):
     assert tuple(link.sim.cnc.mc.measured_mm) == pytest.approx(position, abs=0.01)
 
 
-def test_feed_hold_in_noise_only_holds(link):
+def test_a_hold_byte_in_noise_never_holds(link):
+    """Issue 18: ``!`` is no command; noise holding one is a dropped frame at most."""
     lines = motion_program(30)
     # a frame sent while the machine runs (the window of 16 sends the first 16 at once)
-    Tamper(link.sim, "usb_down", frame_of("D", 20), lambda line: b"~!~x\n" + line)
+    Tamper(link.sim, "usb_down", frame_of("D", 20), lambda line: b"~!~x\n!" + line)
+    Tamper(link.sim, "usb_down", frame_of("D", 22), lambda line: line[:3] + b"!" + line[3:])
     start(link, lines)
-    assert link.run_until(lambda: link.session.state is S.PAUSED, 30.0)
+    finish(link, lines)
+    assert not [s for s in link.rec.of("on_status") if s.state == "HOLD"]
+
+
+def test_a_real_hold_holds_and_noise_never_resumes_it(link):
+    lines = motion_program(30)
+    start(link, lines)
+    assert link.run_until(lambda: link.sim.cnc.mc.state == "RUN", 10.0)
+    link.session.pause()
+    assert link.run_until(lambda: link.session.state is S.PAUSED, 1.0)
+    link.port.write(bytes(range(256)) + b"\n" + b"!\x18" * 20 + b"\n")
     link.run_for(2.0)
-    assert link.sim.cnc.mc.state == "HOLD"  # noise never resumes motion
+    assert link.sim.cnc.mc.state == "HOLD" and link.session.status.why == "HOST"
     link.session.resume()
     finish(link, lines)
 
@@ -230,4 +241,4 @@ def test_noise_never_starts_motion(link, wire):
     assert link.sim.cnc.mc.state == "IDLE"
     assert tuple(link.sim.cnc.mc.measured_mm) == pytest.approx(position, abs=0.01)
     assert link.executed() == []
-    assert fr.FEED_HOLD in junk and fr.STOP_FLUSH in junk
+    assert b"!" in junk and b"\x18" in junk

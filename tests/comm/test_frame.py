@@ -18,12 +18,19 @@ GOLDEN = [
     (fr.Error(3, "BUSY", "job running"), b"E 3 BUSY job running*28B9\n"),
     (
         fr.Status("A1B2C3D4", "IDLE", 0, 0, 30, -1, -1, 16, 0, "H"),
-        b"S A1B2C3D4 IDLE 0.000 0.000 30.000 -1 -1 16 0 H*3AD2\n",
+        b"S A1B2C3D4 IDLE 0.000 0.000 30.000 -1 -1 16 0 H -*F248\n",
     ),
     (
         fr.Status("1", "RUN", 1.5, -2, 3, 4, 3, 10, 4500, ""),
-        b"S 1 RUN 1.500 -2.000 3.000 4 3 10 4500 -*77BC\n",
+        b"S 1 RUN 1.500 -2.000 3.000 4 3 10 4500 - -*04B0\n",
     ),
+    (
+        fr.Status("1", "HOLD", 1.5, -2, 3, 4, 3, 10, 4500, "HW", "PROG"),
+        b"S 1 HOLD 1.500 -2.000 3.000 4 3 10 4500 HW PROG*067D\n",
+    ),
+    (fr.RealtimeCommand(7, "HOLD"), b"R 7 HOLD*6E51\n"),
+    (fr.RealtimeCommand(8, "STOP"), b"R 8 STOP*1A9E\n"),
+    (fr.RealtimeCommand(1000000001, "HOLD", "LINK"), b"R 1000000001 HOLD LINK*8AFE\n"),
     (fr.Alarm("LIMIT", "X min"), b"X LIMIT X min*9441\n"),
     (fr.Info(7, "a.nc 120 10"), b"I 7 a.nc 120 10*F127\n"),
     (fr.Log("hello world"), b"L hello world*296F\n"),
@@ -54,6 +61,13 @@ def test_golden_vectors(frame, wire):
         (fr.seal("S 1 IDLE 0 0 0 -1 -1 1 0 Q"), "bad flags"),
         (fr.seal("C 1  PING"), "single-spaced"),
         (b"D 1 " + b"X" * 90 + b"*0000\n", "over-length"),
+        (fr.seal("R 7 PAUSE"), "bad real-time verb"),
+        (fr.seal("R 7 HOLD NOW"), "bad why"),
+        (fr.seal("R 7 HOLD LINK X"), "at most a why"),
+        (fr.seal("R x HOLD"), "bad command id"),
+        (fr.seal("R 7"), "needs an id, a verb"),
+        (fr.seal("R 12345678901 STOP"), "bad command id"),
+        (fr.seal("S 1 IDLE 0 0 0 -1 -1 1 0 - WHY"), "bad why"),
     ],
 )
 def test_bad_frames_are_refused_with_a_reason(wire, reason):
@@ -64,6 +78,13 @@ def test_bad_frames_are_refused_with_a_reason(wire, reason):
 def test_seal_refuses_a_body_that_would_be_too_long():
     with pytest.raises(fr.FrameError, match="over 96"):
         fr.seal("D 1 " + "X" * 87)
+
+
+def test_a_status_of_ten_fields_is_read_with_why_unknown():
+    """A machine from before the ``why`` field still reads (docs/protocol.md)."""
+    status = fr.decode(fr.seal("S 1 HOLD 1.500 -2.000 3.000 4 3 10 4500 H"))
+    assert status.state == "HOLD" and status.flags == "H" and status.why == ""
+    assert fr.decode(fr.seal("S 1 HOLD 1 -2 3 4 3 10 4500 H")).why == ""  # the slow path too
 
 
 def test_every_single_bit_flip_is_detected():
@@ -88,6 +109,7 @@ _coord = st.decimals(min_value=-999999, max_value=999999, places=3).map(float)
         acc=st.integers(-1, 10**9), done=st.integers(-1, 10**9),
         free=st.integers(0, 10**9), rpm=st.integers(0, 10**9),
         flags=st.text(fr.FLAG_LETTERS, max_size=6),
+        why=st.sampled_from(("",) + fr.WHY_CODES),
     )
 )
 def test_any_status_round_trips(status):

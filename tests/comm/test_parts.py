@@ -7,7 +7,7 @@ from app.comm.commands import CommandQueue
 from app.comm.heartbeat import LinkMonitor, LinkState
 from app.comm.listener import SessionState
 from app.comm.modal import modal_state, restart_preamble
-from app.comm.realtime import RealtimeRepeater
+from app.comm.realtime import UrgentCommands
 from app.comm.rtt import RttEstimator
 from app.comm.stream import Stream, sd_crc32
 from tests.comm.scripted import Harness
@@ -72,17 +72,24 @@ def test_link_monitor_states():
     assert link.update(3.1) and link.state is LinkState.CONNECTED
 
 
-def test_realtime_byte_gives_up_after_five_seconds():
-    repeater = RealtimeRepeater()
-    repeater.request(fr.FEED_HOLD, 0.0)
-    assert repeater.due(0.0) == b"!"
-    assert repeater.due(0.05) == b""
-    assert repeater.due(0.1) == b"!"
-    assert repeater.confirm("RUN") == []
-    assert repeater.expired(5.1) == [fr.FEED_HOLD]
-    repeater.request(fr.FEED_HOLD, 6.0)
-    repeater.request(fr.STOP_FLUSH, 6.0)
-    assert repeater.due(6.0) == b"\x18"  # a stop replaces a pending hold
+def test_urgent_command_repeats_until_answered_and_gives_up_after_five_seconds():
+    ids = iter(range(100, 200)).__next__
+    urgent = UrgentCommands(ids)
+    hold = urgent.request("HOLD", 0.0)
+    assert hold == fr.RealtimeCommand(100, "HOLD")
+    assert urgent.due(0.0) == [hold, hold]  # two copies the first time
+    assert urgent.due(0.005) == []
+    assert urgent.due(0.01) == [hold]
+    assert urgent.request("HOLD", 0.02) is hold  # a second click is the same frame
+    assert urgent.on_status("RUN") == [] and urgent.on_status("IDLE") == []  # may predate it
+    assert urgent.expired(5.1) == [hold]
+    hold = urgent.request("HOLD", 6.0)
+    stop = urgent.request("STOP", 6.0)
+    assert urgent.due(6.0) == [stop, stop]  # a stop replaces a pending hold
+    assert urgent.on_answer(fr.Ok(stop.id, "STOP", "IDLE")) == stop and not urgent.pending("STOP")
+    assert urgent.on_answer(fr.Ok(stop.id, "STOP", "IDLE")) is None  # a repeat answer
+    hold = urgent.request("HOLD", 7.0)
+    assert urgent.on_status("HOLD") == [hold] and urgent.due(7.0) == []
 
 
 def test_state_changes_are_checked():

@@ -121,7 +121,7 @@ def test_ten_retries_of_one_seq_abort_the_job_with_a_named_error():
     assert "RETRIES_EXHAUSTED" in errors
     job = h.rec.last("on_job_finished")
     assert not job.completed and "resent 10 times" in job.reason
-    assert fr.STOP_FLUSH in h.take()  # the machine is told to stop
+    assert [f for f in h.take() if isinstance(f, fr.RealtimeCommand) and f.verb == "STOP"]  # told to stop
     sends = [f for f in h.rec.of("on_frame") if f.direction == "tx" and f.text.startswith("D 0 ")]
     assert len(sends) == 11
     assert errors.count("RETRIES_EXHAUSTED") == 1
@@ -132,16 +132,17 @@ def test_ten_retries_of_one_seq_abort_the_job_with_a_named_error():
 # ---------------------------------------------------------------------- heartbeat
 
 
-def test_ping_every_second_and_link_states():
+def test_ping_every_quarter_second_and_link_states():
     h = Harness()
     start = h.clock.now
     pings = []
     for _ in range(350):
         h.advance(0.01)
         pings += [h.clock.now for f in h.take() if isinstance(f, fr.Command) and f.verb == "PING"]
-    assert pings[0] - start == pytest.approx(1.0, abs=0.011)  # a second after the last answer
-    silent = [b - a for a, b in zip(pings, pings[1:], strict=False)]
-    assert silent and all(d == pytest.approx(0.25, abs=0.011) for d in silent)  # 4 a second once silent
+    assert pings[0] - start == pytest.approx(0.25, abs=0.011)  # a quarter second after the STATUS
+    gaps = [b - a for a, b in zip(pings, pings[1:], strict=False)]
+    assert gaps[0] == pytest.approx(0.25, abs=0.011)  # 4 a second (issue 18) ...
+    assert gaps[1:] and all(d == pytest.approx(0.02, abs=0.011) for d in gaps[1:])  # 50 once silent 0.5 s
     states = [(e.state, round(e.silent_s, 2)) for e in h.rec.of("on_link_changed")]
     assert [s for s, _ in states][-2:] == ["DEGRADED", "LOST"]
     assert states[-2][1] == pytest.approx(2.0, abs=0.011) and states[-1][1] == pytest.approx(3.0, abs=0.011)
@@ -157,38 +158,95 @@ def test_garbage_is_no_sign_of_life():
     assert h.rec.last("on_link_changed").state == "LOST"
 
 
-# ---------------------------------------------------------------------- real-time bytes
+# ---------------------------------------------------------------------- real-time commands
 
 
-def test_feed_hold_repeats_every_100_ms_until_the_status_shows_hold():
+def _urgent(out, verb):
+    return [f for f in out if isinstance(f, fr.RealtimeCommand) and f.verb == verb]
+
+
+def test_feed_hold_is_an_r_frame_repeated_every_10_ms_until_the_status_shows_hold():
     h = streaming()
     h.take()
     h.session.pause()
+    first = h.take()
+    holds = _urgent(first, "HOLD")
+    assert len(holds) == 2 and holds[0] == holds[1]  # two copies at once
+    assert fr.LEGACY_BYTES[:1] not in first and fr.LEGACY_BYTES[1:] not in first
     times = []
-    for _ in range(35):
-        times += [h.clock.now for x in h.take() if x == fr.FEED_HOLD]
-        h.advance(0.01)
-    assert len(times) == 4
-    assert times[1] - times[0] == pytest.approx(0.1, abs=0.006)
+    for _ in range(5):
+        h.advance(0.005)
+        times += [h.clock.now for _ in _urgent(h.take(), "HOLD")]
+    assert len(times) == 2 and times[1] - times[0] == pytest.approx(0.01, abs=0.006)
     h.reply(Harness.status("HOLD", acc=7, done=2))
     h.advance(0.5)
-    assert fr.FEED_HOLD not in h.take()
+    assert not _urgent(h.take(), "HOLD")
     assert h.session.state is SessionState.PAUSED
 
 
-def test_stop_sends_0x18_until_idle_and_no_more_frames():
+def test_hold_ends_with_its_answer_and_a_stale_idle_status_ends_nothing():
+    h = streaming()
+    h.take()
+    h.session.pause()
+    hold = _urgent(h.take(), "HOLD")[0]
+    h.reply(Harness.status("IDLE", acc=7, done=2))  # sent before the machine took the hold
+    h.advance(0.02)
+    assert _urgent(h.take(), "HOLD")
+    h.reply(fr.Ok(hold.id, "HOLD", "RUN"))
+    h.advance(0.1)
+    assert not _urgent(h.take(), "HOLD")
+    assert h.rec.last("on_command_done").verb == "HOLD"
+
+
+def test_stop_is_an_r_frame_until_answered_and_the_job_ends_when_the_machine_is_idle():
     h = streaming()
     h.take()
     h.session.stop()
     out = h.take()
-    assert out[0] == fr.STOP_FLUSH and any(isinstance(f, fr.Command) and f.verb == "STOP" for f in out)
+    stop = _urgent(out, "STOP")[0]
+    assert not [f for f in out if isinstance(f, fr.Command) and f.verb == "STOP"]
     h.reply(fr.Ack(7, 8), fr.Nak(8))
-    h.advance(0.25)
+    h.advance(0.1)
     out = h.take()
-    assert out.count(fr.STOP_FLUSH) == 2 and not [f for f in out if isinstance(f, fr.Data)]
+    assert len(_urgent(out, "STOP")) >= 5 and not [f for f in out if isinstance(f, fr.Data)]
+    h.reply(Harness.status("IDLE", acc=7, done=3))  # may predate the stop: the job goes on stopping
+    assert h.session.state is SessionState.STOPPING
+    h.reply(fr.Ok(stop.id, "STOP", "HOLD"))
+    h.advance(0.05)
+    assert not _urgent(h.take(), "STOP") and h.session.state is SessionState.STOPPING
     h.reply(Harness.status("IDLE", acc=7, done=3))
     assert h.session.state is SessionState.READY
     assert h.rec.last("on_job_finished").reason == "stopped by the operator"
+
+
+def test_a_hold_the_host_did_not_ask_for_is_reported_with_its_reason():
+    h = streaming()
+    h.reply(fr.Status(BOOT, "HOLD", 0, 0, 10, 7, 2, 8, 0, "HL", "LINK"))
+    hold = h.rec.last("on_hold")
+    assert (hold.why, hold.source, hold.asked) == ("LINK", "link", False)
+    assert "lost the link" in hold.text
+    assert any("the machine holds (the link)" in e.text for e in h.rec.of("on_log"))
+    h.reply(fr.Status(BOOT, "HOLD", 0, 0, 10, 7, 2, 8, 0, "HL", "LINK"))
+    assert len(h.rec.of("on_hold")) == 1  # once per cause
+    h.reply(Harness.status("RUN", acc=7, done=3))
+    assert h.rec.last("on_hold").why == ""
+    h.session.pause()
+    h.reply(fr.Status(BOOT, "HOLD", 0, 0, 10, 7, 3, 8, 0, "H", "HOST"))
+    assert h.rec.last("on_hold").asked and h.rec.last("on_hold").source == "host"
+
+
+def test_resend_rate_of_the_last_minute_rides_on_the_link_event():
+    h = streaming()
+    for _ in range(30):
+        h.reply(fr.Nak(8))
+        h.advance(0.2)
+        h.reply(fr.Ack(8, 8))
+        h.reply(fr.Ack(h.session.stream.window.high_sent, 8))
+    event = h.rec.last("on_link_changed")
+    assert event.sent_last_min > 0 and event.resent_last_min > 0
+    assert event.resend_rate == pytest.approx(event.resent_last_min / event.sent_last_min)
+    h.advance(61.0)  # a minute later nothing is left in the window
+    assert h.session.health.sent(h.clock.now) == 0
 
 
 # ---------------------------------------------------------------------- commands

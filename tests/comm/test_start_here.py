@@ -35,6 +35,7 @@ def _run(tmp_path, lines: list[str], start: int = 0) -> SimLink:
     assert link.run_until(lambda: link.rec.of("on_job_finished"), 300.0)
     assert link.rec.last("on_job_finished").completed, link.rec.last("on_job_finished")
     assert link.run_until(lambda: link.sim.cnc.mc.state == "IDLE", 5.0)
+    assert not link.sim.cnc.job.open  # the machine's job ended with the stream (JOB counted its lines)
     return link
 
 

@@ -17,7 +17,7 @@ class EchoMachine:
     def __init__(self) -> None:
         self._lock = threading.Lock()
         self._out = bytearray()
-        self._rx = dfr.Deframer(realtime=True)
+        self._rx = dfr.Deframer(legacy=True)
         self.closed = False
         self.timeout = 0
         self.fail_reads = False
@@ -49,6 +49,8 @@ class EchoMachine:
             return [fr.Ok(item.id, item.verb, " ".join(item.args))]
         if isinstance(item, fr.Data):
             return [fr.Ack(item.seq, 16), fr.Finished(item.seq)]
+        if isinstance(item, fr.RealtimeCommand):
+            return [fr.Ok(item.id, item.verb, "IDLE")]
         return []
 
     def reset_input_buffer(self) -> None:

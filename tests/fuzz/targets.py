@@ -3,7 +3,7 @@
 Each target takes one generated input and checks that nothing but the documented
 error type comes out: the G-code loader (text and bytes: never raises, diagnostics
 name a line), the deframer and the codec (host and machine side: ``Frame``,
-``Dropped`` or ``Realtime`` items; ``decode`` raises only ``FrameError`` and what it
+``Dropped`` or ``Legacy`` items; ``decode`` raises only ``FrameError`` and what it
 returns encodes back to the same body), the machine's command parser (frames fed to a
 running simulator: it answers and never raises), the CNC MCU's dialect parser (only
 ``DialectError``), and the profile and settings loaders (never raise; every value in
@@ -24,7 +24,7 @@ from pathlib import Path
 from hypothesis import strategies as st
 
 from app.comm import frame as fr
-from app.comm.deframer import Deframer, Dropped, Realtime
+from app.comm.deframer import Deframer, Dropped, Legacy
 from app.gcode import load, load_text
 from app.profile import MachineProfile, read_profile
 from app.ui.settings.store import load_settings
@@ -39,17 +39,17 @@ gcode_text = st.one_of(
     st.lists(st.sampled_from(GCODE_WORDS), max_size=40).map("".join),
     st.text(max_size=100),
 )
-FRAME_BYTES = b"DCANFOESXIL0123456789 -*.\n\r!\x18ABCDEF"
+FRAME_BYTES = b"DCRANFOESXIL0123456789 -*.\n\r!\x18ABCDEF"
 frame_bytes = st.one_of(
     st.binary(max_size=300),
     st.lists(st.sampled_from([bytes([b]) for b in FRAME_BYTES]), max_size=150).map(b"".join),
     st.lists(st.sampled_from([b"D 0 G00 X1*", b"A 1 16*", b"\n", b"S 1 IDLE 0.000 0.000 0.000 -1 -1 16 0 -*",
-                              b"C 1 PING*", b"904C", b"0000", b"!", b"\x18", b"\r"]),
+                              b"C 1 PING*", b"R 1 HOLD*", b"6E51", b"904C", b"0000", b"!", b"\x18", b"\r"]),
              max_size=30).map(b"".join),
 )
 bodies = st.one_of(
     st.text(alphabet="DCANFOESXIL0123456789 -._+eEinfaGXYZ", max_size=60),
-    st.builds(lambda k, rest: f"{k} {rest}", st.sampled_from(list("DCANFOESXIL")),
+    st.builds(lambda k, rest: f"{k} {rest}", st.sampled_from(list("DCRANFOESXIL")),
               st.text(alphabet="0123456789 -.ABCDEFGHIJKLMNOPQRSTUVWXYZ_", max_size=50)),
 )
 VERBS = ["PING", "STATUS", "HOME", "JOB", "PAUSE", "RESUME", "STOP", "JOG", "SPINDLE", "SET", "GET", "ZERO",
@@ -61,7 +61,11 @@ commands = st.builds(lambda cid, verb, args: f"C {cid} {' '.join([verb, *args])}
                      st.integers(1, 50), st.sampled_from(VERBS), st.lists(st.sampled_from(ARGS), max_size=4))
 data_lines = st.builds(lambda seq, line: f"D {seq} {line}", st.integers(0, 40),
                        st.lists(st.sampled_from(GCODE_WORDS[:22]), min_size=1, max_size=6).map(" ".join))
-machine_input = st.lists(st.one_of(commands, data_lines, st.sampled_from(["!", "\x18", "garbage"])),
+realtime_commands = st.builds(lambda cid, verb, why: f"R {cid} {verb} {why}".rstrip(), st.integers(1, 50),
+                              st.sampled_from(["HOLD", "RESUME", "STOP", "RESET", "PAUSE"]),
+                              st.sampled_from(["", "LINK", "PANEL", "NOPE"]))
+machine_input = st.lists(st.one_of(commands, data_lines, realtime_commands,
+                                   st.sampled_from(["!", "\x18", "garbage"])),
                          min_size=1, max_size=12)
 dialect_lines = st.one_of(st.lists(st.sampled_from(GCODE_WORDS), max_size=8).map(" ".join),
                           st.text(alphabet="GMXYZIJFPS0123456789.-+ ", max_size=60))
@@ -110,14 +114,14 @@ def gcode_bytes_load(data: bytes) -> None:
 
 
 def deframer_both_sides(data: bytes) -> None:
-    for realtime in (False, True):
-        deframer = Deframer(realtime=realtime)
+    for legacy in (False, True):
+        deframer = Deframer(legacy=legacy)
         items = deframer.feed(data[: len(data) // 2], 0.0) + deframer.feed(data[len(data) // 2:], 0.1)
         items += deframer.poll(10.0)
         for item in items:
-            assert isinstance(item, fr.Frame | Dropped | Realtime)
-            if isinstance(item, Realtime):
-                assert realtime and item.byte in (b"!", b"\x18")
+            assert isinstance(item, fr.Frame | Dropped | Legacy)
+            if isinstance(item, Legacy):
+                assert legacy and item.byte in (b"!", b"\x18")
 
 
 def codec_round_trip(body: str) -> None:

@@ -29,3 +29,21 @@ def assert_same_scan(a: bulk.Scan, b: bulk.Scan) -> None:
     np.testing.assert_array_equal(a.units, b.units)
     for letter in a.values:
         np.testing.assert_array_equal(a.values[letter], b.values[letter])
+
+
+def reference_load(text: str):
+    """``load_text(text)`` through the reference path only: every line lexed and
+    interpreted by ``lexer`` + ``interp`` (the scan is run, then no line is left to it)."""
+    from unittest import mock
+
+    real = bulk.scan_stream
+
+    def nothing_simple(*args, **kwargs):
+        for result, ready in real(*args, **kwargs):
+            result.simple[:] = False
+            yield result, ready
+
+    with mock.patch.object(bulk, "scan_stream", nothing_simple):
+        from app.gcode import load_text
+
+        return load_text(text)

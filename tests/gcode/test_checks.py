@@ -42,13 +42,14 @@ def _check(text: str, monkeypatch, block: int, shown: int, shift: float = 0.0) -
     ops = load_text(text).ops
     limits = checks._limits(MachineProfile()) - shift
     monkeypatch.setattr(checks, "BLOCK", block)
-    got = {("XYZ".index(name), sign): (rows, values)
-           for name, sign, _, rows, values in checks._violations(ops, limits, shown)}
+    got = {("XYZ".index(name), sign): (rows, values, count)
+           for name, sign, _, rows, values, count in checks._violations(ops, limits, shown)}
     want = _reference(ops, limits)
     assert sorted(got) == sorted(want)
     for key, (rows, values) in want.items():
-        assert got[key][0].tolist() == rows, key
-        assert got[key][1][:shown].tolist() == values[:shown], key
+        assert got[key][0].tolist() == rows[:shown], key
+        assert got[key][1].tolist() == values[:shown], key
+        assert got[key][2] == len(rows), key
 
 
 PROGRAM = """G21 G90 G0 X10 Y10 Z5

@@ -48,6 +48,10 @@ def test_skipped_lines(text, skip):
         ("o100 sub", 1, "o-words"),
         ("G1 X[1+2]", 5, "expressions"),
         ("G1 (open comment", 4, "not closed"),
+        ("G1 (a) X1 (open", 11, "not closed"),
+        ("G1 (a (b) c) X1", 7, "nested comment"),
+        ("(a (b)) G1", 4, "nested comment"),
+        ("G1 (a (b", 7, "nested comment"),
         ("G1 X", 4, "word X has no number"),
         ("G1 X-", 4, "word X has no number"),
         ("G1 X1.2.3", 8, "unexpected character '.'"),
@@ -69,3 +73,13 @@ def test_fast_path_agrees_that_a_comment_ends_a_number(text):
     from app.gcode import load_text
 
     assert load_text(text).errors
+
+
+@pytest.mark.parametrize("text", ["(header (plain); scale 1)\nG1 X1 F100\nM2\n", "G1 X1 F1 (a (b) c)\nM2\n"])
+def test_a_nested_comment_is_refused_on_the_plain_path(text):
+    """rs274 refuses the line ("Nested comment found"); the rest of the program stays plain."""
+    from app.gcode import load_text, sniff
+
+    assert not sniff.needs_expander(text.encode())
+    program = load_text(text)
+    assert [(d.line, "nested comment" in d.message) for d in program.errors] == [(1, True)]

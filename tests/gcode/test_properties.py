@@ -10,6 +10,7 @@ from hypothesis import strategies as st
 
 from app.gcode import bulk, load_text
 from app.gcode.lexer import lex_line
+from tests.gcode.scans import reference_load
 
 SETTINGS = settings(max_examples=80, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 
@@ -148,21 +149,8 @@ def test_normalised_program_describes_the_same_path(text):
 @SETTINGS
 @given(programs())
 def test_fast_path_and_general_path_agree(text):
-    import app.gcode.program as program_module
-
     fast = load_text(text)
-    real_scan = program_module.bulk.scan
-
-    def general_only(data, n):
-        result = real_scan(data, n)
-        result.simple[:] = False
-        return result
-
-    program_module.bulk.scan = general_only
-    try:
-        slow = load_text(text)
-    finally:
-        program_module.bulk.scan = real_scan
+    slow = reference_load(text)
     assert fast.moves == slow.moves
     assert fast.diagnostics == slow.diagnostics
 

@@ -130,3 +130,22 @@ def test_chord_points_of_many_arcs_equal_those_of_each_arc_alone():
             one = slice(i, i + 1)
             alone, _ = chord_points(s[one], e[one], c[one], axes[one], turn[one], tolerance)
             np.testing.assert_array_equal(points[owner == i], alone)
+
+
+@pytest.mark.parametrize("text", [
+    "M3 S1000\nG0 X10 Y5\nG1 X20 F300\nM5\nG0 X0 Y0\nM2",  # events between the moves
+    "G0 X10 Y5\nG1 X20 F300\nG2 X30 Y5 I5 J0\nM2",  # the moves one run
+    "G0 X1\nM0\nG0 X2\nT1 M6\nG4 P1\nM3 S500\nG1 Y3 F100\nM5\nM30",  # stops and tool changes between
+])
+def test_starts_and_ends_are_the_rows_and_cannot_be_changed(text):
+    program = load_text(text)
+    tp, ops = program.toolpath, program.ops
+    rows = np.flatnonzero(ops.kind <= DWELL)
+    np.testing.assert_array_equal(tp.start, ops.starts()[rows])
+    np.testing.assert_array_equal(tp.end, ops.end[rows])
+    np.testing.assert_array_equal(tp.center, ops.center[rows])
+    one_run = rows[-1] - rows[0] < len(rows)
+    shared = [tp.start, tp.end] + ([tp.center, tp.kind, tp.source_line] if one_run else [])
+    for column in shared:
+        with pytest.raises(ValueError):
+            column[0] = 1  # shared with the interpreted rows or with each other

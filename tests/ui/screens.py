@@ -26,12 +26,7 @@ def job_shot(window, wait, out: Path, speed: float = 10, fraction: float = 0.45)
     if window.loaded is None:
         window.open_file(SAMPLE)
         wait(lambda: window.loaded is not None, 30)
-    sd = Path(tempfile.mkdtemp(prefix="cnc-sd-"))
-    window.operator.connect_to(f"sim://?speed={speed:g}&sd={sd}")
-    wait(lambda: window.binder.status is not None, 30)
-    window.operator.home("NORMAL")
-    wait(lambda: window.binder.status.homed and window.binder.status.state == "IDLE", 120)
-    window.operator.start()
+    start_on_simulator(window, wait, speed)
     total = len(window.loaded.program.line_map)
     wait(lambda: window.binder.job_done >= fraction * total, 300)
     window.docks["plot"].raise_()
@@ -43,6 +38,16 @@ def job_shot(window, wait, out: Path, speed: float = 10, fraction: float = 0.45)
     return shots
 
 
+def start_on_simulator(window, wait, speed: float) -> None:
+    """Connect to the built-in simulator at ``speed``, home, and start the open program."""
+    sd = Path(tempfile.mkdtemp(prefix="cnc-sd-"))
+    window.operator.connect_to(f"sim://?speed={speed:g}&sd={sd}")
+    wait(lambda: window.binder.status is not None, 30)
+    window.operator.home("NORMAL")
+    wait(lambda: window.binder.status.homed and window.binder.status.state == "IDLE", 120)
+    window.operator.start()
+
+
 def settings_shot(window, wait, out: Path) -> Path:
     """The settings dialog (language and the first tab)."""
     dialog = window.operator.edit_settings()
@@ -50,6 +55,70 @@ def settings_shot(window, wait, out: Path) -> Path:
     path = _save(dialog, wait, out / "settings.png")
     dialog.reject()
     return path
+
+
+def states_shots(window, wait, out: Path, speed: float = 10) -> list[Path]:
+    """The window in the states of its state table (issue 20): not homed, homing, a job
+    from the SD card and held, the cover open, the link lost, a machine without a card."""
+    out = out / "states"
+    if window.loaded is None:
+        window.open_file(SAMPLE)
+        wait(lambda: window.loaded is not None, 30)
+    sd = Path(tempfile.mkdtemp(prefix="cnc-sd-"))
+    (sd / "square.nc").write_text("".join(f"G01 X{20 + 40 * (i % 2)} Y{20 + 40 * (i // 2 % 2)} F200\n"
+                                          for i in range(80)))
+    window.operator.connect_to(f"sim://?speed={speed:g}&sd={sd}")
+    wait(lambda: window.binder.status is not None and window.controls.buttons["home"].isEnabled(), 30)
+    window.docks["sd"].raise_()
+    shots = [_save(window, wait, out / "not-homed.png")]
+    window.operator.home("NORMAL")
+    shots.append(_save(window, wait, out / "homing.png"))
+    wait(lambda: window.binder.status.homed and window.binder.status.state == "IDLE"
+         and window.binder.pending_motion is None, 120)
+    window.sd_panel.list_requested.emit()
+    wait(lambda: window.sd_panel.lines_of("square.nc") > 0, 30)
+    window.operator.run_from_sd("square.nc")
+    wait(lambda: "S" in window.binder.status.flags and window.binder.status.done >= 8, 60)
+    shots.append(_save(window, wait, out / "sd-run.png"))
+    window.operator.pause()
+    wait(lambda: window.binder.status.state == "HOLD" and window.controls.buttons["resume"].isEnabled(), 30)
+    shots.append(_save(window, wait, out / "sd-held.png"))
+    window.operator.stop()
+    wait(lambda: window.binder.status.state == "IDLE" and "S" not in window.binder.status.flags, 60)
+    sim = window.link.sim
+    sim.panel.set_cover(True)
+    window.docks["panel"].raise_()
+    wait(lambda: "C" in window.binder.status.flags, 30)
+    shots.append(_save(window, wait, out / "cover-open.png"))
+    sim.panel.set_cover(False)
+    wait(lambda: "C" not in window.binder.status.flags, 30)
+    window.docks["sd"].raise_()
+    shots.append(_no_card_shot(window, wait, out / "no-sd-card.png"))
+    sim.faults.unplug()
+    wait(window.alert.isVisible, 30)
+    shots.append(_save(window, wait, out / "link-lost.png"))
+    shots.append(_save(window.alert, wait, out / "link-lost-alert.png"))
+    window.alert.hide()
+    return shots
+
+
+def _no_card_shot(window, wait, path: Path) -> Path:
+    """The same window as a machine without card, panel or cover would show it (a GRBL
+    driver's capabilities): the card's controls off, the reason in their tooltips."""
+    from dataclasses import replace
+
+    from app.capabilities import Capabilities
+    from app.ui.enabler import apply
+
+    binder = window.binder
+    no_card = Capabilities(sd_card=False, exact_resume=False, crc_link=False, oled_panel=False, cover=False)
+    real = binder.inputs
+    binder.inputs = lambda: replace(real(), capabilities=no_card)
+    apply(window, binder.inputs())
+    shot = _save(window, wait, path)
+    binder.inputs = real
+    binder.refresh_enabled()
+    return shot
 
 
 def _save(window, wait, path: Path) -> Path:
@@ -60,7 +129,9 @@ def _save(window, wait, path: Path) -> Path:
     return path
 
 
-def main(out: str = "docs/screenshots", language: str = "en") -> int:
+def shot_window(language: str = "en"):
+    """(window, wait): a 1600 x 1000 window in ``language`` with fresh settings, and a wait
+    that runs the event loop until a predicate holds (TimeoutError after its seconds)."""
     from app.ui.language import apply_language
     from app.ui.main import make_app
     from app.ui.main_window import MainWindow
@@ -81,9 +152,20 @@ def main(out: str = "docs/screenshots", language: str = "en") -> int:
     window = MainWindow(config_dir=config, notifier=Notifier(show_boxes=False), restore=False)
     window.resize(1600, 1000)
     window.show()
+    return window, wait
+
+
+def main(out: str = "docs/screenshots", language: str = "en") -> int:
+    window, wait = shot_window(language)
     shots = [preview_shot(window, wait, Path(out)), settings_shot(window, wait, Path(out))]
     shots += job_shot(window, wait, Path(out))
     window.close()
+    config = Path(tempfile.mkdtemp(prefix="cnc-config-"))
+    states = MainWindow(config_dir=config, notifier=Notifier(show_boxes=False), restore=False)
+    states.resize(1600, 1000)
+    states.show()
+    shots += states_shots(states, wait, Path(out))
+    states.close()
     print("\n".join(str(p) for p in shots))
     return 0
 

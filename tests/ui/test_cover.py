@@ -28,8 +28,12 @@ def test_cover_open_mid_job_banner_refusals_and_resume(qtbot, window, tmp_path):
     qtbot.waitUntil(lambda: status().rpm == 0 and status().state == "HOLD", timeout=10_000)
     assert sim.panel.oled_text()[0] == "COVER OPEN"
     before = len(window.notifier.messages)
-    window.operator.jog("X", 1.0, 300.0)
+    window.operator.jog("X", 1.0, 300.0)  # the window refuses them itself: nothing is sent
     window.operator.spindle(1000)
+    assert window.operator.refused[-2:] == [("jog", "the cover is open"), ("spindle_on", "the cover is open")]
+    assert "refused: the cover is open" in window.status.currentMessage()
+    window.link.call("jog", "X", 1.0, 300.0)  # and the machine refuses them too, were they sent
+    window.link.call("send_command", "SPINDLE 1000")
     qtbot.waitUntil(lambda: len([m for m in window.notifier.messages[before:] if "COVER_OPEN" in m[2]]) == 2,
                     timeout=10_000)
     sim.panel.set_cover(False)

@@ -79,7 +79,8 @@ def test_operator_story(qtbot, window, tmp_path):
     sim.faults.unplug()
     qtbot.waitUntil(window.alert.isVisible, timeout=60_000)
     assert window.binder.alert_clock - cut_at <= 3.0
-    assert "USB link" in window.alert.body.text() and "holds" in window.alert.body.text()
+    said = window.alert.body.text()  # the cause (the port failed), the machine's rule, its last state
+    assert "serial port" in said and "holds" in said and "Last state seen: RUN" in said
     # The machine holds on the path, or (its host-lost timer being wall-clock, at 20x) it
     # has already run out of queued lines: either way it stands still mid-job.
     qtbot.waitUntil(lambda: _machine_state(sim) in ("HOLD", "IDLE"), timeout=60_000)

@@ -44,7 +44,7 @@ def test_work_zero_at_x50_blocks_start_until_moved_back(qtbot, window, tmp_path)
     qtbot.waitUntil(lambda: window.binder.last_job_event is not None, timeout=60_000)
     assert not window.binder.last_job_event.completed
     ended = [text for _, title, text in window.notifier.messages if title == "Job ended"][-1]
-    assert "SOFT_LIMIT" in ended and "X+" in ended and "source line 5" in ended, ended
+    assert "line 5 was refused" in ended and "axis X in the + direction" in ended, ended  # source line
     window.controls.override_travel.setChecked(False)
     window.controls.check_mode.setChecked(False)
     window.operator.jog("X", -50.0, 600.0)

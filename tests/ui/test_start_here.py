@@ -45,6 +45,9 @@ def test_the_source_listing_offers_start_here(qtbot, window, tmp_path):
     open_and_wait(qtbot, window, path)
     view = window.program_panel.source
     assert view.contextMenuPolicy() == Qt.ContextMenuPolicy.CustomContextMenu
+    action = window.program_panel.start_here_action
+    assert not action.isEnabled() and "not connected" in action.toolTip()  # the state table's word
+    action.setEnabled(True)  # as the table enables it once connected and homed
     with qtbot.waitSignal(window.program_panel.start_here_requested, timeout=5000) as blocker:
         row = window.program_panel.source_model.index(3, 0)
         window.program_panel._source_menu(view.visualRect(row).center())

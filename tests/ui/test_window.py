@@ -3,6 +3,7 @@
 from PySide6.QtCore import QMimeData, QPointF, Qt, QUrl
 from PySide6.QtGui import QDropEvent
 
+from app.ui.program.summary import format_duration
 from app.ui.recent import recent_files
 from app.ui.settings.prefs import load_prefs
 from tests.ui.conftest import SAMPLE_FILES, open_and_wait
@@ -110,3 +111,11 @@ def test_damaged_prefs_give_the_defaults_and_are_named(make_window, notifier, tm
     assert window.prefs.recent_files == () and window.prefs.dark is False
     level, title, text = notifier.messages[0]
     assert level == "warning" and "prefs.json" in text and "recent_files" in text and "'yes'" in text
+
+
+def test_the_summary_says_the_planners_time_once_it_is_ready(qtbot, window):
+    with qtbot.waitSignal(window.loader.prepared, timeout=60_000) as prepared:
+        window.open_file(SAMPLE_FILES[0])
+        window.loader.shown()
+    said = format_duration(prepared.args[0].program.planned.total)
+    qtbot.waitUntil(lambda: said in window.program_panel.summary.text(), timeout=5_000)

@@ -140,8 +140,11 @@ def _call_word(line_words: list[Word]) -> Word | None:
 
 
 def skip(w, f: Frame, b: bk.Block) -> None:
+    """A line that does not compile was reported before the walk; the program cannot run,
+    but the walk goes on past it so that the lines after it are checked too (all of a
+    file's problems at once, as the plain path finds them)."""
     if f.pc in f.unit.bad:
-        w.frames.clear()  # its error is reported already; the walk stops as rs274ngc does
+        f.pc += 1
         return
     if b.skip == "block delete":
         w.reports[f.file_id].warning(b.line, 0, msg("block delete '/': line skipped"), "block delete")

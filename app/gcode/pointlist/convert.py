@@ -17,7 +17,7 @@ from app.profile import MachineProfile
 
 from ..features.ranges import COORD, within
 from .formats import PointList, PointListError
-from .gcode import feed_lines
+from .gcode import comment, feed_lines
 
 MARGIN = 5.0  # mm kept free at the travel's edges by fit
 DEFAULT_RPM = MachineProfile().max_spindle_rpm()  # what the default machine's spindle reaches
@@ -109,7 +109,7 @@ def to_gcode(points: PointList, options: ImportOptions, profile: MachineProfile 
         raise PointListError(points.name, 0, 0, said)
 
 
-    parts = [f"({placement.describe(points, options)})\n", "G21 G90 G17\n", f"M03 S{options.rpm:g}\n"]
+    parts = [comment(placement.describe(points, options)), "G21 G90 G17\n", f"M03 S{options.rpm:g}\n"]
     parts += [_path_gcode(path, options, placement, k) for k, path in enumerate(points.paths)]
     parts.append("M05\nM30\n")
     return "".join(parts), placement

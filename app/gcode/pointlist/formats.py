@@ -62,12 +62,29 @@ def is_fabrication(raw: bytes) -> bool:
 
 
 def looks_like_points(raw: bytes) -> bool:
-    """Whether ``raw`` reads as a point list (either format) rather than G-code."""
+    """Whether ``raw`` reads as a point list (either format) rather than G-code: every line
+    of its head is ``x y z``, or (a point list with a bad word, which the reader then names
+    with its line) most are and every line starts with a number, as no G-code line does."""
     if is_fabrication(raw):
         return True
     head = table(raw[:4096].rsplit(b"\n", 1)[0] if b"\n" in raw[:4096] else raw[:4096])
     used = head.tokens > 0
-    return bool(used.any() and (head.numeric[used] & (head.tokens[used] == 3)).all())
+    if not used.any():
+        return False
+    points = head.numeric[used] & (head.tokens[used] == 3)
+    if points.all():
+        return True
+    rows = np.flatnonzero(used)
+    return bool(points.mean() >= 0.5 and all(_starts_with_number(head.text(k)) for k in rows))
+
+
+def _starts_with_number(text: str) -> bool:
+    first = text.replace(",", " ").split()[0]
+    try:
+        float(first)
+    except ValueError:
+        return False
+    return True
 
 
 def _bad_point(t: LineTable, k: int, name: str) -> PointListError:

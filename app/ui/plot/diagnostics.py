@@ -62,10 +62,10 @@ class DiagnosticsView(QWidget):
         # Y moves in whole steps (the axis text is most of a frame); errors never zoom
         # into sub-micron noise
         self.y_ranges += [SteadyYRange(pos, min_span=1.0), SteadyYRange(err, min_span=0.02)]
-        commanded = pos.plot(pen=pg.mkPen("#c0c0c0", width=1, style=Qt.PenStyle.DashLine))
-        measured = pos.plot(pen=pg.mkPen(colour, width=1))
+        commanded = pos.plot(pen=pg.mkPen("#c0c0c0", width=1, style=Qt.PenStyle.DashLine), connect="finite")
+        measured = pos.plot(pen=pg.mkPen(colour, width=1), connect="finite")
         self.position_curves.append((commanded, measured))
-        self.error_curves.append(err.plot(pen=pg.mkPen(colour, width=1)))
+        self.error_curves.append(err.plot(pen=pg.mkPen(colour, width=1), connect="finite"))
         self.plots += [pos, err]
 
     def redraw(self, force: bool = False) -> bool:

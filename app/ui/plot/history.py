@@ -34,6 +34,13 @@ class PositionHistory:
         self._count = min(self._count + 1, self.capacity)
         self.version += 1
 
+    def break_line(self) -> None:
+        """A gap (the link was lost): a row of no position at the newest time, so the plots
+        draw no line across the time the machine was not heard (their curves skip NaN)."""
+        latest = self.latest()
+        if latest is not None and np.isfinite(latest[MEASURED]).any():
+            self.append(float(latest[T]), (np.nan, np.nan, np.nan))
+
     def clear(self) -> None:
         self._count = 0
         self._next = 0

@@ -33,7 +33,7 @@ class PositionPlot(QWidget):
         self.plot.addLegend(offset=(10, 10), labelTextSize="8pt")
         self.plot.getPlotItem().setMenuEnabled(False)
         self.curves = [
-            self.plot.plot(pen=pg.mkPen(colour, width=1), name=axis)
+            self.plot.plot(pen=pg.mkPen(colour, width=1), name=axis, connect="finite")
             for axis, colour in zip("XYZ", AXIS_COLOURS, strict=True)
         ]
         self.plot.setXRange(-seconds, 0, padding=0)

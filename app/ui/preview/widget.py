@@ -13,8 +13,8 @@ from __future__ import annotations
 
 import numpy as np
 import pyqtgraph as pg
-from PySide6.QtCore import QEvent, Qt, QTimer, Signal
-from PySide6.QtGui import QColor, QPen
+from PySide6.QtCore import QCoreApplication, QEvent, Qt, QTimer, Signal
+from PySide6.QtGui import QPen
 from PySide6.QtWidgets import QVBoxLayout, QWidget
 
 from app.ui.numbers import decimal
@@ -29,13 +29,37 @@ MARKER_COLOUR = "#ff4040"
 HIGHLIGHT_COLOUR = "#00e5ff"
 
 
+RAPID_COLOUR = "#9a9a9a"
+AIR_COLOUR = "#5fa8d3"
 # Shallow to deep: warm colours that stand out on the black background.
 DEPTH_COLOURS = ("#ffe066", "#ffa94d", "#ff6b6b", "#f06595", "#cc5de8")
 
 
-def _depth_colours() -> list[QColor]:
-    return [QColor(DEPTH_COLOURS[i % len(DEPTH_COLOURS)]) for i in range(DEPTH_BANDS)]
+def group_colours() -> list[str]:
+    """The colour of each drawing group: rapids, cuts at or above the stock, depth bands."""
+    return [RAPID_COLOUR, AIR_COLOUR] + [DEPTH_COLOURS[i % len(DEPTH_COLOURS)] for i in range(DEPTH_BANDS)]
 
+
+def legend_entries(model: PreviewModel) -> list[tuple[int, str]]:
+    """(group, label) of each drawing group ``model`` has, in the legend's order."""
+    if model is None or model.empty:
+        return []
+    edges = model.geometry.depth_edges
+    entries = [(RAPID_GROUP, QCoreApplication.translate("PreviewWidget", "rapid"))]
+    if len(model.groups[AIR_GROUP]):
+        entries.append((AIR_GROUP, QCoreApplication.translate("PreviewWidget", "feed Z ≥ 0")))
+    for band in range(DEPTH_BANDS):
+        if len(model.groups[2 + band]):
+            entries.append((2 + band, f"Z {decimal(edges[band], 2)} … {decimal(edges[band + 1], 2)}"))
+    return entries
+
+
+def rectangle_pairs(x0: float, y0: float, x1: float, y1: float) -> tuple[list[float], list[float]]:
+    """The four sides of a rectangle as point pairs (the curves here draw ``connect="pairs"``:
+    a 5-point outline would draw two sides of four)."""
+    xs = [x0, x1, x1, x1, x1, x0, x0, x0]
+    ys = [y0, y0, y0, y1, y1, y1, y1, y0]
+    return xs, ys
 
 class PreviewWidget(QWidget):
     """``show_program(toolpath)``, ``fit()``, ``set_tool(x, y)``, ``set_done(seq)``."""
@@ -75,9 +99,9 @@ class PreviewWidget(QWidget):
     def _make_items(self) -> None:
         self.travel_item = self._curve(pg.mkPen("#808080", width=1), z=-10)
         self.bounds_item = self._curve(pg.mkPen("#c8a000", width=1, style=Qt.PenStyle.DashLine), z=-5)
-        rapid_pen = pg.mkPen("#9a9a9a", width=1, style=Qt.PenStyle.DashLine)
-        pens = [rapid_pen, pg.mkPen("#5fa8d3", width=1)]
-        pens += [pg.mkPen(colour, width=1) for colour in _depth_colours()]
+        colours = group_colours()
+        pens = [pg.mkPen(colours[0], width=1, style=Qt.PenStyle.DashLine)]  # rapids
+        pens += [pg.mkPen(colour, width=1) for colour in colours[1:]]
         self.group_pens = pens
         self.group_data = [(np.zeros(0), np.zeros(0)) for _ in pens]  # what the path layer shows
         self.group_samples = [pg.PlotDataItem(pen=pen) for pen in pens]  # legend samples only
@@ -107,7 +131,7 @@ class PreviewWidget(QWidget):
         """The machine's travel rectangle, drawn in work coordinates (shifted by -offset)."""
         x0, y0 = -offset[0], -offset[1]
         x1, y1 = x0 + travel[0], y0 + travel[1]
-        self.travel_item.setData([x0, x1, x1, x0, x0], [y0, y0, y1, y1, y0])
+        self.travel_item.setData(*rectangle_pairs(x0, y0, x1, y1))
 
     def show_program(self, toolpath, tolerance: float = 0.01) -> None:
         self.show_model(PreviewModel(toolpath, tolerance) if toolpath is not None else None)
@@ -122,7 +146,7 @@ class PreviewWidget(QWidget):
             self._refill_now()
             return
         xmin, xmax, ymin, ymax = model.bounds()
-        self.bounds_item.setData([xmin, xmax, xmax, xmin, xmin], [ymin, ymin, ymax, ymax, ymin])
+        self.bounds_item.setData(*rectangle_pairs(xmin, ymin, xmax, ymax))
         self.fit()
         self._refill_now()
 
@@ -144,16 +168,8 @@ class PreviewWidget(QWidget):
 
     def _update_legend(self) -> None:
         self.legend.clear()
-        if self.model is None or self.model.empty:
-            return
-        edges = self.model.geometry.depth_edges
-        self.legend.addItem(self.group_samples[RAPID_GROUP], self.tr("rapid"))
-        if len(self.model.groups[AIR_GROUP]):
-            self.legend.addItem(self.group_samples[AIR_GROUP], self.tr("feed Z ≥ 0"))
-        for band in range(DEPTH_BANDS):
-            if len(self.model.groups[2 + band]):
-                label = f"Z {decimal(edges[band], 2)} … {decimal(edges[band + 1], 2)}"
-                self.legend.addItem(self.group_samples[2 + band], label)
+        for group, label in legend_entries(self.model):
+            self.legend.addItem(self.group_samples[group], label)
 
     def fit(self) -> None:
         """Zoom to the program (or to the travel when no program is open)."""

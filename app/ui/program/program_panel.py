@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 from PySide6.QtCore import QEvent, Qt, Signal
-from PySide6.QtGui import QFontDatabase
+from PySide6.QtGui import QAction, QFontDatabase
 from PySide6.QtWidgets import (
     QAbstractItemView,
     QHeaderView,
@@ -41,6 +41,9 @@ class ProgramPanel(QWidget):
         self.source.doubleClicked.connect(lambda index: self.line_activated.emit(index.row() + 1))
         self.source.setContextMenuPolicy(Qt.ContextMenuPolicy.CustomContextMenu)
         self.source.customContextMenuRequested.connect(self._source_menu)
+        self.start_here_action = QAction(self)  # enabled by the window's state table
+        self.start_here_action.triggered.connect(lambda: self.start_here_requested.emit(self._menu_line))
+        self._menu_line = 0
         self.context = QLabel()  # where an expanded program is: subprogram and loop pass
         self.context.hide()
         self.problems = QTreeWidget()
@@ -61,6 +64,7 @@ class ProgramPanel(QWidget):
     def retranslate_ui(self) -> None:
         self.problems.setHeaderLabels([self.tr("Line"), self.tr("Col"), "", self.tr("Message")])
         self.tabs.setTabText(0, self.tr("Source"))
+        self.start_here_action.setText(self.tr("Start here"))
         if self._shown is None:
             empty = self.tr("No program open. File ▸ Open… or drop a G-code file on the window.")
             self.summary.setText(empty)
@@ -121,8 +125,8 @@ class ProgramPanel(QWidget):
         if not index.isValid():
             return
         menu = QMenu(self)
-        start = menu.addAction(self.tr("Start here"))
-        start.triggered.connect(lambda: self.start_here_requested.emit(index.row() + 1))
+        self._menu_line = index.row() + 1
+        menu.addAction(self.start_here_action)
         menu.popup(self.source.viewport().mapToGlobal(pos))
 
     def _problem_item(self, kind: str, diagnostic) -> QTreeWidgetItem:

@@ -23,7 +23,7 @@ from app.i18n import localize
 from app.profile import MachineProfile, ProfileError, check_value, consistency_problems
 from app.ui.language import LANGUAGES, current_language
 from app.ui.numbers import fill, general, parse_number
-from app.ui.settings.labels import field_doc, field_label
+from app.ui.settings.labels import CHOICES, choice_words, field_doc, field_label
 
 TITLES = {
     "pid": QT_TRANSLATE_NOOP("SettingsDialog", "PID gains"),
@@ -35,6 +35,30 @@ TITLES = {
     "job": QT_TRANSLATE_NOOP("SettingsDialog", "Program stops && end"),
 }
 ORDER = ("pid", "motion", "link", "axis", "spindle", "travel", "job")
+
+
+class ChoiceEdit(QComboBox):
+    """A field that is one of a few numbered choices, shown in words; ``text``/``setText``
+    read and write the number as the line edits of the other fields do."""
+
+    def __init__(self, words: list[str], value: str, parent=None):
+        super().__init__(parent)
+        self.set_words(words)
+        self.setText(value)
+
+    def set_words(self, words: list[str]) -> None:
+        index = max(self.currentIndex(), 0)
+        self.clear()
+        for number, word in enumerate(words):
+            self.addItem(word, number)
+        self.setCurrentIndex(min(index, len(words) - 1))
+
+    def text(self) -> str:
+        return str(self.currentData())
+
+    def setText(self, value: str) -> None:  # noqa: N802 (the QLineEdit name the dialog uses)
+        index = self.findData(int(float(value))) if value.strip() else -1
+        self.setCurrentIndex(max(index, 0))
 
 
 class SettingsDialog(QDialog):
@@ -101,7 +125,12 @@ class SettingsDialog(QDialog):
             lo, hi = spec.metadata["range"]
             doc = field_doc(spec.metadata.get("doc", ""))
             tip = fill(self.tr("range %1 … %2"), general(lo), general(hi))
-            self.edits[section, spec.name].setToolTip(f"{doc} — {tip}" if doc else tip)
+            edit = self.edits[section, spec.name]
+            if isinstance(edit, ChoiceEdit):
+                edit.set_words(choice_words(spec.name))
+                edit.setToolTip(field_label(spec.name))
+            else:
+                edit.setToolTip(f"{doc} — {tip}" if doc else tip)
             self.labels[section, spec.name].setText(field_label(spec.name))
 
     def _section_page(self, section: str) -> QWidget:
@@ -109,7 +138,8 @@ class SettingsDialog(QDialog):
         form = QFormLayout(page)
         values = getattr(self.profile, section)
         for spec in fields(values):
-            edit = QLineEdit(general(getattr(values, spec.name)))
+            value = general(getattr(values, spec.name))
+            edit = ChoiceEdit(choice_words(spec.name), value) if spec.name in CHOICES else QLineEdit(value)
             self.edits[section, spec.name] = edit
             self.labels[section, spec.name] = label = QLabel()
             form.addRow(label, edit)

@@ -60,7 +60,22 @@ DOCS = (  # the profile's own field docs (app/profile.py), listed so they are tr
     QT_TRANSLATE_NOOP("SettingsFields", "M00/M01 also stop the spindle (1)"),
     QT_TRANSLATE_NOOP("SettingsFields", "after the job: 0 stay, 1 lift Z, 2 work zero X0 Y0, 3 home"),
 )
+# Fields whose number is one of a few choices: the words shown for 0, 1, 2, ...
+CHOICES = {
+    "after_job": (QT_TRANSLATE_NOOP("SettingsFields", "stay where it ends"),
+                  QT_TRANSLATE_NOOP("SettingsFields", "lift Z to the top"),
+                  QT_TRANSLATE_NOOP("SettingsFields", "lift Z, then go to work X0 Y0"),
+                  QT_TRANSLATE_NOOP("SettingsFields", "home the machine")),
+    "optional_stop": (QT_TRANSLATE_NOOP("SettingsFields", "skip M01"),
+                      QT_TRANSLATE_NOOP("SettingsFields", "hold at M01")),
+    "stop_spindle": (QT_TRANSLATE_NOOP("SettingsFields", "keep the spindle turning"),
+                     QT_TRANSLATE_NOOP("SettingsFields", "stop the spindle")),
+}
 
+
+def choice_words(name: str) -> list[str]:
+    """The words of field ``name``'s choices in the current language ([] if it has none)."""
+    return [QCoreApplication.translate("SettingsFields", text) for text in CHOICES.get(name, ())]
 
 
 def field_label(name: str) -> str:

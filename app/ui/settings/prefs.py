@@ -2,8 +2,9 @@
 (``prefs.json``) beside ``settings.json``. No Qt here: the caller passes the path.
 
 ``load_prefs(path)`` never raises: a missing file gives the defaults; a damaged one
-the defaults with a message naming the file; a bad value its default with a message
-naming the file, the key and the rule. ``save_prefs`` writes atomically
+(``reading.load_json``: not a regular file, too big, too deep, not JSON) is set aside
+as ``prefs.json.damaged`` and gives the defaults with a message naming the file; a bad
+value its default with a message naming the file, the key and the rule. ``save_prefs`` writes atomically
 (``app.atomic``): a crash mid-write keeps the old file. ``from_legacy(values)`` reads
 what older versions kept in Qt's ``window.ini`` (``recent_files``, ``dark``), for the
 one migration when there is no ``prefs.json`` yet.
@@ -15,7 +16,8 @@ import json
 from dataclasses import dataclass
 from pathlib import Path
 
-from app.atomic import write_atomic
+from app.atomic import aside_note, write_atomic
+from app.gcode.reading import SourceError, load_json
 from app.i18n import joined, msg
 
 VERSION = 1
@@ -43,16 +45,16 @@ class LoadedPrefs:
 def load_prefs(path: Path) -> LoadedPrefs:
     """The saved preferences; never raises, never writes (see the module docstring)."""
     try:
-        data = json.loads(path.read_text(encoding="utf-8"))
+        data = load_json(path)
     except FileNotFoundError:
         return LoadedPrefs(Prefs())
-    except (OSError, UnicodeDecodeError) as exc:
+    except SourceError as exc:
+        return LoadedPrefs(Prefs(), aside_note(path, _damaged(path, exc.args[0])))
+    except OSError as exc:
         return LoadedPrefs(Prefs(), msg("{path}: cannot read ({error}); using the defaults", path=str(path),
                                         error=str(exc)))
-    except (ValueError, RecursionError) as exc:
-        return LoadedPrefs(Prefs(), _damaged(path, str(exc)))
     if not isinstance(data, dict) or data.get("version", VERSION) != VERSION:
-        return LoadedPrefs(Prefs(), _damaged(path, "not a version 1 JSON object"))
+        return LoadedPrefs(Prefs(), aside_note(path, _damaged(path, "not a version 1 JSON object")))
     prefs, problems = _read(data, str(path))
     return LoadedPrefs(prefs, joined(problems))
 
@@ -75,9 +77,8 @@ def save_prefs(path: Path, prefs: Prefs) -> None:
     write_atomic(path, json.dumps(data, indent=2))
 
 
-def _damaged(path: Path, error: str) -> str:
-    return msg("The settings file {path} is damaged ({error}); using the defaults.", path=str(path),
-               error=error)
+def _damaged(path: Path, error) -> str:
+    return msg("The settings file {path} is damaged ({error})", path=str(path), error=error)
 
 
 def _read(data: dict, where: str) -> tuple[Prefs, list[str]]:

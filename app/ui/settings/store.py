@@ -13,7 +13,8 @@ import json
 from dataclasses import dataclass
 from pathlib import Path
 
-from app.atomic import write_atomic
+from app.atomic import aside_note, write_atomic
+from app.gcode.reading import SourceError, read_config
 from app.i18n import joined, msg
 from app.profile import MachineProfile, ProfileError, parse_file, read_overrides
 
@@ -29,21 +30,20 @@ class Loaded:
 
 def load_settings(path: Path) -> Loaded:
     """The saved profile; never raises. Each bad value is named (file, key, rule) and
-    its default used; a file that is no settings at all gives the defaults. The file is
-    never written here: it stays as it is until the operator saves."""
+    its default used; a file that is no settings at all (not a regular file, too big,
+    nested too deep, not JSON) is set aside as ``<name>.damaged`` and gives the defaults.
+    The file is never written here: it stays as it is until the operator saves."""
     try:
-        text = path.read_text(encoding="utf-8")
+        data = _migrate(parse_file(path, read_config(path)))
     except FileNotFoundError:
         return Loaded(MachineProfile())
-    except (OSError, UnicodeDecodeError) as exc:
+    except (SourceError, ProfileError, ValueError) as exc:
+        damaged = msg("The settings file {path} is damaged ({error})", path=str(path),
+                      error=exc.args[0] if exc.args else str(exc))
+        return Loaded(MachineProfile(), aside_note(path, damaged))
+    except OSError as exc:
         problem = msg("{path}: cannot read ({error}); using the defaults", path=str(path), error=str(exc))
         return Loaded(MachineProfile(), problem)
-    try:
-        data = _migrate(parse_file(path, text))
-    except (ProfileError, ValueError) as exc:
-        damaged = msg("The settings file {path} is damaged ({error}); using the defaults.", path=str(path),
-                      error=exc.args[0] if exc.args else str(exc))
-        return Loaded(MachineProfile(), damaged)
     read = read_overrides(MachineProfile(), data["profile"], str(path))
     return Loaded(read.profile, joined(read.problems))
 

@@ -1,0 +1,149 @@
+"""The operator's calls on a GRBL machine besides jobs: jog, overrides, homing, unlock,
+check mode, settings and the ``$#``/``$G`` reads. A mixin of ``GrblSession``.
+
+- ``jog(axis, distance, feed)``: ``$J=G91 G21 <axis><distance> F<feed>`` (a jog never
+  changes the parser's modes), answered as ``JOG`` as the frame protocol does;
+  ``jog_to_limit(axis, direction, feed)`` jogs towards the end of the travel for
+  hold-to-jog (needs ``$13x`` and homing, else ``JOG_SPAN_MM``), ``jog_cancel()`` sends
+  0x85 (on key release).
+- ``set_feed_override(percent)`` / ``set_spindle_override`` send the fewest
+  0x90-0x94 / 0x99-0x9D bytes from the value of the last report;
+  ``set_rapid_override(100|50|25)``.
+- ``home()`` ``$H`` (answered as ``HOME``); ``unlock_advice()`` says why the machine is locked (say it before
+  ``unlock()``, ``$X``); ``set_check_mode(on)`` toggles ``$C``.
+- Settings: ``read_settings()`` ``$$``; ``write_setting(n, value)`` send-and-wait;
+  ``settings_diff(wanted)`` and ``restore_settings(wanted)`` for a backup file
+  (``settings.py``); ``read_offsets()`` ``$#``, ``read_parser_state()`` ``$G``.
+"""
+
+from __future__ import annotations
+
+import math
+
+from app.comm.grbl import protocol as p
+from app.comm.grbl.codes import unlock_advice
+from app.comm.grbl.dialect import axis_range
+from app.comm.grbl.settings import SettingChange, diff_settings, format_value
+from app.i18n import msg
+
+JOG_SPAN_MM = 1000.0  # hold-to-jog distance when the travel is unknown
+
+
+def _override_bytes(current: int, target: int, reset: bytes, tens: tuple[bytes, bytes],
+                    ones: tuple[bytes, bytes]) -> bytes:
+    """The bytes that take an override from ``current`` % to ``target`` % (10 %..200 %)."""
+    target = max(10, min(200, int(target)))
+    if target == current:
+        return b""
+    start, out = current, b""
+    if abs(target - 100) + 1 < abs(target - current):
+        start, out = 100, reset
+    delta = target - start
+    up = delta > 0
+    n10, n1 = divmod(abs(delta), 10)
+    return out + (tens[0] if up else tens[1]) * n10 + (ones[0] if up else ones[1]) * n1
+
+
+class GrblOperations:
+    """See the module docstring."""
+
+    # ------------------------------------------------------------------ jog
+
+    def jog(self, axis: str, distance_mm: float, feed_mm_min: float) -> int:
+        """Jog one axis by ``distance_mm`` at ``feed_mm_min``; the command id."""
+        axis = axis.upper()
+        if axis not in ("X", "Y", "Z") or not math.isfinite(distance_mm):
+            raise ValueError(msg("jog axis must be X, Y or Z with a finite distance, not {axis} {distance}",
+                                 axis=axis, distance=distance_mm))
+        if not (math.isfinite(feed_mm_min) and feed_mm_min > 0):
+            raise ValueError(msg("jog feed must be above 0 mm/min, not {feed}", feed=feed_mm_min))
+        return self.as_verb("JOG", (axis, f"{distance_mm:g}", f"{feed_mm_min:g}"),
+                            f"$J=G91 G21 {axis}{distance_mm:.3f} F{feed_mm_min:.0f}")
+
+    def jog_to_limit(self, axis: str, direction: int, feed_mm_min: float) -> int:
+        """Hold-to-jog: jog towards the end of the travel (``jog_cancel`` on release)."""
+        k = "XYZ".index(axis.upper())
+        distance = JOG_SPAN_MM
+        if self.homed and 130 + k in self.settings and self.grbl_status is not None:
+            lo, hi = axis_range(self.settings, k)
+            here = self.grbl_status.mpos[k]
+            distance = max(0.0, (hi - here) if direction > 0 else (here - lo)) - 0.01
+        return self.jog(axis, math.copysign(max(distance, 0.0), direction), feed_mm_min)
+
+    def jog_cancel(self) -> None:
+        self._realtime(p.JOG_CANCEL)
+
+    # ------------------------------------------------------------------ overrides
+
+    def _current_overrides(self) -> tuple[int, int, int]:
+        return self.grbl_status.overrides if self.grbl_status is not None else (100, 100, 100)
+
+    def set_feed_override(self, percent: int) -> None:
+        data = _override_bytes(self._current_overrides()[0], percent, p.FEED_100,
+                               (p.FEED_PLUS_10, p.FEED_MINUS_10), (p.FEED_PLUS_1, p.FEED_MINUS_1))
+        for byte in data:
+            self._realtime(bytes([byte]))
+
+    def set_spindle_override(self, percent: int) -> None:
+        data = _override_bytes(self._current_overrides()[2], percent, p.SPINDLE_100,
+                               (p.SPINDLE_PLUS_10, p.SPINDLE_MINUS_10), (p.SPINDLE_PLUS_1, p.SPINDLE_MINUS_1))
+        for byte in data:
+            self._realtime(bytes([byte]))
+
+    def set_rapid_override(self, percent: int) -> None:
+        byte = {100: p.RAPID_100, 50: p.RAPID_50, 25: p.RAPID_25}.get(int(percent))
+        if byte is None:
+            raise ValueError(msg("GRBL's rapid override is 100, 50 or 25 %, not {percent}", percent=percent))
+        self._realtime(byte)
+
+    # ------------------------------------------------------------------ machine commands
+
+    def home(self, mode: str = "NORMAL", then=None) -> int:
+        """``$H``, answered as ``HOME mode`` (GRBL has one homing cycle: ``mode`` is the
+        frame protocol's and changes nothing)."""
+        return self.as_verb("HOME", (mode,), "$H", then)
+
+    def unlock_advice(self):
+        """Why the machine is locked, to show before ``unlock``."""
+        return unlock_advice(self.alarm or None)
+
+    def unlock(self, then=None) -> int:
+        return self.command("$X", then=then)
+
+    def set_check_mode(self, on: bool, then=None) -> int | None:
+        """``$C`` if check mode is not already ``on`` (None then). Leaving it resets GRBL."""
+        if bool(on) == self.check_mode:
+            return None
+        return self.command("$C", then=then)
+
+    def refresh(self) -> None:
+        """Read build info, settings, offsets and parser state (at connect, after a reset)."""
+        for text in ("$I", "$$", "$#", "$G"):
+            self.command(text)
+
+    # ------------------------------------------------------------------ settings
+
+    def read_settings(self, then=None) -> int:
+        return self.command("$$", then=then)
+
+    def read_offsets(self, then=None) -> int:
+        return self.command("$#", then=then)
+
+    def read_parser_state(self, then=None) -> int:
+        return self.command("$G", then=then)
+
+    def write_setting(self, number: int, value, then=None) -> int:
+        """``$n=value`` sent alone and waited for (GRBL writes its EEPROM meanwhile)."""
+        return self.command(f"${int(number)}={format_value(value)}", exclusive=True, then=then)
+
+    def settings_diff(self, wanted: dict[int, str]) -> list[SettingChange]:
+        return diff_settings(self.settings, wanted)
+
+    def restore_settings(self, wanted: dict[int, str], then=None) -> list[SettingChange]:
+        """Write every setting of ``wanted`` that differs, one at a time; ``then`` gets
+        each result. Returns the changes (show them first: ``settings_diff``)."""
+        changes = self.settings_diff(wanted)
+        for change in changes:
+            if change.new is not None:
+                self.write_setting(change.number, change.new, then=then)
+        return changes

@@ -1,0 +1,168 @@
+"""The frame protocol's machine commands on a GRBL machine, so the window and the console
+can send the same words to either driver (a mixin of ``GrblSession``).
+
+``send_command(text)``: ``SPINDLE <rpm>`` / ``SPINDLE OFF`` -> ``M3 S<rpm>`` / ``M5``;
+``ZERO X Y Z`` (any of them) -> ``G10 L20 P1 X0 ..`` (work zero here, in G54), answered
+with the new zero once a report carries it;
+``SET CHECK 1|0`` -> ``$C`` when the mode differs; ``SET OPTSTOP 1|0`` is the host's own
+switch; ``GET OFFSET_X|Y|Z`` is answered from the live ``WCO``, as machine millimetres
+from the near end of GRBL's travel (the frame protocol's machine frame), once ``$$`` and a
+report have come; ``HOME``
+``$H``; ``JOG X 10 300`` a ``$J=`` jog; ``STATUS``/``PING`` answered by the next report;
+other ``SET``/``GET`` and the SD verbs are refused with ``UNSUPPORTED`` (no such thing on
+GRBL). Any other line goes to the machine as it is (``G0 X10``, ``$$``, ``$H``).
+"""
+
+from __future__ import annotations
+
+from app.comm.events import CommandResult, JobEvent
+from app.comm.grbl.dialect import axis_range
+from app.i18n import msg
+
+_AXES = ("X", "Y", "Z")
+
+
+class FrameVerbs:
+    """See the module docstring."""
+
+    def send_command(self, text: str) -> int | None:
+        """A line typed by the operator or a frame-protocol verb (see the module); None if empty."""
+        words = text.strip().split()
+        if not words:
+            return None
+        handler = getattr(self, f"_verb_{words[0].lower()}", None)
+        if handler is None or not (words[0].isalpha() and words[0].isupper()):
+            return self.command(text)
+        return handler(words[0].upper(), [w.upper() for w in words[1:]])
+
+    def _local(self, verb: str, args, ok: bool = True, info: str = "", code: str = "") -> int:
+        cid = self._reserve_id()
+        self._command_done(CommandResult(cid, verb, tuple(args), ok, info, code))
+        return cid
+
+    def _unsupported(self, verb: str, args) -> int:
+        what = " ".join([verb, *args])
+        return self._local(verb, args, False, msg("a GRBL machine has no {what}", what=what), "UNSUPPORTED")
+
+    def as_verb(self, verb: str, args, text: str, then=None) -> int:
+        """Send the GRBL line ``text`` and answer it as the frame protocol's ``verb args``
+        (what the window waits for), with the line's own outcome."""
+        cid = self._reserve_id()
+        args = tuple(str(a) for a in args)
+
+        def answered(result) -> None:
+            mine = CommandResult(cid, verb, args, result.ok, result.info, result.code, result.rows)
+            self._command_done(mine)
+            if then is not None:
+                then(mine)
+
+        self.command(text, then=answered)
+        return cid
+
+    def _verb_spindle(self, verb: str, args) -> int:
+        if not args or args[0] == "OFF":
+            return self.as_verb(verb, args, "M5")
+        return self.as_verb(verb, args, f"M3 S{float(args[0]):g}")
+
+    def _verb_zero(self, verb: str, args) -> int:
+        """``G10 L20 P1`` here; answered (as the frame protocol does, with the new work zero
+        ``X.. Y.. Z..`` in machine millimetres) once a report after it carries the new WCO."""
+        axes = "".join(args) or "XYZ"
+        words = " ".join(f"{a}0" for a in _AXES if a in axes)
+        cid = self._reserve_id()
+        after: list = []
+
+        def written(result) -> None:
+            if not result.ok:
+                self._deferred = [d for d in self._deferred if d[0] != cid]
+                self._command_done(CommandResult(cid, verb, tuple(args), False, result.info, result.code))
+            else:
+                after.append(self.reports)
+
+        self._deferred.append((cid, verb, tuple(args), lambda: self._work_zero_text() if after and
+                               self.reports > after[0] else None))
+        self.command(f"G10 L20 P1 {words}", then=written)
+        return cid
+
+    def _verb_home(self, verb: str, args) -> int:
+        return self.home(*args[:1])
+
+    def _verb_jog(self, verb: str, args) -> int:
+        return self.jog(args[0], float(args[1]), float(args[2]))
+
+    def _verb_status(self, verb: str, args) -> int:
+        return self._local(verb, args, info=self.status.state if self.status else "")
+
+    _verb_ping = _verb_status
+
+    def _verb_set(self, verb: str, args) -> int:
+        if args[:1] == ["CHECK"] and len(args) > 1:
+            cid = self.set_check_mode(args[1] not in ("0", "OFF"))
+            return cid if cid is not None else self._local(verb, args, info=f"CHECK {args[1]}")
+        if args[:1] == ["OPTSTOP"] and len(args) > 1:
+            self.optional_stop = args[1] not in ("0", "OFF")
+            return self._local(verb, args, info=f"OPTSTOP {int(self.optional_stop)}")
+        return self._unsupported(verb, args)
+
+    def _verb_get(self, verb: str, args) -> int:
+        """``GET OFFSET_X|Y|Z``: answered once the machine has reported its travel ($$) and a
+        WCO; anything else is not on GRBL."""
+        name = args[0] if args else ""
+        if name not in ("OFFSET_X", "OFFSET_Y", "OFFSET_Z"):
+            return self._unsupported(verb, args)
+        k = "XYZ".index(name[-1])
+        cid = self._reserve_id()
+        self._deferred.append((cid, verb, tuple(args), lambda: f"{name} {self._work_zero()[k]:.3f}"
+                               if self._work_zero() is not None else None))
+        self.answer_deferred()
+        return cid
+
+    def _work_zero(self):
+        """The work zero in millimetres from the near end of GRBL's travel (the frame
+        protocol's machine frame), or None before ``$$`` and a report."""
+        if self.grbl_status is None or any(130 + k not in self.settings for k in range(3)):
+            return None
+        return tuple(self.grbl_status.wco[k] - axis_range(self.settings, k)[0] for k in range(3))
+
+    def _work_zero_text(self):
+        zero = self._work_zero()
+        return None if zero is None else " ".join(f"{a}{v:.3f}" for a, v in zip(_AXES, zero, strict=True))
+
+    def answer_deferred(self) -> None:
+        """Answer the local commands that were waiting for what the machine reports."""
+        for item in list(self._deferred):
+            cid, verb, args, answer = item
+            info = answer()
+            if info is not None:
+                self._deferred.remove(item)
+                self._command_done(CommandResult(cid, verb, args, True, info))
+
+    def _reserve_id(self) -> int:
+        cid = self._next_id
+        self._next_id += 1
+        return cid
+
+    def _verb_sd(self, verb: str, args) -> int:
+        return self._unsupported(verb, args)
+
+    # ------------------------------------------------------------------ the SD calls
+
+    def list_sd(self) -> int:
+        return self._unsupported("SD", ["LIST"])
+
+    def delete_sd(self, name: str) -> int:
+        return self._unsupported("SD", ["DEL", name])
+
+    def run_from_sd(self, name: str) -> int:
+        return self._unsupported("SD", ["RUN", name])
+
+    def upload_to_sd(self, name: str, lines) -> bool:
+        self._error("UNSUPPORTED", msg("a GRBL machine has no SD card"))
+        self.listener.on_job_finished(JobEvent("upload", False, msg("a GRBL machine has no SD card"), -1, 0,
+                                               name))
+        return False
+
+    def resume_after_reconnect(self) -> bool:
+        """GRBL cannot resume exactly: the offer is always a restart (``confirm_restart``)."""
+        self._error("REFUSED", msg("GRBL cannot resume exactly: start again at the offered line"))
+        return False

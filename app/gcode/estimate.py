@@ -1,0 +1,269 @@
+"""Run time of a program as the machine's own planner will run it (issue 21).
+
+Contract: ``estimate(toolpath, device_lines, profile)`` gives an ``Estimate``: seconds per
+device line (``line_seconds``, what the remaining time of a running job is summed from),
+the total and its parts (motion, dwells, spindle spin-up waits), and apart from the total
+the program stops (M00, M01, M06): how many, and the seconds of what the machine does
+around them (spindle off and back up, the Z lift and return at a tool change; never the
+operator's wait). Pure numpy over the toolpath's arrays, no Qt, no simulator import.
+
+The rules are the CNC MCU's planner's (``backend_sim/motion/planner.py``): nominal speed
+(feed or rapid, arcs at most sqrt(a r)), junction deviation between blocks, a backward
+pass over the queue the machine holds (``QUEUE_BLOCKS`` blocks from the last one it
+reported finished, which trails the path: ``queue_horizons``; the end of the queue
+stops), a forward pass from rest, trapezoids at ``accel``. The S-curve is a moving average
+of the path distance over ``accel/jerk`` seconds: it delays every stop before a barrier
+(dwell, spindle, stop, end) by that window and otherwise leaves the time unchanged.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .estimate_passes import (
+    entry_speeds_sq,
+    helix_tangents,
+    junction_speeds,
+    line_tangents,
+    look_ahead_binds,
+    queue_horizons,
+    reached_speeds_sq,
+    trapezoid_times,
+)
+from .estimate_spindle import spin_wait_ms
+from .ops import ARC_CCW, ARC_CW, DWELL, RAPID
+
+QUEUE_BLOCKS = 16  # the CNC MCU's motion queue (MotionController capacity)
+HORIZON_ROUNDS = 6
+# The simulated CNC MCU reports finished blocks when it services its link (at the latest
+# every 50 ms motion chunk) and the next line then crosses the UART: the queue is refilled
+# this late on average, measured on the simulator (tests/gcode/test_estimate.py).
+REFILL_S = 0.025
+ZERO_MM = 1e-6  # the planner's zero-length move: transparent, no stop
+
+
+@dataclass
+class Estimate:
+    """See the module docstring; seconds throughout."""
+
+    line_seconds: np.ndarray  # per device line, stops excluded
+    row_seconds: np.ndarray  # per toolpath row (a barrier's wait on the row before it)
+    motion: float
+    dwell: float
+    spin_up: float
+    stops: int = 0
+    tool_changes: int = 0
+    stop_seconds: float = 0.0  # what the stops make the machine do, excluded from ``total``
+
+    @property
+    def total(self) -> float:
+        return self.motion + self.dwell + self.spin_up
+
+    def remaining(self, lines_done: int) -> float:
+        """Seconds left once the first ``lines_done`` device lines have finished."""
+        done = float(self.line_seconds[: max(0, lines_done)].sum())
+        return max(0.0, self.total - done)
+
+    def per_source_line(self, line_map: np.ndarray, n_source: int) -> np.ndarray:
+        """Seconds per 1-based source line, from the device lines' ``line_map``."""
+        return np.bincount(np.asarray(line_map), weights=self.line_seconds, minlength=n_source + 1)
+
+
+@dataclass
+class _Barrier:
+    line: int
+    kind: str  # "dwell", "spindle", "stop", "end"
+    ms: float = 0.0  # how long it holds the path, beyond the S-curve's settling
+    stop_ms: float = 0.0  # what a program stop makes the machine do (reported apart)
+
+
+def estimate(toolpath, device_lines, profile, start=None) -> Estimate:
+    """The planner's time for ``toolpath`` whose rows come from ``device_lines``; ``start``
+    (work mm), where the machine is when the job starts, if known: the first move is a
+    straight one from there rather than from where the program assumed."""
+    mo = profile.motion
+    accel = mo.accel_mm_s2
+    window_s = max(1, round(accel / mo.jerk_mm_s3 * 1000)) / 1000.0
+    row_length = toolpath.length
+    first = _first_line_row(toolpath) if start is not None else None
+    if first is not None:
+        row_length = row_length.copy()
+        row_length[first] = float(np.linalg.norm(toolpath.end[first] - np.asarray(start, float)))
+    moves = np.flatnonzero((toolpath.kind != DWELL) & (row_length >= ZERO_MM))
+    barriers = _barriers(toolpath, device_lines, profile)
+    order, is_move, item = _chain(toolpath.device_index[moves], [b.line for b in barriers])
+    length, v_nom, start_dir, end_dir = _geometry(toolpath, moves, accel, row_length,
+                                                  None if first is None else (first, start))
+    chain_len = np.zeros(len(order))
+    chain_len[is_move] = length[item[is_move]]
+    junction_sq = _junctions_sq(is_move, item, v_nom, start_dir, end_dir, accel, mo.junction_deviation_mm)
+    reached = _planned_speeds(chain_len, junction_sq, accel, window_s)
+    v_out = np.append(reached[1:], 0.0)
+    times = trapezoid_times(chain_len[is_move], reached[is_move], v_out[is_move], v_nom[item[is_move]], accel)
+    # the S-curve settles for its window where the path stops before a barrier
+    settles = np.flatnonzero(~is_move[1:] & is_move[:-1]) + 1
+    row_seconds = np.zeros(len(toolpath))
+    row_seconds[moves[item[is_move]]] = times
+    waits = np.zeros(len(barriers))  # seconds each barrier holds the path (stops: 0)
+    np.add.at(waits, item[settles], window_s)
+    spent = {"dwell": 0.0, "spindle": 0.0, "stop": 0.0}
+    for k, b in enumerate(barriers):
+        if b.kind in spent:
+            spent[b.kind] += b.ms / 1000.0
+        waits[k] = 0.0 if b.kind == "stop" else waits[k] + b.ms / 1000.0
+    stop_settle = sum(window_s for k in settles if barriers[item[k]].kind == "stop")
+    lines = np.array([b.line for b in barriers], dtype=np.int64)
+    rows = np.searchsorted(toolpath.device_index, lines, side="right") - 1
+    rows = np.clip(rows, 0, max(len(toolpath) - 1, 0))
+    if len(toolpath):
+        np.add.at(row_seconds, rows, waits)  # a dwell row is its own line's row
+    line_seconds = np.bincount(toolpath.device_index[moves][item[is_move]], weights=times,
+                               minlength=len(device_lines)).astype(float)
+    np.add.at(line_seconds, lines, waits)
+    stops = [b for b in barriers if b.kind == "stop"]
+    return Estimate(
+        line_seconds=line_seconds[: len(device_lines)], row_seconds=row_seconds,
+        motion=float(times.sum()) + window_s * len(settles) - stop_settle,
+        dwell=spent["dwell"], spin_up=spent["spindle"], stops=len(stops),
+        tool_changes=sum(1 for b in stops if _is_tool_change(device_lines[b.line])),
+        stop_seconds=stop_settle + sum(b.stop_ms for b in stops) / 1000.0)
+
+
+def _planned_speeds(length, junction_sq, accel: float, window_s: float) -> np.ndarray:
+    """Speed at each block's entry. The look-ahead depends on the speed (``queue_horizons``)
+    and the speed on the look-ahead: the passes run a few rounds from the full queue, each
+    round moving the horizon half way to what the last speeds imply (undamped, it swings)."""
+    trail_s = (window_s - 0.001) / 2.0 + REFILL_S  # a moving average of n ms trails by (n - 1) / 2 ms
+    horizon, queue_end, before = QUEUE_BLOCKS - 1, None, None
+    for _ in range(HORIZON_ROUNDS):
+        entry = entry_speeds_sq(length, junction_sq, accel, horizon, queue_end)
+        reached = np.sqrt(reached_speeds_sq(length, entry, accel))
+        if before is not None and np.allclose(reached, before, rtol=1e-4, atol=1e-6):
+            break  # the look-ahead no longer changes the speeds
+        before = reached
+        implied, end = queue_horizons(length, reached, trail_s, QUEUE_BLOCKS)
+        if queue_end is None and not look_ahead_binds(length, entry, accel, implied, end):
+            break  # the queue is long enough everywhere: the full look-ahead's speeds hold
+        horizon = (horizon + implied + 1) // 2
+        queue_end = end if queue_end is None else (queue_end + end) / 2.0
+    return reached
+
+
+def _chain(move_lines: np.ndarray, barrier_lines: list[int]):
+    """Queue order of moves and barriers (by device line): (order, is_move, item index)."""
+    keys = np.concatenate((move_lines, np.asarray(barrier_lines, dtype=move_lines.dtype)))
+    order = np.argsort(keys, kind="stable")
+    is_move = order < len(move_lines)
+    item = np.where(is_move, order, order - len(move_lines))
+    return order, is_move, item
+
+
+def _first_line_row(tp) -> int | None:
+    """The first row that moves, if it is a straight move (an arc's start is its own)."""
+    rows = np.flatnonzero(tp.kind[: 1000] != DWELL)
+    return int(rows[0]) if len(rows) and tp.kind[rows[0]] not in (ARC_CW, ARC_CCW) else None
+
+
+def _geometry(tp, moves: np.ndarray, accel: float, row_length: np.ndarray, first=None):
+    """Per move: length, nominal speed (mm/s) and unit tangents at its start and end;
+    ``first``: (row, start) that row starts from instead."""
+    start, end, kind = tp.start[moves], tp.end[moves], tp.kind[moves]
+    if first is not None and len(moves) and moves[0] == first[0]:
+        start[0] = first[1]
+    length = row_length[moves].astype(float)
+    v_nom = tp.feed[moves] / 60.0
+    start_dir = line_tangents(start, end)
+    end_dir = start_dir.copy()
+    arc = np.flatnonzero((kind == ARC_CW) | (kind == ARC_CCW))
+    if len(arc):
+        center = tp.center[moves][arc]
+        radius = np.hypot(start[arc, 0] - center[:, 0], start[arc, 1] - center[:, 1])
+        v_nom[arc] = np.minimum(v_nom[arc], np.sqrt(accel * radius))
+        sweep = np.sqrt(np.maximum(length[arc] ** 2 - (end[arc, 2] - start[arc, 2]) ** 2, 0.0))
+        sweep = np.where(kind[arc] == ARC_CW, -1.0, 1.0) * sweep / np.where(radius > 0, radius, 1.0)
+        per_mm = sweep / np.where(length[arc] > 0, length[arc], 1.0)
+        dz_per_mm = (end[arc, 2] - start[arc, 2]) / np.where(length[arc] > 0, length[arc], 1.0)
+        start_dir[arc] = helix_tangents(start[arc], center, per_mm, dz_per_mm)
+        end_dir[arc] = helix_tangents(end[arc], center, per_mm, dz_per_mm)
+    rapid = kind == RAPID
+    v_nom[rapid] = tp.feed[moves][rapid] / 60.0
+    return length, v_nom, start_dir, end_dir
+
+
+def _junctions_sq(is_move, item, v_nom, start_dir, end_dir, accel: float, deviation: float) -> np.ndarray:
+    """Squared junction speed per chain block: 0 at barriers and after them (from rest)."""
+    out = np.zeros(len(is_move))
+    follows = np.flatnonzero(is_move[1:] & is_move[:-1]) + 1
+    if len(follows):
+        cur, prev = item[follows], item[follows - 1]
+        vj = junction_speeds(end_dir[prev], start_dir[cur], accel, deviation)
+        vj = np.minimum(np.minimum(vj, v_nom[cur]), v_nom[prev])
+        out[follows] = vj * vj
+    return out
+
+
+def _is_tool_change(line: str) -> bool:
+    return line.split(" ", 1)[0] in ("M06", "M6")
+
+
+def _barriers(tp, device_lines, profile) -> list[_Barrier]:
+    """The non-motion device lines in order, each with how long it holds the path."""
+    taken = np.zeros(len(device_lines), bool)
+    taken[tp.device_index[tp.kind != DWELL]] = True
+    out: list[_Barrier] = []
+    rpm = 0.0
+    z_at = _z_before(tp, len(device_lines), profile)
+    for line in np.flatnonzero(~taken).tolist():
+        text = device_lines[line]
+        code = text.split(" ", 1)[0]
+        if code in ("G04", "G4"):
+            out.append(_Barrier(line, "dwell", float(round(max(_word(text, "P", 0.0), 0.0) * 1000))))
+        elif code in ("M03", "M3", "M04", "M4", "M05", "M5"):
+            new = _word(text, "S", rpm) if code[-1] != "5" else 0.0
+            out.append(_Barrier(line, "spindle", spin_wait_ms(profile, rpm, new) - 1.0))
+            rpm = new
+        elif code in ("M00", "M0", "M01", "M1", "M06", "M6"):
+            tool_change = _is_tool_change(text)
+            out.append(_Barrier(line, "stop", stop_ms=_stop_ms(profile, rpm, z_at(line), tool_change)))
+        elif code in ("M02", "M2", "M30"):
+            out.append(_Barrier(line, "end"))
+    return out
+
+
+def _word(text: str, letter: str, default: float) -> float:
+    for word in text.split()[1:]:
+        if word[:1] == letter:
+            return float(word[1:])
+    return default
+
+
+def _z_before(tp, n_lines: int, profile):
+    """Machine Z where the tool is before device line ``line`` (work Z plus the offset)."""
+    rows = np.flatnonzero(tp.kind != DWELL)
+    lines, z = tp.device_index[rows], tp.end[rows, 2]
+    offset_z = profile.travel.work_offset()[2]
+
+    def at(line: int) -> float:
+        k = int(np.searchsorted(lines, line)) - 1
+        return float(z[k] if k >= 0 else (tp.start[0, 2] if len(tp) else 0.0)) + offset_z
+    return at
+
+
+def _stop_ms(profile, rpm: float, z: float, tool_change: bool) -> float:
+    """What the machine does at a stop (the wait itself aside): at a tool change, spindle
+    off, rapid up to the top of Z, spindle back up, rapid back down."""
+    if not tool_change:
+        return 0.0
+    mo = profile.motion
+    window_ms = max(1, round(mo.accel_mm_s2 / mo.jerk_mm_s3 * 1000))
+    lift = max(0.0, profile.travel.limits()[2][1] - z)
+    ms = 0.0
+    if lift > 1e-6:
+        v = np.array([mo.rapid_mm_min / 60.0])
+        up = trapezoid_times(np.array([lift]), np.zeros(1), np.zeros(1), v, mo.accel_mm_s2)[0]
+        ms += 2 * (up * 1000.0 + window_ms)
+    if rpm > 0:
+        ms += spin_wait_ms(profile, 0.0, rpm) - 1.0 + window_ms
+    return ms

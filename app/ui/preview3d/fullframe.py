@@ -1,0 +1,87 @@
+"""Full detail a slice at a time: the whole path drawn into a frame buffer of its own
+between frames, so the GUI thread never draws millions of segments at once.
+
+A software renderer draws about ten million short segments a second; a frame of two
+million would hold the window for a fifth of a second, and a job's progress redraws
+it at the status rate. ``FullFrame`` keeps the picture of the whole path for one
+camera: ``prepare`` starts it again when the camera, the model, the size changed or
+the finished part shrank (a new run), ``overdraw`` draws the segments finished since
+the last frame over what is drawn already (O(new segments): progress never redraws
+the rest), ``slice`` the next ``slice_segments``, sized so that the renderer takes
+about SLICE_S for one (``tune``); ``blit`` copies it to the widget. Until
+``complete``, the caller shows a level of detail instead.
+"""
+
+from __future__ import annotations
+
+from PySide6.QtCore import QSize
+from PySide6.QtOpenGL import QOpenGLFramebufferObject
+
+SLICE_SEGMENTS = 250_000  # the first slice; then sized to SLICE_S
+SLICE_S = 0.02  # rendering a slice (the window's stall budget is 50 ms: room for a renderer that slows)
+MIN_SLICE, MAX_SLICE = 50_000, 4_000_000
+GL_COLOR_BUFFER_BIT, GL_DEPTH_BUFFER_BIT = 0x4000, 0x0100
+
+
+class FullFrame:
+    def __init__(self, slice_segments: int = SLICE_SEGMENTS):
+        self.slice_segments = slice_segments
+        self.fbo: QOpenGLFramebufferObject | None = None
+        self.key = None
+        self.next = 0  # segments up to this vertex are drawn
+        self.total = 0  # the last vertex of the model
+        self.done = -1  # the finished part drawn so far (last vertex)
+
+    @property
+    def complete(self) -> bool:
+        return self.fbo is not None and self.next >= self.total
+
+    def prepare(self, f, key, size: QSize, total: int, done: int) -> None:
+        """Begin again unless the buffer holds (part of) this picture."""
+        if self.fbo is None or self.fbo.size() != size:
+            self.fbo = QOpenGLFramebufferObject(size, QOpenGLFramebufferObject.Attachment.Depth)
+            self.key = None
+        if key == self.key and total == self.total and done >= self.done:
+            return
+        self.key, self.total, self.next, self.done = key, total, 0, done
+        self.fbo.bind()
+        f.glClearColor(0.0, 0.0, 0.0, 1.0)
+        f.glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT)
+        self.fbo.release()
+
+    def overdraw(self, draw_strip, done: int) -> None:
+        """``draw_strip(first, last)`` draws vertices first..last as a line strip with the
+        current uniforms: here the segments finished since the last call, over what is
+        drawn already (the rest of them is drawn finished by the slices to come)."""
+        if done > self.done:
+            low, high = max(self.done, 0), min(done, self.next)
+            if high > low:
+                self.fbo.bind()
+                draw_strip(low, high)
+                self.fbo.release()
+            self.done = done
+
+    def slice(self, draw_strip) -> int:
+        """Draw the next slice; returns its segments (0 when the picture is whole)."""
+        if self.next >= self.total:
+            return 0
+        end = min(self.next + self.slice_segments, self.total)
+        self.fbo.bind()
+        draw_strip(self.next, end)
+        self.fbo.release()
+        sliced, self.next = end - self.next, end
+        return sliced
+
+    def tune(self, seconds: float, segments: int) -> None:
+        """Size the next slices by how long the renderer took for ``segments``."""
+        rate = segments / max(seconds, 1e-4)
+        wanted = min(rate * SLICE_S, 2.0 * self.slice_segments)  # grow at most twofold a frame
+        self.slice_segments = int(min(MAX_SLICE, max(MIN_SLICE, wanted)))
+
+    def blit(self) -> None:
+        """Copy the picture into the frame being drawn (colour only)."""
+        QOpenGLFramebufferObject.blitFramebuffer(None, self.fbo)
+
+    def forget(self) -> None:
+        self.fbo = None
+        self.key = None
