@@ -66,6 +66,14 @@ class JobCommands(ConsoleClient):
 
     def cmd_run(self, path: str) -> None:
         program = load_program(path)
+        if not self.session.status.homed and not self.checking():
+            print("not homed: homing first", file=self.out)
+            self.cmd_home()
+            self.command("STATUS")
+        status = self.session.status  # a move relative to the start is read from where the machine is
+        program = program.from_start((status.x, status.y, status.z))
+        if program.errors:
+            raise ConsoleError(f"{path}: read from where the machine stands: {program.errors[0]}", 2)
         lines = list(program.device_lines)
         start = 0
         if self.from_line is not None:
@@ -74,10 +82,6 @@ class JobCommands(ConsoleClient):
                 raise ConsoleError(f"{path}: nothing runs from line {self.from_line} on", 2)
             print(f"starting at line {self.from_line} (device line {start}); restoring: "
                   + "; ".join(restart_preamble(lines, start)), file=self.out)
-        if not self.session.status.homed and not self.checking():
-            print("not homed: homing first", file=self.out)
-            self.cmd_home()
-            self.command("STATUS")
         jobs = len(self.printer.jobs)
         if not self.session.start_job(lines, start):
             raise ConsoleError(f"job refused: {self.printer.errors[-1].text}")

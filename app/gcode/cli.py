@@ -51,6 +51,7 @@ def _summary(p: Program) -> str:
         msg("lines: {lines}  device lines: {device}  moves: {moves}", lines=len(p.lines),
             device=p.plan.total, moves=len(tp)),
         msg("bounds: {bounds}", bounds=bounds),
+        msg("start: {where}", where=p.start.note()),
         msg("cut length: {cut:.1f} mm  rapid length: {rapid:.1f} mm", cut=float(tp.cut_length),
             rapid=float(tp.rapid_length)),
         msg("estimated time: {minutes} min {seconds:.0f} s", minutes=int(minutes), seconds=float(seconds)),

@@ -2,8 +2,11 @@
 
 Output lines, each at most 80 characters:
 
-- ``G00``/``G01`` with the axes whose rounded value changed (all three on the first
-  move; a move that changes nothing repeats X) and, for G01, ``F`` when it changed;
+- ``G00``/``G01`` with the axes whose rounded value changed and, for G01, ``F`` when it
+  changed. The machine starts a job where it stands: an axis the program has not set
+  yet is left out (``start.py``: ``G00 Z-5`` first is ``G00 Z-5``, X and Y stay), the
+  first line that sets it names it; a move that changes nothing repeats a set axis, or
+  is ``G04 P0`` while no axis is set;
 - ``G02``/``G03 X Y I J [Z] [F]`` for arcs in the XY plane. **I and J are relative to
   the start point of the arc** (the device's current position, rounded as sent), the
   device's convention; X and Y are always given. Z appears when it changes (a helix);

@@ -58,6 +58,7 @@ class Ops:
     messages: list[str]  # one per PAUSE row, in order
     _starts: np.ndarray | None = field(default=None, repr=False)
     source: Source | None = None  # set for expanded programs
+    origin: tuple[float, float, float] = (0.0, 0.0, 0.0)  # where the first row starts (start.py)
 
     def __len__(self) -> int:
         return len(self.line)
@@ -67,7 +68,7 @@ class Ops:
         return self.line if self.source is None else self.source.call_line
 
     def starts(self) -> np.ndarray:
-        """Start point of every row: the previous row's end ((0, 0, 0) for the first).
+        """Start point of every row: the previous row's end (``origin`` for the first).
 
         Computed once; treat the result as read-only. When ``end`` is the tail of an
         array of points whose first row is the origin (as ``OpBuffer.finish`` makes it),
@@ -75,12 +76,13 @@ class Ops:
         if self._starts is None:
             points = self.end.base
             if (isinstance(points, np.ndarray) and points.shape == (len(self.end) + 1, 3)
-                    and points[1:].ctypes.data == self.end.ctypes.data and not points[0].any()):
+                    and points[1:].ctypes.data == self.end.ctypes.data and points.flags.writeable):
+                points[0] = self.origin  # the spare first row is the origin's (start.py)
                 self._starts = points[:-1]
                 return self._starts
             start = np.empty_like(self.end)
             if len(start):
-                start[0] = 0.0
+                start[0] = self.origin
                 start[1:] = self.end[:-1]
             self._starts = start
         return self._starts

@@ -23,6 +23,7 @@ from app.i18n import msg
 from app.profile import MachineProfile
 
 from . import bulk, checks, normalize, runner, sniff
+from . import start as job_start
 from .diagnostics import ERROR, WARNING, Diagnostic, Report
 from .estimate import Estimate, estimate
 from .estimate_lines import EventLines
@@ -34,10 +35,12 @@ from .percent import abort_line, abort_message, percent_lines, report_tail
 from .reading import SourceError, clean_bytes, clean_text, read_source, text_problem
 from .render import render
 from .source import Lines
+from .start import StartInfo
 from .state import State
 from .toolpath import Toolpath, build
 
 TRIM_BYTES = 8 << 20  # after the scan of a file this big, free heap pages go back to the system
+ORIGIN = (0.0, 0.0, 0.0)  # where rs274 reads a program from; ``from_start`` gives the machine's
 
 
 @dataclass(repr=False)
@@ -53,6 +56,16 @@ class Program:
     plan: normalize.Plan
     _render: tuple | None = field(default=None, repr=False)
     envelope: checks.Envelope | None = field(default=None, repr=False)  # for checks.preflight
+    start: StartInfo = field(default_factory=StartInfo)  # where the job starts (start.py)
+    _again: object = field(default=None, repr=False)  # origin -> the program read from there
+
+    def from_start(self, position) -> Program:
+        """The program as a job from ``position`` (work mm, as the machine reports it):
+        itself, or read again from there when a move is relative to where the machine
+        stands (``start.relative``: G91 first moves, arcs or cycles from the start)."""
+        if self._again is None or not self.start.needs_reading_from(position):
+            return self
+        return self._again(tuple(float(v) for v in position))
 
     def __repr__(self) -> str:
         return (f"Program({self.name!r}, {len(self.lines)} lines, {len(self.toolpath)} moves, "
@@ -75,7 +88,8 @@ class Program:
         if self._render is None:
             tol = self.profile.motion.arc_tolerance_mm
             rpm = self.profile.spindle.no_load_rpm
-            self._render = render(self.ops, self.plan.count, self.plan.chords, tol, rpm)
+            free = self.start.free_rows(self.ops)
+            self._render = render(self.ops, self.plan.count, self.plan.chords, tol, rpm, free)
         return self._render
 
     @property
@@ -144,17 +158,17 @@ def _empty(name: str, message: str, profile: MachineProfile) -> Program:
 
 
 def _start_state(profile: MachineProfile, tools: dict | None, block_delete: bool = False,
-                 systems=None) -> State:
+                 systems=None, origin=ORIGIN) -> State:
     """The interpreter's state before the first line: LinuxCNC's, in G54, with the tool table
-    and the operator's block delete switch.
+    and the operator's block delete switch, at ``origin`` (work mm).
 
     ``systems``: the machine's work systems, ``(active, {system: (x, y, z)})`` with
     systems 1-6 for G54-G59 in machine mm; the program then starts in the active one,
     and each other system's offset is its difference from the active one (the frame's
     zero is the active system's work zero), so a program's G55 moves where the
     machine's G55 is."""
-    start = State(tools=dict(tools or {}), arc_tolerance=profile.motion.arc_tolerance_mm,
-                  block_delete=block_delete)
+    start = State(pos=[float(v) for v in origin], tools=dict(tools or {}),
+                  arc_tolerance=profile.motion.arc_tolerance_mm, block_delete=block_delete)
     active = 1
     if systems is not None:
         active, rows = systems
@@ -195,30 +209,98 @@ def _expanded(lines: Lines, name: str, folder: Path | None, start: State, report
     return ops, trace.state.ended
 
 
+class _Enough(BaseException):
+    """Raised by ``_CappedBuffer`` once it holds the rows a probe asked for."""
+
+
+@dataclass
+class _CappedBuffer(OpBuffer):
+    """An ``OpBuffer`` that stops the reading (``_Enough``) once it holds ``cap`` rows."""
+
+    cap: int = 0
+    count: int = 0
+
+    def add(self, *args, **kwargs) -> None:
+        super().add(*args, **kwargs)
+        self._count(1)
+
+    def add_block(self, line, *rest) -> None:
+        super().add_block(line, *rest)
+        self._count(len(line))
+
+    def _count(self, n: int) -> None:
+        self.count += n
+        if self.count >= self.cap:
+            raise _Enough
+
+
+def _line_end(raw: bytes, count: int) -> int:
+    """Offset just past the ``count``-th newline of ``raw`` (its length if fewer)."""
+    pos = -1
+    for _ in range(count):
+        pos = raw.find(b"\n", pos + 1)
+        if pos < 0:
+            return len(raw)
+    return pos + 1
+
+
+def _prefix_reader(raw: bytes, lines: Lines, name: str, profile: MachineProfile, tools, folder,
+                   expand: bool, stop: int, settings: tuple):
+    """``start.Reader`` of this program: its first rows read from a given origin (a plain
+    program's first lines; an expanded program until it has made the rows asked for);
+    ``stop`` and ``settings`` (block delete, work systems) as for the whole program."""
+
+    def read(origin, limit: int) -> tuple[Ops, bool]:
+        state, report = _start_state(profile, tools, *settings, origin), Report()
+        if expand:
+            from . import macro
+
+            buffer = _CappedBuffer(cap=limit)
+            try:
+                macro.expand(lines.as_list()[:stop], name, folder, state, buffer, report)
+            except _Enough:
+                return buffer.finish(), False
+            return buffer.finish(), True
+        cut = _line_end(raw, min(limit, stop))
+        ops, _ = _plain(Lines(data=raw[:cut]), [raw[:cut]], state, report, min(limit, stop))
+        return ops, cut >= len(raw)
+
+    return read
+
+
 def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfile,
                tools: dict | None = None, folder: Path | None = None, block_delete: bool = False,
-               systems=None) -> Program:
-    """Interpret ``lines``: the expander when the bytes in ``data`` need it, else the fast path."""
+               systems=None, origin=ORIGIN) -> Program:
+    """Interpret ``lines`` from ``origin`` (work mm): the expander when the bytes in
+    ``data`` need it, else the fast path."""
     report = Report()
-    start = _start_state(profile, tools, block_delete, systems)
+    settings = (block_delete, systems)
+    start = _start_state(profile, tools, *settings, origin)
     percent = percent_lines(data[0])
     closing = percent[1]
     stop = closing - 1 if closing else len(lines)  # nothing after the closing % runs
-    expander = sniff.needs_expander(data[0])
-    if not expander:  # the expander stops at an ABORT when its flow reaches it
+    expand = sniff.needs_expander(data[0])
+    if not expand:  # the expander stops at an ABORT when its flow reaches it
         aborted, text = abort_line(data[0])
         if aborted and aborted <= stop:
             stop = aborted - 1
             report.error(aborted, 0, abort_message(text))
-    if expander:
+    reader = _prefix_reader(data[0], lines, name, profile, tools, folder, expand, stop, settings)
+    if expand:
         data.clear()
         ops, ended = _expanded(lines, name, folder, start, report, stop)
+        shifted = reader  # the rows read from the origin are the program's own: one reading less
+        reader = lambda at, limit: (ops, True) if np.array_equal(at, origin) else shifted(at, limit)  # noqa: E731
+        where = job_start.probe(reader, origin)
     else:
+        where = job_start.probe(reader, origin)  # before the bytes are handed over
+        del reader
         big = len(data[0]) >= TRIM_BYTES
         ops, ended = _plain(lines, data, start, report, stop)
         if big:
             _give_back_free_memory()  # the scan's many chunk-sized temporaries
     report_tail(lines, percent, ended, report)
+    ops.origin = tuple(float(v) for v in origin)
     ops.starts()  # computed once, before two threads read it
     checking = _in_thread(checks.run, ops, profile, lines, report)  # numpy lets both run at once
     the_plan = normalize.plan(ops, profile.motion.arc_tolerance_mm)
@@ -226,7 +308,13 @@ def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfi
     envelope = checking.join()
     program_checks(toolpath, profile, report)
     ops.forget_starts()  # the Toolpath has its own copy of the moves' starts
-    return Program(name, lines, report.finish(), ops, toolpath, profile, the_plan, envelope=envelope)
+
+
+    def again(position) -> Program:
+        return _interpret(lines, [lines.encoded()], name, profile, tools, folder, *settings, position)
+
+    return Program(name, lines, report.finish(), ops, toolpath, profile, the_plan, envelope=envelope,
+                   start=where, _again=again)
 
 
 def _give_back_free_memory() -> None:

@@ -45,21 +45,24 @@ def _rows(ops: Ops, count: np.ndarray, chords: np.ndarray, tolerance: float, def
     return op, code, target, value
 
 
-def _words(code, target, feed_code):
-    """Masks of the X, Y, Z and F words each row needs."""
+def _words(code, target, feed_code, free):
+    """Masks of the X, Y, Z and F words each row needs. ``free`` (per row and axis):
+    the machine keeps its own position there (start.py), so the word is left out; an
+    axis is written where its value changes and where it stops being free."""
     n = len(code)
-    motion = code <= G03
     prev = np.empty_like(target)
+    known = ~free
+    was_known = np.zeros_like(known)
     if n:
         prev[0] = target[0]
         prev[1:] = target[:-1]
-    changed = target != prev
-    first = np.flatnonzero(motion)[:1]
-    changed[first] = True
+        was_known[1:] = known[:-1]
+        was_known[: int(np.argmax(code <= G03)) + 1] = False  # nothing sent before the first move
+    changed = ((target != prev) | ~was_known) & known
     straight = code <= G01
-    none = straight & ~changed.any(axis=1)
     emit = changed & straight[:, None]
-    emit[none, 0] = True
+    none = np.flatnonzero(straight & ~emit.any(axis=1))  # a move to where it is: one known axis
+    emit[none, np.argmax(known[none], axis=1)] = True
     arc = (code == G02) | (code == G03)
     emit[arc, 0] = emit[arc, 1] = True
     emit[arc, 2] = changed[arc, 2]
@@ -90,11 +93,16 @@ def _append(line, mask, prefix: str, numbers) -> None:
         line[part] = line[part] + table[inverse[start : start + GIL_SLICE]]
 
 
-def render(ops: Ops, count, chords, tolerance: float, default_rpm: float):
-    """(device lines, line map, pauses) of interpreted rows and their plan."""
+def render(ops: Ops, count, chords, tolerance: float, default_rpm: float, free=None):
+    """(device lines, line map, pauses) of interpreted rows and their plan. ``free``:
+    (rows, 3) bool, the axes a row leaves where the machine stands (``StartInfo.free_rows``;
+    None: every axis is known)."""
     op, code, target, value = _rows(ops, count, chords, tolerance, default_rpm)
     number = milli(value)
-    emit, send_f = _words(code, target, number)
+    free = np.zeros((len(ops), 3), bool) if free is None else free[op]
+    still = (code <= G01) & free.all(axis=1)  # no axis set yet, none moved: nothing to name
+    code[still], number[still] = G04, 0  # a pause of no time keeps the device line
+    emit, send_f = _words(code, target, number, free)
     line = _sliced(lambda part: _CODE_TEXT[code[part]], len(code), object)
     for axis, prefix in enumerate((" X", " Y", " Z")):
         col = target[:, axis]

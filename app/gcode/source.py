@@ -75,6 +75,12 @@ class Lines(Sequence):
             self._ends[k] = ends
         return ends
 
+    def encoded(self) -> bytes:
+        """The lines as UTF-8 bytes, ``\\n`` after each (the file's bytes while they are kept)."""
+        if self._list is None:
+            return self._data
+        return "".join(line + "\n" for line in self._list).encode("utf-8")
+
     def as_list(self) -> list[str]:
         """Every line as a list of strings (built once)."""
         if self._list is None:

@@ -13,6 +13,7 @@ import gc
 
 from PySide6.QtCore import QCoreApplication, QObject
 
+from app.gcode.checks import preflight
 from app.i18n import localize
 from app.ui.enabler import reason_text
 from app.ui.mdi import classify
@@ -103,8 +104,20 @@ class OperatorActions(QObject):
 
     def start(self) -> None:
         if self.allowed("start") and self.can_start():
+            job = self.from_machine(self.w.loaded.program)
+            problems = job.errors or (job is not self.w.loaded.program and preflight(
+                job.ops, self.w.profile, job.lines, self.w.preflight.current_offset()))
+            if problems:  # read again from where the machine stands (a relative start)
+                title = self.tr("Program has errors") if job.errors else self.tr("Program leaves the travel")
+                self.w.notifier.error(title, problems[0].localized())
+                return
             self.w.binder.begin_job(self.w.loaded)
-            self.link.call("start_job", self.w.loaded.program)
+            self.link.call("start_job", job)
+
+    def from_machine(self, program):
+        """``program`` as a job from the position the machine reports (``Program.from_start``)."""
+        status = self.w.binder.status
+        return program if status is None else program.from_start((status.x, status.y, status.z))
 
     def can_start(self) -> bool:
         """Whether the open program may start now; if not, the operator is told why."""
@@ -230,7 +243,7 @@ class OperatorActions(QObject):
         a line the loader refuses is logged and nothing is sent."""
         from app.gcode import load_text
 
-        program = load_text(text, name=name)
+        program = self.from_machine(load_text(text, name=name))
         errors = list(program.errors)
         if errors:
             self.w.console.add_log("error", f"{name}: {localize(errors[0].message)}")
@@ -256,7 +269,8 @@ class OperatorActions(QObject):
         errors = list(loaded.program.errors)
         opened = self.tr("Opened %1: %n line(s) in %2 s", "", len(loaded.program.lines))
         seconds = decimal(loaded.load_s + loaded.model_s, 2)
-        self.w.status.showMessage(opened.replace("%1", loaded.path.name).replace("%2", seconds), 10000)
+        opened = opened.replace("%1", loaded.path.name).replace("%2", seconds)
+        self.w.status.showMessage(opened + "; " + localize(loaded.program.start.note()), 10000)
         if errors:
             text = self.tr("%1: %n error(s); see the Problems list. It can be previewed but not run.", "",
                            len(errors))

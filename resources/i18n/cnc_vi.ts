@@ -1622,10 +1622,6 @@ Nếu mất kết nối, máy giữ nguyên vị trí; kết nối lại và ch�
         <translation>Hủy</translation>
     </message>
     <message>
-        <source>%1 cannot be read: %2</source>
-        <translation>Không đọc được %1: %2</translation>
-    </message>
-    <message>
         <source>Converting…</source>
         <translation>Đang chuyển đổi…</translation>
     </message>

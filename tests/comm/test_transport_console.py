@@ -135,3 +135,12 @@ def test_console_runs_from_a_line(tmp_path, capsys):
     restoring = "M03 S3000; G00 Z5.000; G00 X20.000 Y10.000 F600"
     assert f"starting at line 8 (device line 6); restoring: {restoring}" in out
     assert "job completed: 9 lines" in out
+
+
+def test_console_reads_a_relative_first_move_from_where_the_machine_stands(tmp_path, capsys):
+    job = tmp_path / "retract.ngc"
+    job.write_text("G91 G00 Z-2\n")  # after homing the tool stands at work Z10: Z8, not Z-2
+    assert main([f"sim://?speed=500&sd={tmp_path}", "-q", "set", "AFTERJOB", "0", ",", "run", str(job),
+                 ",", "status"]) == 0
+    out = capsys.readouterr().out
+    assert "job completed: 1 lines" in out and "Z8.000" in out.split("status IDLE")[-1], out

@@ -47,7 +47,7 @@ def test_inkscape_sample():
     program = load_text(INKSCAPE)
     assert program.device_lines == [
         "M03 S4500",
-        "G00 X0 Y0 Z5",
+        "G00 Z5",  # X and Y stay where the machine stands until the program sets them
         "G00 X29.412 Y73.263",
         "G01 Z-0.125 F100",
         "G02 X35 Y73.263 I2.794 J0 F400",
@@ -105,7 +105,7 @@ def test_multi_turn_arc_becomes_chords():
 def test_pauses_are_stop_lines_the_machine_holds_at():
     program = load_text("G0 X1\nT2 M6\nG0 X2\nM0\nG0 X3\nM1\nM6\nM60")
     # a bare M6 changes to the selected tool (LinuxCNC): T2 again
-    assert program.device_lines == ["G00 X1 Y0 Z0", "M06 T2", "G00 X2", "M00", "G00 X3", "M01",
+    assert program.device_lines == ["G00 X1", "M06 T2", "G00 X2", "M00", "G00 X3", "M01",
                                     "M06 T2", "M00"]
     assert [i for i, _ in program.pauses] == [1, 3, 5, 6, 7]
     assert "T2" in program.pauses[0][1]

@@ -127,6 +127,10 @@ def test_normalised_program_describes_the_same_path(text):
         if m["kind"] == "dwell":
             continue
         ours = [d for d in by_source.pop(m["line"], []) if d["kind"] != "dwell"]
+        if not ours and m["end"] == start:  # a move to where it stands before any axis is set:
+            sent = [source.device_lines[i] for i in np.flatnonzero(source.line_map == m["line"])]
+            assert sent and all(line == "G04 P0" for line in sent), sent
+            continue  # a pause of no time: the device line stays, the machine stays
         assert ours, m
         assert np.allclose(ours[-1]["end"], m["end"], atol=0.001), (m, ours[-1])
         if m["kind"] == "arc" and ours[0]["kind"] == "arc":

@@ -56,9 +56,9 @@ def test_division_by_zero_in_both_languages(vietnamese):
 def test_feature_rules_in_vietnamese(vietnamese):
     with pytest.raises(FeatureError) as caught:
         Cutting(tool_diameter=6, depth=3, stepover=120)
-    assert str(caught.value) == "stepover: must be > 0 and <= 100 % (got 120)"
+    assert str(caught.value) == "stepover: must be a number above 0 and at most 100 (got 120)"
     assert caught.value.field == "stepover"
-    assert i18n.localize(caught.value.rule) == "phải > 0 và <= 100 % (nhập 120)"
+    assert i18n.localize(caught.value.rule) == "phải là một số lớn hơn 0 và không quá 100 (nhập 120)"
     with pytest.raises(FeatureError) as caught:
         parse_contour("G1 X0 Y0\nG1 X10\nG1 Y10\n", "island.nc")
     assert caught.value.localized().startswith("contour: island.nc, dòng 3: biên dạng không khép kín")
@@ -88,7 +88,8 @@ def test_cli_feature_and_import_speak_vietnamese(tmp_path):
     feature = subprocess.run([*run, "feature", "pocket-rect", "--x", "20", "--y", "20", "--width", "40",
                               "--height", "25", "--tool-diameter", "6", "--depth", "3", "--stepover", "120"],
                              capture_output=True, text=True, encoding="utf-8", env=env, check=False)
-    assert "cnc-gcode feature: --stepover: phải > 0 và <= 100 % (nhập 120)" in feature.stderr
+    said = "cnc-gcode feature: --stepover: phải là một số lớn hơn 0 và không quá 100 (nhập 120)"
+    assert said in feature.stderr
     imported = subprocess.run([*run, "import", str(bad)], capture_output=True, text=True, encoding="utf-8",
                               env=env, check=False)
     assert "dòng 2, cột 3: cần một số (y), gặp 'x'" in imported.stderr

@@ -7,7 +7,7 @@ the field and the rule); ``toolpath(feature)`` gives its moves (``moves.Move``),
 against the travel; ``write_plain(moves)`` the plain G-code.
 """
 
-from .contour import Contour, Segment, parse_contour
+from .contour import Contour, Segment, parse_contour, read_contour
 from .cutting import Cutting
 from .errors import FeatureError
 from .generate import program_moves, toolpath
@@ -18,5 +18,5 @@ from .plain import write_plain
 __all__ = [
     "Contour", "Cutting", "Face", "FeatureError", "Holes", "Move", "PocketCircle", "PocketRect",
     "Profile", "Segment", "Slot", "holes_circle", "holes_row", "parse_contour", "program_moves",
-    "toolpath", "write_plain",
+    "read_contour", "toolpath", "write_plain",
 ]

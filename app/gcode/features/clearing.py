@@ -39,12 +39,24 @@ class Pocket:
                     path.feed(near[0][0], near[0][1], f=self.cut.feed)
                     entry.lap(path, near[1:], self.cut)
 
-    def _enter(self, path: Path, shape: Polygon, points, z_from: float, z: float) -> None:
-        cut = self.cut
+    def entry_xy(self) -> tuple[float, float]:
+        """Where a layer's first entry goes down (the first leaf of the first tree)."""
+        leaf = next(self.trees[0].walk()).shape if self.trees else None
+        if leaf is None:
+            return rings.centre_of(self.allowed)
+        centre, radius, lap = self._entry(leaf, rings.ring_points(leaf, self.ccw))
+        return centre if radius >= 0.05 else lap[0]  # a helix about the centre, else down at the lap
+
+    def _entry(self, shape: Polygon, points):
+        """(centre, helix radius, lap from the centre) of a leaf ring."""
         centre = rings.centre_of(shape)
         room = self.allowed.boundary.distance(Point(centre)) if not self.allowed.is_empty else 0.0
-        radius = min(entry.HELIX_FRACTION * cut.tool_diameter, room - 1e-4)
-        lap = rings.lap_from(points, centre)
+        radius = min(entry.HELIX_FRACTION * self.cut.tool_diameter, room - 1e-4)
+        return centre, radius, rings.lap_from(points, centre)
+
+    def _enter(self, path: Path, shape: Polygon, points, z_from: float, z: float) -> None:
+        cut = self.cut
+        centre, radius, lap = self._entry(shape, points)
         if radius >= 0.05:
             entry.approach(path, cut, centre, z_from)
             entry.helix(path, centre, radius, lap[0], z, cut, self.ccw)

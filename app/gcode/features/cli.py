@@ -11,12 +11,11 @@ from __future__ import annotations
 import argparse
 import sys
 
-from app.i18n import localize, msg
+from app.i18n import localize
 from app.profile import MachineProfile
 
-from ..reading import SourceError, read_config
 from . import kinds
-from .contour import parse_contour
+from .contour import read_contour
 from .cutting import Cutting
 from .errors import FeatureError
 from .fanuc import DIALECTS, write_fanuc
@@ -95,14 +94,7 @@ def build(args):
     if args.kind == "slot":
         return kinds.Slot(args.x1, args.y1, args.x2, args.y2, args.width, cut)
     if args.kind == "profile":
-        try:
-            text = read_config(args.contour)  # regular, within a size limit, UTF-8
-        except SourceError as exc:
-            raise FeatureError("contour", exc.args[0]) from None
-        except OSError as exc:
-            raise FeatureError("contour", msg("cannot read {path}: {error}", path=str(args.contour),
-                                              error=str(exc.strerror or exc))) from None
-        return kinds.Profile(parse_contour(text, args.contour), args.side, cut, args.stock)
+        return kinds.Profile(read_contour(args.contour), args.side, cut, args.stock)
     if args.kind == "holes-circle":
         return kinds.holes_circle(args.x, args.y, args.diameter, args.count, cut, args.start_angle,
                                   args.peck, args.dwell)

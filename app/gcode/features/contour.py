@@ -5,20 +5,24 @@ The first line must position (G00/G01 X Y); each later line is a line or an XY a
 has them; blank lines, ``( )`` and ``;`` comments are ignored. Errors name the
 contour's file, line and column: a word other than G0-G3/X/Y/R/I/J/N/F, an arc
 whose radius cannot reach its end, a contour that does not end where it began, one
-that crosses itself.
+that crosses itself. One full circle (``G02``/``G03`` back to its start with I J) is a
+contour.
 """
 
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from pathlib import Path
 
 from shapely.geometry import LinearRing, Polygon
 
 from app.i18n import msg
 
 from ..lexer import lex_line
+from ..reading import SourceError, clean_bytes, read_source, text_problem
 from .errors import FeatureError
+from .ranges import COORD
 
 CHORD_TOL = 0.002  # mm, chord error when arcs become polygon edges
 
@@ -131,6 +135,10 @@ def parse_contour(text: str, name: str = "<contour>") -> Contour:
                                                              code=float(w.value)))
                 state["g"] = int(w.value)
             elif w.letter in "XYRIJ":
+                if not abs(w.value) <= COORD:
+                    raise _fail(name, line_no, w.column, msg("{letter}{value:g} is beyond {limit:g} mm",
+                                                             letter=w.letter, value=float(w.value),
+                                                             limit=COORD))
                 words[w.letter], columns[w.letter] = w.value, w.column
             elif w.letter not in "NF":
                 raise _fail(name, line_no, w.column, msg("{letter}: a contour has only G, X, Y, R, I, J",
@@ -150,10 +158,24 @@ def parse_contour(text: str, name: str = "<contour>") -> Contour:
     return _closed(Contour(name, tuple(segments)), first_line)
 
 
+def read_contour(path) -> Contour:
+    """The contour in the file ``path``, after the loader's own file checks (a regular
+    file within its size, UTF-8 text without NUL bytes); ``FeatureError("contour", ...)``."""
+    try:
+        raw = clean_bytes(read_source(path))
+    except SourceError as exc:
+        raise FeatureError("contour", exc.args[0]) from None
+    problem = text_problem(raw)
+    if problem:
+        raise FeatureError("contour", msg("{path}: {problem}", path=str(path), problem=problem))
+    return parse_contour(raw.decode("utf-8"), Path(path).name)
+
+
 def _closed(contour: Contour, first_line: int) -> Contour:
     segs = contour.segments
-    if len(segs) < 2:
-        raise FeatureError("contour", msg("{name}: a contour needs at least two segments", name=contour.name))
+    if not segs or (len(segs) == 1 and segs[0].center is None):  # one full circle is a contour
+        raise FeatureError("contour", msg("{name}: a contour needs at least two segments or one full "
+                                          "circle", name=contour.name))
     gap = math.dist(segs[0].start, segs[-1].end)
     if gap > 0.001:
         raise FeatureError("contour", msg("{name}, line {line}: the contour is not closed: it ends at "

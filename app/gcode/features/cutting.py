@@ -15,7 +15,8 @@ from dataclasses import dataclass
 from app.i18n import msg
 from app.profile import MachineProfile
 
-from .errors import not_negative, positive, require
+from .errors import require
+from .ranges import whole, within
 
 DEFAULT_RPM = MachineProfile().max_spindle_rpm()  # what the default machine's spindle reaches
 
@@ -38,26 +39,21 @@ class Cutting:
     climb: bool = True
 
     def __post_init__(self) -> None:
-        positive(self.tool_diameter, "tool_diameter")
-        require(self.tool >= 0 and float(self.tool).is_integer(), "tool",
-                msg("must be a whole number >= 0 (got {tool})", tool=self.tool))
-        require(self.depth > 0, "depth", msg("must be > 0: the depth below the top (got {depth:g})",
-                                             depth=float(self.depth)))
-        positive(self.stepdown, "stepdown")
-        require(0 < self.stepover <= 100, "stepover",
-                msg("must be > 0 and <= 100 % (got {stepover:g})", stepover=float(self.stepover)))
-        not_negative(self.finish_xy, "finish_xy")
-        not_negative(self.finish_z, "finish_z")
+        for name in ("tool_diameter", "depth", "top", "stepdown", "stepover", "finish_xy", "finish_z",
+                     "clearance", "feed", "plunge_feed", "rpm"):
+            within(getattr(self, name), name)
+        whole(self.tool, "tool")
         require(self.finish_z < self.depth, "finish_z",
                 msg("must be less than the depth {depth:g} (got {finish_z:g})", depth=float(self.depth),
                     finish_z=float(self.finish_z)))
-        positive(self.clearance, "clearance")
-        positive(self.feed, "feed")
-        positive(self.plunge_feed, "plunge_feed")
-        positive(self.rpm, "rpm")
-        for name in ("tool_diameter", "depth", "top", "stepdown", "clearance", "feed"):
-            require(math.isfinite(getattr(self, name)), name, msg("must be a finite number"))
-
+        require(self.finish_xy <= self.tool_diameter / 2, "finish_xy",
+                msg("must be at most the tool's radius {radius:g} (got {finish_xy:g}): the finishing pass "
+                    "takes what roughing leaves", radius=float(self.tool_diameter / 2),
+                    finish_xy=float(self.finish_xy)))
+        require(self.finish_z <= self.stepdown, "finish_z",
+                msg("must be at most the stepdown {stepdown:g} (got {finish_z:g}): the floor pass "
+                    "takes what roughing leaves", stepdown=float(self.stepdown),
+                    finish_z=float(self.finish_z)))
 
     @property
     def radius(self) -> float:

@@ -1,8 +1,8 @@
 """Getting the tool down: approaches, helix and ramp entries, laps.
 
-Rules kept here: the only rapids below the safe height are straight down over
-area already cut (or open), ending ``GAP`` above the cut level; the tool feeds the
-rest of the way at the plunge feed. Uncut stock is entered by a helix (or, where no
+Rules kept here: no rapid goes below the stock top: the tool rapids down to ``GAP``
+above the top (or above the cut level when that is higher) and feeds the rest of the
+way at the plunge feed, over area already cut (or open). Uncut stock is entered by a helix (or, where no
 helix fits, a ramp along the ring), never by a plunge, at a slope of at most
 ``RAMP_SLOPE``.
 """
@@ -26,13 +26,14 @@ def retract(path: Path, cut: Cutting) -> None:
 
 
 def approach(path: Path, cut: Cutting, xy, cut_level: float) -> None:
-    """Retract, rapid over ``xy``, rapid down to ``GAP`` above ``cut_level`` (cut or
-    open there), feed down to it."""
-    if math.dist(path.pos[:2], xy) > 1e-9 or path.pos[2] > cut_level + GAP + 1e-9:
+    """Retract, rapid over ``xy``, rapid down to ``GAP`` above ``cut_level`` but not
+    below the stock top, feed down to ``cut_level`` (cut or open there)."""
+    low = min(cut.safe_z, max(cut_level, cut.top) + GAP)
+    if math.dist(path.pos[:2], xy) > 1e-9 or path.pos[2] > low + 1e-9:
         if math.dist(path.pos[:2], xy) > 1e-9:
             retract(path, cut)
             path.rapid(xy[0], xy[1])
-        path.rapid(z=min(cut.safe_z, cut_level + GAP))
+        path.rapid(z=low)
     path.feed(z=cut_level, f=cut.plunge_feed)
 
 

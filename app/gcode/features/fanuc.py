@@ -8,7 +8,10 @@ depth plus a constant, called once per layer from a loop:
 - ``fanuc21``: no WHILE and no G65 (the paper's table 1): an ``IF [...] GOTO`` loop
   around ``M98 P1001``, the depth in the common variable ``#101``.
 
-Everything else is written as in the plain program. Subprograms follow ``M30``; the
+Layers of uneven depth (a finishing floor after even roughing layers) loop over the even
+ones and call the rest one by one. Hole patterns are a loop over the holes
+(``holes_macro.py``), profiles the paper's program (``paper_macro.py``). Everything else
+is written as in the plain program. Subprograms follow ``M30``; the
 file is wrapped in ``%`` lines. The loader's expander (issue 9) must give back exactly
 the plain program's moves.
 """
@@ -16,6 +19,7 @@ the plain program's moves.
 from __future__ import annotations
 
 from .folding import Inline, Repeat, fold
+from .holes_macro import HolePattern, holes_program
 from .moves import ARC, FEED, RAPID, Move
 from .paper_macro import paper_program
 from .plain import line_of, num
@@ -58,6 +62,8 @@ def _subprogram(number: int, item: Repeat, previous_xy, var: str) -> list[str]:
 
 
 def _uniform_step(depths: list[float]) -> float | None:
+    if len(depths) < 2:
+        return None
     steps = [b - a for a, b in zip(depths, depths[1:], strict=False)]
     return steps[0] if all(abs(s - steps[0]) < 1e-9 for s in steps) else None
 
@@ -65,7 +71,11 @@ def _uniform_step(depths: list[float]) -> float | None:
 def _loop(dialect: str, number: int, depths: list[float], label: int) -> list[str]:
     step = _uniform_step(depths)
     call = f"G65 P{number} Z{DEPTH}" if dialect == "fanuc31" else f"M98 P{number}"
-    if step is None:  # uneven layers: one call per layer
+    if step is None:  # uneven layers: a loop over the even ones (a finishing floor after them)
+        even = next((n for n in range(len(depths) - 1, 1, -1) if _uniform_step(depths[:n]) is not None), 0)
+        if even:
+            rest = _loop(dialect, number, depths[even:], label + 2)  # its own labels on Fanuc 21
+            return _loop(dialect, number, depths[:even], label) + rest
         if dialect == "fanuc31":
             return [f"G65 P{number} Z{num(d)}" for d in depths]
         return [line for d in depths for line in (f"{DEPTH} = {num(d)}", call)]
@@ -92,7 +102,14 @@ def write_fanuc(moves: list[Move], dialect: str, title: str = "") -> str:
         main.append(f"G00 Z{num(first.end[2])}")
         end = (None, None, first.end[2])
     for run in _runs(moves):
-        if run[0].block is not None:
+        if isinstance(run[0].block, HolePattern):
+            written = holes_program(run, dialect, number, 7000 + 10 * (number - FIRST_SUB))
+            if written is not None:
+                main += written[0]
+                subs += written[1]
+                end, note, number = run[-1].end, None, number + 1
+                continue
+        elif run[0].block is not None:
             lines, programs = paper_program(run[0].block, dialect, number, 5000 + 100 * (number - FIRST_SUB))
             main += lines
             subs += programs

@@ -5,7 +5,10 @@ the same in all of them (the safe height) or the layer's own depth plus a fixed 
 ``fold(moves)`` groups the moves into ``Inline`` runs and ``Repeat`` runs (a template
 layer, each Z as ``(shifts, value)``: a shifting Z is ``layer depth + value``, and the
 depth of every layer), so a macro writer can print the template once and loop over it.
-Layers are told apart by the generators' notes (``layer 2/5 ...``).
+Layers are told apart by the generators' notes (``layer 2/5 ...``). A first layer that
+begins with moves the others lack (the finishing pass's way over to the wall) has them
+written inline and folds with the rest; the generators end each roughing and facing
+layer over where the next begins, so layer 1 is the same moves as the others.
 """
 
 from __future__ import annotations
@@ -90,9 +93,14 @@ def fold(moves: list[Move]) -> list[Inline | Repeat]:
         run = [b for _, b in blocks[i:j]]
         start = 0
         while start < len(run):  # the longest foldable stretch from here (layer 1 may differ)
-            stop = len(run)
-            while stop - start >= 2 and _terms(run[start:stop]) is None:
-                stop -= 1
+            stop = _longest(run, start)
+            extra = len(run[start]) - len(run[start + 1]) if start + 1 < len(run) else 0
+            if stop - start < 2 and extra > 0:  # layer 1 begins with moves the others lack
+                trimmed = [run[start][extra:], *run[start + 1:]]
+                if _longest(trimmed, 0) >= 2:
+                    _inline(items, run[start][:extra])
+                    run, start = trimmed, 0
+                    stop = _longest(run, 0)
             if stop - start >= 2:
                 layers = run[start:stop]
                 items.append(Repeat(layers[0], _terms(layers), [_depth(b) for b in layers]))
@@ -102,6 +110,15 @@ def fold(moves: list[Move]) -> list[Inline | Repeat]:
             start = stop
         i = j
     return items
+
+
+def _longest(run: list[list[Move]], start: int) -> int:
+    """The end of the longest stretch of ``run`` from ``start`` that folds (``start + 1``
+    or less: none)."""
+    stop = len(run)
+    while stop - start >= 2 and _terms(run[start:stop]) is None:
+        stop -= 1
+    return stop
 
 
 def _inline(items: list, moves: list[Move]) -> None:

@@ -9,12 +9,14 @@ or the walls of a contour pocket) are the paper's compensated program (``profile
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 from app.profile import MachineProfile
 
 from . import entry, finish, rings
 from .clearing import Pocket
 from .cutting import Cutting
+from .holes_macro import HolePattern
 from .kinds import Face, Holes, PocketCircle, PocketRect, Profile, Slot
 from .moves import RAPID, SPINDLE, TOOL, Move, Path
 from .profile import profile_moves
@@ -29,11 +31,16 @@ def _start(cut: Cutting, xy) -> Path:
 
 
 def _rough(path: Path, area, cut: Cutting) -> None:
+    """Every roughing layer; each ends up at the safe height over where the next begins,
+    so all layers are the same moves at their own depth (a macro loops over one)."""
     bottom = cut.floor + cut.finish_z
     levels = cut.layers(bottom) + ([cut.floor] if cut.finish_z > 0 else [])
     z_from = cut.top
     for k, z in enumerate(levels):
-        area.layer(path, z_from, z, f"layer {k + 1}/{len(levels)} z {z:.3f}")
+        note = f"layer {k + 1}/{len(levels)} z {z:.3f}"
+        area.layer(path, z_from, z, note)
+        entry.retract(path, cut)  # under the layer's last note: one block per layer
+        path.rapid(*area.entry_xy())
         z_from = z
 
 
@@ -102,6 +109,8 @@ def _face(feature: Face) -> list[Move]:
         for j, y in enumerate(rows):
             path.feed(y=y, f=cut.feed)
             path.feed(right if j % 2 == 0 else left, f=cut.feed)
+        entry.retract(path, cut)  # every layer the same moves at its depth: back over the start
+        path.rapid(left, rows[0])
         path.note = ""
     entry.retract(path, cut)
     return path.moves
@@ -117,15 +126,17 @@ def _holes(feature: Holes) -> list[Move]:
         depth = cut.top
         while depth > cut.floor + 1e-9:
             target = max(cut.floor, depth - feature.peck) if feature.peck > 0 else cut.floor
-            if depth < cut.top:  # G83: back out to R, rapid down to just above the last depth
+            if depth < cut.top:  # a peck: back out above the top, feed down the drilled hole
                 path.rapid(z=cut.top + entry.GAP)
-                path.rapid(z=depth + entry.GAP)
             path.feed(z=target, f=cut.plunge_feed)
             depth = target
         if feature.dwell > 0:
             path.dwell(feature.dwell)
         path.rapid(z=cut.safe_z)
-    return path.moves
+    if not feature.layout:
+        return path.moves
+    form = HolePattern(feature.layout, len(feature.centres))  # the macro writers' parametric form
+    return [replace(m, block=form) for m in path.moves]
 
 
 GENERATORS = {PocketRect: _pocket, PocketCircle: _pocket, Slot: _slot, Profile: _profile,

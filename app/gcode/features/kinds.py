@@ -20,8 +20,30 @@ from app.i18n import msg
 
 from .contour import CHORD_TOL, Contour
 from .cutting import Cutting
-from .errors import FeatureError, positive, require
-from .rings import quad_segs
+from .errors import FeatureError, require
+from .ranges import MAX_HOLES, MAX_MOVES, check_count, check_work, round_points, whole, within
+from .rings import MIN_AREA, centre_of, quad_segs
+
+ENTRY_ROOM = 0.05  # mm: the least width of roughing area a ramp needs (clearing.Pocket._enter)
+
+
+def _roughable(region, cut: Cutting) -> None:
+    """Refuse a pocket whose roughing area (``region`` eroded by D/2 + U) is empty or too
+    small to enter by a ramp: naming ``finish_xy`` when the allowance is what leaves
+    nothing to rough, else ``tool_diameter``."""
+    rough = region.buffer(-(cut.radius + cut.finish_xy))
+    if not rough.is_empty and rough.area > MIN_AREA and rough.length > 2 * ENTRY_ROOM:
+        return
+    deepest = region.boundary.distance(Point(centre_of(region)))  # the largest tool radius that fits
+    if cut.finish_xy > 0 and deepest - cut.radius > ENTRY_ROOM:
+        raise FeatureError("finish_xy", msg(
+            "leaves nothing to rough in this {what}: with this tool it must be below {most:.3f} "
+            "(got {finish_xy:g})", what=msg("pocket"), most=float(deepest - cut.radius - ENTRY_ROOM),
+            finish_xy=float(cut.finish_xy)))
+    raise FeatureError("tool_diameter", msg(
+        "the tool ({tool:g} mm) leaves no room to enter this pocket by a ramp or a helix: "
+        "use one below {most:.3f} mm", tool=float(cut.tool_diameter),
+        most=float(2 * (deepest - ENTRY_ROOM))))
 
 
 def _narrower(cut: Cutting, width: float, what: str) -> None:
@@ -42,8 +64,15 @@ class Face:
     cut: Cutting
 
     def __post_init__(self) -> None:
-        positive(self.width, "width")
-        positive(self.height, "height")
+        _numbers(self, "x", "y", "width", "height")
+        rows = self.height / self.cut.step + 1
+        check_work(self.cut, rows, 2)
+
+
+def _numbers(feature, *names: str) -> None:
+    """Every option in ``names`` a finite number in its range (``ranges.RANGES``)."""
+    for name in names:
+        within(getattr(feature, name), name)
 
 
 @dataclass(frozen=True)
@@ -60,18 +89,24 @@ class PocketRect:
     angle: float = 0.0
 
     def __post_init__(self) -> None:
-        positive(self.width, "width")
-        positive(self.height, "height")
+        _numbers(self, "x", "y", "width", "height", "corner_radius", "angle")
         require(0 <= self.corner_radius <= min(self.width, self.height) / 2, "corner_radius",
                 msg("must be between 0 and half the smaller side, {half:g} (got {radius:g})",
                     half=float(min(self.width, self.height) / 2), radius=float(self.corner_radius)))
         _narrower(self.cut, min(self.width, self.height), msg("pocket"))
+        check_work(self.cut, min(self.width, self.height) / 2 / self.cut.step,
+                   round_points(self.corner_radius * 2) + 4)
+        _roughable(self.region(), self.cut)
 
     def region(self) -> Polygon:
-        shape = box(0, 0, self.width, self.height)
-        if self.corner_radius > 0:
-            r = self.corner_radius
-            shape = shape.buffer(-r).buffer(r, quad_segs=quad_segs(r))
+        r, w, h = self.corner_radius, self.width, self.height
+        if r > 0:  # the rectangle's core grown by r: a line or a point when r is half a side
+            lo, hi = (r, r), (max(w - r, r), max(h - r, r))
+            core = box(*lo, *hi) if hi[0] > lo[0] and hi[1] > lo[1] else \
+                LineString([lo, hi]) if hi != lo else Point(lo)
+            shape = core.buffer(r, quad_segs=quad_segs(r))
+        else:
+            shape = box(0, 0, w, h)
         shape = affinity.rotate(shape, self.angle, origin=(0, 0))
         return affinity.translate(shape, self.x, self.y)
 
@@ -91,8 +126,10 @@ class PocketCircle:
     cut: Cutting
 
     def __post_init__(self) -> None:
-        positive(self.diameter, "diameter")
+        _numbers(self, "x", "y", "diameter")
         _narrower(self.cut, self.diameter, msg("pocket"))
+        check_work(self.cut, self.diameter / 2 / self.cut.step, round_points(self.diameter))
+        _roughable(self.region(), self.cut)
 
     def region(self) -> Polygon:
         r = self.diameter / 2
@@ -115,12 +152,15 @@ class Slot:
     cut: Cutting
 
     def __post_init__(self) -> None:
-        positive(self.width, "width")
+        _numbers(self, "x1", "y1", "x2", "y2", "width")
         require(math.dist((self.x1, self.y1), (self.x2, self.y2)) > 0, "x2",
                 msg("the slot's ends must differ (use pocket-circle for a round hole)"))
         require(self.cut.tool_diameter <= self.width, "tool_diameter",
                 msg("the tool ({tool:g} mm) is wider than the slot ({width:g} mm)",
                     tool=float(self.cut.tool_diameter), width=float(self.width)))
+        check_work(self.cut, self.width / 2 / self.cut.step, round_points(self.width) + 4)
+        if not self.exact:
+            _roughable(self.region(), self.cut)
 
     def region(self) -> Polygon:
         r = self.width / 2
@@ -152,13 +192,18 @@ class Profile:
     def __post_init__(self) -> None:
         require(self.side in ("inside", "outside"), "side",
                 msg("must be inside or outside (got {side!r})", side=self.side))
+        within(self.stock, "stock")
+        points = len(self.region().exterior.coords)
         if self.side == "outside":
-            require(self.stock >= 0, "stock", msg("must be >= 0 (got {value:g})", value=float(self.stock)))
-        elif self.region().buffer(-self.cut.radius).is_empty:
+            check_work(self.cut, self.removed_stock / self.cut.step + 1, points)
+            return
+        x0, y0, x1, y1 = self.region().bounds
+        check_work(self.cut, min(x1 - x0, y1 - y0) / 2 / self.cut.step, points)
+        if self.region().buffer(-self.cut.radius).is_empty:
             said = msg("the tool ({tool:g} mm) does not fit inside the contour {name}",
                        tool=float(self.cut.tool_diameter), name=self.contour.name)
             raise FeatureError("tool_diameter", said)
-
+        _roughable(self.region(), self.cut)
 
     def region(self) -> Polygon:
         return self.contour.polygon(CHORD_TOL)
@@ -179,29 +224,37 @@ class Holes:
     cut: Cutting
     peck: float = 0.0
     dwell: float = 0.0
+    layout: tuple = ()  # ("circle", x, y, r, start) or ("row", x, y, pitch, angle): the macro's formula
 
     def __post_init__(self) -> None:
-        require(len(self.centres) >= 1, "count", msg("must be at least 1"))
-        require(self.peck >= 0, "peck", msg("must be >= 0 (got {value:g})", value=float(self.peck)))
-        require(self.dwell >= 0, "dwell", msg("must be >= 0 (got {value:g})", value=float(self.dwell)))
+        require(1 <= len(self.centres) <= MAX_HOLES, "count",
+                msg("must be from 1 to {most:,} (got {count:,})", most=MAX_HOLES, count=len(self.centres)))
+        for x, y in self.centres:
+            within(x, "x"), within(y, "y")
+        _numbers(self, "peck", "dwell")
+        pecks = math.ceil(self.cut.depth / self.peck) if self.peck > 0 else 1
+        check_count("peck", 3 * pecks * len(self.centres), MAX_MOVES, msg("moves"))
 
 
 
 def holes_circle(x: float, y: float, diameter: float, count: int, cut: Cutting,
                  start_angle: float = 0.0, peck: float = 0.0, dwell: float = 0.0) -> Holes:
     """``count`` holes evenly on a circle of ``diameter`` about (x, y)."""
-    require(count >= 1, "count", msg("must be at least 1 (got {count})", count=count))
-    positive(diameter, "diameter")
+    count = whole(count, "count")
+    x, y, diameter, start_angle = (within(v, n) for v, n in ((x, "x"), (y, "y"), (diameter, "diameter"),
+                                                              (start_angle, "start_angle")))
     r = diameter / 2
     angles = [math.radians(start_angle + 360.0 * k / count) for k in range(count)]
-    return Holes(tuple((x + r * math.cos(a), y + r * math.sin(a)) for a in angles), cut, peck, dwell)
+    return Holes(tuple((x + r * math.cos(a), y + r * math.sin(a)) for a in angles), cut, peck, dwell,
+                 ("circle", x, y, r, start_angle))
 
 
 def holes_row(x: float, y: float, count: int, pitch: float, cut: Cutting,
               angle: float = 0.0, peck: float = 0.0, dwell: float = 0.0) -> Holes:
     """``count`` holes ``pitch`` apart from (x, y) along ``angle``."""
-    require(count >= 1, "count", msg("must be at least 1 (got {count})", count=count))
-    require(pitch > 0 or count == 1, "pitch", msg("must be > 0 (got {value:g})", value=float(pitch)))
+    count = whole(count, "count")
+    x, y, angle = (within(v, n) for v, n in ((x, "x"), (y, "y"), (angle, "angle")))
+    pitch = within(pitch, "pitch") if count > 1 else 0.0
     a = math.radians(angle)
     return Holes(tuple((x + k * pitch * math.cos(a), y + k * pitch * math.sin(a)) for k in range(count)),
-                 cut, peck, dwell)
+                 cut, peck, dwell, ("row", x, y, pitch, angle))

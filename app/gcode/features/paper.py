@@ -127,11 +127,11 @@ def _ring(form: PaperForm, h: float) -> list[str]:
 
 def phase_start(form: PaperForm, phase: Phase, at_safe: bool) -> list[str]:
     """From anywhere (at the safe height when ``at_safe``) to just above the first level
-    at the descent point."""
+    (or the stock top, when that is higher) at the descent point."""
     cut = form.cut
     out = [] if at_safe else [f"G00 Z{fmt(cut.safe_z)}"]
     out.append(f"G00 {_xy(form.descent(phase))} Z{fmt(cut.safe_z)}")
-    down = min(cut.safe_z, phase.levels[0] + GAP)
+    down = min(cut.safe_z, max(phase.levels[0], cut.top) + GAP)  # no rapid below the top
     if down < cut.safe_z - 1e-9:
         out.append(f"G00 Z{fmt(down)}")
     return out

@@ -45,10 +45,16 @@ class Node:
     children: list[Node] = field(default_factory=list)
 
     def walk(self):
-        """Post-order: every child subtree before the node itself."""
-        for child in self.children:
-            yield from child.walk()
-        yield self
+        """Post-order: every child subtree before the node itself (no recursion: a tree
+        may be thousands of rings deep)."""
+        stack = [(self, False)]
+        while stack:
+            node, expanded = stack.pop()
+            if expanded:
+                yield node
+                continue
+            stack.append((node, True))
+            stack.extend((child, False) for child in reversed(node.children))
 
 
 def pocket_tree(region: Polygon, first: float, step: float, leaf_step: float) -> list[Node]:
@@ -79,10 +85,17 @@ def covering_trees(region: Polygon, first: float, step: float, radius: float) ->
 
 
 def _grow(shape: Polygon, step: float, leaf_step: float) -> Node:
-    inner = offset(shape, -step)
-    if not inner and leaf_step < step:
-        inner, step = offset(shape, -leaf_step), leaf_step
-    return Node(shape, [_grow(p, step, leaf_step) for p in inner])
+    """The ring tree of ``shape`` (see the module docstring), built without recursion."""
+    root = Node(shape)
+    todo = [(root, step)]
+    while todo:
+        node, spacing = todo.pop()
+        inner = offset(node.shape, -spacing)
+        if not inner and leaf_step < spacing:
+            inner, spacing = offset(node.shape, -leaf_step), leaf_step
+        node.children = [Node(p) for p in inner]
+        todo.extend((child, spacing) for child in node.children)
+    return root
 
 
 def ring_points(shape: Polygon, ccw: bool) -> list[tuple[float, float]]:

@@ -8,9 +8,10 @@ import argparse
 import contextlib
 import sys
 
-from app.i18n import localize, msg
+from app.i18n import localize
 from app.profile import MachineProfile
 
+from ..features.errors import FeatureError
 from ..reading import SourceError, read_source
 from .convert import ImportOptions, to_gcode
 from .formats import PointListError, read_points
@@ -28,18 +29,17 @@ def main(argv: list[str], profile: MachineProfile | None = None) -> int:
     parser.add_argument("--clearance", type=float, default=5.0, metavar="R")
     args = parser.parse_args(argv)
     try:
-        raw = read_source(args.file)  # a regular file within the size limit (never a FIFO or /dev/zero)
+        raw = read_source(args.file)
         points = read_points(raw, args.file)
         options = ImportOptions(args.fit, args.scale, args.cut_z, args.feed, args.clearance,
                                 profile.max_spindle_rpm())
         text, placement = to_gcode(points, options, profile)
-    except OSError as exc:
-        said = msg("cannot read {path}: {error}", path=str(args.file), error=str(exc.strerror or exc))
-        print(f"cnc-gcode import: {localize(said)}", file=sys.stderr)
-        return 1
     except SourceError as exc:
         print(f"cnc-gcode import: {localize(exc.args[0])}", file=sys.stderr)
         return 1
+    except FeatureError as exc:
+        print(f"cnc-gcode import: --{exc.field.replace('_', '-')}: {localize(exc.rule)}", file=sys.stderr)
+        return 2
     except PointListError as exc:
         print(f"cnc-gcode import: {exc.localized()}", file=sys.stderr)
 

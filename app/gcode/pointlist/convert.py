@@ -15,6 +15,7 @@ import numpy as np
 from app.i18n import msg
 from app.profile import MachineProfile
 
+from ..features.ranges import COORD, within
 from .formats import PointList, PointListError
 from .gcode import comment, feed_lines
 
@@ -32,6 +33,11 @@ class ImportOptions:
     feed: float = 300.0
     clearance: float = 5.0
     rpm: float = DEFAULT_RPM
+
+    def __post_init__(self) -> None:
+        """Every option a number in its range (``features.ranges``): ``FeatureError``."""
+        for name in ("scale", "feed", "clearance", "rpm") + (() if self.cut_z is None else ("cut_z",)):
+            within(getattr(self, name), name)
 
 
 @dataclass(frozen=True)
@@ -73,6 +79,11 @@ def place(points: PointList, options: ImportOptions, profile: MachineProfile) ->
         offset = travel.mean(axis=1) - centre_file * scale
     z = (low[2], high[2]) if options.cut_z is None else (options.cut_z, options.cut_z)
     lo, hi = low[:2] * scale + offset, high[:2] * scale + offset
+    for axis, value in zip("XYZXYZ", [*lo, z[0], *hi, z[1]], strict=True):
+        if not abs(value) <= COORD:
+            raise PointListError(points.name, 0, 0, msg(
+                "the points reach {axis} {value:.6g}, beyond {limit:g} mm: a smaller scale, --fit or a cut Z",
+                axis=axis, value=float(value), limit=COORD))
     return Placement(scale, (float(offset[0]), float(offset[1])), (lo[0], lo[1], z[0]), (hi[0], hi[1], z[1]))
 
 

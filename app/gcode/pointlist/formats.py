@@ -19,6 +19,7 @@ import numpy as np
 
 from app.i18n import localize, msg
 
+from ..limits import MAX_NUMBER
 from .lines import LineTable, table
 
 FABRICATION_MARK = b"Fabrication Task"
@@ -100,6 +101,10 @@ def _bad_point(t: LineTable, k: int, name: str) -> PointListError:
         if not np.isfinite(value):
             return PointListError(name, k + 1, column, msg("expected a finite number ({axis}), got {token!r}",
                                                            axis="xyz"[n], token=token))
+        if not abs(value) < MAX_NUMBER:
+            return PointListError(name, k + 1, column, msg("{axis} {token} is too large: a point list's "
+                                                           "numbers are below {limit:,.0f} in size",
+                                                           axis="xyz"[n], token=token, limit=MAX_NUMBER))
     if len(tokens) != 3:
         return PointListError(name, k + 1, 0, msg("expected three numbers 'x y z', got {count} ({text!r})",
                                                   count=len(tokens), text=t.text(k).strip()))

@@ -13,6 +13,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..limits import MAX_NUMBER
+
 _COMMENT = re.compile(rb"#[^\n]*")
 _SEPARATORS = bytes.maketrans(b"\t,\r", b"   ")
 _NUMBER_CHARS = np.zeros(256, bool)
@@ -36,7 +38,7 @@ class LineTable:
 
     def numbers(self, first: int, stop: int) -> np.ndarray | None:
         """The floats of lines ``first`` up to ``stop`` (exclusive), or None if one of
-        them does not read as a number."""
+        them does not read as a number below the loader's ``MAX_NUMBER`` in size."""
         if stop <= first:
             return np.empty(0)
         chunk = self.data[self.start[first]:self.end[stop - 1]]
@@ -47,7 +49,7 @@ class LineTable:
                 values = np.fromstring(chunk, dtype=np.float64, sep=" ")
             except ValueError:  # newer numpy refuses it
                 return None
-        if len(values) != expected or not np.isfinite(values).all():
+        if len(values) != expected or not (np.abs(values) < MAX_NUMBER).all():  # NaN too
             return None
         return values
 

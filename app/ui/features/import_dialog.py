@@ -29,7 +29,10 @@ from PySide6.QtWidgets import (
 )
 
 from app.gcode import load_text
+from app.gcode.features import FeatureError
 from app.gcode.pointlist import ImportOptions, PointListError, read_points, to_gcode
+from app.gcode.reading import SourceError, read_source
+from app.i18n import localize
 from app.profile import MachineProfile
 from app.ui.preview.model import PreviewModel, screen_tolerance
 from app.ui.preview.widget import PreviewWidget
@@ -120,10 +123,9 @@ class PointImportDialog(QDialog):
         """Read the file once; the problem, or "" when it reads."""
         if self.points is None and not self.problem_text:
             try:
-                self.points = read_points(self.path.read_bytes(), self.path.name)
-            except OSError as exc:
-                self.problem_text = self.tr("%1 cannot be read: %2").replace("%1", self.path.name) \
-                    .replace("%2", exc.strerror or str(exc))
+                self.points = read_points(read_source(self.path), self.path.name)
+            except SourceError as exc:  # the loader's file checks: a FIFO, a device, too big
+                self.problem_text = localize(exc.args[0])
             except PointListError as exc:
                 self.problem_text = exc.localized()
         return self.problem_text
@@ -141,7 +143,12 @@ class PointImportDialog(QDialog):
         self.convert_button.setEnabled(False)
         self.summary.setText(self.tr("Converting…"))
         size = self.preview.view.size()
-        args = (self._request, self.options(), (max(size.width(), 100), max(size.height(), 100)))
+        try:
+            options = self.options()
+        except FeatureError as exc:  # an option out of its range (the spin boxes keep to them)
+            self._show((self._request, "", None, None, exc.localized()))
+            return
+        args = (self._request, options, (max(size.width(), 100), max(size.height(), 100)))
         threading.Thread(target=self._convert, args=args, name="points-convert", daemon=True).start()
 
     def _convert(self, request: int, options: ImportOptions, view_size) -> None:
@@ -151,7 +158,7 @@ class PointImportDialog(QDialog):
             return
         try:
             text, placement = to_gcode(self.points, options, self.profile)
-        except PointListError as exc:
+        except (PointListError, FeatureError) as exc:
             self._emit((request, "", None, None, exc.localized()))
             return
         toolpath = load_text(text, self.path.name).toolpath

@@ -9,7 +9,6 @@ marked for translation (context ``FeatureForm``). Defaults that depend on the ma
 from __future__ import annotations
 
 from dataclasses import dataclass
-from pathlib import Path
 
 from PySide6.QtCore import QT_TRANSLATE_NOOP
 
@@ -23,8 +22,9 @@ from app.gcode.features import (
     Slot,
     holes_circle,
     holes_row,
-    parse_contour,
+    read_contour,
 )
+from app.gcode.features.ranges import RANGES
 from app.i18n import msg
 from app.profile import MachineProfile
 
@@ -41,6 +41,10 @@ class Field:
 
 
 def _f(name, label, default=0.0, unit="mm", low=-1000.0, high=1000.0, decimals=3) -> Field:
+    """A field, its limits kept within the core's range of the option (``ranges.RANGES``)."""
+    if name in RANGES:
+        least, most, _ = RANGES[name]
+        low, high = max(low, least), min(high, most)
     return Field(name, label, unit, default, low, high, decimals)
 
 
@@ -148,10 +152,4 @@ def build(kind: str, values: dict):
         return holes_row(v["x"], v["y"], int(v["count"]), v["pitch"], cut, v["angle"], v["peck"], v["dwell"])
     if not v["contour"]:
         raise FeatureError("contour", msg("choose a contour file (G00/G01/G02/G03 lines)"))
-    try:
-        text = Path(v["contour"]).read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError) as exc:
-        raise FeatureError("contour", msg("cannot read {path}: {error}", path=str(v["contour"]),
-                                          error=str(exc))) from None
-
-    return Profile(parse_contour(text, Path(v["contour"]).name), v["side"], cut, v["stock"])
+    return Profile(read_contour(v["contour"]), v["side"], cut, v["stock"])

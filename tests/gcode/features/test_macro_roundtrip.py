@@ -151,3 +151,26 @@ def test_two_profiles_in_one_job_have_their_own_programs_and_labels(dialect):
     for number in (1001, 1002, 1003, 1004):
         assert text.count(f"\nO{number} ") == 1
     assert "G41 D2" in text and "G41 D1" in text
+
+
+@pytest.mark.parametrize("feature", [FEATURES[5], FEATURES[6]], ids=["holes-circle", "holes-row"])
+@pytest.mark.parametrize("dialect", ["fanuc21", "fanuc31"])
+def test_a_hole_pattern_is_a_loop_over_its_holes_and_one_subprogram(feature, dialect):
+    moves = program_moves([feature])
+    text = write_fanuc(moves, dialect)
+    assert text.count("O1001") == 2 and text.count("M99") == 1  # called in the loop, defined once
+    assert "#110" in text and ("WHILE [#110 LT" in text if dialect == "fanuc31" else "GOTO 7000" in text)
+    motion = [line for line in text.splitlines() if line[:3] in ("G00", "G01")]
+    assert len(motion) < 12  # not one block per move: the loop makes them
+    _same(load_text(write_plain(moves)).moves, load_text(text).moves)
+
+
+@pytest.mark.parametrize("feature", FEATURES[:5], ids=lambda f: f.kind)
+def test_every_layer_of_a_pocket_slot_or_face_is_one_subprogram_in_a_loop(feature):
+    moves = program_moves([feature])
+    count = lambda text: sum(line[:3] in ("G00", "G01", "G02", "G03") for line in text.splitlines())  # noqa: E731
+    plain = count(write_plain(moves))
+    for dialect in ("fanuc21", "fanuc31"):
+        text = write_fanuc(moves, dialect)
+        assert "M99" in text and ("WHILE [" in text if dialect == "fanuc31" else "GOTO" in text)
+        assert count(text) <= 0.55 * plain, (dialect, count(text), plain)  # layer 1 is not written out

@@ -76,16 +76,17 @@ def test_a_tool_change_pause_only_where_the_tool_differs():
 
 
 BAD = [
-    (lambda: Cutting(tool_diameter=6, depth=-1), "depth", "must be > 0"),
-    (lambda: Cutting(tool_diameter=6, depth=1, stepover=0), "stepover", "must be > 0 and <= 100"),
+    (lambda: Cutting(tool_diameter=6, depth=-1), "depth",
+     "must be a number above 0 and at most 100000 (got -1)"),
+    (lambda: Cutting(tool_diameter=6, depth=1, stepover=0), "stepover", "above 0 and at most 100 (got 0)"),
     (lambda: Cutting(tool_diameter=6, depth=1, stepover=101), "stepover", "(got 101)"),
-    (lambda: Cutting(tool_diameter=0, depth=1), "tool_diameter", "must be > 0"),
+    (lambda: Cutting(tool_diameter=0, depth=1), "tool_diameter", "from 0.1 to 100000 (got 0)"),
     (lambda: Cutting(tool_diameter=6, depth=1, finish_z=1), "finish_z", "less than the depth"),
     (lambda: PocketRect(0, 0, 5, 20, CUT), "tool_diameter", "narrower than the pocket (5 mm)"),
     (lambda: PocketCircle(0, 0, 6, CUT), "tool_diameter", "narrower than the pocket"),
     (lambda: Slot(0, 0, 10, 0, 5, CUT), "tool_diameter", "wider than the slot (5 mm)"),
     (lambda: PocketRect(0, 0, 20, 10, CUT, corner_radius=6), "corner_radius", "half the smaller side"),
-    (lambda: holes_circle(0, 0, 10, 0, CUT), "count", "at least 1"),
+    (lambda: holes_circle(0, 0, 10, 0, CUT), "count", "from 1 to 10000 (got 0)"),
     (lambda: parse_contour("G00 X0 Y0\nG01 X10 Y0\nG01 X10 Y10\n", "open.nc"), "contour",
      "open.nc, line 3: the contour is not closed"),
     (lambda: parse_contour("G00 X0 Y0\nG01 X10 Y10\nG01 X10 Y0\nG01 X0 Y10\nG01 X0 Y0\n", "bow.nc"),
@@ -126,8 +127,8 @@ def test_cli_profile_from_a_contour_file(tmp_path, capsys):
 
 
 @pytest.mark.parametrize(("args", "message"), [
-    (["--stepover", "120"], "--stepover: must be > 0 and <= 100 % (got 120)"),
-    (["--depth", "-2"], "--depth: must be > 0"),
+    (["--stepover", "120"], "--stepover: must be a number above 0 and at most 100 (got 120)"),
+    (["--depth", "-2"], "--depth: must be a number above 0"),
     (["--x", "145"], "--x: X+ beyond travel"),
 ])
 def test_cli_bad_parameter_names_the_option(args, message, capsys):

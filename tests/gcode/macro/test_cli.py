@@ -12,10 +12,10 @@ def test_expand_prints_the_device_dialect_with_the_source_line(tmp_path, capsys)
     (tmp_path / "hole.ngc").write_text(SUB)
     assert main(["expand", str(tmp_path / "main.ngc")]) == 0
     plain = capsys.readouterr().out.splitlines()
-    assert plain == ["G00 X5 Y0 Z0", "G01 Z-1 F100", "G00 Z1", "M02"]
+    assert plain == ["G00 X5", "G01 Z-1 F100", "G00 Z1", "M02"]
     assert main(["expand", "--trace", str(tmp_path / "main.ngc")]) == 0
     traced = capsys.readouterr().out.splitlines()
-    assert traced == ["G00 X5 Y0 Z0 (line 2)", "G01 Z-1 F100 (hole.ngc line 2, called at line 3)",
+    assert traced == ["G00 X5 (line 2)", "G01 Z-1 F100 (hole.ngc line 2, called at line 3)",
                       "G00 Z1 (hole.ngc line 3, called at line 3)", "M02 (line 4)"]
 
 

@@ -21,7 +21,7 @@ def test_compensated_move_held_at_the_end_is_written_without_m2():
 def test_m73_state_comes_back_when_the_subroutine_returns():
     program = load_text("o100 sub\nM73\nG91\nG0 X1\no100 endsub\nG90 G0 X5\no100 call\nG0 X10\nM2\n")
     assert not program.errors
-    assert program.device_lines == ["G00 X5 Y0 Z0", "G00 X6", "G00 X10", "M02"]
+    assert program.device_lines == ["G00 X5", "G00 X6", "G00 X10", "M02"]
 
 
 def test_a_macro_reads_the_position_and_the_tool():
