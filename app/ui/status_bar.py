@@ -1,6 +1,9 @@
-"""Status bar: machine position, job progress (bar and text), elapsed and remaining."""
+"""Status bar: machine position, job progress (bar and text), elapsed and remaining, and
+the time of day the job should end."""
 
 from __future__ import annotations
+
+import time
 
 from PySide6.QtCore import QEvent
 from PySide6.QtWidgets import QLabel, QProgressBar, QStatusBar
@@ -25,6 +28,7 @@ class JobStatusBar(QStatusBar):
         self.addPermanentWidget(self.progress_text)
         self._shown: tuple | None = None  # the last progress (view, label)
         self._position: tuple | None = None
+        self.clock = time.time  # seconds since the epoch: the end time of day is now + remaining
         self.retranslate_ui()
 
     def retranslate_ui(self) -> None:
@@ -52,11 +56,16 @@ class JobStatusBar(QStatusBar):
         self._shown = (view, label, line)
         self.progress.setValue(int(round(view.percent * 10)))
         self.progress.setFormat(f"{decimal(view.percent, 1)} %")
-        remaining = "—" if view.remaining is None else format_duration(view.remaining)
         current, lines = line if line is not None else (view.done, view.total)
-        text = self.tr("line %1/%2 · elapsed %3 · remaining %4")
-        self.progress_text.setText(label + fill(text, integer(current), integer(lines),
-                                                format_duration(view.elapsed), remaining))
+        figures = [integer(current), integer(lines), format_duration(view.elapsed)]
+        if view.remaining is None:
+            text = self.tr("line %1/%2 · elapsed %3 · remaining %4")
+            figures.append("—")
+        else:
+            text = self.tr("line %1/%2 · elapsed %3 · remaining %4 · ends at %5")
+            ends = time.strftime("%H:%M", time.localtime(self.clock() + view.remaining))
+            figures += [format_duration(view.remaining), ends]
+        self.progress_text.setText(label + fill(text, *figures))
 
     def clear_progress(self) -> None:
         """No job: no figures of an earlier one stay."""

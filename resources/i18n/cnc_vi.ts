@@ -581,6 +581,10 @@
         <source>line %1/%2 · elapsed %3 · remaining %4</source>
         <translation>dòng %1/%2 · đã chạy %3 · còn lại %4</translation>
     </message>
+    <message>
+        <source>line %1/%2 · elapsed %3 · remaining %4 · ends at %5</source>
+        <translation>dòng %1/%2 · đã chạy %3 · còn lại %4 · xong lúc %5</translation>
+    </message>
 </context>
 <context>
     <name>JogPanel</name>
