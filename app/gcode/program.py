@@ -136,6 +136,11 @@ class Program:
         self.toolpath.time = est.row_seconds
         return est
 
+    @property
+    def planned_if_ready(self) -> Estimate | None:
+        """``planned`` once something has computed it, else None (never computes it)."""
+        return self.__dict__.get("planned")
+
     @cached_property
     def moves(self) -> list[dict]:
         """The interpreted motion in the ``cnc-gcode moves`` JSON format."""

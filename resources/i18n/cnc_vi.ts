@@ -2811,6 +2811,10 @@ Hình 2-D hiển thị chương trình.</translation>
         <source>cut %1 mm, rapid %2 mm, estimated %3</source>
         <translation>cắt %1 mm, chạy nhanh %2 mm, ước tính %3</translation>
     </message>
+    <message>
+        <source>program stops: %1 (tool changes: %2), not in the estimate: %3 of machine moves, plus the operator&apos;s wait</source>
+        <translation>điểm dừng chương trình: %1 (thay dao: %2), không tính vào thời gian ước tính: %3 máy chạy, cộng thời gian người vận hành chờ</translation>
+    </message>
     <message numerus="yes">
         <source>%n error(s)</source>
         <translation>

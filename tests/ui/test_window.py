@@ -119,3 +119,15 @@ def test_the_summary_says_the_planners_time_once_it_is_ready(qtbot, window):
         window.loader.shown()
     said = format_duration(prepared.args[0].program.planned.total)
     qtbot.waitUntil(lambda: said in window.program_panel.summary.text(), timeout=5_000)
+
+
+def test_the_summary_names_the_program_stops_the_estimate_leaves_out(qtbot, window, tmp_path):
+    path = tmp_path / "stops.ngc"
+    path.write_text("G21 G90\nM3 S3000\nG1 Z-1 F100\nG1 X20 F300\nM0\nT2 M6\nM3 S3000\nG1 X40\nM5\nM2\n")
+    with qtbot.waitSignal(window.loader.prepared, timeout=60_000) as prepared:
+        window.open_file(path)
+        window.loader.shown()
+    planned = prepared.args[0].program.planned
+    assert (planned.stops, planned.tool_changes) == (2, 1)
+    qtbot.waitUntil(lambda: "program stops: 2 (tool changes: 1), not in the estimate"
+                    in window.program_panel.summary.text(), timeout=5_000)

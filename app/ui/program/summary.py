@@ -57,8 +57,21 @@ def describe(program, name: str = "") -> str:
     estimated = format_duration(getattr(tp, "estimated_time", 0.0))
     parts.append(fill(QCoreApplication.translate("Summary", "cut %1 mm, rapid %2 mm, estimated %3"),
                       cut, rapid, estimated))
+    stops = _stops(getattr(program, "planned_if_ready", None))
+    if stops:
+        parts.append(stops)
     errors_said, warnings_said = texts.problems(len(errors), len(warnings))
     status = fill(QCoreApplication.translate("Summary", "%1, %2"), errors_said, warnings_said)
     colour = "#e05050" if errors else ("#c8a000" if warnings else "#39a353")
     parts.append(f"<span style='color:{colour}'>{status}</span>")
     return "<br>".join(p for p in parts if p)
+
+
+def _stops(planned) -> str:
+    """The program stops the estimate leaves out (M00, M01, M06), once the planner has run."""
+    if planned is None or not planned.stops:
+        return ""
+    said = QCoreApplication.translate("Summary", "program stops: %1 (tool changes: %2), not in the "
+                                      "estimate: %3 of machine moves, plus the operator's wait")
+    return fill(said, integer(planned.stops), integer(planned.tool_changes),
+                format_duration(planned.stop_seconds))
