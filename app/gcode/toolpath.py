@@ -7,7 +7,8 @@ rows): ``start``/``end`` (n, 3) mm, ``kind`` (RAPID, FEED, ARC_CW, ARC_CCW, DWEL
 at the profile's rapid rate, feeds capped at its maximum), ``length`` mm and ``time``
 s. The time of a move is a trapezoid: accelerate at ``accel_mm_s2`` to the feed,
 cruise, decelerate to a stop (a triangle when the move is too short); a dwell takes its
-seconds. ``Program.planned`` replaces ``time`` with the machine planner's (``estimate.py``). ``polyline(tolerance)`` gives drawable points with arcs as chords.
+seconds. ``Program.planned`` replaces ``time`` with the machine planner's (``estimate.py``).
+``polyline(tolerance)`` gives drawable points with arcs as chords.
 """
 
 from __future__ import annotations

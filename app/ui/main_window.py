@@ -91,11 +91,11 @@ class MainWindow(QMainWindow):
         from app.ui.cover_banner import CoverBanner
         from app.ui.custom_commands import CustomCommands
         from app.ui.dro import Dro
-        from app.ui.live_state import LiveState
         from app.ui.hold_jog_keys import HoldJogKeys
-        from app.ui.outline import OutlineBox
+        from app.ui.live_state import LiveState
         from app.ui.menus import build_menus
         from app.ui.operator_actions import OperatorActions
+        from app.ui.outline import OutlineBox
         from app.ui.preflight import Preflight
         from app.ui.program_stops import ProgramStops
         from app.ui.session_binder import SessionBinder

@@ -134,8 +134,6 @@ def shot_window(language: str = "en"):
     that runs the event loop until a predicate holds (TimeoutError after its seconds)."""
     from app.ui.language import apply_language
     from app.ui.main import make_app
-    from app.ui.main_window import MainWindow
-    from app.ui.notifier import Notifier
 
     app = make_app()
     apply_language(language)
@@ -148,11 +146,19 @@ def shot_window(language: str = "en"):
             app.processEvents()
             time.sleep(0.005)
 
+    return fresh_window(), wait
+
+
+def fresh_window():
+    """A shown 1600 x 1000 window with settings of its own (a new folder)."""
+    from app.ui.main_window import MainWindow
+    from app.ui.notifier import Notifier
+
     config = Path(tempfile.mkdtemp(prefix="cnc-config-"))
     window = MainWindow(config_dir=config, notifier=Notifier(show_boxes=False), restore=False)
     window.resize(1600, 1000)
     window.show()
-    return window, wait
+    return window
 
 
 def main(out: str = "docs/screenshots", language: str = "en") -> int:
@@ -160,10 +166,7 @@ def main(out: str = "docs/screenshots", language: str = "en") -> int:
     shots = [preview_shot(window, wait, Path(out)), settings_shot(window, wait, Path(out))]
     shots += job_shot(window, wait, Path(out))
     window.close()
-    config = Path(tempfile.mkdtemp(prefix="cnc-config-"))
-    states = MainWindow(config_dir=config, notifier=Notifier(show_boxes=False), restore=False)
-    states.resize(1600, 1000)
-    states.show()
+    states = fresh_window()
     shots += states_shots(states, wait, Path(out))
     states.close()
     print("\n".join(str(p) for p in shots))
