@@ -111,6 +111,7 @@ def garbage_at_rest(kit: Kit) -> None:
     """Random bytes (all 256 values, bursts of 1-200) at a machine at rest start nothing."""
     link = kit.link
     kit.ensure_idle()
+    link.idle(0.6)  # statuses still on their way (an `S` names no command) are read first
     before = kit.status_until(lambda st: True)
     rng, sent = random.Random(), 0
     seed = rng.randrange(1 << 30)

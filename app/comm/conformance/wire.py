@@ -35,6 +35,7 @@ _INT = r"-?[0-9]+"
 _SEQ = r"[0-9]+"
 _NUM = r"-?[0-9]{1,6}(?:\.[0-9]+)?"
 _WORD = r"[A-Z][A-Z0-9_]*"
+_PCT = r"[1-9][0-9]{0,2}"  # an override's percentage ("Overrides")
 # Machine -> host, one pattern per kind: the fields after the kind letter.
 _GRAMMAR = {
     "A": re.compile(rf"({_SEQ}) ({_SEQ})"),
@@ -44,7 +45,7 @@ _GRAMMAR = {
     "E": re.compile(rf"({_SEQ}|-) ({_WORD})(?: (.*))?"),
     "S": re.compile(
         rf"([0-9A-F]{{1,8}}) ({'|'.join(STATES)}) ({_NUM}) ({_NUM}) ({_NUM}) ({_INT}) ({_INT}) "
-        rf"({_SEQ}) ({_SEQ}) ([{FLAGS}]+|-)(?: ({'|'.join(WHY)}|-))?"
+        rf"({_SEQ}) ({_SEQ}) ([{FLAGS}]+|-)(?: ({'|'.join(WHY)}|-)(?: ({_PCT}/{_PCT}/{_PCT}))?)?"
     ),
     "X": re.compile(rf"({_WORD})(?: (.*))?"),
     "I": re.compile(rf"({_SEQ}) (.+)"),
@@ -148,6 +149,7 @@ class Status:
     rpm: str
     flags: str
     why: str | None = None  # None: a status of ten fields (a machine from before `why`)
+    ovr: str | None = None  # `<feed>/<spindle>/<rapid>`; None: a status without it (optional)
 
     def has(self, flag: str) -> bool:
         return flag in self.flags
