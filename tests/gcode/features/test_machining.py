@@ -168,3 +168,18 @@ def test_the_issue_pocket_is_roughed_now():
     feature = PocketRect(20, 20, 40, 25, Cutting(tool_diameter=6, depth=3, finish_xy=3))
     _pocket_checks(feature)
     assert np.isclose(min(m.end[2] for m in toolpath(feature)), -3)
+
+
+TYPICAL_CUT = Cutting(tool_diameter=6, depth=3, stepdown=1, finish_xy=0.2, finish_z=0.2)
+
+
+@pytest.mark.parametrize("make", [
+    lambda: PocketRect(20, 20, 40, 25, TYPICAL_CUT, corner_radius=4, angle=15),
+    lambda: PocketCircle(60, 60, 30, TYPICAL_CUT),
+    lambda: Slot(20, 20, 60, 40, 8, TYPICAL_CUT),
+    lambda: Profile(parse_contour(PAPER, "c.nc"), "inside", TYPICAL_CUT),
+], ids=["rect", "circle", "slot", "contour"])
+def test_typical_pockets_are_accepted_and_checked(make):
+    """The property tests skip what the validator refuses: here a typical feature of each
+    kind must be accepted and pass the same checks, so they can never check nothing."""
+    _pocket_checks(make())
