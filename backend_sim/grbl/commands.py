@@ -1,7 +1,8 @@
 """The simulated GRBL's ``$`` system commands and real-time bytes (a mixin of
 ``GrblMachine``), as GRBL 1.1's commands documentation describes them:
 
-``$`` help, ``$$`` settings, ``$x=val`` (idle only: error 8), ``$#`` parameters,
+``$`` help, ``$$`` settings, ``$x=val`` (idle or alarm only: error 8; deaf while it writes
+its EEPROM, ``machine.EEPROM_WRITE_MS``), ``$#`` parameters,
 ``$G`` parser state, ``$I`` build info, ``$N`` startup lines (none stored), ``$C``
 check mode (leaving it resets), ``$X`` unlock, ``$H`` homing (``$22`` off: error 5),
 ``$J=`` jog (G91/G90, G20/G21, G53, X Y Z and a required F; soft limits: error 15),
@@ -60,7 +61,7 @@ class SystemCommands:
         except ValueError as exc:
             self.write(f"error:{exc.args[0]}")
             return
-        self.write("ok")
+        self.eeprom_until_ms = self.clock.now_ms + self.EEPROM_WRITE_MS  # "ok" once written
 
     def _print_parameters(self) -> None:
         for row in reports.parameters(self):
