@@ -39,8 +39,7 @@ class GrblAlarmBar(QObject):
         self.bar.setObjectName("grbl_alarm_toolbar")
         self.bar.setMovable(False)
         self.bar.addWidget(self.label)
-        for button in self.buttons.values():
-            self.bar.addWidget(button)
+        self.placed = {key: self.bar.addWidget(button) for key, button in self.buttons.items()}
         window.addToolBar(self.bar)
         self.bar.setVisible(False)
         worker = window.link.worker
@@ -74,15 +73,16 @@ class GrblAlarmBar(QObject):
     def _show_text(self) -> None:
         self.label.setText(self.tr("MACHINE LOCKED (alarm): %1").replace("%1", self.advice()))
         needs_reset = self.code in RESET_FIRST and not self.reset_sent
-        self.buttons["reset"].setVisible(needs_reset)
-        for key in ("home", "unlock"):
-            self.buttons[key].setVisible(not needs_reset)
+        for key, action in self.placed.items():  # a toolbar shows its widgets through their actions
+            action.setVisible(needs_reset == (key == "reset"))
 
     def on_alarm(self, event) -> None:
+        """An ``ALARM:N``: shown at once (after a hard or soft limit GRBL sends no report
+        until it is reset)."""
         number = alarm_number(event.code)
         if number is not None:
             self.code, self.reset_sent = number, False
-            self._show_text()
+            self._show(True)
 
     def on_machine_started(self, _info) -> None:
         """A welcome (reset or power-up): the alarm before it has been dealt with."""
@@ -90,9 +90,12 @@ class GrblAlarmBar(QObject):
         self._show_text()
 
     def on_status(self, event) -> None:
-        locked = event.state == "ALARM" and getattr(self.w.link.capabilities, "unlock", False)
+        self._show(event.state == "ALARM" or self.code in RESET_FIRST)
+
+    def _show(self, locked: bool) -> None:
+        locked = locked and getattr(self.w.link.capabilities, "unlock", False)
+        self._show_text()
         if locked and not self.shown:
-            self._show_text()
             self.bar.setVisible(True)
             self.w.status.showMessage(self.tr("Machine locked: %1").replace("%1", self.advice()))
         elif not locked and self.shown:

@@ -3,7 +3,8 @@
 A backup file is GRBL's own ``$$`` print-out: one ``$n=value`` per line (comments after
 ``;`` or ``(``, blank lines allowed), so a file saved by another sender reads too.
 ``read_backup(text, name)`` -> ``{n: value}``, ``ValueError`` naming the file and line of
-a bad line, of a setting given twice, or a file with no setting at all; ``write_backup(settings)`` -> text; ``diff_settings(current, wanted)`` ->
+a bad line, of a setting given twice, or a file with no setting at all;
+``write_backup(settings)`` -> text; ``diff_settings(current, wanted)`` ->
 ``SettingChange`` rows (``old``/``new`` None for a setting only one side has), values
 compared as numbers; ``table(settings)`` -> rows of number, value, name, unit, meaning.
 """
