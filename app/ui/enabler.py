@@ -83,8 +83,9 @@ def apply(window, inputs: Inputs) -> dict[str, Verdict]:
 def _set_reason(target, reason: str) -> None:
     tip, old = target.toolTip(), target.property(SUFFIX) or ""
     base = tip[: -len(old)] if old and tip.endswith(old) else tip
-    if isinstance(target, QAction) and base == target.text().replace("&", ""):
-        base = ""  # a QAction's tooltip defaults to its text
+    plain = target.text().replace("&", "") if isinstance(target, QAction) else None
+    if plain is not None and base in (plain, plain.removesuffix("…")):
+        base = ""  # a QAction's tooltip defaults to its text (without the ellipsis)
     suffix = "" if not reason else ("\n" if base else "") + QCoreApplication.translate(
         "StateTable", "Not now: %1").replace("%1", reason)
     target.setProperty(SUFFIX, suffix)
