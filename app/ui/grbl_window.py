@@ -83,6 +83,9 @@ class GrblWindow(QObject):
         if result.verb == "$$":
             self.settings = settings_of(result.rows)
             self.settings_changed.emit()
+        elif settings_of([result.verb]) and self.settings:  # a write from anywhere (the console too)
+            self.settings.update(settings_of([result.verb]))
+            self.settings_changed.emit()
         elif result.verb == "$G":
             words = next((row[4:-1] for row in result.rows if row.startswith("[GC:")), None)
             if words is not None:
