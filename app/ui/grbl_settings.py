@@ -195,9 +195,12 @@ class GrblSettingsDialog(QDialog):
                 return False
         try:
             wanted = read_backup(read_config(path), Path(path).name)
-        except (OSError, ValueError) as exc:
-            text = localize(exc.args[0]) if exc.args and isinstance(exc.args[0], str) else str(exc)
-            self.say(fill(self.tr("Backup not read, nothing changed: %1"), text))
+        except OSError as exc:
+            why = self.tr("no such file") if isinstance(exc, FileNotFoundError) else exc.strerror or str(exc)
+            self.say(fill(self.tr("Backup not read, nothing changed: %1"), f"{path}: {why}"))
+            return False
+        except ValueError as exc:  # the reader's message names the file and the line
+            self.say(fill(self.tr("Backup not read, nothing changed: %1"), localize(exc.args[0])))
             return False
         unknown = sorted(n for n in wanted if n not in self.current)
         self.want({n: v for n, v in wanted.items() if n in self.current})

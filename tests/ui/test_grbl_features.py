@@ -90,6 +90,13 @@ def test_a_malformed_backup_is_refused_naming_file_and_line_and_nothing_changes(
     assert not dialog.pending and dialog.changes.count() == 0
 
 
+def test_a_missing_backup_is_named(qtbot, make_window, tmp_path):
+    window, _machine = connect_grbl(qtbot, make_window)
+    dialog = window.grbl.open_settings()
+    assert not dialog.restore(str(tmp_path / "gone.txt"))
+    assert "gone.txt: no such file" in dialog.note.text() and not dialog.pending
+
+
 def test_the_frame_protocols_mill_has_no_settings_table_and_says_why():
     verdict = decide("machine_settings", Inputs(Link.UP, Machine.IDLE, True, capabilities=FRAME_CAPABILITIES))
     assert not verdict.allowed and "File > Settings" in verdict.reason
