@@ -6,7 +6,8 @@ feeds; on the frame protocol's mill it stays out of the way.
   state table's ``machine_settings`` control (off, with a word why, on a machine
   without a settings table of its own).
 - *Machine > Unlock ($X)* and the alarm banner (``app/ui/grbl_alarm.py``).
-- ``$G``: the machine's modal state into the live modal state panel between jobs;
+- ``$G``: the machine's modal state (with ``$#``'s G92 offset) into the live modal state
+  panel between jobs;
   ``$#`` and ``$G`` again after every job and MDI line (a program may change the
   work systems), through the DRO's own reading (``GET WCS``, which the GRBL session
   answers from ``$#`` and ``$G``).
@@ -41,6 +42,18 @@ def settings_of(rows) -> dict[int, str]:
     return out
 
 
+def g92_of(rows) -> str:
+    """The ``[G92:x,y,z]`` row of a ``$#`` answer as ``X.. Y.. Z..`` ("" when all are 0)."""
+    for row in rows:
+        if row.startswith("[G92:") and row.endswith("]"):
+            try:
+                values = [float(v) for v in row[5:-1].split(",")]
+            except ValueError:
+                return ""
+            return " ".join(f"{a}{v:g}" for a, v in zip("XYZ", values, strict=False)) if any(values) else ""
+    return ""
+
+
 class GrblWindow(QObject):
     settings_changed = Signal()
 
@@ -50,6 +63,7 @@ class GrblWindow(QObject):
         self.settings: dict[int, str] = {}
         self.dialog = None
         self.why = ""  # the hold last shown in the status bar
+        self.g92 = ""  # the G92 offset of the last $# ("" when none is in force)
         self.alarm = GrblAlarmBar(window)
         self.actions = self._add_actions(window)
         worker = window.link.worker
@@ -86,10 +100,14 @@ class GrblWindow(QObject):
         elif settings_of([result.verb]) and self.settings:  # a write from anywhere (the console too)
             self.settings.update(settings_of([result.verb]))
             self.settings_changed.emit()
+        elif result.verb == "$#":
+            self.g92 = g92_of(result.rows)
         elif result.verb == "$G":
             words = next((row[4:-1] for row in result.rows if row.startswith("[GC:")), None)
             if words is not None:
-                self.w.live_panel.show_machine(machine_modes(words))
+                view = machine_modes(words)
+                view.g92 = self.g92
+                self.w.live_panel.show_machine(view)
 
     def on_job_finished(self, event) -> None:
         if event.kind == "job" and self.on_grbl:

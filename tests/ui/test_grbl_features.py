@@ -153,6 +153,7 @@ def test_offsets_and_modal_state_come_from_dollar_hash_and_dollar_g(qtbot, make_
     here = machine.mpos()[0]
     qtbot.waitUntil(lambda: machine.gcode.offsets[1][0] == pytest.approx(here, abs=1e-3), timeout=WAIT)
     assert machine.gcode.offsets[0][0] == pytest.approx(-150)  # G54 untouched
+    assert panel.values["g92"].text() == "not in force"
     qtbot.waitUntil(lambda: dro.systems.rows[55][0] == pytest.approx(here + 150, abs=1e-3), timeout=WAIT)
 
 
@@ -167,3 +168,14 @@ def test_override_sliders_drive_grbls_real_time_bytes_and_show_what_it_reports(q
     qtbot.waitUntil(lambda: window.binder.status.overrides == (133, 80, 25), timeout=WAIT)
     assert machine.overrides == [133, 25, 80]  # GRBL's own order: feed, rapid, spindle
     qtbot.waitUntil(lambda: "feed 133 %, spindle 80 %, rapid 25 %" in panel.machine.text(), timeout=WAIT)
+
+
+def test_g92_from_dollar_hash_reaches_the_live_modal_panel_after_an_mdi_line(qtbot, make_window):
+    window, machine = connect_grbl(qtbot, make_window)
+    window.grbl.alarm.buttons["home"].click()
+    qtbot.waitUntil(lambda: window.binder.status.homed and window.binder.status.state == "IDLE", timeout=WAIT)
+    window.link.call("send_command", "G92 X5")  # as another sender would leave it (programs expand G92 here)
+    qtbot.waitUntil(lambda: machine.gcode.g92[0] != 0, timeout=WAIT)
+    window.operator.mdi("G0 Z-1")  # a job's end reads $# and $G again
+    qtbot.waitUntil(lambda: window.live_panel.values["g92"].text().startswith("X"), timeout=WAIT)
+    assert window.live_panel.values["g92"].text() == f"X{machine.gcode.g92[0]:g} Y0 Z0"
