@@ -179,3 +179,20 @@ def test_g92_from_dollar_hash_reaches_the_live_modal_panel_after_an_mdi_line(qtb
     window.operator.mdi("G0 Z-1")  # a job's end reads $# and $G again
     qtbot.waitUntil(lambda: window.live_panel.values["g92"].text().startswith("X"), timeout=WAIT)
     assert window.live_panel.values["g92"].text() == f"X{machine.gcode.g92[0]:g} Y0 Z0"
+
+
+def test_the_grbl_features_speak_vietnamese(qtbot, make_window):
+    from app.ui.language import apply_language
+
+    apply_language("vi")
+    window, _machine = connect_grbl(qtbot, make_window)
+    bar = window.grbl.alarm
+    qtbot.waitUntil(lambda: bar.shown, timeout=WAIT)
+    assert bar.label.text().startswith("MÁY ĐANG KHÓA (báo động): Máy khởi động ở trạng thái khóa")
+    assert bar.buttons["unlock"].text() == "Mở khóa ($X)"
+    dialog = window.grbl.open_settings()
+    row = next(r for r in range(dialog.table.rowCount()) if dialog.table.item(r, 0).text() == "$130")
+    assert dialog.table.item(row, 3).text() == "hành trình tối đa trục X"
+    dialog.table.item(row, 1).setText("140,5")  # typed with a decimal comma
+    assert dialog.changes.item(0).text().startswith("$130 (hành trình tối đa trục X): 150.000 -> 140.5")
+    assert window.grbl.actions["machine_settings"].text() == "Cài đặt của &máy ($$)…"
