@@ -110,9 +110,13 @@ class GrblWindow(QObject):
                 self.w.live_panel.show_machine(view)
 
     def on_job_finished(self, event) -> None:
-        if event.kind == "job" and self.on_grbl:
+        """After a job or MDI line: the work systems (not in check mode, where GRBL refuses
+        ``$#`` and a program changed nothing) and the modal state again."""
+        if event.kind != "job" or not self.on_grbl:
+            return
+        if not self.w.controls.check_mode.isChecked():
             self.w.dro.read_all()
-            self.w.link.call("send_command", "$G")
+        self.w.link.call("send_command", "$G")
 
     def on_status(self, event) -> None:
         """GRBL's hold and door states in words (``binder.on_hold``: the mill's hold reasons)."""

@@ -123,3 +123,14 @@ def test_a_reset_brings_the_overrides_back_to_100(grbl):
     assert grbl.machine.overrides == [120, 100, 90]
     grbl.say(b"\x18")
     assert grbl.machine.overrides == [100, 100, 100]
+
+
+def test_settings_and_parameters_wait_for_idle_or_alarm_as_grbl_does(grbl):
+    grbl.say(b"$X\n")
+    assert grbl.say(b"$C\n").endswith("ok\r\n")
+    assert grbl.say(b"$#\n") == "error:8\r\n" and grbl.say(b"$1=30\n") == "error:8\r\n"
+    assert grbl.say(b"$$\n").endswith("ok\r\n")  # only a cycle or a hold blocks the print-out
+    grbl.say(b"$C\n")  # leaving check mode resets
+    grbl.say(b"$X\n")
+    assert grbl.say(b"G1 X100 F300\n", 0.3) == "ok\r\n"
+    assert grbl.say(b"$$\n") == "error:8\r\n" and grbl.say(b"$#\n") == "error:8\r\n"
