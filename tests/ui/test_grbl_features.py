@@ -196,3 +196,14 @@ def test_the_grbl_features_speak_vietnamese(qtbot, make_window):
     dialog.table.item(row, 1).setText("140,5")  # typed with a decimal comma
     assert dialog.changes.item(0).text().startswith("$130 (hành trình tối đa trục X): 150.000 -> 140.5")
     assert window.grbl.actions["machine_settings"].text() == "Cài đặt của &máy ($$)…"
+
+
+def test_on_the_mill_the_grbl_controls_are_off_with_a_word_why(qtbot, window):
+    window.connection.button.click()  # the built-in simulator of the student mill
+    qtbot.waitUntil(lambda: window.binder.connected and window.binder.status is not None, timeout=WAIT)
+    qtbot.waitUntil(lambda: window.binder.inputs().link is Link.UP, timeout=WAIT)
+    settings, unlock = window.grbl.actions["machine_settings"], window.grbl.actions["unlock"]
+    assert not settings.isEnabled() and "its settings are in File > Settings" in settings.toolTip()
+    assert not unlock.isEnabled() and "no alarm lock" in unlock.toolTip()
+    assert window.grbl.open_settings() is None and window.grbl.dialog is None
+    assert not window.grbl.alarm.shown
