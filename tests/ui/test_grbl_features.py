@@ -207,3 +207,21 @@ def test_on_the_mill_the_grbl_controls_are_off_with_a_word_why(qtbot, window):
     assert not unlock.isEnabled() and "no alarm lock" in unlock.toolTip()
     assert window.grbl.open_settings() is None and window.grbl.dialog is None
     assert not window.grbl.alarm.shown
+
+
+def test_a_check_mode_line_keeps_the_work_systems_grbl_will_not_print_then(qtbot, make_window):
+    window, machine = connect_grbl(qtbot, make_window)
+    unlocked(qtbot, window)
+    dro = window.dro
+    qtbot.waitUntil(lambda: bool(dro.systems.supported) and None not in dro.systems.rows[59], timeout=WAIT)
+    window.controls.check_mode.setChecked(True)
+    qtbot.waitUntil(lambda: machine.check_mode, timeout=WAIT)
+    window.operator.mdi("G0 Z-1")
+    qtbot.waitUntil(lambda: window.binder.last_job_event is not None, timeout=WAIT)
+    assert window.binder.last_job_event.completed
+    qtbot.waitUntil(lambda: panel_codes(window).startswith("G0 "), timeout=WAIT)  # $G read again
+    assert dro.systems.supported and dro.systems.rows[54] == [0.0, 0.0, 20.0]
+
+
+def panel_codes(window) -> str:
+    return window.live_panel.values["codes"].text()
