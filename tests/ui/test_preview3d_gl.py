@@ -40,7 +40,9 @@ def test_under_xvfb(qapp):
     if shutil.which("xvfb-run") is None:
         pytest.skip(f"no OpenGL here ({reason}) and no xvfb-run to start a display")
     env = dict(os.environ, QT_QPA_PLATFORM="xcb", **{CHILD: "1"})
-    files = [__file__, str(ROOT / "tests" / "ui" / "test_preview3d_screens.py")]
+    files = [__file__, *(
+        str(ROOT / "tests" / "ui" / f"test_preview3d_{name}.py")
+        for name in ("full", "screens"))]
     run = subprocess.run(["xvfb-run", "-a", "-s", "-screen 0 1600x1000x24", sys.executable, "-m", "pytest",
                           "-q", "-p", "no:cacheprovider", "-k", "not test_under_xvfb", *files],
                          cwd=ROOT, env=env, capture_output=True, text=True, timeout=280)
@@ -136,6 +138,7 @@ def test_full_detail_in_slices_is_the_same_picture_and_progress_draws_only_what_
     gl = gl_view.gl
     whole = _frame(gl_view)
     gl.direct_segments = 0  # in slices however small
+    gl.full_cell_pixels = 0  # of every segment (test_preview3d_full: a level's full detail)
     gl._full.slice_segments = 7  # the first slice: 7 of the star's segments, then sized to the renderer
     slices = []
     cut = gl._full.slice

@@ -10,9 +10,18 @@ the last frame over what is drawn already (O(new segments): progress never redra
 the rest), ``slice`` the next ``slice_segments``, sized so that the renderer takes
 about SLICE_S for one (``tune``); ``blit`` copies it to the widget. Until
 ``complete``, the caller shows a level of detail instead.
+
+What it draws is a ``FullSource``: the whole path as one line strip (units: segments,
+``draw(a, b)`` draws segments a+1..b, done up to the finished vertex), or a level of
+detail that looks the same at this zoom (units: spans, ``draw(a, b)`` spans a..b-1,
+done: the spans ending at or before the finished vertex, a prefix).
 """
 
 from __future__ import annotations
+
+import ctypes
+from collections.abc import Callable
+from dataclasses import dataclass
 
 from PySide6.QtCore import QSize
 from PySide6.QtOpenGL import QOpenGLFramebufferObject
@@ -21,6 +30,29 @@ SLICE_SEGMENTS = 250_000  # the first slice; then sized to SLICE_S
 SLICE_S = 0.02  # rendering a slice (the window's stall budget is 50 ms: room for a renderer that slows)
 MIN_SLICE, MAX_SLICE = 50_000, 4_000_000
 GL_COLOR_BUFFER_BIT, GL_DEPTH_BUFFER_BIT = 0x4000, 0x0100
+GL_LINES, GL_LINE_STRIP, GL_UNSIGNED_INT = 0x0001, 0x0003, 0x1405
+
+
+@dataclass(frozen=True)
+class FullSource:
+    name: tuple  # ("strip",) or ("level", index): part of the picture's key
+    total: int  # units
+    done: int  # units finished
+    draw: Callable[[int, int], None]  # draw(first, last) with the bound program and buffers
+
+    @classmethod
+    def strip(cls, f, vertices: int, done_vertex: int) -> FullSource:
+        return cls(("strip",), vertices - 1, done_vertex,
+                   lambda first, last: f.glDrawArrays(GL_LINE_STRIP, first, last - first + 1))
+
+    @classmethod
+    def spans(cls, draw_elements, level, index: int, done_vertex: int) -> FullSource:
+        """``level``'s spans from its index buffer (bound), drawn by ``draw_elements``
+        (glDrawElements with a byte offset into the bound buffer)."""
+        def draw(first: int, last: int) -> None:
+            draw_elements(GL_LINES, 2 * (last - first), GL_UNSIGNED_INT, ctypes.c_void_p(8 * first))
+
+        return cls(("level", index), len(level.ends), level.spans_done(done_vertex), draw)
 
 
 class FullFrame:
@@ -49,25 +81,25 @@ class FullFrame:
         f.glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT)
         self.fbo.release()
 
-    def overdraw(self, draw_strip, done: int) -> None:
-        """``draw_strip(first, last)`` draws vertices first..last as a line strip with the
-        current uniforms: here the segments finished since the last call, over what is
-        drawn already (the rest of them is drawn finished by the slices to come)."""
+    def overdraw(self, draw, done: int) -> None:
+        """``draw(first, last)`` (a ``FullSource``'s) draws the units finished since the last
+        call, over what is drawn already (the rest of them is drawn finished by the slices
+        to come)."""
         if done > self.done:
             low, high = max(self.done, 0), min(done, self.next)
             if high > low:
                 self.fbo.bind()
-                draw_strip(low, high)
+                draw(low, high)
                 self.fbo.release()
             self.done = done
 
-    def slice(self, draw_strip) -> int:
+    def slice(self, draw) -> int:
         """Draw the next slice; returns its segments (0 when the picture is whole)."""
         if self.next >= self.total:
             return 0
         end = min(self.next + self.slice_segments, self.total)
         self.fbo.bind()
-        draw_strip(self.next, end)
+        draw(self.next, end)
         self.fbo.release()
         sliced, self.next = end - self.next, end
         return sliced
