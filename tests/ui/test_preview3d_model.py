@@ -1,5 +1,5 @@
 """The 3-D view's model without a GPU: mesh, levels of detail, camera, measured path,
-scene lines and the window feed."""
+and scene lines."""
 
 from __future__ import annotations
 
@@ -10,12 +10,10 @@ import numpy as np
 import pytest
 
 from app.gcode import load_text
-from app.ui.plot.history import PositionHistory
 from app.ui.preview.geometry import RAPID_GROUP
 from app.ui.preview.model import PreviewModel
 from app.ui.preview3d import scene
 from app.ui.preview3d.camera import PRESETS, Camera
-from app.ui.preview3d.feed import WindowFeed
 from app.ui.preview3d.measured import RAMP, TOLERANCE_MM, MeasuredPath, deviation_colour
 from app.ui.preview3d.mesh import PathMesh
 
@@ -223,40 +221,3 @@ def test_program_tool_and_its_diameter():
     assert scene.tool_diameter(tools, 5) == (1.5, 5)
     assert scene.tool_diameter(tools, 7) == (6.0, 2)  # not in the table: its first tool
     assert scene.tool_diameter({}, 7) == (scene.DEFAULT_DIAMETER, None)
-
-
-def _window(history):
-    binder = SimpleNamespace(job=None, job_done=-1, last_job_event=None, status=None)
-    return SimpleNamespace(loaded=None, history=history, binder=binder, tools={})
-
-
-def test_feed_takes_the_history_only_while_a_job_runs():
-    history = PositionHistory(capacity=100)
-    window = _window(history)
-    feed = WindowFeed(window)
-    assert feed.poll().tools == {}
-    history.append(0.0, (1, 1, 1))
-    assert feed.poll().measured is None  # no job
-    loaded = SimpleNamespace(program=object(), preview=None)
-    window.loaded = loaded
-    change = feed.poll()
-    assert change.loaded is loaded and not change.same_program
-    window.loaded = SimpleNamespace(program=loaded.program, preview=None)  # refined
-    assert feed.poll().same_program
-    window.binder.job, window.binder.job_done = loaded, -1
-    history.append(1.0, (2, 2, 2), (2, 2, 2.05))
-    history.append(2.0, (3, 3, 3), (3, 3, 3))
-    change = feed.poll()
-    assert change.job_started
-    np.testing.assert_allclose(change.measured, [[2, 2, 2], [3, 3, 3]])
-    np.testing.assert_allclose(change.commanded, [[2, 2, 2.05], [3, 3, 3]])
-    window.binder.job_done = 40
-    window.binder.status = SimpleNamespace(x=1.0, y=2.0, z=3.0)
-    change = feed.poll()
-    assert change.done_seq == 40 and change.tool == (1.0, 2.0, 3.0) and not change.job_started
-    assert feed.poll() == type(change)()  # nothing changed: nothing said
-    window.binder.last_job_event = object()  # the job ended: rows are not the job's
-    history.append(3.0, (4, 4, 4))
-    assert feed.poll().measured is None
-    window.binder.last_job_event = None  # the same program again
-    assert feed.poll().job_started

@@ -6,8 +6,8 @@ a reason (no context, too old a version) leaves a message in its place, says so 
 ``unavailable``, and the window keeps its 2-D view. The GL widget is made the first
 time the view is shown, and the mesh of a program is built then, on a thread
 (``MeshBuilder``): the positions first, drawn at once, then the levels of detail.
-``follow(window)`` reads the open program, the job's progress, the tool position and
-the measured path from the window at 30 Hz (``feed.WindowFeed``).
+``follow(window)`` follows the open program, the job's progress, the tool position and
+the measured path by the window's signals (``feed.WindowFeed``).
 """
 
 from __future__ import annotations
@@ -15,7 +15,7 @@ from __future__ import annotations
 import threading
 
 import numpy as np
-from PySide6.QtCore import QCoreApplication, QEvent, QObject, Qt, QTimer, Signal
+from PySide6.QtCore import QCoreApplication, QEvent, QObject, Qt, Signal
 from PySide6.QtGui import QColor, QGuiApplication, QOffscreenSurface, QOpenGLContext
 from PySide6.QtWidgets import QHBoxLayout, QLabel, QPushButton, QStackedWidget, QVBoxLayout, QWidget
 
@@ -28,7 +28,6 @@ from app.ui.preview3d.feed import WindowFeed
 from app.ui.preview3d.measured import TOLERANCE_MM, MeasuredPath, deviation_colour
 from app.ui.preview3d.mesh import PathMesh
 
-FOLLOW_MS = 33
 AXIS_FRACTION = 0.12  # axes as long as this much of the travel
 JUMP_HALF_HEIGHT = 4.0  # mm of view around the largest deviation
 NO_GL_WIDGETS = ("offscreen", "minimal")  # Qt platforms whose windows cannot show a QOpenGLWidget
@@ -111,8 +110,7 @@ class Preview3D(QWidget):
         self.builder.levels_built.connect(self._levels_built)
         self._built_for = None  # the model whose mesh was asked for
         self._done_seq = -1
-        self._feed = None
-        self._follow = QTimer(self, interval=FOLLOW_MS, timeout=self._poll)
+        self.feed = None
         self._build_ui()
         self.retranslate_ui()
 
@@ -292,24 +290,8 @@ class Preview3D(QWidget):
     # -- a job ----------------------------------------------------------------------------
 
     def follow(self, window) -> None:
-        """Follow ``window``'s program, job, tool and measured path (polled at 30 Hz)."""
-        self._feed = WindowFeed(window)
-        self._follow.start()
-
-    def _poll(self) -> None:
-        change = self._feed.poll()
-        if change.tools is not None:
-            self.set_tools(change.tools)
-        if change.loaded is not None:
-            self.show_model(change.loaded.preview, change.loaded.program, keep_camera=change.same_program)
-        if change.job_started:
-            self.begin_job()
-        if change.done_seq is not None:
-            self.set_done(change.done_seq)
-        if change.tool is not None:
-            self.set_tool(*change.tool)
-        if change.measured is not None:
-            self.add_measured(change.measured, change.commanded)
+        """Follow ``window``'s program, job, tool and measured path (by its signals)."""
+        self.feed = WindowFeed(window, self)
 
     def begin_job(self) -> None:
         self.measured.clear()
