@@ -194,3 +194,26 @@ def test_a_shader_that_does_not_compile_leaves_the_message(qtbot, monkeypatch):
         view.show()
     assert failed.args[0] and view.gl is None
     assert view.stack.currentWidget() is view.message and "cannot start" in view.message.text()
+
+
+def test_coming_back_to_a_pose_shows_its_picture_at_once(qtbot, gl_view):
+    program = _show_star(qtbot, gl_view)
+    gl = gl_view.gl
+    gl.direct_segments = 0  # in slices, as a big program is
+    gl.full_cell_pixels = 0
+    seen, slices = [], []
+    gl.frame_drawn.connect(lambda: seen.append(gl.drawn))
+    cut = gl._full.slice
+    gl._full.slice = lambda draw: slices.append(cut(draw)) or slices[-1]
+    for name in ("top", "isometric"):
+        gl_view.preset(name)
+        qtbot.waitUntil(lambda: bool(seen) and seen[-1][0] == "full")
+    undone = _frame(gl_view)
+    gl_view.set_done(len(program.device_lines) // 2)  # progress while away: drawn over on return
+    qtbot.waitUntil(lambda: bool(seen) and seen[-1][0] == "full")
+    seen.clear()
+    slices.clear()
+    gl_view.preset("top")
+    qtbot.waitUntil(lambda: bool(seen))
+    assert seen[0][0] == "full" and not slices  # no slice drawn again
+    assert _count(_frame(gl_view), DONE_COLOUR) > 20 and _count(undone, DONE_COLOUR) == 0

@@ -4,8 +4,9 @@ between frames, so the GUI thread never draws millions of segments at once.
 A software renderer draws about ten million short segments a second; a frame of two
 million would hold the window for a fifth of a second, and a job's progress redraws
 it at the status rate. ``FullFrame`` keeps the picture of the whole path for one
-camera: ``prepare`` starts it again when the camera, the model, the size changed or
-the finished part shrank (a new run), ``overdraw`` draws the segments finished since
+camera, and the POSES before it (a preset or a fit the camera comes back to is shown
+at once): ``prepare`` starts it again when no kept picture has this camera, model and
+size with less finished (a new run shrinks it), ``overdraw`` draws the segments finished since
 the last frame over what is drawn already (O(new segments): progress never redraws
 the rest), ``slice`` the next ``slice_segments``, sized so that the renderer takes
 about SLICE_S for one (``tune``); ``blit`` copies it to the widget. Until
@@ -29,6 +30,7 @@ from PySide6.QtOpenGL import QOpenGLFramebufferObject
 SLICE_SEGMENTS = 250_000  # the first slice; then sized to SLICE_S
 SLICE_S = 0.02  # rendering a slice (the window's stall budget is 50 ms: room for a renderer that slows)
 MIN_SLICE, MAX_SLICE = 50_000, 4_000_000
+POSES = 3  # pictures kept besides the one shown (the camera comes back to a preset, a fit)
 GL_COLOR_BUFFER_BIT, GL_DEPTH_BUFFER_BIT = 0x4000, 0x0100
 GL_LINES, GL_LINE_STRIP, GL_UNSIGNED_INT = 0x0001, 0x0003, 0x1405
 
@@ -60,26 +62,46 @@ class FullFrame:
         self.slice_segments = slice_segments
         self.fbo: QOpenGLFramebufferObject | None = None
         self.key = None
-        self.next = 0  # segments up to this vertex are drawn
-        self.total = 0  # the last vertex of the model
-        self.done = -1  # the finished part drawn so far (last vertex)
+        self.next = 0  # units up to this one are drawn
+        self.total = 0  # units of the picture
+        self.done = -1  # the finished units drawn so far
+        self._kept: list[tuple] = []  # earlier pictures (fbo, key, next, total, done), oldest first
 
     @property
     def complete(self) -> bool:
         return self.fbo is not None and self.next >= self.total
 
+    def _state(self) -> tuple:
+        return self.fbo, self.key, self.next, self.total, self.done
+
     def prepare(self, f, key, size: QSize, total: int, done: int) -> None:
-        """Begin again unless the buffer holds (part of) this picture."""
-        if self.fbo is None or self.fbo.size() != size:
-            self.fbo = QOpenGLFramebufferObject(size, QOpenGLFramebufferObject.Attachment.Depth)
-            self.key = None
-        if key == self.key and total == self.total and done >= self.done:
+        """Go on with this picture if a buffer holds (part of) it: the one drawn last, or
+        one of the POSES before (the camera came back); else begin it again in the
+        buffer used longest ago."""
+        if self.fbo is not None and self.fbo.size() != size:
+            self.forget()
+        if self._holds(self._state(), key, total, done):
             return
+        kept = next((p for p in self._kept if self._holds(p, key, total, done)), None)
+        if self.key is not None:
+            self._kept.append(self._state())
+        if kept is not None:
+            self._kept.remove(kept)
+            self.fbo, self.key, self.next, self.total, self.done = kept
+            return
+        self.fbo = self._kept.pop(0)[0] if len(self._kept) > POSES else None
+        if self.fbo is None:
+            self.fbo = QOpenGLFramebufferObject(size, QOpenGLFramebufferObject.Attachment.Depth)
         self.key, self.total, self.next, self.done = key, total, 0, done
         self.fbo.bind()
         f.glClearColor(0.0, 0.0, 0.0, 1.0)
         f.glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT)
         self.fbo.release()
+
+    @staticmethod
+    def _holds(picture: tuple, key, total: int, done: int) -> bool:
+        fbo, its_key, _, its_total, its_done = picture
+        return fbo is not None and its_key == key and its_total == total and done >= its_done
 
     def overdraw(self, draw, done: int) -> None:
         """``draw(first, last)`` (a ``FullSource``'s) draws the units finished since the last
@@ -117,3 +139,4 @@ class FullFrame:
     def forget(self) -> None:
         self.fbo = None
         self.key = None
+        self._kept = []
