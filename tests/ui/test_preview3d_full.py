@@ -11,6 +11,7 @@ import pytest
 
 from app.ui.preview3d.glview import FULL_CELL_PIXELS
 from tests.ui.test_preview3d_gl import _frame, _gl_reason
+from tests.ui.test_preview3d_model import raster
 
 SAME = 24  # colour channels this close are the same colour
 
@@ -98,3 +99,20 @@ def test_full_detail_from_a_level_is_the_picture_of_every_segment(qtbot, gl, pre
         seen = compare(every.frame, fast.frame)
         assert seen["lit"] > 3000, seen
         assert seen["differ"] <= 5e-4 and seen["unexplained"] <= 5e-5, seen  # a few pixels one off
+
+
+def test_zoomed_in_only_the_chunks_on_screen_are_drawn_and_the_picture_is_the_same(qtbot, gl, monkeypatch):
+    from app.ui.preview3d import glview
+    from app.ui.preview3d.mesh import PathMesh
+
+    mesh = PathMesh.from_geometry(raster(rows=400))
+    gl.camera.preset("top")
+    gl.set_mesh(mesh)
+    x, y, _ = gl.camera.project(mesh.points[len(mesh.points) * 3 // 4][None])[0]
+    gl.camera.zoom_at(6.0, x, y)  # on a part of the path
+    culled = _grab(qtbot, gl, 0.0)
+    assert 0 < culled.lines < mesh.segments / 4
+    monkeypatch.setattr(glview, "visible_runs", lambda boxes, project, total: [(0, total)])
+    every = _grab(qtbot, gl, 0.0)
+    assert every.lines == mesh.segments
+    assert compare(every.frame, culled.frame)["differ"] == 0 and _lit(every.frame).sum() > 1000

@@ -73,6 +73,19 @@ def _distance_to_segments(p, a, b) -> np.ndarray:
     return np.linalg.norm(a + ab * t[:, None] - p, axis=1)
 
 
+def raster(rows: int = 200, per_row: int = 500) -> SimpleNamespace:
+    """A relief carved row by row (zigzag in X, a step in Y each row, Z waving): what a
+    million-line file from an image looks like."""
+    x = np.linspace(10, 110, per_row)
+    chains = []
+    for row in range(rows):
+        y = 10 + 100 * row / rows
+        xs = x if row % 2 == 0 else x[::-1]
+        chains.append(np.column_stack([xs, np.full(per_row, y), -1 - 0.5 * np.sin(xs / 7) * np.cos(y / 5)]))
+    points = np.concatenate(chains)
+    return SimpleNamespace(points=points, group=np.full(len(points), 3, np.int8), move=np.arange(len(points)))
+
+
 def test_levels_are_spans_of_the_path_in_program_order_each_near_the_path_it_stands_for():
     mesh = PathMesh.from_geometry(_spiral(60_000))
     mesh.group[30_000:30_050] = RAPID_GROUP  # a run of another colour
@@ -221,3 +234,32 @@ def test_program_tool_and_its_diameter():
     assert scene.tool_diameter(tools, 5) == (1.5, 5)
     assert scene.tool_diameter(tools, 7) == (6.0, 2)  # not in the table: its first tool
     assert scene.tool_diameter({}, 7) == (scene.DEFAULT_DIAMETER, None)
+
+
+def test_visible_runs_keep_every_segment_on_screen_and_leave_out_the_rest():
+    from app.ui.preview3d.chunks import visible_runs
+
+    mesh = PathMesh.from_geometry(raster())
+    mesh.build_levels()
+    cam = Camera(aspect=1.6)
+    cam.preset("top")
+    cam.fit(*mesh.bounds())
+    assert visible_runs(mesh.boxes, cam.project, mesh.segments) == [(0, mesh.segments)]  # all in view
+    x, y, _ = cam.project(mesh.points[35_000][None])[0]
+    cam.zoom_at(8.0, x, y)  # a part of the path
+    runs = visible_runs(mesh.boxes, cam.project, mesh.segments)
+    drawn = np.zeros(mesh.segments + 1, bool)
+    for first, last in runs:
+        drawn[first + 1:last + 1] = True  # the strip's segments first+1..last
+    ndc = cam.project(mesh.points)
+    inside = np.all(np.abs(ndc[:, :2]) <= 1, axis=1)
+    on_screen = np.flatnonzero(inside[1:] | inside[:-1]) + 1  # segments with an end in view
+    assert len(on_screen) and drawn[on_screen].all()
+    assert drawn.sum() < mesh.segments / 4
+    level = mesh.levels[0]
+    spans = visible_runs(level.boxes, cam.project, len(level.ends))
+    kept = np.zeros(len(level.ends), bool)
+    for first, last in spans:
+        kept[first:last] = True
+    seen = inside[level.starts] | inside[level.ends]
+    assert seen.any() and kept[seen].all() and kept.sum() < len(kept) / 4

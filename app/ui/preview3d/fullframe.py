@@ -15,7 +15,8 @@ about SLICE_S for one (``tune``); ``blit`` copies it to the widget. Until
 What it draws is a ``FullSource``: the whole path as one line strip (units: segments,
 ``draw(a, b)`` draws segments a+1..b, done up to the finished vertex), or a level of
 detail that looks the same at this zoom (units: spans, ``draw(a, b)`` spans a..b-1,
-done: the spans ending at or before the finished vertex, a prefix).
+done: the spans ending at or before the finished vertex, a prefix); of either only
+the chunks the camera sees (``chunks``), their units counted one run after the other.
 """
 
 from __future__ import annotations
@@ -23,6 +24,7 @@ from __future__ import annotations
 import ctypes
 from collections.abc import Callable
 from dataclasses import dataclass
+from itertools import accumulate
 
 from PySide6.QtCore import QSize
 from PySide6.QtOpenGL import QOpenGLFramebufferObject
@@ -43,18 +45,33 @@ class FullSource:
     draw: Callable[[int, int], None]  # draw(first, last) with the bound program and buffers
 
     @classmethod
-    def strip(cls, f, vertices: int, done_vertex: int) -> FullSource:
-        return cls(("strip",), vertices - 1, done_vertex,
-                   lambda first, last: f.glDrawArrays(GL_LINE_STRIP, first, last - first + 1))
+    def strip(cls, f, runs, done_vertex: int) -> FullSource:
+        """The segments of ``runs`` (``chunks.visible_runs``) as line strips."""
+        return cls._of_runs(("strip",), runs, done_vertex,
+                            lambda first, last: f.glDrawArrays(GL_LINE_STRIP, first, last - first + 1))
 
     @classmethod
-    def spans(cls, draw_elements, level, index: int, done_vertex: int) -> FullSource:
-        """``level``'s spans from its index buffer (bound), drawn by ``draw_elements``
-        (glDrawElements with a byte offset into the bound buffer)."""
+    def spans(cls, draw_elements, level, index: int, runs, done_vertex: int) -> FullSource:
+        """``level``'s spans of ``runs`` from its index buffer (bound), drawn by
+        ``draw_elements`` (glDrawElements with a byte offset into the bound buffer)."""
         def draw(first: int, last: int) -> None:
             draw_elements(GL_LINES, 2 * (last - first), GL_UNSIGNED_INT, ctypes.c_void_p(8 * first))
 
-        return cls(("level", index), len(level.ends), level.spans_done(done_vertex), draw)
+        return cls._of_runs(("level", index), runs, level.spans_done(done_vertex), draw)
+
+    @classmethod
+    def _of_runs(cls, name: tuple, runs, done: int, draw_units) -> FullSource:
+        """Units counted along ``runs`` one after the other (the ones off screen left out)."""
+        offsets = list(accumulate((last - first for first, last in runs), initial=0))  # (ints: ctypes)
+
+        def draw(first: int, last: int) -> None:
+            for (a, b), at in zip(runs, offsets, strict=False):
+                low, high = max(first, at), min(last, at + b - a)
+                if high > low:
+                    draw_units(a + low - at, a + high - at)
+
+        seen_done = sum(min(max(done - a, 0), b - a) for a, b in runs)
+        return cls(name, offsets[-1], seen_done, draw)
 
 
 class FullFrame:

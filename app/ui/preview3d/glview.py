@@ -29,6 +29,7 @@ from PySide6.QtOpenGLWidgets import QOpenGLWidget
 from app.ui.preview.widget import DONE_COLOUR, group_colours
 from app.ui.preview3d import shaders
 from app.ui.preview3d.camera import Camera
+from app.ui.preview3d.chunks import visible_runs
 from app.ui.preview3d.fullframe import SLICE_SEGMENTS, FullFrame, FullSource
 from app.ui.preview3d.measured import RAMP, TOLERANCE_MM, MeasuredPath
 from app.ui.preview3d.mesh import PathMesh
@@ -243,10 +244,12 @@ class PathGLView(QOpenGLWidget):
         if self.full_cell_pixels > 0 and len(self._level_buffers) == len(mesh.levels):
             level = mesh.pick_full(self.camera.pixel(self.height()), self.full_cell_pixels)
         if level is None:
-            return FullSource.strip(f, len(mesh.points), self.done_vertex)
+            runs = visible_runs(mesh.boxes, self.camera.project, mesh.segments)
+            return FullSource.strip(f, runs, self.done_vertex)
         index = next(i for i, candidate in enumerate(mesh.levels) if candidate is level)
         self._level_buffers[index].bind()  # the path's VAO keeps it
-        return FullSource.spans(self._draw_elements, level, index, self.done_vertex)
+        runs = visible_runs(level.boxes, self.camera.project, len(level.ends))
+        return FullSource.spans(self._draw_elements, level, index, runs, self.done_vertex)
 
     def _full_key(self, source: FullSource):
         return self._mesh_serial, source.name, tuple(self.camera.matrix().ravel())

@@ -28,6 +28,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from app.ui.preview3d.chunks import span_boxes, strip_boxes
+
 POSITION_BYTES = 12  # float32 x, y, z
 GROUP_BYTES = 1  # uint8
 INDEX_BYTES = 8  # two uint32 per span of a level
@@ -41,6 +43,7 @@ class MeshLevel:
     cell: float  # mm
     starts: np.ndarray  # (k,) uint32 first vertex of each kept span
     ends: np.ndarray  # (k,) uint32 its last vertex, ascending
+    boxes: np.ndarray  # (chunks, 2, 3) of its spans (chunks.span_boxes)
 
     def pairs(self) -> np.ndarray:
         """(2k,) uint32 vertex indices drawn as lines: (start, end) per span."""
@@ -60,6 +63,11 @@ class PathMesh:
     group: np.ndarray  # (m,) uint8
     move: np.ndarray  # (m,) int64 (kept on the CPU: move -> vertex)
     levels: list[MeshLevel] = field(default_factory=list)  # finest first
+    boxes: np.ndarray | None = None  # (chunks, 2, 3) of the strip (chunks.strip_boxes)
+
+    def __post_init__(self) -> None:
+        if self.boxes is None:
+            self.boxes = strip_boxes(self.points)
 
     @classmethod
     def from_geometry(cls, geometry) -> PathMesh:
@@ -111,7 +119,7 @@ class PathMesh:
             chain, cells = _simplified(chain, cells, self.group)
             starts, ends = _last_of_each_span(chain, cells, self.group)
             if len(ends) <= USEFUL * self.segments:
-                levels.append(MeshLevel(cell, starts, ends))
+                levels.append(MeshLevel(cell, starts, ends, span_boxes(self.points, starts, ends)))
         self.levels = levels
 
     def pick_level(self, pixel: float, budget: int) -> MeshLevel | None:
