@@ -19,7 +19,8 @@ draws, so a level whose cell is a small fraction of a pixel looks like the full 
 (``pick_full``), and a coarser one is drawn while the camera moves (``pick_level``).
 A level is kept spans (start vertex, end vertex), ends ascending, drawn as line pairs
 whose colour and progress are the end vertex's. Each level is built from the finer
-one (cells nest); a level that keeps more than USEFUL of the path is not made.
+one's spans (cells nest; a path of a million repeated segments costs one full pass);
+a level that keeps more than USEFUL of the path is not made.
 """
 
 from __future__ import annotations
@@ -113,13 +114,16 @@ class PathMesh:
         low, _ = self.bounds()
         origin = low.astype(np.float32)
         chain = np.arange(len(self.points), dtype=np.uint32)
+        begins = np.zeros(len(chain), bool)  # where a run of the chain begins (none joins the one before)
+        begins[0] = True
         levels = []
         for cell in self.cells():
             cells = _cell_keys(self.points, origin, chain, cell)
-            chain, cells = _simplified(chain, cells, self.group)
-            starts, ends = _last_of_each_span(chain, cells, self.group)
+            chain, cells, begins = _simplified(chain, cells, self.group, begins)
+            starts, ends = _last_of_each_span(chain, cells, self.group, begins)
             if len(ends) <= USEFUL * self.segments:
                 levels.append(MeshLevel(cell, starts, ends, span_boxes(self.points, starts, ends)))
+            chain, begins = _chain_of(starts, ends)  # the next level from this one's spans
         self.levels = levels
 
     def pick_level(self, pixel: float, budget: int) -> MeshLevel | None:
@@ -148,23 +152,41 @@ def _cell_keys(points, origin, chain, cell) -> np.ndarray:
     return (q[:, 0] * side + q[:, 1]) * side + q[:, 2]
 
 
-def _simplified(chain, cells, group) -> tuple[np.ndarray, np.ndarray]:
-    """The first vertex of each run of ``chain`` in one cell, the last of each run of
-    one group, and both ends of the chain: (vertices, their cells)."""
+def _simplified(chain, cells, group, begins) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Of each run of ``chain`` in one cell its first vertex, of each run of one group
+    its last, and the ends of the chain's runs: (vertices, their cells, run begins)."""
     g = np.take(group, chain)
     keep = np.ones(len(chain), bool)
-    keep[1:-1] = (cells[1:-1] != cells[:-2]) | (g[1:-1] != g[2:])
-    return chain[keep], cells[keep]
+    keep[1:-1] = (cells[1:-1] != cells[:-2]) | (g[1:-1] != g[2:]) | begins[1:-1] | begins[2:]
+    return chain[keep], cells[keep], begins[keep]
 
 
-def _last_of_each_span(chain, cells, group) -> tuple[np.ndarray, np.ndarray]:
-    """The spans (chain[i - 1], chain[i]), of those with the same start cell, end cell
-    and group only the last; in program order. The three are hashed to one int64
-    (wrapping; two spans of a level collide with odds of about n**2 / 2**64)."""
-    ends = chain[1:]
-    key = (cells[:-1] * _MIX + cells[1:]) * _MIX + np.take(group, ends).astype(np.int64)
+def _last_of_each_span(chain, cells, group, begins) -> tuple[np.ndarray, np.ndarray]:
+    """The spans (chain[i - 1], chain[i]) within runs, of those with the same start cell,
+    end cell and group only the last; in program order. The three are hashed to one
+    int64 (wrapping; two spans of a level collide with odds of about n**2 / 2**64)."""
+    inner = np.flatnonzero(~begins[1:]) + 1  # the vertices that end a span
+    ends = np.take(chain, inner)
+    key = np.take(cells, inner - 1) * _MIX + np.take(cells, inner)
+    key = key * _MIX + np.take(group, ends).astype(np.int64)
     order = np.argsort(key, kind="stable")  # (its GIL holds are the shortest; np.unique's are long)
     ordered = np.take(key, order)
     runs = np.flatnonzero(np.concatenate([[True], ordered[1:] != ordered[:-1]]))
-    kept = np.sort(np.maximum.reduceat(order, runs))
-    return np.take(chain, kept), np.take(ends, kept)
+    kept = np.take(inner, np.sort(np.maximum.reduceat(order, runs)))
+    return np.take(chain, kept - 1), np.take(chain, kept)
+
+
+def _chain_of(starts, ends) -> tuple[np.ndarray, np.ndarray]:
+    """Spans in program order as one vertex list: a span that does not start where the
+    one before ended begins a new run. (vertices, run begins)."""
+    joined = np.zeros(len(ends), bool)
+    joined[1:] = starts[1:] == ends[:-1]
+    counts = 2 - joined.astype(np.int64)
+    at = np.cumsum(counts) - counts
+    chain = np.empty(int(counts.sum()), np.uint32)
+    begins = np.zeros(len(chain), bool)
+    fresh = np.flatnonzero(~joined)
+    chain[at[fresh]] = starts[fresh]
+    begins[at[fresh]] = True
+    chain[at + counts - 1] = ends
+    return chain, begins
