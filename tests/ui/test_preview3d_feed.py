@@ -47,10 +47,10 @@ def followed(qtbot):
     return window, view
 
 
-def _status(window, measured, commanded=None) -> None:
+def _status(window, measured, commanded=None, done: int = 0) -> None:
     """What the window's binder does first with a status (the history), then the signal."""
     window.history.append(0.0, measured, commanded)
-    window.link.worker.status_changed.emit(StatusEvent("b", "RUN", *measured, 0, 0, 0, 0, "H"))
+    window.link.worker.status_changed.emit(StatusEvent("b", "RUN", *measured, done, done, 0, 0, "H"))
 
 
 def test_a_program_shows_when_loaded_and_finer_when_refined(qtbot, followed):
@@ -78,14 +78,19 @@ def test_a_job_is_followed_at_the_status_rate_and_measured_only_while_it_runs(qt
     worker.state_changed.emit(StateEvent("READY", "STARTING"))
     assert feed.running and len(view.measured) == 0
     told = feed.updates
+    cut = window.binder.job_done
+    rapid = _seq_before(loaded.program, loaded.preview, rapid=True)
     for k in range(30):  # a burst of statuses: the view hears of them once a period
-        _status(window, (60.0, 70.0 + k * 0.1, -1.0), (60.0, 70.0 + k * 0.1, -1.02))
+        done = rapid if k == 0 else cut  # the first during a rapid (the machine said so then)
+        _status(window, (60.0, 70.0 + k * 0.1, -1.0), (60.0, 70.0 + k * 0.1, -1.02), done)
     assert feed.updates == told
     with qtbot.waitSignal(feed.updated, timeout=2000):
         pass
     assert feed.updates == told + 1 and len(view.measured) == 30
     assert view.tool_at == pytest.approx((60.0, 72.9, -1.0))
-    np.testing.assert_allclose(view.measured.rows()[:, 3], 0.02, atol=1e-5)
+    deviation = view.measured.rows()[:, 3]
+    assert deviation[0] < 0  # a rapid's: none
+    np.testing.assert_allclose(deviation[1:], 0.02, atol=1e-5)
     seq = len(loaded.program.device_lines) // 2
     lines = [ProgressEvent("job", 99, s, s, s) for s in range(seq + 1)]
     worker_thread = threading.Thread(  # progress comes from the worker's thread, one per line

@@ -12,7 +12,8 @@ the feed has been quiet that long, else when the period is over, with the newest
 values. Progress comes once per executed line from the worker's thread (a direct
 connection: the newest line is kept, no call crosses threads per line). The measured
 path is the window's position history since the last update, taken only while a
-job of the program runs (from its start to its end).
+job of the program runs (from its start to its end), each row with the last finished
+line its status reported (whether it was taken in a rapid).
 """
 
 from __future__ import annotations
@@ -39,6 +40,7 @@ class WindowFeed(QObject):
         self._done = self._done_shown = None
         self._history_version = window.history.version
         self._dirty = False
+        self._row_done: list[int] = []  # the last finished line of each status since the last update
         self._limit = QTimer(self, singleShot=True, interval=STATUS_MS, timeout=self._period_over)
         window.loader.loaded.connect(self._loaded)
         window.loader.refined.connect(self._refined)
@@ -83,6 +85,8 @@ class WindowFeed(QObject):
 
     def _status(self, event) -> None:
         self._tool = event.position
+        if self.running:  # the move each measured row was taken in: after the status's done
+            self._row_done.append(event.done)
         self._schedule()
 
     def _job_finished(self, event) -> None:
@@ -118,7 +122,11 @@ class WindowFeed(QObject):
         history = self.window.history
         fresh = min(history.version - self._history_version, len(history))
         self._history_version = history.version
+        row_done, self._row_done = self._row_done, []
         if self.running and fresh > 0:
             rows = history.rows()[-fresh:]
-            self.view.add_measured(rows[:, MEASURED].copy(), rows[:, COMMANDED].copy())
+            known = row_done[-fresh:]  # (a row of no status, a gap of a lost link, takes the first's)
+            first = known[0] if known else self._done_shown if self._done_shown is not None else -1
+            row_done = [first] * (fresh - len(known)) + known
+            self.view.add_measured(rows[:, MEASURED].copy(), rows[:, COMMANDED].copy(), row_done)
         self.updated.emit()

@@ -299,12 +299,12 @@ class Preview3D(QWidget):
         self.deviation_label.clear()
         self.set_done(-1)
 
-    def _executing_rapid(self) -> bool:
-        """Whether the move after the last finished one is a rapid."""
+    def _executing_rapid(self, done: int) -> bool:
+        """Whether the move after device line ``done`` (the last finished) is a rapid."""
         if self.model is None or self.model.empty:
             return False
         kind = self.model.toolpath.kind
-        move = self.model.move_of_device_line(self._done_seq + 1)
+        move = self.model.move_of_device_line(done + 1)
         return 0 <= move < len(kind) and int(kind[move]) == RAPID
 
     def set_done(self, seq: int) -> None:
@@ -318,11 +318,14 @@ class Preview3D(QWidget):
         self.tool_at = (x, y, z)
         self._update_lines()
 
-    def add_measured(self, measured: np.ndarray, commanded: np.ndarray) -> None:
-        """New rows of the job's measured path (taken during the move being executed)."""
-        rapid = self._executing_rapid()
-        for m, c in zip(np.atleast_2d(measured), np.atleast_2d(commanded), strict=True):
-            self.measured.append(m, c, rapid)
+    def add_measured(self, measured: np.ndarray, commanded: np.ndarray, done=None) -> None:
+        """New rows of the job's measured path, each taken during the move after its
+        ``done`` (the last finished device line when the machine reported it; default:
+        the job's last finished line now)."""
+        rows = np.atleast_2d(measured)
+        dones = [self._done_seq] * len(rows) if done is None else [int(d) for d in done]
+        for m, c, d in zip(rows, np.atleast_2d(commanded), dones, strict=True):
+            self.measured.append(m, c, self._executing_rapid(d))
         if self.gl is not None:
             self.gl.update()
 
