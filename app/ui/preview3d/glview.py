@@ -9,7 +9,9 @@ detail sized to the pixels and a frame budget; SETTLE_MS after the last move ful
 detail is drawn again, a slice per frame for a big one (``fullframe``): the coarsest
 level whose cells are at most FULL_CELL_PIXELS of a pixel (it draws the same picture
 as every segment, but for a few pixels one off: ``tests/ui/test_preview3d_full.py``),
-or every segment when no level is that fine. Path lines are opaque (rapids a darker
+or every segment when no level is that fine; of either only the chunks the camera
+sees (``chunks``), and the pictures of the last poses are kept for when the camera
+comes back (``FullFrame``). Path lines are opaque (rapids a darker
 colour, not see-through), so a line drawn twice looks as drawn once. A context
 or shader that cannot be made ends in ``gl_failed`` with the reason, and the widget
 then draws nothing.
