@@ -102,6 +102,7 @@ class PathGLView(QOpenGLWidget):
     def set_mesh(self, mesh: PathMesh | None, fit: bool = True) -> None:
         self.mesh = mesh
         self._mesh_serial += 1  # (an id() may come back for another mesh)
+        self._full.forget()  # the pictures of the last model (their buffers go with them)
         self._pending["mesh"] = self._pending["levels"] = True
         if fit:
             self.fit()
