@@ -36,7 +36,7 @@ from app.ui.preview3d.fullframe import SLICE_SEGMENTS, FullFrame, FullSource
 from app.ui.preview3d.measured import RAMP, TOLERANCE_MM, MeasuredPath
 from app.ui.preview3d.mesh import PathMesh
 
-SETTLE_MS = 100  # full detail this long after the camera stops
+SETTLE_MS = 50  # full detail this long after the camera stops (a drag moves every ~16 ms)
 MOVING_BUDGET = 60_000  # segments per frame while the camera moves (llvmpipe: ~8 M segments/s)
 LOD_PIXELS = 1.0  # cell of the level drawn while moving, in pixels
 FULL_CELL_PIXELS = 0.5  # cell of a level drawn as full detail, in pixels (test_preview3d_full)
