@@ -106,8 +106,10 @@ def test_zoomed_in_only_the_chunks_on_screen_are_drawn_and_the_picture_is_the_sa
     from app.ui.preview3d.mesh import PathMesh
 
     mesh = PathMesh.from_geometry(raster(rows=400))
+    mesh.build_levels()  # (the chunks' boxes come with them, off the GUI thread)
     gl.camera.preset("top")
     gl.set_mesh(mesh)
+    gl.levels_ready()
     x, y, _ = gl.camera.project(mesh.points[len(mesh.points) * 3 // 4][None])[0]
     gl.camera.zoom_at(6.0, x, y)  # on a part of the path
     culled = _grab(qtbot, gl, 0.0)

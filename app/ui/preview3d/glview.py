@@ -247,7 +247,8 @@ class PathGLView(QOpenGLWidget):
         if self.full_cell_pixels > 0 and len(self._level_buffers) == len(mesh.levels):
             level = mesh.pick_full(self.camera.pixel(self.height()), self.full_cell_pixels)
         if level is None:
-            runs = visible_runs(mesh.boxes, self.camera.project, mesh.segments)
+            runs = [(0, mesh.segments)] if mesh.boxes is None else visible_runs(
+                mesh.boxes, self.camera.project, mesh.segments)  # (boxes come with the levels)
             return FullSource.strip(f, runs, self.done_vertex)
         index = next(i for i, candidate in enumerate(mesh.levels) if candidate is level)
         self._level_buffers[index].bind()  # the path's VAO keeps it

@@ -64,11 +64,7 @@ class PathMesh:
     group: np.ndarray  # (m,) uint8
     move: np.ndarray  # (m,) int64 (kept on the CPU: move -> vertex)
     levels: list[MeshLevel] = field(default_factory=list)  # finest first
-    boxes: np.ndarray | None = None  # (chunks, 2, 3) of the strip (chunks.strip_boxes)
-
-    def __post_init__(self) -> None:
-        if self.boxes is None:
-            self.boxes = strip_boxes(self.points)
+    boxes: np.ndarray | None = None  # (chunks, 2, 3) of the strip (chunks.strip_boxes), with the levels
 
     @classmethod
     def from_geometry(cls, geometry) -> PathMesh:
@@ -107,7 +103,9 @@ class PathMesh:
         return [extent / 2**k for k in STEPS]
 
     def build_levels(self) -> None:
-        """Every useful level, finest first, each chain simplified from the finer one's."""
+        """The strip's chunk boxes and every useful level, finest first, each from the
+        finer one's spans."""
+        self.boxes = strip_boxes(self.points)
         if self.segments == 0:
             self.levels = []
             return
