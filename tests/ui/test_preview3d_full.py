@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from app.ui.preview3d.glview import FULL_CELL_PIXELS
-from tests.ui.test_preview3d_gl import _frame, _gl_reason
+from tests.ui.test_preview3d_gl import _frame, gl_widget
 from tests.ui.test_preview3d_model import raster
 
 SAME = 24  # colour channels this close are the same colour
@@ -59,18 +59,9 @@ def compare(full: np.ndarray, fast: np.ndarray) -> dict:
 
 @pytest.fixture
 def gl(qtbot):
-    reason = _gl_reason()
-    if reason:
-        pytest.skip(f"no OpenGL widget here: {reason} (test_under_xvfb runs these on Xvfb)")
     from app.ui.preview3d.glview import PathGLView
 
-    view = PathGLView()
-    qtbot.addWidget(view)
-    view.resize(900, 700)
-    view.show()
-    qtbot.waitExposed(view)
-    qtbot.waitUntil(lambda: bool(view.renderer))
-    return view
+    return gl_widget(qtbot, PathGLView, lambda view: bool(view.renderer))
 
 
 def _grab(qtbot, gl, full_cell_pixels: float) -> np.ndarray:

@@ -51,20 +51,26 @@ def test_under_xvfb(qapp):
     assert "skipped" not in run.stdout and " passed" in run.stdout, tail
 
 
-@pytest.fixture
-def gl_view(qtbot):
+def gl_widget(qtbot, make, ready):
+    """``make()`` shown at 900 x 700 until ``ready(widget)`` (OpenGL started); skips where
+    this process cannot show an OpenGL widget."""
     reason = _gl_reason()
     if reason:
         pytest.skip(f"no OpenGL widget here: {reason} (test_under_xvfb runs these on Xvfb)")
+    widget = make()
+    qtbot.addWidget(widget)
+    widget.resize(900, 700)
+    widget.show()
+    qtbot.waitExposed(widget)
+    qtbot.waitUntil(lambda: ready(widget))
+    return widget
+
+
+@pytest.fixture
+def gl_view(qtbot):
     from app.ui.preview3d.view import Preview3D
 
-    view = Preview3D()
-    qtbot.addWidget(view)
-    view.resize(900, 700)
-    view.show()
-    qtbot.waitExposed(view)
-    qtbot.waitUntil(lambda: view.gl is not None and bool(view.gl.renderer))
-    return view
+    return gl_widget(qtbot, Preview3D, lambda view: view.gl is not None and bool(view.gl.renderer))
 
 
 def _show_star(qtbot, view):
