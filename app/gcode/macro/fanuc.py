@@ -14,6 +14,8 @@ from __future__ import annotations
 from app.gcode.lexer import Word
 from app.i18n import msg
 
+from . import leaf
+from .block import WHILE
 from .calls import FANUC_ARGUMENTS, fanuc_arguments
 from .errors import MacroError
 from .frame import Frame
@@ -65,7 +67,7 @@ def call(w, f: Frame, b, letter: str, code: float, column: int, by_letter: dict,
 
     unit = w.library.units[file_id]
     program = unit.program_of[start] if unit.program_of else 0
-    w._push(Frame(unit, start, locals_, f"O{number:04d}", file_id, program, count, b.line))
+    leaf.enter(w, unit, start, locals_, f"O{number:04d}", file_id, program, count, b.line)
 
 
 def g65_plan(b) -> tuple | None:
@@ -101,7 +103,7 @@ def g65(w, f: Frame, b) -> None:
     locals_ = given(values)
     if None in locals_.values():  # a vacant argument sets nothing
         locals_ = {n: v for n, v in locals_.items() if v is not None}
-    w._push(Frame(unit, start, locals_, name, file_id, program, count, b.line))
+    leaf.enter(w, unit, start, locals_, name, file_id, program, count, b.line)
 
 
 def _program(w, number: int, caller: int) -> tuple:
@@ -168,9 +170,15 @@ def do(w, f: Frame, b) -> None:
 
 
 def end(w, f: Frame, b) -> None:
+    """Back to the loop's head; a ``WHILE`` head is tested at once (as the walk would
+    run it next: one dispatch fewer per pass, the block counted all the same)."""
     head = f.unit.back[f.pc]
     w.loop_back(f, head)
     f.pc = head
+    top = f.unit.blocks[head]
+    if top.kind == WHILE:
+        w.blocks_run += 1
+        w.loop_test(f, w.test(top.args[0]))
 
 
 def program(w, f: Frame, b) -> None:

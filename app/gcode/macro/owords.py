@@ -12,6 +12,7 @@ from __future__ import annotations
 
 from app.i18n import msg
 
+from . import leaf
 from .errors import MacroError
 from .frame import Frame
 
@@ -41,7 +42,7 @@ def _call(w, f: Frame, b) -> None:
         locals_ = {i: (0.0 if v is None else v) for i, v in locals_.items()}
     unit, start, file_id = target
     context = b.context if b.onumber is None else f"o{name}"
-    w._push(Frame(unit, start, locals_, context, file_id, caller_line=b.line))
+    leaf.enter(w, unit, start, locals_, context, file_id, caller_line=b.line)
 
 
 def _return(w, f: Frame, b) -> None:
@@ -101,9 +102,12 @@ def _while(w, f: Frame, b) -> None:
 
 
 def _endwhile(w, f: Frame, b) -> None:
+    """Back to the ``while`` and its test at once (see ``fanuc.end``)."""
     head = f.unit.back[f.pc]
     w.loop_back(f, head)
     f.pc = head
+    w.blocks_run += 1
+    w.loop_test(f, w.test(f.unit.blocks[head].args[0]))
 
 
 def _repeat(w, f: Frame, b) -> None:

@@ -50,6 +50,7 @@ class Unit:
         self._structure()
         self.structure_ok = len(self.errors) == compiled  # jumps are only safe when balanced
         self.bound = False  # the walker has given each block its handler
+        self.leaves: dict = {}  # block index -> its leaf subprogram's body or None (leaf.py)
 
     def fail(self, message: str, block: Block) -> None:
         self.errors.append(MacroError(message, block.line, block.column, self.name))

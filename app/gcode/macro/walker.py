@@ -30,11 +30,11 @@ from . import fanuc_system, predefined
 from .batch import Batch
 from .calls import Library
 from .errors import MacroError, Stopped, TooLarge
-from .frame import Frame, Scope
+from .frame import DEPTH_LIMIT, Frame, Scope
+from .leaf import Locals
 from .trace import FileReport, Trace
 
 LOOP_LIMIT = 1_000_000
-DEPTH_LIMIT = 64
 # The budget of one expansion, counted in work done (never in wall-clock time, so that a
 # result does not depend on the machine's load), in units of about 0.35 us of CPU: a
 # block run costs 1, a move made ``ROW_COST``, a read of the machine's state (#5000 and
@@ -66,8 +66,9 @@ class Walker:
         self.interpreted = 0  # blocks through ``emit`` (the batch counts its own)
         self._published: tuple = (None, ())  # (state, (rows, call depth)) of the last sync
         self.batch = Batch()
+        self.leaf_locals = Locals()  # the frame a leaf call's rows read (leaf.py)
         self._names: dict[str, int] = {"": 0}
-        self._wheres: dict[tuple, tuple] = {}  # (file id, calling line, name) -> (where, its id)
+        self._wheres: dict[tuple, int] = {}  # (file id, calling line, name) -> where id
         first = next((i for i, b in enumerate(main.blocks) if b.kind != bk.SKIP), 0)
         self._push(Frame(main, 0, {}, "", 0, main.program_of[first] if self.fanuc else 0))
 
@@ -78,20 +79,24 @@ class Walker:
             raise MacroError(msg("calls nested deeper than {depth} levels", depth=DEPTH_LIMIT))
         if frames:
             frame.iteration = frame.iteration or frames[-1].iteration  # the caller's loop pass
-            main = frames[0]
-            call_line = main.unit.blocks[main.pc - 1].line  # the main program's line running
+            frame.wid = self.where_id(frame.file_id, frame.name)
         else:
-            call_line = 0
+            frame.wid = self._where(frame.file_id, 0, frame.name)
         frames.append(frame)
         self.scope.frame = frame
-        key = (frame.file_id, call_line, frame.name)
-        known = self._wheres.get(key)
-        if known is None:
-            known = self._wheres[key] = self._where(*key)
-        frame.where, frame.wid = known
 
-    def _where(self, file_id: int, call_line: int, name: str) -> tuple[tuple, int]:
-        """A frame's ``where`` (file id, calling line or 0, subprogram id, report) and its id."""
+    def where_id(self, file_id: int, name: str) -> int:
+        """The batch's where id of rows of subprogram ``name`` of file ``file_id`` called
+        now (from the main program's line running)."""
+        main = self.frames[0]
+        key = (file_id, main.unit.blocks[main.pc - 1].line, name)
+        wid = self._wheres.get(key)
+        if wid is None:
+            wid = self._wheres[key] = self._where(*key)
+        return wid
+
+    def _where(self, file_id: int, call_line: int, name: str) -> int:
+        """The id of a frame's where (file id, calling line or 0, subprogram id, report)."""
         if name not in self._names:
             self._names[name] = len(self.trace.names)
             self.trace.names.append(name)
@@ -99,8 +104,7 @@ class Walker:
             unit = self.library.units[len(self.reports)]
             self.trace.files.append(unit.name)
             self.reports.append(FileReport(self.report, unit.name))
-        where = (file_id, call_line, self._names[name], self.reports[file_id])
-        return where, self.batch.where_id(where)
+        return self.batch.where_id((file_id, call_line, self._names[name], self.reports[file_id]))
 
     def _pop(self) -> Frame:
         frame = self.frames.pop()
