@@ -52,8 +52,12 @@ def _no_cycle_collection():
             gc.enable()
 
 
-def expand(lines, name: str, folder: Path | None, state, ops: OpBuffer, report: Report) -> Trace:
-    """Expand the program ``lines`` into ``ops`` (see the module docstring)."""
+def expand(lines, name: str, folder: Path | None, state, ops: OpBuffer, report: Report,
+           rows_wanted: int | None = None) -> Trace:
+    """Expand the program ``lines`` into ``ops`` (see the module docstring). ``rows_wanted``:
+    the caller stops the walk once it has that many rows (the first-move probe,
+    ``start.py``), so plain moves are interpreted in batches no larger: the walk does not
+    run ahead of what is wanted."""
     if len(lines) > MAX_LINES:
         report.add(MAX_LINES + 1, 0, ERROR, too_many_lines(len(lines)).message)
         refused = Trace([name])
@@ -66,6 +70,8 @@ def expand(lines, name: str, folder: Path | None, state, ops: OpBuffer, report: 
         report.add(exc.line, exc.column, ERROR, exc.message)
     params = getattr(state, "params", None)
     walker = Walker(Library(unit, folder), state, ops, report, params if params is not None else Params())
+    if rows_wanted is not None:
+        walker.batch_limit = max(1, min(walker.batch_limit, rows_wanted))
     if unit.structure_ok:
         with _no_cycle_collection():
             walker.run()

@@ -16,7 +16,7 @@ runs (and reports) as it always did: nothing of it was added.
 from __future__ import annotations
 
 from . import block as bk
-from .batch import MAX_ROWS, compile_rows
+from .batch import compile_rows
 from .frame import DEPTH_LIMIT, Frame
 from .runs import _empty, runs
 
@@ -113,6 +113,6 @@ def _made(w, leaf: Leaf, locals_: dict, file_id: int, name: str) -> bool:
     w.blocks_run += leaf.dispatches
     if leaf.linuxcnc:
         w.scope.params.named["_value_returned"] = 0.0
-    if len(batch.blocks) >= MAX_ROWS:
+    if len(batch.blocks) >= w.batch_limit:
         w.flush()
     return True

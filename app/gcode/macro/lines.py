@@ -20,7 +20,6 @@ from app.i18n import msg
 
 from . import block as bk
 from . import fanuc, predefined
-from .batch import MAX_ROWS
 from .errors import MacroError
 from .frame import Frame
 from .owords import handler as oword_handler
@@ -34,7 +33,7 @@ def words(w, f: Frame, b: bk.Block) -> None:
     if not b.words or b.call_only:
         pass
     elif b.simple and w.fast_ok and w.batch.add(b, values, f.iteration, f.wid):
-        if len(w.batch) >= MAX_ROWS:
+        if len(w.batch) >= w.batch_limit:
             w.flush()
     else:
         call = general(w, f, b, values)
@@ -53,7 +52,7 @@ def simple_words(w, f: Frame, b: bk.Block) -> None:
     if b.fast is not None and w.fast_ok:  # no assignments, a constant G0-G3 or none
         batch.extend(b.fast(w.scope, f.wid, f.iteration))
         batch.append(b)
-        if len(batch.blocks) >= MAX_ROWS:
+        if len(batch.blocks) >= w.batch_limit:
             w.flush()
         return
     values = b.values(w.scope)
@@ -64,7 +63,7 @@ def simple_words(w, f: Frame, b: bk.Block) -> None:
     else:
         batch.extend(made)
         batch.append(b)
-        if len(batch.blocks) >= MAX_ROWS:
+        if len(batch.blocks) >= w.batch_limit:
             w.flush()
     if b.assigns:
         b.store(w.scope, values)

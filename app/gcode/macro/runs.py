@@ -16,7 +16,7 @@ line, as block by block.
 
 from __future__ import annotations
 
-from .batch import MAX_ROWS, compile_rows
+from .batch import compile_rows
 from .block import SKIP
 from .errors import MacroError
 
@@ -71,7 +71,7 @@ def run_handler(members: tuple, span: int, one):
         batch = w.batch
         batch.extend(made)
         batch.blocks.extend(members)
-        if len(batch.blocks) >= MAX_ROWS:
+        if len(batch.blocks) >= w.batch_limit:
             w.flush()
         return None
 

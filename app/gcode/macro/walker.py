@@ -27,7 +27,7 @@ from app.i18n import msg
 
 from . import block as bk
 from . import fanuc_system, predefined
-from .batch import Batch
+from .batch import MAX_ROWS, Batch
 from .calls import Library
 from .errors import MacroError, Stopped, TooLarge
 from .frame import DEPTH_LIMIT, Frame, Scope
@@ -66,6 +66,7 @@ class Walker:
         self.interpreted = 0  # blocks through ``emit`` (the batch counts its own)
         self._published: tuple = (None, ())  # (state, (rows, call depth)) of the last sync
         self.batch = Batch()
+        self.batch_limit = MAX_ROWS  # blocks collected before the batch is interpreted
         self.leaf_locals = Locals()  # the frame a leaf call's rows read (leaf.py)
         self._names: dict[str, int] = {"": 0}
         self._wheres: dict[tuple, int] = {}  # (file id, calling line, name) -> where id
