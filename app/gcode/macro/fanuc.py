@@ -176,7 +176,7 @@ def end(w, f: Frame, b) -> None:
     w.loop_back(f, head)
     f.pc = head
     top = f.unit.blocks[head]
-    if top.kind == WHILE:
+    if top.kind == WHILE and head not in f.unit.loops:  # a compiled loop tests in its handler
         w.blocks_run += 1
         w.loop_test(f, w.test(top.args[0]))
 

@@ -19,7 +19,7 @@ from app.gcode.percent import abort_message
 from app.i18n import msg
 
 from . import block as bk
-from . import fanuc, predefined
+from . import fanuc, loop, owords, predefined
 from .errors import MacroError
 from .frame import Frame
 from .owords import handler as oword_handler
@@ -195,11 +195,20 @@ def handler(b: bk.Block):
     return HANDLERS[b.kind]
 
 
+STEPS = {assignments: loop.ASSIGN, simple_words: loop.MOVE, call_words: loop.CALL, fanuc.g65: loop.CALL,
+         owords.HANDLERS["call"]: loop.CALL}  # the handlers of blocks a compiled loop runs itself
+
+
 def bind(unit) -> None:
     """Give every block of ``unit`` the handler that runs it (once per unit); a block
-    that starts a straight run of moves runs the whole run (``runs.py``)."""
+    that starts a straight run of moves runs the whole run (``runs.py``), the head of
+    a loop the whole loop when its body is straight (``loop.py``)."""
     for b in unit.blocks:
         b.run = handler(b)
     for i, (members, span) in runs(unit).items():
         unit.blocks[i].run = run_handler(members, span, unit.blocks[i].run)
+    for i, b in enumerate(unit.blocks):
+        if b.kind == bk.WHILE or b.kind == bk.OWORD and b.keyword == "while":
+            unit.loops.add(i)
+            b.run = loop.lazy_loop(unit, i, STEPS, b.run)
     unit.bound = True

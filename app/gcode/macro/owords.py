@@ -106,8 +106,9 @@ def _endwhile(w, f: Frame, b) -> None:
     head = f.unit.back[f.pc]
     w.loop_back(f, head)
     f.pc = head
-    w.blocks_run += 1
-    w.loop_test(f, w.test(f.unit.blocks[head].args[0]))
+    if head not in f.unit.loops:  # a compiled loop tests in its handler
+        w.blocks_run += 1
+        w.loop_test(f, w.test(f.unit.blocks[head].args[0]))
 
 
 def _repeat(w, f: Frame, b) -> None:

@@ -51,6 +51,7 @@ class Unit:
         self.structure_ok = len(self.errors) == compiled  # jumps are only safe when balanced
         self.bound = False  # the walker has given each block its handler
         self.leaves: dict = {}  # block index -> its leaf subprogram's body or None (leaf.py)
+        self.loops: set[int] = set()  # heads of loops run by a compiled handler (loop.py)
 
     def fail(self, message: str, block: Block) -> None:
         self.errors.append(MacroError(message, block.line, block.column, self.name))

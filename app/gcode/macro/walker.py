@@ -48,6 +48,16 @@ ROW_COST, SYNC_COST, PUBLISH_COST, LINE_COST = 1, 2, 55, 50
 WORK_LIMIT = 7_500_000
 
 
+FAULTS = (ArithmeticError, LookupError, TypeError, ValueError, OSError, RecursionError)
+
+
+def fault(exc: Exception) -> MacroError:
+    """A fault of the expander itself (one of ``FAULTS``): the operator gets the line,
+    never a traceback."""
+    return MacroError(msg("the expander failed on this line ({error}); the program cannot "
+                          "be previewed", error=f"{type(exc).__name__}: {exc}"[:200]))
+
+
 class Walker:
     """Expands one program (see the module docstring)."""
 
@@ -236,11 +246,8 @@ class Walker:
                 f = frames[-1]
         except MacroError as exc:
             raise exc.at(b.line if b is not None else 0, f.unit.name if f.file_id else "") from None
-        except (ArithmeticError, LookupError, TypeError, ValueError, OSError, RecursionError) as exc:
-            # a fault of the expander itself: the operator gets the line, never a traceback
-            failed = MacroError(msg("the expander failed on this line ({error}); the program cannot "
-                                    "be previewed", error=f"{type(exc).__name__}: {exc}"[:200]))
-            raise failed.at(b.line if b is not None else 0, f.unit.name if f.file_id else "") from None
+        except FAULTS as exc:
+            raise fault(exc).at(b.line if b is not None else 0, f.unit.name if f.file_id else "") from None
         finally:
             self.blocks_run += ran
 
