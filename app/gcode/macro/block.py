@@ -78,6 +78,7 @@ class Block:
     abort: str | None = None  # the text of an (ABORT, text) comment: the walk stops there
     comment: str = ""  # Fanuc: the text of the line's first comment (a #3000 alarm's message)
     called: dict = field(default_factory=dict)  # o-word call: caller's file id -> (unit, start, file id)
+    specialized: bool = False  # a call: its handler was made for the one program it calls (leaf.direct)
 
     def finish(self) -> Block:
         """Compile the codes of the line into functions (done once)."""

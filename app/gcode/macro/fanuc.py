@@ -15,7 +15,7 @@ from app.gcode.lexer import Word
 from app.i18n import msg
 
 from . import leaf
-from .block import WHILE
+from .block import WHILE, constant
 from .calls import FANUC_ARGUMENTS, fanuc_arguments
 from .errors import MacroError
 from .frame import Frame
@@ -86,7 +86,11 @@ def g65_plan(b) -> tuple | None:
 
 def g65(w, f: Frame, b) -> None:
     """The handler of a ``G65`` line planned by ``g65_plan``: ``call``'s rules, fewer steps."""
-    values = b.values(w.scope)
+    g65_with(w, f, b, b.values(w.scope))
+
+
+def g65_with(w, f: Frame, b, values) -> None:
+    """``g65`` with the line's ``values`` computed."""
     f.pc += 1
     p, repeat, given, called = b.plan
     number = values[p]
@@ -100,6 +104,10 @@ def g65(w, f: Frame, b) -> None:
     if target is None:
         target = called[key] = _program(w, *key)
     unit, start, program, name, file_id = target
+    if not b.specialized and count == 1 and constant(b.words[p].code) is not None:
+        b.specialized = True  # the line always calls this program: straight to its rows if a leaf
+        index = fanuc_arguments((word.letter, i) for i, word in enumerate(b.words))
+        b.run = leaf.direct(unit, start, name, file_id, index, repeat, g65_with) or b.run
     locals_ = given(values)
     if None in locals_.values():  # a vacant argument sets nothing
         locals_ = {n: v for n, v in locals_.items() if v is not None}

@@ -15,8 +15,13 @@ runs (and reports) as it always did: nothing of it was added.
 
 from __future__ import annotations
 
+import math
+import re
+import struct
+
 from . import block as bk
-from .batch import compile_rows
+from .batch import ROW, compile_rows
+from .expr import NAMESPACE
 from .frame import DEPTH_LIMIT, Frame
 from .runs import _empty, runs
 
@@ -74,6 +79,67 @@ def find(unit, start: int) -> Leaf | None:
     return None
 
 
+_LOCAL = re.compile(r"S\.frame\.locals\.get\((\d+)(?:, 0\.0)?\)")
+
+
+def _direct_rows(codes: list[str], index: dict | None):
+    """``fn(S, where, iteration, values)``: the rows of a leaf's row ``codes`` with its
+    locals read straight from the call's ``values`` (Fanuc: the tuple of the line's
+    words, ``index``: local -> place of its word; LinuxCNC: the dict of the arguments),
+    or None when the codes read their frame otherwise (a named local)."""
+    def local(found) -> str:
+        n = int(found.group(1))
+        if index is None:
+            return f"v.get({n}, 0.0)"
+        return f"v[{index[n]}]" if n in index else "None"
+
+    flat = ", ".join(_LOCAL.sub(local, code[1:-1]) for code in codes)
+    if "S.frame" in flat or "S.named" in flat or "S.has" in flat:
+        return None
+    namespace = {**NAMESPACE, "nan": math.nan, "pack": struct.Struct(f"<{ROW * len(codes)}d").pack}
+    return eval(f"lambda S, w, it, v: pack({flat})", namespace)  # noqa: S307
+
+
+def direct(unit, start: int, name: str, file_id: int, index: dict | None, repeat: int, slow):
+    """A handler for a call line that always calls the leaf at block ``start`` of
+    ``unit``: its rows straight from the line's values (``_direct_rows``), or None when
+    that body is not a leaf. ``repeat``: the place of a Fanuc ``L`` word (-1: none);
+    ``slow(w, f, b, values)``: the call's general handler, for every other case."""
+    found = _leaf(unit, start)
+    rows = _direct_rows([m.fast_code for m in found.members], index) if found is not None else None
+    if rows is None:
+        return None
+    linuxcnc = found.linuxcnc
+
+    def run(w, f, b):
+        values = b.values(w.scope)
+        if (not w.fast_ok or len(w.frames) > DEPTH_LIMIT or _m73_waits(w)
+                or (None in values.values() if linuxcnc else repeat >= 0 and _repeats(values[repeat]))):
+            return slow(w, f, b, values)
+        f.pc += 1
+        try:
+            made = rows(w.scope, w.where_id(file_id, name), f.iteration, values)
+        except Exception:  # noqa: BLE001  (the general handler runs it as a frame, which reports it)
+            f.pc -= 1
+            return slow(w, f, b, values)
+        _add(w, found, made)
+        return None
+
+    run.step = "call"  # a step of a compiled loop (loop.py)
+    return run
+
+
+def _repeats(count) -> bool:
+    """True when an ``L`` word's value asks for anything but one call."""
+    return count is not None and int(count) != 1
+
+
+def _m73_waits(w) -> bool:
+    """An ``M73`` saved the modal state for the return of a call level (``modal_state``)."""
+    saved = w.state.saved
+    return saved is not None and bool(saved.get("auto"))
+
+
 def _leaf(unit, start: int) -> Leaf | None:
     known = unit.leaves
     if start not in known:
@@ -93,8 +159,7 @@ def enter(w, unit, start: int, locals_: dict, name: str, file_id: int, program: 
 def _made(w, leaf: Leaf, locals_: dict, file_id: int, name: str) -> bool:
     """Add the leaf's rows to the batch; False (nothing added) when it must run as a frame."""
     frames = w.frames
-    saved = w.state.saved
-    if len(frames) > DEPTH_LIMIT or (saved is not None and saved.get("auto")):
+    if len(frames) > DEPTH_LIMIT or _m73_waits(w):
         return False
     if leaf.rows is None:
         leaf.rows = compile_rows([m.fast_code for m in leaf.members])
@@ -107,6 +172,13 @@ def _made(w, leaf: Leaf, locals_: dict, file_id: int, name: str) -> bool:
         return False
     finally:
         scope.frame = caller
+    _add(w, leaf, made)
+    return True
+
+
+def _add(w, leaf: Leaf, made: bytes) -> None:
+    """The rows ``made`` by a call of ``leaf`` into the batch, its blocks counted, its
+    return done (LinuxCNC: no value returned)."""
     batch = w.batch
     batch.extend(made)
     batch.blocks.extend(leaf.members)
@@ -115,4 +187,3 @@ def _made(w, leaf: Leaf, locals_: dict, file_id: int, name: str) -> bool:
         w.scope.params.named["_value_returned"] = 0.0
     if len(batch.blocks) >= w.batch_limit:
         w.flush()
-    return True

@@ -62,7 +62,7 @@ def _steps(unit, head: int, end: int, kinds: dict) -> list[tuple] | None:
     steps, i = [], head + 1
     while i < end:
         b = unit.blocks[i]
-        kind = kinds.get(b.run)
+        kind = kinds.get(b.run, getattr(b.run, "step", None))
         if i in spans and i + spans[i] <= end:
             steps.append((MOVE, i, spans[i]))
             i += spans[i]
@@ -148,10 +148,9 @@ def _step(kind: str, i: int, span: int, namespace: dict, unit) -> str:
         return code + _VALUE.format(code=f"R{i}(S, wid, it)", i=i) + (
             f"            ext(x)\n            more(M{i})\n" + _FLUSH.format(after=i + span, i=i))
     if kind == CALL:
-        namespace[f"H{i}"] = b.run
         return code + f"""            f.pc = {i}
             try:
-                H{i}(w, f, B{i})
+                B{i}.run(w, f, B{i})  # its handler may be made for its program on a first run
             except MacroError as exc:
                 raise exc.at(B{i}.line, FILE) from None
             except FAULTS as exc:

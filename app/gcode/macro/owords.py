@@ -30,7 +30,11 @@ def _computed_name(w, b) -> str:
 
 
 def _call(w, f: Frame, b) -> None:
-    locals_ = b.values(w.scope)
+    call_with(w, f, b, b.values(w.scope))
+
+
+def call_with(w, f: Frame, b, locals_: dict) -> None:
+    """``call`` with the arguments' values ``locals_`` computed."""
     name = b.oname if b.onumber is None else _computed_name(w, b)
     key = f.file_id if b.onumber is None else (f.file_id, name)
     target = b.called.get(key)
@@ -41,6 +45,9 @@ def _call(w, f: Frame, b) -> None:
     if None in locals_.values():
         locals_ = {i: (0.0 if v is None else v) for i, v in locals_.items()}
     unit, start, file_id = target
+    if not b.specialized and b.onumber is None:
+        b.specialized = True  # the line always calls this sub: straight to its rows if a leaf
+        b.run = leaf.direct(unit, start, b.context, file_id, None, -1, call_with) or b.run
     context = b.context if b.onumber is None else f"o{name}"
     leaf.enter(w, unit, start, locals_, context, file_id, caller_line=b.line)
 
