@@ -11,6 +11,10 @@ toward the work budget (as many as the walk would run), ``#<_value_returned>``. 
 call repeated (``L``), nested too deep, made while the fast path is off or an ``M73``
 waits for a return, or whose expressions fail, is pushed as a frame as before, and
 runs (and reports) as it always did: nothing of it was added.
+
+A call line that always calls the same leaf (a constant ``P``, a named sub) gets its
+own handler (``direct``): the leaf's rows computed straight from the line's values, its
+locals never built.
 """
 
 from __future__ import annotations
