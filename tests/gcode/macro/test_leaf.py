@@ -40,6 +40,8 @@ o1 endwhile
 (debug, #<_value_returned>)
 M2
 """
+REPEATS = ("O1\n#1 = 0\nWHILE [#1 LT 4] DO 1\nG65 P20 L#1 X[#1 * 2] Y#7\n#1 = #1 + 1\nEND 1\n"
+           "G65 P20 L1 X9\nG65 P20 L0 X8\nM30\nO20\nG1 X#24 Y#25 F100\nG0 Z1\nM99\n")  # L 0..3, vacant Y
 FAILING = "O1\nG65 P20 X1\nG65 P20 X0\nM30\nO20\nG1 X[1 / #24] F100\nG0 Z1\nM99\n"
 NOT_LEAVES = [
     "O1\nG65 P20 X1\nM30\nO20\n#1 = 2\nG1 X#1 F100\nM99\n",  # an assignment
@@ -69,7 +71,7 @@ def _same(a, b) -> None:
     assert sa.names == sb.names
 
 
-@pytest.mark.parametrize("text", [FANUC_G65, FANUC_M98, LINUXCNC, FAILING, *NOT_LEAVES])
+@pytest.mark.parametrize("text", [FANUC_G65, FANUC_M98, LINUXCNC, REPEATS, FAILING, *NOT_LEAVES])
 def test_a_leaf_call_means_what_running_its_frame_means(text, monkeypatch):
     fast, fast_work = _load(text, True, monkeypatch)
     slow, slow_work = _load(text, False, monkeypatch)
