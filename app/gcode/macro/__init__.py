@@ -25,7 +25,8 @@ from app.gcode.diagnostics import ERROR, Report
 from app.gcode.ops import OpBuffer
 from app.gcode.params import Params
 
-from .calls import MAX_LINES, Library, too_many_lines
+from . import structure
+from .calls import Library
 from .structure import Unit
 from .walker import Trace, Walker
 
@@ -58,14 +59,9 @@ def expand(lines, name: str, folder: Path | None, state, ops: OpBuffer, report: 
     the caller stops the walk once it has that many rows (the first-move probe,
     ``start.py``), so plain moves are interpreted in batches no larger: the walk does not
     run ahead of what is wanted."""
-    if len(lines) > MAX_LINES:
-        report.add(MAX_LINES + 1, 0, ERROR, too_many_lines(len(lines)).message)
-        refused = Trace([name])
-        refused.state = state
-        return refused
     fanuc = is_fanuc("\n".join(lines))
     state.fanuc = fanuc  # offset registers (G10 L12, D) exist without a tool table
-    unit = Unit(name, lines, fanuc, getattr(state, "block_delete", False))
+    unit = Unit(name, lines, fanuc, getattr(state, "block_delete", False), structure.MAX_LINES)
     for exc in unit.errors:
         report.add(exc.line, exc.column, ERROR, exc.message)
     params = getattr(state, "params", None)

@@ -22,7 +22,7 @@ from .expr import Reader, compile_code, compile_codes, compile_locals, constant
 from .stores import compile_stores
 from .text import squeeze
 
-WORDS, SKIP, OWORD, PROGRAM, IF_GOTO, IF_THEN, GOTO, WHILE, DO, END = range(10)
+WORDS, SKIP, OWORD, PROGRAM, IF_GOTO, IF_THEN, GOTO, WHILE, DO, END, PLAIN = range(11)
 O_KEYWORDS = ("sub", "endsub", "call", "return", "if", "elseif", "else", "endif", "while",
               "endwhile", "do", "repeat", "endrepeat", "break", "continue")
 WITH_VALUE = {"if", "elseif", "while", "repeat"}  # keywords that need one [value]
@@ -79,6 +79,8 @@ class Block:
     comment: str = ""  # Fanuc: the text of the line's first comment (a #3000 alarm's message)
     called: dict = field(default_factory=dict)  # o-word call: caller's file id -> (unit, start, file id)
     specialized: bool = False  # a call: its handler was made for the one program it calls (leaf.direct)
+    end: int = 0  # PLAIN: the index past the chunk's last line (plain.py)
+    refused: bool = False  # PLAIN: the fast path reported an error in the chunk
 
     def finish(self) -> Block:
         """Compile the codes of the line into functions (done once)."""

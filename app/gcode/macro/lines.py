@@ -23,6 +23,7 @@ from . import fanuc, loop, owords, predefined
 from .errors import MacroError
 from .frame import Frame
 from .owords import handler as oword_handler
+from .plain import run_chunk
 from .runs import run_handler, runs
 
 
@@ -154,7 +155,7 @@ def skip(w, f: Frame, b: bk.Block) -> None:
 
 
 HANDLERS = {
-    bk.WORDS: words, bk.SKIP: skip, bk.PROGRAM: fanuc.program, bk.IF_GOTO: fanuc.if_goto,
+    bk.WORDS: words, bk.SKIP: skip, bk.PLAIN: run_chunk, bk.PROGRAM: fanuc.program, bk.IF_GOTO: fanuc.if_goto,
     bk.IF_THEN: fanuc.if_then, bk.GOTO: fanuc.goto, bk.WHILE: fanuc.while_do, bk.DO: fanuc.do,
     bk.END: fanuc.end,
 }
@@ -203,11 +204,12 @@ def bind(unit) -> None:
     """Give every block of ``unit`` the handler that runs it (once per unit); a block
     that starts a straight run of moves runs the whole run (``runs.py``), the head of
     a loop the whole loop when its body is straight (``loop.py``)."""
-    for b in unit.blocks:
-        b.run = handler(b)
+    for i in unit.starts:
+        unit.blocks[i].run = handler(unit.blocks[i])
     for i, (members, span) in runs(unit).items():
         unit.blocks[i].run = run_handler(members, span, unit.blocks[i].run)
-    for i, b in enumerate(unit.blocks):
+    for i in unit.starts:
+        b = unit.blocks[i]
         if b.kind == bk.WHILE or b.kind == bk.OWORD and b.keyword == "while":
             unit.loops.add(i)
             b.run = loop.lazy_loop(unit, i, STEPS, b.run)

@@ -36,7 +36,8 @@ def runs(unit) -> dict[int, tuple]:
     """Block index -> (motion blocks of the run starting there, blocks it spans)."""
     found: dict[int, tuple] = {}
     blocks = unit.blocks
-    for i, b in enumerate(blocks):
+    for i in unit.starts:
+        b = blocks[i]
         if not _may_join(b):
             continue
         members, j = [b], i + 1

@@ -299,8 +299,7 @@ class Walker:
         if len(self.batch):
             self.state = self.batch.flush(self.state, self.ops, self.trace)
             self.fast_ok = self.state.fast_path_ok()
-            if len(self.trace.file) > MOVE_LIMIT:
-                raise TooLarge(msg("the expansion makes more than {limit:,} moves", limit=MOVE_LIMIT))
+            self.check_moves()
 
     def emit(self, f: Frame, b: bk.Block, words: list[Word]) -> None:
         self.interpreted += 1
@@ -318,6 +317,11 @@ class Walker:
                 self._after_end(f)
             self.frames.clear()
 
+    def check_moves(self, line: int = 0) -> None:
+        """Refuse the program once it has made more than ``MOVE_LIMIT`` rows."""
+        if len(self.trace.file) > MOVE_LIMIT:
+            raise TooLarge(msg("the expansion makes more than {limit:,} moves", limit=MOVE_LIMIT), line)
+
     def _trace_rows(self, f: Frame, call_line: int, before: int, line: int = 0) -> None:
         """The rows added since row ``before`` come from frame ``f`` at ``call_line``."""
         rows = self.ops.rows[before:]
@@ -325,8 +329,7 @@ class Walker:
             main = f is self.frames[0]  # the main program: each row's own line (a held move's too)
             lines = [int(row[0]) for row in rows] if main else call_line
             self.trace.repeat(len(rows), f.file_id, self._names[f.name], f.iteration, lines)
-            if len(self.trace.file) > MOVE_LIMIT:
-                raise TooLarge(msg("the expansion makes more than {limit:,} moves", limit=MOVE_LIMIT), line)
+            self.check_moves(line)
 
     def _after_end(self, f: Frame) -> None:
         """One warning for the first block after M2/M30 (Fanuc: before the next program;
@@ -340,6 +343,8 @@ class Walker:
                 i = f.unit.jump[i]
                 continue
             i += 1
+            if b.kind == bk.PLAIN and not f.unit.lines[i - 1].strip():
+                continue  # an empty line of a chunk of plain lines
             if b.kind != bk.SKIP or i - 1 in f.unit.bad:
                 ended = self.state.ended
                 self.report.warning(b.line, 0, msg("ignored: the program ended at line {line} (M2/M30)",
