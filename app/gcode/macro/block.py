@@ -1,7 +1,8 @@
 """One source line compiled once into a ``Block`` the walker runs as often as needed.
 
 Kinds: ``WORDS`` (G-code words whose values are functions, and assignments applied
-after the line is read), ``SKIP`` (empty, ``%``, block delete with the switch on), ``OWORD`` (a
+after the line is read), ``SKIP`` (empty, ``%``, block delete with the switch on), ``PLAIN`` (a line of a long run
+of simple lines, which the fast path reads: ``plain.py``; one block shared by the run), ``OWORD`` (a
 LinuxCNC o-word statement: ``keyword``, o-name, optional value functions), and the
 Fanuc macro B statements ``PROGRAM`` (``O1234``), ``IF_GOTO``, ``IF_THEN``, ``GOTO``,
 ``WHILE`` (``WHILE [c] DO m``), ``DO`` (``DO m``) and ``END`` (``END m``). A Fanuc
@@ -80,7 +81,6 @@ class Block:
     called: dict = field(default_factory=dict)  # o-word call: caller's file id -> (unit, start, file id)
     specialized: bool = False  # a call: its handler was made for the one program it calls (leaf.direct)
     end: int = 0  # PLAIN: the index past the chunk's last line (plain.py)
-    refused: bool = False  # PLAIN: the fast path reported an error in the chunk
 
     def finish(self) -> Block:
         """Compile the codes of the line into functions (done once)."""

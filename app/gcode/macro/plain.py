@@ -31,7 +31,7 @@ from .errors import Stopped
 CHUNK_MIN = 64  # simple lines in a row worth a chunk (a shorter run compiles, as any line)
 PIECE = 1 << 16  # lines of a chunk read at once
 _LABEL = re.compile(r"(?m)^[ \t]*[Nn][ \t]*(\d+)")
-_ABORT = re.compile(r"(?im)^[^\n]*\(\s*abort")
+_ABORT = re.compile(r"(?i)\(\s*abort")
 
 
 def _line_numbers(text: str, offsets: list[int]) -> list[int]:
@@ -40,26 +40,39 @@ def _line_numbers(text: str, offsets: list[int]) -> list[int]:
     return np.searchsorted(newlines, np.asarray(offsets, np.int64)).tolist()
 
 
-def chunks(lines: list[str], fanuc: bool) -> tuple[list[tuple[int, int]], dict[int, int], bulk.Scan | None]:
-    """([start, end) of each chunk of simple lines, in order; {line index: N label} of
-    the lines that start with a label (Fanuc's ``GOTO`` targets); the scan of every
-    line (None when there is no chunk)."""
+def chunks(lines: list[str]) -> tuple[list[tuple[int, int]], bulk.Scan | None]:
+    """([start, end) of each chunk of simple lines, in order; the scan of every line
+    (None when there is no chunk)."""
     if len(lines) < CHUNK_MIN:
-        return [], {}, None
+        return [], None
     text = "\n".join(lines)
     scan = bulk.scan((text + "\n").encode("utf-8"), len(lines))
     simple = scan.simple.copy()
     simple[_line_numbers(text, [m.start() for m in _ABORT.finditer(text)])] = False
     edges = np.flatnonzero(np.diff(np.concatenate(([0], simple.view(np.int8), [0]))))
     found = [(int(a), int(b)) for a, b in zip(edges[::2], edges[1::2], strict=True) if b - a >= CHUNK_MIN]
-    if not found:
-        return [], {}, None
-    labels: dict[int, int] = {}
-    if fanuc:
+    return (found, scan) if found else ([], None)
+
+
+def labels(lines: list[str], found: list[tuple[int, int]]) -> dict[int, int]:
+    """{line index: N number} of the lines of the chunks ``found`` that start with one
+    (Fanuc's ``GOTO`` targets)."""
+    said: dict[int, int] = {}
+    for start, end in found:
+        text = "\n".join(lines[start:end])
         matches = list(_LABEL.finditer(text))
         for i, m in zip(_line_numbers(text, [m.start() for m in matches]), matches, strict=True):
-            labels[i] = int(m.group(1))
-    return found, labels, scan
+            said[start + i] = int(m.group(1))
+    return said
+
+
+def outside(lines: list[str], found: list[tuple[int, int]]) -> str:
+    """The lines outside the chunks ``found``, joined (what can make a program Fanuc's)."""
+    parts, start = [], 0
+    for a, b in [*found, (len(lines), len(lines))]:
+        parts.append("\n".join(lines[start:a]))
+        start = b
+    return "\n".join(parts)
 
 
 def run_chunk(w, f, b) -> None:

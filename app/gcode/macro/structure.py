@@ -15,12 +15,13 @@ Unbalanced structures are errors naming the line and column.
 from __future__ import annotations
 
 import bisect
+import re
 
 from app.i18n import msg
 
 from .block import DO, END, OWORD, PLAIN, PROGRAM, SKIP, WHILE, Block, compile_line
 from .errors import MacroError
-from .plain import chunks
+from .plain import chunks, labels, outside
 
 MAX_LINES = 50_000  # lines the expander compiles, every file together (about 2 s and 250 MB): plain
 # lines in chunks (plain.py) do not count
@@ -30,6 +31,18 @@ def too_many_lines() -> MacroError:
     return MacroError(msg("the expander compiles at most {limit:,} lines of a program and its subprogram "
                           "files (lines of plain words do not count); this line is past the limit",
                           limit=MAX_LINES))
+
+
+_FANUC = re.compile(
+    r"(?im)^[ \t]*(?:n[ \t]*\d+[ \t]*)?(?:o[ \t]*\d+[ \t]*(?:\([^\n]*\))?[ \t]*$|if[ \t]*\[|goto"
+    r"|while[ \t]*\[|(?:do|end)[ \t]*\d)|m[ \t]*0*9[ \t]*[89](?![\d.])|g[ \t]*0*6[ \t]*5(?![\d.])")
+
+
+def is_fanuc(text: str) -> bool:
+    """True when ``text`` is written in Fanuc macro B rather than LinuxCNC o-words: it has
+    a bare ``O`` number line, ``IF [``, ``GOTO``, ``WHILE [``, ``DO``/``END`` or
+    ``M98``/``M99``/``G65``."""
+    return _FANUC.search(re.sub(r"\([^()\n]*\)", "", text)) is not None
 
 
 LOOP_HEADS = {"while", "do"}  # break/continue work in these (not in repeat, as rs274ngc)
@@ -52,13 +65,18 @@ def _past_limit(found: list[tuple[int, int]], count: int, limit: int) -> int | N
 class Unit:
     """One compiled source file (see the module docstring)."""
 
-    def __init__(self, name: str, lines, fanuc: bool, block_delete: bool = False, compile_limit: int = 0):
+    def __init__(self, name: str, lines, fanuc: bool | None, block_delete: bool = False,
+                 compile_limit: int = 0):
+        """``fanuc``: the dialect, or None to tell it from the lines (``is_fanuc``)."""
+        found, self.scan = chunks(lines)
+        if fanuc is None:
+            fanuc = is_fanuc(outside(lines, found))  # a simple line is of either dialect
         self.name, self.fanuc, self.block_delete, self.lines = name, fanuc, block_delete, lines
         self.blocks: list[Block] = []
         self.starts: list[int] = []  # the index of each distinct block (a chunk's first line)
         self.errors: list[MacroError] = []
         self.bad: set[int] = set()
-        found, self.plain_label_of, self.scan = chunks(lines, fanuc)
+        self.plain_label_of = labels(lines, found) if fanuc else {}
         self.plain_labels = sorted(self.plain_label_of)  # chunk lines with an N label
         self.compiled = 0  # lines compiled (the lines of chunks are not)
         self.jump: dict[int, int] = {}

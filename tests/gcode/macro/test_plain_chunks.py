@@ -81,9 +81,10 @@ def test_a_chunk_means_what_its_compiled_lines_mean(name, monkeypatch):
 
 def test_chunks_are_found_where_simple_lines_run_long():
     lines = ["#1 = 1"] + ["G1 X1"] * 70 + ["G1 X#1"] + ["G1 X2"] * 10 + ["(ABORT, x)"] + ["G1 Y1 (c)"] * 64
-    found, _, scan = plain.chunks(lines, fanuc=False)
+    found, scan = plain.chunks(lines)
     assert found == [(1, 71), (83, 147)] and len(scan.simple) == len(lines)
     calls = ["M98 P12", "G65 P9 X1", "M 9 9", "G04 X1", "M2"] + ["N5 G1 X1"] * 64
-    found, labels, _ = plain.chunks(calls, fanuc=True)
-    assert found == [(5, 69)] and labels[5] == 5
-    assert plain.chunks(["G1 X1"] * 63, fanuc=False)[0] == []
+    found, _ = plain.chunks(calls)
+    assert found == [(5, 69)] and plain.labels(calls, found)[5] == 5
+    assert plain.outside(calls, found) == "\n".join(calls[:5]) + "\n"
+    assert plain.chunks(["G1 X1"] * 63) == ([], None)
