@@ -1,9 +1,10 @@
 """One source line compiled once into a ``Block`` the walker runs as often as needed.
 
 Kinds: ``WORDS`` (G-code words whose values are functions, and assignments applied
-after the line is read), ``SKIP`` (empty, ``%``, block delete with the switch on), ``PLAIN`` (a line of a long run
-of simple lines, which the fast path reads: ``plain.py``; one block shared by the run), ``OWORD`` (a
-LinuxCNC o-word statement: ``keyword``, o-name, optional value functions), and the
+after the line is read), ``SKIP`` (empty, ``%``, block delete with the switch on),
+``PLAIN`` (a line of a long run of simple lines, which the fast path reads: ``plain.py``;
+one block shared by the run), ``OWORD`` (a LinuxCNC o-word statement: ``keyword``,
+o-name, optional value functions), and the
 Fanuc macro B statements ``PROGRAM`` (``O1234``), ``IF_GOTO``, ``IF_THEN``, ``GOTO``,
 ``WHILE`` (``WHILE [c] DO m``), ``DO`` (``DO m``) and ``END`` (``END m``). A Fanuc
 ``N`` number is the block's ``label``. ``compile_line`` raises ``MacroError`` with
