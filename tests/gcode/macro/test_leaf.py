@@ -2,26 +2,13 @@
 must mean exactly what pushing the frame and running its blocks means: the same rows,
 the same trace of each row, the same errors and the same work counted."""
 
-import numpy as np
 import pytest
 
 from app.gcode import load_text
-from app.gcode.macro import leaf, walker
+from app.gcode.macro import leaf
 
-FANUC_G65 = """O1000
-#100 = 0
-WHILE [#100 LT 5] DO 1
-  G65 P9010 X[#100 * 2] Y1 Z-0.5 F300
-  #100 = #100 + 1
-END 1
-M30
-O9010
-G0 X#24 Y#25
+from .walks import FANUC_GRID, same_walks
 
-G1 Z#26 F#9
-G0 Z1
-M99
-"""
 FANUC_M98 = "O1\n#1 = 3\nM98 P20\n#1 = 4\nM98 P20 L2\nM98 P20\nM30\nO20\nG1 X#1 Y#1 F100\nG0 Z1\nM99\n"
 LINUXCNC = """o<hole> sub
   G0 X#1 Y#2
@@ -51,39 +38,19 @@ NOT_LEAVES = [
 ]
 
 
-def _load(text: str, leaves: bool, monkeypatch):
-    spent = []
-    run = walker.Walker.run
-    with monkeypatch.context() as m:
-        m.setattr(walker.Walker, "run", lambda self: (run(self), spent.append(self.work_done())))
-        if not leaves:
-            m.setattr(leaf, "find", lambda unit, start: None)
-        return load_text(text), spent
+NO_LEAVES = ((leaf, "find", lambda unit, start: None),)
 
 
-def _same(a, b) -> None:
-    assert a.device_lines == b.device_lines
-    said = [[(d.line, d.severity, d.message) for d in p.diagnostics] for p in (a, b)]
-    assert said[0] == said[1]
-    sa, sb = a.ops.source, b.ops.source
-    for column in ("file", "call_line", "context", "iteration"):
-        assert np.array_equal(getattr(sa, column), getattr(sb, column)), column
-    assert sa.names == sb.names
-
-
-@pytest.mark.parametrize("text", [FANUC_G65, FANUC_M98, LINUXCNC, REPEATS, FAILING, *NOT_LEAVES])
+@pytest.mark.parametrize("text", [FANUC_GRID, FANUC_M98, LINUXCNC, REPEATS, FAILING, *NOT_LEAVES])
 def test_a_leaf_call_means_what_running_its_frame_means(text, monkeypatch):
-    fast, fast_work = _load(text, True, monkeypatch)
-    slow, slow_work = _load(text, False, monkeypatch)
-    _same(fast, slow)
-    assert fast_work == slow_work
+    same_walks(text, monkeypatch, NO_LEAVES)
 
 
 def test_the_leaf_path_is_taken_for_plain_bodies_only(monkeypatch):
     found = []
     find = leaf.find
     monkeypatch.setattr(leaf, "find", lambda unit, start: found.append(find(unit, start)) or found[-1])
-    for text in (FANUC_G65, LINUXCNC):
+    for text in (FANUC_GRID, LINUXCNC):
         load_text(text)
     assert any(f is not None and len(f.members) == 3 for f in found)
     found.clear()

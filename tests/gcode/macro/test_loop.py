@@ -4,30 +4,13 @@ trace of each row, the same errors at the same lines, the same work counted, wha
 happens inside (an error, a call that needs a frame, the loop limit, the work budget,
 a batch interpreted mid-pass)."""
 
-import numpy as np
 import pytest
 
 from app.gcode import load_text
 from app.gcode.macro import loop, walker
 
-FANUC_GRID = """O1000
-G21 G90 G17
-#100 = 0
-WHILE [#100 LT 4] DO 1
-  #101 = 0
-  WHILE [#101 LT 5] DO 2
-    G65 P9010 X[#101 * 0.25] Y[#100 * 0.25] Z-0.5 F300
-    #101 = #101 + 1
-  END 2
-  #100 = #100 + 1
-END 1
-M30
-O9010
-G0 X#24 Y#25
-G1 Z#26 F#9
-G0 Z1
-M99
-"""
+from .walks import FANUC_GRID, same_walks, walk
+
 LINUXCNC_GRID = """o<hole> sub
   G0 X#1 Y#2
   G1 Z#3 F#4
@@ -86,27 +69,11 @@ ENDLESS = "#1 = 0\no1 while [1]\nG1 X[#1 MOD 7] F100\n#1 = [#1 + 1]\no1 endwhile
 PROGRAMS = [FANUC_GRID, LINUXCNC_GRID, MIXED, FANUC_M98, READS, *ERRORS]
 
 
-def _load(text: str, compiled: bool, monkeypatch):
-    spent = []
-    run = walker.Walker.run
-    with monkeypatch.context() as m:
-        m.setattr(walker.Walker, "run", lambda self: (run(self), spent.append(self.work_done())))
-        if not compiled:
-            m.setattr(loop, "compile_loop", lambda *args: None)
-        return load_text(text), spent
+NOT_COMPILED = ((loop, "compile_loop", lambda *args: None),)
 
 
-def _same(text: str, monkeypatch) -> None:
-    fast, fast_work = _load(text, True, monkeypatch)
-    slow, slow_work = _load(text, False, monkeypatch)
-    assert fast.device_lines == slow.device_lines
-    said = [[(d.line, d.column, d.severity, d.message) for d in p.diagnostics] for p in (fast, slow)]
-    assert said[0] == said[1]
-    sa, sb = fast.ops.source, slow.ops.source
-    for column in ("file", "call_line", "context", "iteration"):
-        assert np.array_equal(getattr(sa, column), getattr(sb, column)), column
-    assert fast_work == slow_work
-    return fast
+def _same(text: str, monkeypatch):
+    return same_walks(text, monkeypatch, NOT_COMPILED)
 
 
 @pytest.mark.parametrize("text", PROGRAMS)
@@ -137,8 +104,8 @@ def test_the_work_budget_is_kept(monkeypatch):
     """Both walks check the budget where they can (the walk per block, the compiled loop
     per pass), against work counted the same way: both refuse, at a line of the loop."""
     monkeypatch.setattr(walker, "WORK_LIMIT", 5_000)
-    for compiled in (True, False):
-        program, _ = _load(ENDLESS, compiled, monkeypatch)
+    for switched_off in ((), NOT_COMPILED):
+        program, _ = walk(ENDLESS, monkeypatch, switched_off)
         (error,) = program.errors
         assert "more work than the limit of 5,000" in error.message and 2 <= error.line <= 5
 

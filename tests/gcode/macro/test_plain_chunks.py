@@ -10,6 +10,8 @@ import pytest
 from app.gcode import load_text
 from app.gcode.macro import plain
 
+from .walks import same_walks
+
 
 def _moves(n: int, seed: int = 1) -> str:
     rnd = random.Random(seed)
@@ -31,22 +33,8 @@ def test_a_200000_line_program_with_one_parameter_line_runs_as_its_plain_reading
     assert expanded.ops.source is not None and set(np.unique(expanded.ops.source.file)) == {0}
 
 
-def _load(text: str, chunked: bool, monkeypatch):
-    with monkeypatch.context() as m:
-        if not chunked:
-            m.setattr(plain, "CHUNK_MIN", 10**9)
-        return load_text(text)
-
-
 def _same(text: str, monkeypatch):
-    fast, slow = _load(text, True, monkeypatch), _load(text, False, monkeypatch)
-    assert fast.device_lines == slow.device_lines
-    said = [[(d.file, d.line, d.severity, d.message) for d in p.diagnostics] for p in (fast, slow)]
-    assert said[0] == said[1]
-    sa, sb = fast.ops.source, slow.ops.source
-    for column in ("file", "call_line", "context", "iteration"):
-        assert np.array_equal(getattr(sa, column), getattr(sb, column)), column
-    return fast
+    return same_walks(text, monkeypatch, ((plain, "CHUNK_MIN", 10**9),), work=False)
 
 
 MOVES = _moves(100)
