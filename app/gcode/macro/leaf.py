@@ -27,6 +27,7 @@ from . import block as bk
 from .batch import ROW, compile_rows
 from .expr import NAMESPACE
 from .frame import DEPTH_LIMIT, Frame
+from .loop import CALL
 from .runs import _empty, runs
 
 
@@ -129,7 +130,7 @@ def direct(unit, start: int, name: str, file_id: int, index: dict | None, repeat
         _add(w, found, made)
         return None
 
-    run.step = "call"  # a step of a compiled loop (loop.py)
+    run.step = CALL  # a step of a compiled loop (loop.py)
     return run
 
 
