@@ -175,10 +175,19 @@ def _loads(load, path: Path) -> tuple[list[float], list[float], tuple]:
 
 def _plain(load) -> str:
     """The 1 M-line plain file of ``bench_gcode`` (``big.ngc``) through the same ``load``: the
-    fast path the expander must leave as it was (issue 9: print both)."""
+    fast path the expander must leave as it was (issue 9: print both); then the same file
+    with one parameter line before it, which needs the expander (issue 19: its plain lines
+    are read by the fast path, ``macro/plain.py``)."""
     from bench.bench_gcode import build
 
     path, _ = build()
     walls, cpus, (moves, _, _) = _loads(load, path)
-    return (f"plain 1 M-line file ({path.name}, fast path): load -> Toolpath best of {REPEATS}: "
+    said = (f"plain 1 M-line file ({path.name}, fast path): load -> Toolpath best of {REPEATS}: "
             f"{min(walls):.2f} s wall, {min(cpus):.2f} s CPU (all: {_seconds(walls)} wall); {moves:,} moves")
+    one = DATA / "big_one_parameter.ngc"
+    one.write_text("#1 = 1 (one parameter line: the expander reads the program)\n" + path.read_text())
+    walls, cpus, (moves, _, errors) = _loads(load, one)
+    _, peak = _peak_mb(one)
+    return (f"{said}\nthe same with one parameter line ({one.name}, expander): best of {REPEATS}: "
+            f"{min(walls):.2f} s wall, {min(cpus):.2f} s CPU (all: {_seconds(walls)} wall); {moves:,} moves, "
+            f"errors {errors}; peak resident memory of one load {peak} MB")
