@@ -262,7 +262,7 @@ def _prefix_reader(raw: bytes, lines: Lines, name: str, profile: MachineProfile,
 
             buffer = _CappedBuffer(cap=limit)
             try:
-                macro.expand(lines.as_list()[:stop], name, folder, state, buffer, report)
+                macro.expand(lines.as_list()[:stop], name, folder, state, buffer, report, rows_wanted=limit)
             except _Enough:
                 return buffer.finish(), False
             return buffer.finish(), True

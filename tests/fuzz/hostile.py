@@ -48,8 +48,8 @@ PROGRAMS: dict[str, tuple[str, dict]] = {
     "o<../x> call": ("G21 F100\no<../x> call\nM2\n", {}),
     "o</abs/path> call": ("G21 F100\no</etc/passwd> call\nM2\n", {}),
     "main program ended by M99": ("O0001\nG21 G90 F100\nG1 X1\nM99\n", {}),
-    "200,000 lines with one parameter": (
-        "#1 = 1\nG21 G90 F100\n" + "G1 X1 Y2\nG1 X2 Y1\n" * 100000 + "M2\n", {}),
+    "60,000 lines with a parameter each": (
+        "#1 = 1\nG21 G90 F100\n" + "G1 X#1 Y2\nG1 X2 Y#1\n" * 30000 + "M2\n", {}),
     "recursion without end": ("G21 F100\no1 sub\no1 call\no1 endsub\no1 call\nM2\n", {}),
 }
 REFUSED = set(PROGRAMS)  # every one of them is refused, each on a line it names

@@ -6,8 +6,9 @@ import the expander) is the loader's cheap test on a file's bytes.
 (``structure.Unit``), walks it (``walker.Walker``) and hands every block left to
 ``interp.interpret_line``; it returns the ``Trace`` of the rows it added. The
 dialect is Fanuc when the program has a bare ``O`` number line, ``IF [``, ``GOTO``,
-``WHILE [``, ``DO``/``END`` or ``M98``/``M99``/``G65``; else LinuxCNC. Nothing
-here imports Qt.
+``WHILE [``, ``DO``/``END`` or ``M98``/``M99``/``G65``; else LinuxCNC
+(``structure.is_fanuc``; long runs of simple lines, read by the fast path, are not
+looked at: ``plain.py``). Nothing here imports Qt.
 
 The walk runs with Python's cyclic garbage collector paused (``_no_cycle_collection``):
 it makes millions of small tuples, dicts and frames and no reference cycles, and the
@@ -18,25 +19,16 @@ from __future__ import annotations
 
 import contextlib
 import gc
-import re
 from pathlib import Path
 
 from app.gcode.diagnostics import ERROR, Report
 from app.gcode.ops import OpBuffer
 from app.gcode.params import Params
 
-from .calls import MAX_LINES, Library, too_many_lines
-from .structure import Unit
+from . import structure
+from .calls import Library
+from .structure import Unit, is_fanuc  # noqa: F401  (is_fanuc: the package's interface)
 from .walker import Trace, Walker
-
-_FANUC = re.compile(
-    r"(?im)^[ \t]*(?:n[ \t]*\d+[ \t]*)?(?:o[ \t]*\d+[ \t]*(?:\([^\n]*\))?[ \t]*$|if[ \t]*\[|goto"
-    r"|while[ \t]*\[|(?:do|end)[ \t]*\d)|m[ \t]*0*9[ \t]*[89](?![\d.])|g[ \t]*0*6[ \t]*5(?![\d.])")
-
-
-def is_fanuc(text: str) -> bool:
-    """True when ``text`` is written in Fanuc macro B rather than LinuxCNC o-words."""
-    return _FANUC.search(re.sub(r"\([^()\n]*\)", "", text)) is not None
 
 
 @contextlib.contextmanager
@@ -52,20 +44,20 @@ def _no_cycle_collection():
             gc.enable()
 
 
-def expand(lines, name: str, folder: Path | None, state, ops: OpBuffer, report: Report) -> Trace:
-    """Expand the program ``lines`` into ``ops`` (see the module docstring)."""
-    if len(lines) > MAX_LINES:
-        report.add(MAX_LINES + 1, 0, ERROR, too_many_lines(len(lines)).message)
-        refused = Trace([name])
-        refused.state = state
-        return refused
-    fanuc = is_fanuc("\n".join(lines))
-    state.fanuc = fanuc  # offset registers (G10 L12, D) exist without a tool table
-    unit = Unit(name, lines, fanuc, getattr(state, "block_delete", False))
+def expand(lines, name: str, folder: Path | None, state, ops: OpBuffer, report: Report,
+           rows_wanted: int | None = None) -> Trace:
+    """Expand the program ``lines`` into ``ops`` (see the module docstring). ``rows_wanted``:
+    the caller stops the walk once it has that many rows (the first-move probe,
+    ``start.py``), so plain moves are interpreted in batches no larger: the walk does not
+    run ahead of what is wanted."""
+    unit = Unit(name, lines, None, getattr(state, "block_delete", False), structure.MAX_LINES)
+    state.fanuc = unit.fanuc  # offset registers (G10 L12, D) exist without a tool table
     for exc in unit.errors:
         report.add(exc.line, exc.column, ERROR, exc.message)
     params = getattr(state, "params", None)
     walker = Walker(Library(unit, folder), state, ops, report, params if params is not None else Params())
+    if rows_wanted is not None:
+        walker.batch_limit = max(1, min(walker.batch_limit, rows_wanted))
     if unit.structure_ok:
         with _no_cycle_collection():
             walker.run()

@@ -109,6 +109,7 @@ def _literal_row(code: str) -> bytes | None:
 
 
 _CONSTANT_PART, _WHERE_PART = struct.Struct(f"<{ROW - 2}d"), struct.Struct("<2d")
+_ROW = struct.Struct(f"<{ROW}d")
 
 
 def compile_rows(row_codes: list[str]):
@@ -167,22 +168,29 @@ class Batch:
         if not self.blocks:
             return state
         n = len(self.blocks)
+        if n < SMALL:  # one at a time: the rows read back as tuples, no numpy table
+            rows = list(_ROW.iter_unpack(self.flat))
+            self.flat.clear()  # the same object for a caller that holds ``extend`` across a sync
+            return self._each(rows, 0, state, ops, trace)
         table = np.frombuffer(bytes(self.flat), "<f8").reshape(n, ROW)  # a copy: ``flat`` is
         self.flat.clear()  # the same object for a caller that holds ``extend`` across a sync
         values = {c: table[:, i + 1] for i, c in enumerate(LETTERS)}
         values["M"] = values["S"] = np.full(n, np.nan)
-        stop = 0
-        if n >= SMALL:
-            g = table[:, 0].astype(np.int8)
-            scan = Scan(np.ones(n, bool), g, np.full(n, -1, np.int8), values)
-            before = len(ops.blocks)
-            state, stop = vector.run(scan, 0, n, state, ops)
-            if len(ops.blocks) > before:
-                self._trace_block(ops, trace, table)
-        self.interpreted += n - stop
+        scan = Scan(np.ones(n, bool), table[:, 0].astype(np.int8), np.full(n, -1, np.int8), values)
+        before = len(ops.blocks)
+        state, stop = vector.run(scan, 0, n, state, ops)
+        if len(ops.blocks) > before:
+            self._trace_block(ops, trace, table)
+        return self._each(table, stop, state, ops, trace)
+
+    def _each(self, rows, stop: int, state, ops, trace):
+        """Interpret the blocks from ``stop`` on one at a time (``rows``: their rows); the
+        batch is empty after."""
+        self.interpreted += len(self.blocks) - stop
         try:
-            for i in range(stop, n):
-                state = self._one(self.blocks[i], table[i].tolist(), state, ops, trace)
+            for i in range(stop, len(self.blocks)):
+                row = rows[i] if type(rows) is list else rows[i].tolist()
+                state = self._one(self.blocks[i], row, state, ops, trace)
                 if state.ended:
                     break
         finally:
@@ -215,7 +223,7 @@ class Batch:
         trace.context.add(where[:, 2].astype(np.int32))
         trace.iteration.add(rows[:, 9].astype(np.int32))
 
-    def _one(self, block, row: list[float], state, ops, trace):
+    def _one(self, block, row, state, ops, trace):
         """Interpret one block of the batch, its words read back from its ``row``."""
         file_id, call_line, context, report = self.wheres[int(row[8])]
         words = []

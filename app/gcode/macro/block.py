@@ -1,8 +1,10 @@
 """One source line compiled once into a ``Block`` the walker runs as often as needed.
 
 Kinds: ``WORDS`` (G-code words whose values are functions, and assignments applied
-after the line is read), ``SKIP`` (empty, ``%``, block delete with the switch on), ``OWORD`` (a
-LinuxCNC o-word statement: ``keyword``, o-name, optional value functions), and the
+after the line is read), ``SKIP`` (empty, ``%``, block delete with the switch on),
+``PLAIN`` (a line of a long run of simple lines, which the fast path reads: ``plain.py``;
+one block shared by the run), ``OWORD`` (a LinuxCNC o-word statement: ``keyword``,
+o-name, optional value functions), and the
 Fanuc macro B statements ``PROGRAM`` (``O1234``), ``IF_GOTO``, ``IF_THEN``, ``GOTO``,
 ``WHILE`` (``WHILE [c] DO m``), ``DO`` (``DO m``) and ``END`` (``END m``). A Fanuc
 ``N`` number is the block's ``label``. ``compile_line`` raises ``MacroError`` with
@@ -22,7 +24,7 @@ from .expr import Reader, compile_code, compile_codes, compile_locals, constant
 from .stores import compile_stores
 from .text import squeeze
 
-WORDS, SKIP, OWORD, PROGRAM, IF_GOTO, IF_THEN, GOTO, WHILE, DO, END = range(10)
+WORDS, SKIP, OWORD, PROGRAM, IF_GOTO, IF_THEN, GOTO, WHILE, DO, END, PLAIN = range(11)
 O_KEYWORDS = ("sub", "endsub", "call", "return", "if", "elseif", "else", "endif", "while",
               "endwhile", "do", "repeat", "endrepeat", "break", "continue")
 WITH_VALUE = {"if", "elseif", "while", "repeat"}  # keywords that need one [value]
@@ -78,6 +80,8 @@ class Block:
     abort: str | None = None  # the text of an (ABORT, text) comment: the walk stops there
     comment: str = ""  # Fanuc: the text of the line's first comment (a #3000 alarm's message)
     called: dict = field(default_factory=dict)  # o-word call: caller's file id -> (unit, start, file id)
+    specialized: bool = False  # a call: its handler was made for the one program it calls (leaf.direct)
+    end: int = 0  # PLAIN: the index past the chunk's last line (plain.py)
 
     def finish(self) -> Block:
         """Compile the codes of the line into functions (done once)."""

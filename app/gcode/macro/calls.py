@@ -17,6 +17,7 @@ from pathlib import Path
 from app.gcode.reading import SourceError, clean_bytes, read_source, text_problem
 from app.i18n import msg
 
+from . import structure
 from .errors import MacroError
 from .structure import Unit
 
@@ -81,15 +82,6 @@ def check_name(name: str, what: str) -> None:
                              limit=MAX_NAME))
 
 
-MAX_LINES = 50_000  # lines the expander compiles, every file together (about 2 s and 250 MB)
-
-
-def too_many_lines(count: int) -> MacroError:
-    return MacroError(msg("the program and its subprogram files have {count:,} lines; a program with "
-                          "parameters, o-words or Fanuc macros may have at most {limit:,}", count=count,
-                          limit=MAX_LINES))
-
-
 class Library:
     """The compiled files of one expansion: file id -> ``Unit`` (0 is the main file)."""
 
@@ -103,10 +95,10 @@ class Library:
         if file_id is None:
             main = self.units[0]
             lines = read_lines(path)
-            count = len(lines) + sum(len(u.blocks) for u in self.units)
-            if count > MAX_LINES:
-                raise too_many_lines(count)
-            unit = Unit(str(path), lines, main.fanuc, main.block_delete)
+            left = structure.MAX_LINES - sum(u.compiled for u in self.units)
+            if left <= 0:
+                raise structure.too_many_lines()
+            unit = Unit(str(path), lines, main.fanuc, main.block_delete, left)
             if unit.errors:
                 raise unit.errors[0]
             file_id = len(self.units)

@@ -14,6 +14,8 @@ from __future__ import annotations
 from app.gcode.lexer import Word
 from app.i18n import msg
 
+from . import leaf
+from .block import WHILE, constant
 from .calls import FANUC_ARGUMENTS, fanuc_arguments
 from .errors import MacroError
 from .frame import Frame
@@ -65,7 +67,7 @@ def call(w, f: Frame, b, letter: str, code: float, column: int, by_letter: dict,
 
     unit = w.library.units[file_id]
     program = unit.program_of[start] if unit.program_of else 0
-    w._push(Frame(unit, start, locals_, f"O{number:04d}", file_id, program, count, b.line))
+    leaf.enter(w, unit, start, locals_, f"O{number:04d}", file_id, program, count, b.line)
 
 
 def g65_plan(b) -> tuple | None:
@@ -84,7 +86,11 @@ def g65_plan(b) -> tuple | None:
 
 def g65(w, f: Frame, b) -> None:
     """The handler of a ``G65`` line planned by ``g65_plan``: ``call``'s rules, fewer steps."""
-    values = b.values(w.scope)
+    g65_with(w, f, b, b.values(w.scope))
+
+
+def g65_with(w, f: Frame, b, values) -> None:
+    """``g65`` with the line's ``values`` computed."""
     f.pc += 1
     p, repeat, given, called = b.plan
     number = values[p]
@@ -98,10 +104,14 @@ def g65(w, f: Frame, b) -> None:
     if target is None:
         target = called[key] = _program(w, *key)
     unit, start, program, name, file_id = target
+    if not b.specialized and count == 1 and constant(b.words[p].code) is not None:
+        b.specialized = True  # the line always calls this program: straight to its rows if a leaf
+        index = fanuc_arguments((word.letter, i) for i, word in enumerate(b.words))
+        b.run = leaf.direct(unit, start, name, file_id, index, repeat, g65_with) or b.run
     locals_ = given(values)
     if None in locals_.values():  # a vacant argument sets nothing
         locals_ = {n: v for n, v in locals_.items() if v is not None}
-    w._push(Frame(unit, start, locals_, name, file_id, program, count, b.line))
+    leaf.enter(w, unit, start, locals_, name, file_id, program, count, b.line)
 
 
 def _program(w, number: int, caller: int) -> tuple:
@@ -168,9 +178,15 @@ def do(w, f: Frame, b) -> None:
 
 
 def end(w, f: Frame, b) -> None:
+    """Back to the loop's head; a ``WHILE`` head is tested at once (as the walk would
+    run it next: one dispatch fewer per pass, the block counted all the same)."""
     head = f.unit.back[f.pc]
     w.loop_back(f, head)
     f.pc = head
+    top = f.unit.blocks[head]
+    if top.kind == WHILE and head not in f.unit.loops:  # a compiled loop tests in its handler
+        w.blocks_run += 1
+        w.loop_test(f, w.test(top.args[0]))
 
 
 def program(w, f: Frame, b) -> None:

@@ -18,12 +18,14 @@ from .errors import MacroError
 from .expr import FANUC_LOCALS, FANUC_SYSTEM, LINUXCNC_LOCALS, MACHINE_PARAMETERS
 from .structure import Unit
 
+DEPTH_LIMIT = 64  # call levels below the main program (the walker refuses deeper calls)
+
 
 class Frame:
     """One call level (see the module docstring)."""
 
     __slots__ = ("unit", "pc", "locals", "named", "program", "name", "file_id", "calls_left",
-                 "counts", "repeat_left", "iteration", "caller_line", "where", "wid")
+                 "counts", "repeat_left", "iteration", "caller_line", "wid")
 
     def __init__(self, unit: Unit, pc: int, locals_: dict, name: str, file_id: int,
                  program: int = 0, calls_left: int = 1, caller_line: int = 0):
@@ -33,8 +35,7 @@ class Frame:
         self.counts: dict[int, int] = {}  # loop head -> times it was jumped back to
         self.repeat_left: dict[int, int] = {}
         self.iteration = 0
-        self.where: tuple = ()  # (file id, calling line or 0, subprogram id, report): set by the walker
-        self.wid = 0  # the batch's id of ``where``
+        self.wid = 0  # the batch's id of where its rows come from: set by the walker
 
 
 class Scope:

@@ -19,11 +19,11 @@ from app.gcode.percent import abort_message
 from app.i18n import msg
 
 from . import block as bk
-from . import fanuc, predefined
-from .batch import MAX_ROWS
+from . import fanuc, loop, owords, predefined
 from .errors import MacroError
 from .frame import Frame
 from .owords import handler as oword_handler
+from .plain import run_chunk
 from .runs import run_handler, runs
 
 
@@ -34,7 +34,7 @@ def words(w, f: Frame, b: bk.Block) -> None:
     if not b.words or b.call_only:
         pass
     elif b.simple and w.fast_ok and w.batch.add(b, values, f.iteration, f.wid):
-        if len(w.batch) >= MAX_ROWS:
+        if len(w.batch) >= w.batch_limit:
             w.flush()
     else:
         call = general(w, f, b, values)
@@ -53,7 +53,7 @@ def simple_words(w, f: Frame, b: bk.Block) -> None:
     if b.fast is not None and w.fast_ok:  # no assignments, a constant G0-G3 or none
         batch.extend(b.fast(w.scope, f.wid, f.iteration))
         batch.append(b)
-        if len(batch.blocks) >= MAX_ROWS:
+        if len(batch.blocks) >= w.batch_limit:
             w.flush()
         return
     values = b.values(w.scope)
@@ -64,7 +64,7 @@ def simple_words(w, f: Frame, b: bk.Block) -> None:
     else:
         batch.extend(made)
         batch.append(b)
-        if len(batch.blocks) >= MAX_ROWS:
+        if len(batch.blocks) >= w.batch_limit:
             w.flush()
     if b.assigns:
         b.store(w.scope, values)
@@ -155,7 +155,7 @@ def skip(w, f: Frame, b: bk.Block) -> None:
 
 
 HANDLERS = {
-    bk.WORDS: words, bk.SKIP: skip, bk.PROGRAM: fanuc.program, bk.IF_GOTO: fanuc.if_goto,
+    bk.WORDS: words, bk.SKIP: skip, bk.PLAIN: run_chunk, bk.PROGRAM: fanuc.program, bk.IF_GOTO: fanuc.if_goto,
     bk.IF_THEN: fanuc.if_then, bk.GOTO: fanuc.goto, bk.WHILE: fanuc.while_do, bk.DO: fanuc.do,
     bk.END: fanuc.end,
 }
@@ -196,11 +196,21 @@ def handler(b: bk.Block):
     return HANDLERS[b.kind]
 
 
+STEPS = {assignments: loop.ASSIGN, simple_words: loop.MOVE, call_words: loop.CALL, fanuc.g65: loop.CALL,
+         owords.HANDLERS["call"]: loop.CALL}  # the handlers of blocks a compiled loop runs itself
+
+
 def bind(unit) -> None:
     """Give every block of ``unit`` the handler that runs it (once per unit); a block
-    that starts a straight run of moves runs the whole run (``runs.py``)."""
-    for b in unit.blocks:
-        b.run = handler(b)
+    that starts a straight run of moves runs the whole run (``runs.py``), the head of
+    a loop the whole loop when its body is straight (``loop.py``)."""
+    for i in unit.starts:
+        unit.blocks[i].run = handler(unit.blocks[i])
     for i, (members, span) in runs(unit).items():
         unit.blocks[i].run = run_handler(members, span, unit.blocks[i].run)
+    for i in unit.starts:
+        b = unit.blocks[i]
+        if b.kind == bk.WHILE or b.kind == bk.OWORD and b.keyword == "while":
+            unit.loops.add(i)
+            b.run = loop.lazy_loop(unit, i, STEPS, b.run)
     unit.bound = True

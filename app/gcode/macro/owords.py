@@ -12,6 +12,7 @@ from __future__ import annotations
 
 from app.i18n import msg
 
+from . import leaf
 from .errors import MacroError
 from .frame import Frame
 
@@ -29,7 +30,11 @@ def _computed_name(w, b) -> str:
 
 
 def _call(w, f: Frame, b) -> None:
-    locals_ = b.values(w.scope)
+    call_with(w, f, b, b.values(w.scope))
+
+
+def call_with(w, f: Frame, b, locals_: dict) -> None:
+    """``call`` with the arguments' values ``locals_`` computed."""
     name = b.oname if b.onumber is None else _computed_name(w, b)
     key = f.file_id if b.onumber is None else (f.file_id, name)
     target = b.called.get(key)
@@ -40,8 +45,11 @@ def _call(w, f: Frame, b) -> None:
     if None in locals_.values():
         locals_ = {i: (0.0 if v is None else v) for i, v in locals_.items()}
     unit, start, file_id = target
+    if not b.specialized and b.onumber is None:
+        b.specialized = True  # the line always calls this sub: straight to its rows if a leaf
+        b.run = leaf.direct(unit, start, b.context, file_id, None, -1, call_with) or b.run
     context = b.context if b.onumber is None else f"o{name}"
-    w._push(Frame(unit, start, locals_, context, file_id, caller_line=b.line))
+    leaf.enter(w, unit, start, locals_, context, file_id, caller_line=b.line)
 
 
 def _return(w, f: Frame, b) -> None:
@@ -101,9 +109,13 @@ def _while(w, f: Frame, b) -> None:
 
 
 def _endwhile(w, f: Frame, b) -> None:
+    """Back to the ``while`` and its test at once (see ``fanuc.end``)."""
     head = f.unit.back[f.pc]
     w.loop_back(f, head)
     f.pc = head
+    if head not in f.unit.loops:  # a compiled loop tests in its handler
+        w.blocks_run += 1
+        w.loop_test(f, w.test(f.unit.blocks[head].args[0]))
 
 
 def _repeat(w, f: Frame, b) -> None:

@@ -16,7 +16,7 @@ line, as block by block.
 
 from __future__ import annotations
 
-from .batch import MAX_ROWS, compile_rows
+from .batch import compile_rows
 from .block import SKIP
 from .errors import MacroError
 
@@ -36,7 +36,8 @@ def runs(unit) -> dict[int, tuple]:
     """Block index -> (motion blocks of the run starting there, blocks it spans)."""
     found: dict[int, tuple] = {}
     blocks = unit.blocks
-    for i, b in enumerate(blocks):
+    for i in unit.starts:
+        b = blocks[i]
         if not _may_join(b):
             continue
         members, j = [b], i + 1
@@ -71,7 +72,7 @@ def run_handler(members: tuple, span: int, one):
         batch = w.batch
         batch.extend(made)
         batch.blocks.extend(members)
-        if len(batch.blocks) >= MAX_ROWS:
+        if len(batch.blocks) >= w.batch_limit:
             w.flush()
         return None
 

@@ -14,42 +14,109 @@ Unbalanced structures are errors naming the line and column.
 
 from __future__ import annotations
 
+import bisect
+import re
+
 from app.i18n import msg
 
-from .block import DO, END, OWORD, PROGRAM, SKIP, WHILE, Block, compile_line
+from .block import DO, END, OWORD, PLAIN, PROGRAM, SKIP, WHILE, Block, compile_line
 from .errors import MacroError
+from .plain import chunks, labels, outside
+
+MAX_LINES = 50_000  # lines the expander compiles, every file together (about 2 s and 250 MB): plain
+# lines in chunks (plain.py) do not count
+
+
+def too_many_lines() -> MacroError:
+    return MacroError(msg("the expander compiles at most {limit:,} lines of a program and its subprogram "
+                          "files (lines of plain words do not count); this line is past the limit",
+                          limit=MAX_LINES))
+
+
+_FANUC = re.compile(
+    r"(?im)^[ \t]*(?:n[ \t]*\d+[ \t]*)?(?:o[ \t]*\d+[ \t]*(?:\([^\n]*\))?[ \t]*$|if[ \t]*\[|goto"
+    r"|while[ \t]*\[|(?:do|end)[ \t]*\d)|m[ \t]*0*9[ \t]*[89](?![\d.])|g[ \t]*0*6[ \t]*5(?![\d.])")
+
+
+def is_fanuc(text: str) -> bool:
+    """True when ``text`` is written in Fanuc macro B rather than LinuxCNC o-words: it has
+    a bare ``O`` number line, ``IF [``, ``GOTO``, ``WHILE [``, ``DO``/``END`` or
+    ``M98``/``M99``/``G65``."""
+    return _FANUC.search(re.sub(r"\([^()\n]*\)", "", text)) is not None
+
 
 LOOP_HEADS = {"while", "do"}  # break/continue work in these (not in repeat, as rs274ngc)
+
+
+def _past_limit(found: list[tuple[int, int]], count: int, limit: int) -> int | None:
+    """The index of the first line to compile past ``limit`` (0: no limit), the lines of
+    the chunks ``found`` left out, or None."""
+    if not limit:
+        return None
+    start = 0
+    for a, b in [*found, (count, count)]:
+        if a - start > limit:
+            return start + limit
+        limit -= a - start
+        start = b
+    return None
 
 
 class Unit:
     """One compiled source file (see the module docstring)."""
 
-    def __init__(self, name: str, lines, fanuc: bool, block_delete: bool = False):
-        self.name, self.fanuc, self.block_delete = name, fanuc, block_delete
+    def __init__(self, name: str, lines, fanuc: bool | None, block_delete: bool = False,
+                 compile_limit: int = 0):
+        """``fanuc``: the dialect, or None to tell it from the lines (``is_fanuc``)."""
+        found, self.scan = chunks(lines)
+        if fanuc is None:
+            fanuc = is_fanuc(outside(lines, found))  # a simple line is of either dialect
+        self.name, self.fanuc, self.block_delete, self.lines = name, fanuc, block_delete, lines
         self.blocks: list[Block] = []
+        self.starts: list[int] = []  # the index of each distinct block (a chunk's first line)
         self.errors: list[MacroError] = []
         self.bad: set[int] = set()
-        for i, text in enumerate(lines):
-            try:
-                block = compile_line(text, i + 1, fanuc)
-                if block.deleted and block_delete:  # the operator's switch is on: skipped
-                    block = Block(i + 1, SKIP, skip="block delete")
-                self.blocks.append(block)
-            except MacroError as exc:
-                self.errors.append(exc.at(i + 1, name))
-                self.bad.add(i)
-                self.blocks.append(Block(i + 1, SKIP))
+        self.plain_label_of = labels(lines, found) if fanuc else {}
+        self.plain_labels = sorted(self.plain_label_of)  # chunk lines with an N label
+        self.compiled = 0  # lines compiled (the lines of chunks are not)
         self.jump: dict[int, int] = {}
         self.back: dict[int, int] = {}
         self.subs: dict[str, int] = {}
         self.programs: dict[int, int] = {}  # Fanuc O number -> index of its O line
         self.program_of: list[int] = []  # block index -> index of its program's first block
         self.labels: dict[tuple[int, int], int] = {}  # (program start, N) -> index
+        self.bound = False  # the walker has given each block its handler
+        self.leaves: dict = {}  # block index -> its leaf subprogram's body or None (leaf.py)
+        self.loops: set[int] = set()  # heads of loops run by a compiled handler (loop.py)
+        past = _past_limit(found, len(lines), compile_limit)
+        if past is not None:  # refused before compiling anything: all of it would cost seconds
+            self.errors.append(too_many_lines().at(past + 1, name))
+            self.blocks, self.program_of = [Block(0, SKIP)] * len(lines), [0] * len(lines)
+            self.structure_ok = False
+            return
+        for start, end in [*found, (len(lines), len(lines))]:
+            for i in range(len(self.blocks), start):
+                self._compile(i, lines[i])
+            if end > start:
+                self.starts.append(start)
+                self.blocks.extend([Block(start + 1, PLAIN, end=end)] * (end - start))
         compiled = len(self.errors)
         self._structure()
         self.structure_ok = len(self.errors) == compiled  # jumps are only safe when balanced
-        self.bound = False  # the walker has given each block its handler
+
+    def _compile(self, i: int, text: str) -> None:
+        """Line ``i``'s block (a ``SKIP`` block and an error when it does not compile)."""
+        self.starts.append(i)
+        self.compiled += 1
+        try:
+            block = compile_line(text, i + 1, self.fanuc)
+            if block.deleted and self.block_delete:  # the operator's switch is on: skipped
+                block = Block(i + 1, SKIP, skip="block delete")
+            self.blocks.append(block)
+        except MacroError as exc:
+            self.errors.append(exc.at(i + 1, self.name))
+            self.bad.add(i)
+            self.blocks.append(Block(i + 1, SKIP))
 
     def fail(self, message: str, block: Block) -> None:
         self.errors.append(MacroError(message, block.line, block.column, self.name))
@@ -58,7 +125,7 @@ class Unit:
         if self.fanuc:
             self._programs()
             self._fanuc_loops()
-            for b in self.blocks:
+            for b in map(self.blocks.__getitem__, self.starts):
                 if b.kind == OWORD:  # Fanuc O numbers and M98/M99 beside LinuxCNC o-words
                     self.fail(msg("o{name} {keyword}: a LinuxCNC o-word statement in a program of Fanuc "
                                   "O numbers (O0001 ... M99, M98 P): one style per program",
@@ -69,12 +136,19 @@ class Unit:
     # --- Fanuc -----------------------------------------------------------------------
     def _programs(self) -> None:
         start = 0
-        for i, b in enumerate(self.blocks):
+        for i in self.starts:
+            b = self.blocks[i]
             if b.kind == PROGRAM:
                 start = i
                 if b.number in self.programs:
                     self.fail(msg("program O{number} is defined twice", number=b.number), b)
                 self.programs.setdefault(b.number, i)
+            if b.kind == PLAIN:
+                self.program_of.extend([start] * (b.end - i))
+                labelled = self.plain_labels
+                for k in labelled[bisect.bisect_left(labelled, i):bisect.bisect_left(labelled, b.end)]:
+                    self.labels.setdefault((start, self.plain_label_of[k]), k)
+                continue
             self.program_of.append(start)
             if b.label is not None:
                 self.labels.setdefault((start, b.label), i)
@@ -82,7 +156,8 @@ class Unit:
     def _fanuc_loops(self) -> None:
         open_loops: list[tuple[int, int]] = []  # (DO number, index)
         program = 0
-        for i, b in enumerate(self.blocks):
+        for i in self.starts:
+            b = self.blocks[i]
             if self.program_of[i] != program:
                 self._unclosed_do(open_loops)
                 open_loops, program = [], self.program_of[i]
@@ -109,7 +184,8 @@ class Unit:
     # --- LinuxCNC o-words --------------------------------------------------------------
     def _owords(self) -> None:
         stack: list[tuple[str, str, int, list[int]]] = []  # (keyword, o-name, index, branches)
-        for i, b in enumerate(self.blocks):
+        for i in self.starts:
+            b = self.blocks[i]
             if b.kind != OWORD:
                 continue
             handler = getattr(self, "_o_" + b.keyword, None)

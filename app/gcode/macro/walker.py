@@ -27,14 +27,14 @@ from app.i18n import msg
 
 from . import block as bk
 from . import fanuc_system, predefined
-from .batch import Batch
+from .batch import MAX_ROWS, Batch
 from .calls import Library
 from .errors import MacroError, Stopped, TooLarge
-from .frame import Frame, Scope
+from .frame import DEPTH_LIMIT, Frame, Scope
+from .leaf import Locals
 from .trace import FileReport, Trace
 
 LOOP_LIMIT = 1_000_000
-DEPTH_LIMIT = 64
 # The budget of one expansion, counted in work done (never in wall-clock time, so that a
 # result does not depend on the machine's load), in units of about 0.35 us of CPU: a
 # block run costs 1, a move made ``ROW_COST``, a read of the machine's state (#5000 and
@@ -46,6 +46,16 @@ DEPTH_LIMIT = 64
 MOVE_LIMIT = 2_000_000
 ROW_COST, SYNC_COST, PUBLISH_COST, LINE_COST = 1, 2, 55, 50
 WORK_LIMIT = 7_500_000
+
+
+FAULTS = (ArithmeticError, LookupError, TypeError, ValueError, OSError, RecursionError)
+
+
+def fault(exc: Exception) -> MacroError:
+    """A fault of the expander itself (one of ``FAULTS``): the operator gets the line,
+    never a traceback."""
+    return MacroError(msg("the expander failed on this line ({error}); the program cannot "
+                          "be previewed", error=f"{type(exc).__name__}: {exc}"[:200]))
 
 
 class Walker:
@@ -66,8 +76,10 @@ class Walker:
         self.interpreted = 0  # blocks through ``emit`` (the batch counts its own)
         self._published: tuple = (None, ())  # (state, (rows, call depth)) of the last sync
         self.batch = Batch()
+        self.batch_limit = MAX_ROWS  # blocks collected before the batch is interpreted
+        self.leaf_locals = Locals()  # the frame a leaf call's rows read (leaf.py)
         self._names: dict[str, int] = {"": 0}
-        self._wheres: dict[tuple, tuple] = {}  # (file id, calling line, name) -> (where, its id)
+        self._wheres: dict[tuple, int] = {}  # (file id, calling line, name) -> where id
         first = next((i for i, b in enumerate(main.blocks) if b.kind != bk.SKIP), 0)
         self._push(Frame(main, 0, {}, "", 0, main.program_of[first] if self.fanuc else 0))
 
@@ -78,20 +90,24 @@ class Walker:
             raise MacroError(msg("calls nested deeper than {depth} levels", depth=DEPTH_LIMIT))
         if frames:
             frame.iteration = frame.iteration or frames[-1].iteration  # the caller's loop pass
-            main = frames[0]
-            call_line = main.unit.blocks[main.pc - 1].line  # the main program's line running
+            frame.wid = self.where_id(frame.file_id, frame.name)
         else:
-            call_line = 0
+            frame.wid = self._where(frame.file_id, 0, frame.name)
         frames.append(frame)
         self.scope.frame = frame
-        key = (frame.file_id, call_line, frame.name)
-        known = self._wheres.get(key)
-        if known is None:
-            known = self._wheres[key] = self._where(*key)
-        frame.where, frame.wid = known
 
-    def _where(self, file_id: int, call_line: int, name: str) -> tuple[tuple, int]:
-        """A frame's ``where`` (file id, calling line or 0, subprogram id, report) and its id."""
+    def where_id(self, file_id: int, name: str) -> int:
+        """The batch's where id of rows of subprogram ``name`` of file ``file_id`` called
+        now (from the main program's line running)."""
+        main = self.frames[0]
+        key = (file_id, main.unit.blocks[main.pc - 1].line, name)
+        wid = self._wheres.get(key)
+        if wid is None:
+            wid = self._wheres[key] = self._where(*key)
+        return wid
+
+    def _where(self, file_id: int, call_line: int, name: str) -> int:
+        """The id of a frame's where (file id, calling line or 0, subprogram id, report)."""
         if name not in self._names:
             self._names[name] = len(self.trace.names)
             self.trace.names.append(name)
@@ -99,8 +115,7 @@ class Walker:
             unit = self.library.units[len(self.reports)]
             self.trace.files.append(unit.name)
             self.reports.append(FileReport(self.report, unit.name))
-        where = (file_id, call_line, self._names[name], self.reports[file_id])
-        return where, self.batch.where_id(where)
+        return self.batch.where_id((file_id, call_line, self._names[name], self.reports[file_id]))
 
     def _pop(self) -> Frame:
         frame = self.frames.pop()
@@ -231,11 +246,8 @@ class Walker:
                 f = frames[-1]
         except MacroError as exc:
             raise exc.at(b.line if b is not None else 0, f.unit.name if f.file_id else "") from None
-        except (ArithmeticError, LookupError, TypeError, ValueError, OSError, RecursionError) as exc:
-            # a fault of the expander itself: the operator gets the line, never a traceback
-            failed = MacroError(msg("the expander failed on this line ({error}); the program cannot "
-                                    "be previewed", error=f"{type(exc).__name__}: {exc}"[:200]))
-            raise failed.at(b.line if b is not None else 0, f.unit.name if f.file_id else "") from None
+        except FAULTS as exc:
+            raise fault(exc).at(b.line if b is not None else 0, f.unit.name if f.file_id else "") from None
         finally:
             self.blocks_run += ran
 
@@ -287,8 +299,7 @@ class Walker:
         if len(self.batch):
             self.state = self.batch.flush(self.state, self.ops, self.trace)
             self.fast_ok = self.state.fast_path_ok()
-            if len(self.trace.file) > MOVE_LIMIT:
-                raise TooLarge(msg("the expansion makes more than {limit:,} moves", limit=MOVE_LIMIT))
+            self.check_moves()
 
     def emit(self, f: Frame, b: bk.Block, words: list[Word]) -> None:
         self.interpreted += 1
@@ -306,6 +317,11 @@ class Walker:
                 self._after_end(f)
             self.frames.clear()
 
+    def check_moves(self, line: int = 0) -> None:
+        """Refuse the program once it has made more than ``MOVE_LIMIT`` rows."""
+        if len(self.trace.file) > MOVE_LIMIT:
+            raise TooLarge(msg("the expansion makes more than {limit:,} moves", limit=MOVE_LIMIT), line)
+
     def _trace_rows(self, f: Frame, call_line: int, before: int, line: int = 0) -> None:
         """The rows added since row ``before`` come from frame ``f`` at ``call_line``."""
         rows = self.ops.rows[before:]
@@ -313,8 +329,7 @@ class Walker:
             main = f is self.frames[0]  # the main program: each row's own line (a held move's too)
             lines = [int(row[0]) for row in rows] if main else call_line
             self.trace.repeat(len(rows), f.file_id, self._names[f.name], f.iteration, lines)
-            if len(self.trace.file) > MOVE_LIMIT:
-                raise TooLarge(msg("the expansion makes more than {limit:,} moves", limit=MOVE_LIMIT), line)
+            self.check_moves(line)
 
     def _after_end(self, f: Frame) -> None:
         """One warning for the first block after M2/M30 (Fanuc: before the next program;
@@ -328,6 +343,8 @@ class Walker:
                 i = f.unit.jump[i]
                 continue
             i += 1
+            if b.kind == bk.PLAIN and not f.unit.lines[i - 1].strip():
+                continue  # an empty line of a chunk of plain lines
             if b.kind != bk.SKIP or i - 1 in f.unit.bad:
                 ended = self.state.ended
                 self.report.warning(b.line, 0, msg("ignored: the program ended at line {line} (M2/M30)",

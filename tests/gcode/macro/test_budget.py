@@ -3,9 +3,8 @@ timed, or is refused with a message naming the line and the limit."""
 
 import pytest
 
-import app.gcode.macro as macro
 from app.gcode import limits, load, load_text
-from app.gcode.macro import calls, walker
+from app.gcode.macro import structure, walker
 
 
 def _only_error(program):
@@ -96,13 +95,19 @@ def test_the_count_of_pecks_is_the_pecks_made(monkeypatch, code, per_peck):
     assert 3 * 11 * per_peck < made <= 3 * (11 * per_peck + 5)
 
 
-def test_a_program_too_long_for_the_expander_is_refused_at_once(monkeypatch, tmp_path):
-    monkeypatch.setattr(calls, "MAX_LINES", 40)
-    monkeypatch.setattr(macro, "MAX_LINES", 40)
+def test_a_program_with_too_many_lines_to_compile_is_refused_at_the_first_past_the_limit(
+        monkeypatch, tmp_path):
+    monkeypatch.setattr(structure, "MAX_LINES", 40)
     program = load_text("#1 = 1\n" + "G1 X#1 F100\n" * 45)
     ((line, message),) = [(d.line, d.message) for d in program.errors]
-    assert line == 41 and "have 46 lines" in message and "at most 40" in message
+    assert line == 41 and "at most 40 lines" in message and "past the limit" in message
     (tmp_path / "sub.ngc").write_text("o<sub> sub\n" + "G1 X1\n" * 30 + "o<sub> endsub\n")
     (tmp_path / "main.ngc").write_text("G21 F100\n" + "G1 X2\n" * 10 + "o<sub> call\nM2\n")
-    ((line, message),) = [(d.line, d.message) for d in load(tmp_path / "main.ngc").errors]
-    assert line == 12 and "have 46 lines" in message
+    ((where, line, message),) = [(d.file, d.line, d.message) for d in load(tmp_path / "main.ngc").errors]
+    assert where.endswith("sub.ngc") and line == 40 - 13 + 1 and "at most 40 lines" in message
+
+
+def test_plain_lines_do_not_count_toward_the_lines_compiled(monkeypatch):
+    monkeypatch.setattr(structure, "MAX_LINES", 40)
+    program = load_text("#1 = 1\nG21 F100\n" + "G1 X1 Y2 (a comment)\nG1 X2 Y1 ; another\n" * 5000 + "M2\n")
+    assert not program.errors and len(program.moves) == 10_000
