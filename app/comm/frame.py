@@ -175,12 +175,14 @@ class Status(Frame):
     overrides: tuple[int, int, int] | None = None  # feed, spindle, rapid %; None: not sent
 
     def body(self) -> str:
-        ovr = "" if self.overrides is None else " " + "/".join(map(str, self.overrides))
-        return (
+        """The eleven fields, and ``ovr`` when the frame still fits in ``MAX_FRAME`` with it
+        (docs/protocol.md, "Machine -> host": a status too long for it goes without)."""
+        body = (
             f"S {self.boot} {self.state} {self.x:.3f} {self.y:.3f} {self.z:.3f} "
             f"{self.acc} {self.done} {self.free} {self.rpm} {self.flags or NO_FLAGS} {self.why or NO_FLAGS}"
-            f"{ovr}"
         )
+        ovr = "" if self.overrides is None else " " + "/".join(map(str, self.overrides))
+        return body + ovr if len(body) + len(ovr) <= MAX_BODY else body
 
     def has(self, flag: str) -> bool:
         return flag in self.flags

@@ -296,9 +296,12 @@ class Session(JobControl):
         self._log("info", frame.text, "machine")
 
     def _on_status(self, frame: fr.Status, now: float) -> None:
+        overrides = frame.overrides
+        if overrides is None and self.status is not None and self.status.boot == frame.boot:
+            overrides = self.status.overrides  # a status too long for `ovr` goes without it
         event = StatusEvent(frame.boot, frame.state, frame.x, frame.y, frame.z, frame.acc,
                             frame.done, frame.free, frame.rpm, frame.flags, now, frame.why,
-                            frame.overrides)
+                            overrides)
         self.status = event
         self.listener.on_status(event)
         old_boot = self.boot

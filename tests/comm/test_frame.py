@@ -1,5 +1,7 @@
 """Golden byte vectors and error cases for the frame codec (docs/protocol.md)."""
 
+from dataclasses import replace
+
 import pytest
 from hypothesis import given
 from hypothesis import strategies as st
@@ -97,7 +99,9 @@ def test_every_single_bit_flip_is_detected():
                 fr.decode(bytes(bad))
 
 
-_coord = st.decimals(min_value=-999999, max_value=999999, places=3).map(float)
+_coord = st.decimals(min_value="-99999.999", max_value="99999.999", places=3).map(float)
+_seq = st.integers(-1, 9_999_999)
+_ovr = st.tuples(st.integers(10, 200), st.integers(50, 150), st.sampled_from((25, 50, 100)))
 
 
 @given(
@@ -106,11 +110,24 @@ _coord = st.decimals(min_value=-999999, max_value=999999, places=3).map(float)
         boot=st.text("0123456789ABCDEF", min_size=1, max_size=8),
         state=st.sampled_from(fr.STATES),
         x=_coord, y=_coord, z=_coord,
-        acc=st.integers(-1, 10**9), done=st.integers(-1, 10**9),
-        free=st.integers(0, 10**9), rpm=st.integers(0, 10**9),
-        flags=st.text(fr.FLAG_LETTERS, max_size=6),
+        acc=_seq, done=_seq,
+        free=st.integers(0, 999), rpm=st.integers(0, 99_999),
+        flags=st.text(fr.FLAG_LETTERS, max_size=7),
         why=st.sampled_from(("",) + fr.WHY_CODES),
+        overrides=st.none() | _ovr,
     )
 )
-def test_any_status_round_trips(status):
-    assert fr.decode(fr.encode(status)) == status
+def test_any_status_within_the_documented_bounds_round_trips(status):
+    """docs/protocol.md: within these bounds the eleven fields always fit in 96 bytes;
+    `ovr` goes along when it fits too."""
+    back = fr.decode(fr.encode(status))
+    assert back == status or (back == replace(status, overrides=None) and len(status.body()) < 96)
+
+
+def test_the_longest_status_goes_without_ovr():
+    longest = fr.Status("ABCDEF01", "HOMING", -99999.999, -99999.999, -99999.999, 9_999_999, 9_999_999,
+                        999, 99_999, "HCLUPSW", "LIMIT", (200, 150, 100))
+    wire = fr.encode(longest)
+    assert len(wire) == 96 and fr.decode(wire) == replace(longest, overrides=None)
+    short = replace(longest, x=1.0, y=2.0, z=3.0, acc=10, done=9)
+    assert fr.decode(fr.encode(short)) == short

@@ -97,11 +97,23 @@ def test_an_out_of_range_override_is_refused_and_nothing_sent(verb, percent):
 
 
 def test_the_status_event_carries_the_overrides_or_none_for_an_older_machine():
+    older = running()
+    older.reply(fr.Status(BOOT, "RUN", 0.0, 0.0, 1.0, 3, 1, 12, 0, "H"))
+    assert older.rec.last("on_status").overrides is None
     h = running()
     h.reply(fr.Status(BOOT, "RUN", 0.0, 0.0, 1.0, 3, 1, 12, 0, "H", "", (150, 90, 50)))
     assert h.rec.last("on_status").overrides == (150, 90, 50)
-    h.reply(fr.Status(BOOT, "RUN", 0.0, 0.0, 1.0, 3, 1, 12, 0, "H"))
-    assert h.rec.last("on_status").overrides is None
+
+
+def test_a_status_too_long_for_ovr_keeps_the_overrides_last_read():
+    """docs/protocol.md: a status over 96 bytes with `ovr` goes without it."""
+    h = running()
+    h.reply(fr.Status(BOOT, "RUN", 0.0, 0.0, 1.0, 3, 1, 12, 0, "H", "", (150, 90, 50)))
+    long = fr.Status(BOOT, "HOMING", -99999.999, -99999.999, -99999.999, 9_999_999, 9_999_999, 999,
+                     99_999, "HCLUPSW", "LIMIT", (150, 90, 50))
+    assert fr.decode(fr.encode(long)).overrides is None
+    h.reply(long)
+    assert h.rec.last("on_status").overrides == (150, 90, 50)
 
 
 def test_an_unanswered_override_is_given_up_on_and_said():
