@@ -99,8 +99,12 @@ class GrblJobControl:
         return True
 
     def stop(self) -> None:
-        """End the job now: hold, then a reset once the machine is at rest."""
+        """End the job now: hold, then a reset once the machine is at rest. A job cut off
+        by a link loss or a reset (no Start here taken) is abandoned."""
         job = self.job
+        if self.state in (S.INTERRUPTED, S.RESTART_REQUIRED):
+            self._abandon(job)
+            job = None
         if job is None:
             self._realtime(p.FEED_HOLD)
             self._reset_when_still = True
@@ -123,6 +127,12 @@ class GrblJobControl:
         if self.state is S.RESTART_REQUIRED:
             self.last_job = None
             self._settle()
+
+    def _abandon(self, job) -> None:
+        if job is not None:
+            self._end_job(False, msg("abandoned by the operator"))
+            self.last_job = None
+        self.abandon_restart()
 
     # ------------------------------------------------------------------ answers
 

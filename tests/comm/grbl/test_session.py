@@ -193,6 +193,26 @@ def test_a_restart_after_a_reset_restores_the_work_system_and_coolant_the_job_ra
     assert h.session.job.modes == ("G55", "M8")  # a second cut-off restarts the same way
 
 
+@pytest.mark.parametrize("reconnect", ["<Idle|MPos:0,0,0|FS:0,0>", None])
+def test_stop_abandons_a_job_cut_off_by_a_link_loss(reconnect):
+    h = Harness()
+    h.answer_refresh()
+    h.session.start_job([f"G01 X{i} F100" for i in range(10)])
+    h.feed("ok", "ok", "ok")
+    h.advance(3.5)
+    assert h.session.state is SessionState.INTERRUPTED
+    if reconnect:
+        h.feed(reconnect)
+        assert h.session.state is SessionState.RESTART_REQUIRED
+    h.take()
+    h.session.stop()  # the alert's "Abandon job", or Stop
+    assert h.session.state is SessionState.READY and h.session.job is None
+    assert b"!" in h.take()  # held, then reset once at rest: the buffer may still be running
+    assert not h.session.confirm_restart()
+    if not reconnect:
+        assert not h.rec.of("on_job_finished")[-1].completed
+
+
 @pytest.mark.parametrize(("state", "modes"), [
     ("G0 G54 G17 G21 G90 G94 M5 M9 T0 F0 S0", ("G54",)),
     ("G1 G59 G17 G21 G90 G94 M3 M7 M8 T1 F100 S900", ("G59", "M7", "M8")),
