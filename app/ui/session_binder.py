@@ -184,13 +184,18 @@ class SessionBinder(QObject):
             self.alert_clock = self.w.link.clock()
         from_sd = self.status is not None and "S" in self.status.flags
         last = self.w.connection.state.text() if self.status is not None else ""
-        self.w.alert.show_lost(what, self.state in JOB or self.state in RECOVERY, from_sd, detail, last)
+        grbl = getattr(self.w.link.capabilities, "driver", "frame") == "grbl"  # no heartbeat, no host watch
+        what = "report_silence" if grbl and what == "silence" else what
+        self.w.alert.show_lost(what, self.state in JOB or self.state in RECOVERY, from_sd, detail, last,
+                               host_watch=not grbl)
         self.refresh_enabled(force=False)
 
     def on_resume_offer(self, offer) -> None:
         line, lines = self.source_line(offer.from_seq), self.source_total()
-        exact = offer.same_boot and self.w.link.capabilities.exact_resume  # else: home, restart at the line
-        self.w.alert.show_offer(exact, line, lines)
+        if not self.w.link.capabilities.exact_resume:  # GRBL: Start here, whatever happened
+            self.w.alert.show_restart_offer(line, lines, offer.needs_home)
+        else:  # the same boot resumes exactly; after a reset: home, restart at the line
+            self.w.alert.show_offer(offer.same_boot, line, lines)
         self.refresh_enabled(force=False)
 
     def source_line(self, seq: int) -> int:

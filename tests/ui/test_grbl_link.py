@@ -1,0 +1,95 @@
+"""A GRBL machine's link cut mid-job, in the window (issue 23): GRBL has no heartbeat, so
+no status report for 2 s is "degraded" and 3 s "lost", with the same alert as the
+student mill; once the machine answers again the window offers Start here at the line
+after the last one known finished (its ok came back and a report showed its motion
+done), says that GRBL cannot resume exactly, and the restart runs each line once."""
+
+from __future__ import annotations
+
+import pytest
+
+from app.comm.grbl.dialect import grbl_lines
+from app.ui.connection_bar import DRIVERS
+from tests.ui.conftest import open_and_wait
+
+MOVES = 150
+
+
+def _program(tmp_path):
+    moves = "".join(f"G01 X{10 + (i % 2) * 2} Y{10 + i * 0.5:g}\n" for i in range(MOVES))
+    path = tmp_path / "long.ngc"
+    path.write_text(f"G21 G90\nG00 X10 Y10 Z5\nM03 S1000\nG01 Z-1 F120\n{moves}G00 Z5\nM05\nM02\n")
+    return path
+
+
+@pytest.fixture
+def grbl_job(qtbot, make_window, tmp_path):
+    """The window homed on the simulated GRBL machine, a long job running."""
+    window = make_window(port_lister=lambda: [("sim://grbl?speed=30", "GRBL")])
+    bar, binder = window.connection, window.binder
+    bar.driver.setCurrentIndex([key for key, _ in DRIVERS].index("grbl"))
+    bar.button.click()
+    qtbot.waitUntil(lambda: binder.connected and binder.status is not None, timeout=30_000)
+    window.operator.home("NORMAL")
+    qtbot.waitUntil(lambda: binder.status.homed and binder.status.state == "IDLE", timeout=120_000)
+    open_and_wait(qtbot, window, _program(tmp_path))
+    qtbot.waitUntil(lambda: window.controls.buttons["start"].isEnabled(), timeout=20_000)
+    window.operator.start()
+    session = window.link.worker.session
+    qtbot.waitUntil(lambda: session.job is not None and session.job.acked >= 30, timeout=60_000)
+    return window
+
+
+def _lines_run(window) -> list[str]:
+    said = window.link.sim.machine.executed
+    return [line for line in said if line not in ("G21 G90 G94 G17", "G4 P0")]
+
+
+def test_silence_degrades_then_loses_the_link_then_offers_start_here(qtbot, grbl_job):
+    window, binder = grbl_job, grbl_job.binder
+    sim = window.link.sim
+    links = []
+    window.link.worker.link_changed.connect(lambda event: links.append(event.state))
+    sim.wires["usb_up"].set_cut(True)  # the machine goes on with its buffer; nothing comes back
+    qtbot.waitUntil(lambda: binder.link_state == "DEGRADED", timeout=10_000)
+    assert not window.alert.isVisible()  # degraded only: no alert yet
+    qtbot.waitUntil(lambda: binder.link_state == "LOST", timeout=10_000)
+    assert links[-2:] == ["DEGRADED", "LOST"]
+    assert window.alert.isVisible() and "no status report for 3 s" in window.alert.body.text()
+    assert "does not notice that this computer is gone" in window.alert.body.text()
+    assert binder.state == "INTERRUPTED"
+    qtbot.waitUntil(lambda: sim.machine.motion.state == "IDLE", timeout=60_000)  # its buffer ran
+    sim.wires["usb_up"].set_cut(False)
+    qtbot.waitUntil(lambda: window.alert.restart.isVisible(), timeout=20_000)
+    session = window.link.worker.session
+    job = session.last_job
+    said = window.alert.body.text()
+    assert "GRBL cannot resume a job exactly" in said
+    line = binder.source_line(job.done + 1)
+    assert f"line {line} of" in said and window.alert.restart.text() == f"Start here at line {line}"
+    assert job.done == job.acked  # idle after the cut: every answered line has finished
+    program = window.loaded.program
+    expected = [g.text for g in grbl_lines(program.device_lines) if g.text]
+    start = job.done + 1
+    before = len(_lines_run(window))
+    window.alert.restart.click()
+    qtbot.waitUntil(lambda: binder.last_job_event is not None and binder.state == "READY", timeout=120_000)
+    assert binder.last_job_event.completed, binder.last_job_event
+    restarted = _lines_run(window)[before:]
+    assert restarted[:2] == ["G54", "M03 S1000"]  # the work system and spindle before the line come first
+    assert restarted[-(len(expected) - start):] == expected[start:]  # then each line once, in order
+
+
+def test_a_failed_port_then_reconnect_offers_start_here(qtbot, grbl_job):
+    window, binder = grbl_job, grbl_job.binder
+    sim = window.link.sim
+    sim.host_port.set_unplugged(True)  # the cable pulled: the port fails
+    qtbot.waitUntil(lambda: window.alert.isVisible() and window.alert.reconnect.isVisible(), timeout=10_000)
+    assert "serial port" in window.alert.body.text() and binder.state == "INTERRUPTED"
+    sim.host_port.set_unplugged(False)
+    window.alert.reconnect.click()
+    qtbot.waitUntil(lambda: window.alert.restart.isVisible(), timeout=30_000)
+    assert "GRBL cannot resume a job exactly" in window.alert.body.text()
+    window.alert.abandon.click()  # the operator abandons it instead
+    qtbot.waitUntil(lambda: binder.state == "READY", timeout=10_000)
+    assert not window.alert.isVisible()
