@@ -22,9 +22,9 @@ from __future__ import annotations
 from app.comm.events import ProgramStopEvent, ResumeOffer
 from app.comm.grbl import protocol as p
 from app.comm.grbl.dialect import PREAMBLE, grbl_lines, line_problems
-from app.comm.grbl.job import GrblJob, Outgoing
+from app.comm.grbl.job import GrblJob, Outgoing, spindle_off_at_tool_changes
 from app.comm.listener import SessionState
-from app.comm.modal import restart_preamble
+from app.comm.modal import modal_state, restart_preamble
 from app.i18n import joined, msg
 
 S = SessionState
@@ -59,8 +59,9 @@ class GrblJobControl:
             return False
         first = (PARSER_STATE,) + PREAMBLE if modes is None else PREAMBLE + modes
         preamble = first + (tuple(restart_preamble(list(device_lines), start)) if start else ())
-        job = GrblJob(grbl_lines(device_lines, self.optional_stop, start), len(device_lines), name,
-                      preamble, first=start)
+        rpm = modal_state(list(device_lines), start).spindle_rpm if start else None
+        lines = spindle_off_at_tool_changes(grbl_lines(device_lines, self.optional_stop, start), rpm)
+        job = GrblJob(lines, len(device_lines), name, preamble, first=start)
         job.device_lines, job.line_map, job.errors = device_lines, line_map, []
         job.modes = held_modes(self.parser_state) if modes is None else modes
         job.end_reason, job.reset_sent, job.cut_off = "", False, False

@@ -130,6 +130,21 @@ def test_program_stop_waits_for_the_machine_then_prompts():
     assert h.lines() == ["G01 X2", "G4 P0"]
 
 
+def test_a_tool_change_stops_the_spindle_for_the_prompt_and_restarts_it():
+    h = Harness()
+    h.answer_refresh()
+    h.session.start_job(["M03 S1000", "G01 X1 F100", "M06 T2", "G01 X2", "M01", "G01 X3"])
+    assert h.lines() == ["$G", "G21 G90 G94 G17", "M03 S1000", "G01 X1 F100", "M05", "G4 P0"]
+    h.feed("ok", "ok", "ok", "ok", "ok")
+    assert not h.rec.of("on_program_stop") and h.session.job.done == -1
+    h.feed("ok")  # the sync: the spindle has stopped, everything before has finished
+    assert h.rec.of("on_program_stop")[-1].tool == 2 and h.session.job.done == 1
+    h.session.resume()
+    assert h.lines() == ["M03 S1000", "G01 X2", "G4 P0"]  # M01 keeps the spindle as GRBL's M0 does
+    h.feed("ok", "ok", "ok")
+    assert h.rec.of("on_program_stop")[-1].code == 1 and h.session.job.done == 3
+
+
 def test_settings_write_is_sent_alone_and_waited_for():
     h = Harness()
     h.answer_refresh()
