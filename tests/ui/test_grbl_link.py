@@ -93,3 +93,19 @@ def test_a_failed_port_then_reconnect_offers_start_here(qtbot, grbl_job):
     window.alert.abandon.click()  # the operator abandons it instead
     qtbot.waitUntil(lambda: binder.state == "READY", timeout=10_000)
     assert not window.alert.isVisible()
+
+
+def test_the_grbl_alert_in_vietnamese(qtbot, window):
+    from tests.ui.untranslated import english_in_vietnamese
+
+    window.set_language("vi")
+    alert = window.alert
+    alert.show_lost("report_silence", True, host_watch=False, last_state="RUN")
+    lost = alert.body.text()
+    alert.show_restart_offer(12, 40, needs_home=True)
+    offer = [alert.body.text(), alert.restart.text()]
+    alert.show_restart_offer(12, 40, needs_home=False)
+    assert alert.restart.text() == "Chạy từ dòng 12"
+    assert "3 s" in lost and "GRBL không thể" in offer[0] and "12" in offer[0]
+    said = [("alert", text) for text in (lost, *offer, alert.restart.text())]
+    assert "\n".join(english_in_vietnamese(said)) == ""
