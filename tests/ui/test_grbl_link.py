@@ -9,8 +9,7 @@ from __future__ import annotations
 import pytest
 
 from app.comm.grbl.dialect import grbl_lines
-from app.ui.connection_bar import DRIVERS
-from tests.ui.conftest import open_and_wait
+from tests.ui.grbl_rig import homed_window, lines_run
 
 MOVES = 150
 
@@ -25,24 +24,11 @@ def _program(tmp_path):
 @pytest.fixture
 def grbl_job(qtbot, make_window, tmp_path):
     """The window homed on the simulated GRBL machine, a long job running."""
-    window = make_window(port_lister=lambda: [("sim://grbl?speed=30", "GRBL")])
-    bar, binder = window.connection, window.binder
-    bar.driver.setCurrentIndex([key for key, _ in DRIVERS].index("grbl"))
-    bar.button.click()
-    qtbot.waitUntil(lambda: binder.connected and binder.status is not None, timeout=30_000)
-    window.operator.home("NORMAL")
-    qtbot.waitUntil(lambda: binder.status.homed and binder.status.state == "IDLE", timeout=120_000)
-    open_and_wait(qtbot, window, _program(tmp_path))
-    qtbot.waitUntil(lambda: window.controls.buttons["start"].isEnabled(), timeout=20_000)
+    window = homed_window(qtbot, make_window, _program(tmp_path))
     window.operator.start()
     session = window.link.worker.session
     qtbot.waitUntil(lambda: session.job is not None and session.job.acked >= 30, timeout=60_000)
     return window
-
-
-def _lines_run(window) -> list[str]:
-    said = window.link.sim.machine.executed
-    return [line for line in said if line not in ("G21 G90 G94 G17", "G4 P0")]
 
 
 def test_silence_degrades_then_loses_the_link_then_offers_start_here(qtbot, grbl_job):
@@ -71,11 +57,11 @@ def test_silence_degrades_then_loses_the_link_then_offers_start_here(qtbot, grbl
     program = window.loaded.program
     expected = [g.text for g in grbl_lines(program.device_lines) if g.text]
     start = job.done + 1
-    before = len(_lines_run(window))
+    before = len(lines_run(window))
     window.alert.restart.click()
     qtbot.waitUntil(lambda: binder.last_job_event is not None and binder.state == "READY", timeout=120_000)
     assert binder.last_job_event.completed, binder.last_job_event
-    restarted = _lines_run(window)[before:]
+    restarted = lines_run(window)[before:]
     assert restarted[:2] == ["G54", "M03 S1000"]  # the work system and spindle before the line come first
     assert restarted[-(len(expected) - start):] == expected[start:]  # then each line once, in order
 

@@ -9,8 +9,7 @@ import pytest
 from PySide6.QtCore import Qt
 
 from app.comm.grbl.dialect import grbl_lines
-from app.ui.connection_bar import DRIVERS
-from tests.ui.conftest import open_and_wait
+from tests.ui.grbl_rig import homed_window, lines_run
 
 SOURCE = """G21 G90
 M3 S1000
@@ -27,27 +26,14 @@ M2
 
 @pytest.fixture
 def grbl_window(qtbot, make_window, tmp_path):
-    window = make_window(port_lister=lambda: [("sim://grbl?speed=30", "GRBL")])
-    bar, binder = window.connection, window.binder
-    bar.driver.setCurrentIndex([key for key, _ in DRIVERS].index("grbl"))
-    bar.button.click()
-    qtbot.waitUntil(lambda: binder.connected and binder.status is not None, timeout=30_000)
-    window.operator.home("NORMAL")
-    qtbot.waitUntil(lambda: binder.status.homed and binder.status.state == "IDLE", timeout=120_000)
     path = tmp_path / "tool_change.ngc"
     path.write_text(SOURCE)
-    open_and_wait(qtbot, window, path)
-    return window
-
-
-def _lines_run(window) -> list[str]:
-    return [line for line in window.link.sim.machine.executed if line not in ("G21 G90 G94 G17", "G4 P0")]
+    return homed_window(qtbot, make_window, path)
 
 
 def test_a_tool_change_waits_for_the_idle_machine_with_the_spindle_stopped(qtbot, grbl_window):
     window = grbl_window
     machine, prompt = window.link.sim.machine, window.program_stops.prompt
-    qtbot.waitUntil(lambda: window.controls.buttons["start"].isEnabled(), timeout=20_000)
     window.operator.start()
     qtbot.waitUntil(prompt.isVisible, timeout=120_000)
     assert machine.motion.state == "IDLE" and machine.motion.spindle_target == 0  # idle, spindle off
@@ -60,7 +46,7 @@ def test_a_tool_change_waits_for_the_idle_machine_with_the_spindle_stopped(qtbot
     device = [g.text for g in grbl_lines(window.loaded.program.device_lines) if g.text]
     cut = device.index("G01 Y40.000") if "G01 Y40.000" in device else next(
         i for i, line in enumerate(device) if line.startswith("G01 Y40"))
-    assert _lines_run(window) == device[:cut] + ["M05", "M03 S1000"] + device[cut:]  # never M06
+    assert lines_run(window) == device[:cut] + ["M05", "M03 S1000"] + device[cut:]  # never M06
 
 
 def test_the_check_before_start_uses_the_machines_own_travel(qtbot, grbl_window):
