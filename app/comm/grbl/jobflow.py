@@ -64,6 +64,7 @@ class GrblJobControl:
         job = GrblJob(lines, len(device_lines), name, preamble, first=start)
         job.device_lines, job.line_map, job.errors = device_lines, line_map, []
         job.modes = held_modes(self.parser_state) if modes is None else modes
+        job.boot = self.boots
         job.end_reason, job.reset_sent, job.cut_off = "", False, False
         self.job, self.last_job, self._last_progress = job, None, float("-inf")
         self._set_state(S.STARTING)
@@ -117,16 +118,25 @@ class GrblJobControl:
         self._realtime(p.SOFT_RESET)
 
     def confirm_restart(self) -> bool:
-        """After a cut-off: run the job again from the line after the last one finished."""
+        """After a cut-off: run the job again from the line after the last one finished.
+        After a link loss (no reset since), GRBL may hold the start of a line cut off
+        mid-way, which the next line would complete: it is reset first, once at rest (a
+        reset at rest keeps the position), and the job restarts on its welcome."""
         job = self.last_job
         if self.state is not S.RESTART_REQUIRED or job is None:
             self._error("REFUSED", msg("there is no interrupted job to restart"))
             return False
+        if job.boot == self.boots:
+            self._restart_on_welcome, self._reset_when_still = job, True
+            return True
+        return self._restart(job)
+
+    def _restart(self, job) -> bool:
         return self.start_job(job.device_lines, job.done + 1, job.name, job.line_map, job.modes)
 
     def abandon_restart(self) -> None:
         if self.state is S.RESTART_REQUIRED:
-            self.last_job = None
+            self.last_job = self._restart_on_welcome = None
             self._settle()
 
     def _abandon(self, job) -> None:

@@ -85,6 +85,7 @@ class GrblSession(SessionCore, GrblJobControl, GrblOperations, FrameVerbs):
         self.optional_stop = True
         self.last_job: GrblJob | None = None  # for Start here after a cut-off
         self._reset_when_still = False  # stop() without a job: reset once at rest
+        self._restart_on_welcome: GrblJob | None = None  # confirm_restart() after a link loss
         self._last_progress = float("-inf")
         self._write = write
         self._out = bytearray()
@@ -269,7 +270,9 @@ class GrblSession(SessionCore, GrblJobControl, GrblOperations, FrameVerbs):
                                                  info=msg("the machine was reset"), code="RESET"))
         self.merger.reset()
         self.merger.inches = self.settings.get(13) == "1"
-        self.homed, self.critical, self.check_mode, self.alarm = False, False, False, None
+        restart, self._restart_on_welcome = self._restart_on_welcome, None
+        homed = self.homed and restart is not None  # this host's reset at rest kept the position
+        self.homed, self.critical, self.check_mode, self.alarm = homed, False, False, None
         if self.fixed_rx is None:
             self.counter.capacity = GRBL_RX_BUFFER
         self.info = MachineInfo(item.flavour, item.version, rx_size=self.counter.capacity)
@@ -278,6 +281,8 @@ class GrblSession(SessionCore, GrblJobControl, GrblOperations, FrameVerbs):
         if self.job is not None:
             self._job_reset()
         self.refresh()
+        if restart is not None and self.state is S.RESTART_REQUIRED:
+            self._restart(restart)
 
     def _on_report(self, item: p.Report) -> None:
         self._contact = True

@@ -173,6 +173,8 @@ def test_silence_degrades_then_loses_the_link_but_not_while_homing():
 def test_link_loss_mid_job_offers_start_here_after_last_finished_line():
     h = Harness()
     h.answer_refresh()
+    h.session.command("$H")
+    h.feed("ok")
     h.session.start_job([f"G01 X{i} F100" for i in range(10)])
     h.take()
     h.feed("ok", "ok", "ok", "ok", "ok", "<Run|MPos:0,0,0|FS:100,0|Bf:13,100>")
@@ -183,8 +185,15 @@ def test_link_loss_mid_job_offers_start_here_after_last_finished_line():
     assert offer.from_seq == 3 and h.session.state is SessionState.RESTART_REQUIRED
     h.take()
     assert h.session.confirm_restart()
+    assert h.lines() == []  # a line cut off mid-way may wait in GRBL's buffer: reset first
+    h.feed("<Run|MPos:0,0,0|FS:100,0>")
+    assert b"\x18" not in h.take()  # never while it moves (alarm 3, the position lost)
+    h.feed("<Idle|MPos:0,0,0|FS:0,0>")
+    assert b"\x18" in h.take()
+    h.feed(WELCOME.decode().strip())
     sent = h.lines()
-    assert sent[0] == "G21 G90 G94 G17" and "G01 X3 F100" in sent
+    assert sent[:4] == ["$I", "$$", "$#", "$G"] and sent[4:6] == ["G21 G90 G94 G17", "G54"]
+    assert "G01 X3 F100" in sent and h.session.homed  # a reset at rest keeps the position
 
 
 def test_a_restart_after_a_reset_restores_the_work_system_and_coolant_the_job_ran_in():
