@@ -82,31 +82,28 @@ class _Timeline:
             f"{at:.1f}: {ms * 1000:.0f}" for at, ms in sorted(worst)) or "none")
 
 
-def _thread_times() -> dict[str, tuple[float, float]]:
-    """Per thread of this process, by its name: (seconds on a CPU, seconds runnable but
-    waiting for one), from the scheduler's own count (Linux ``schedstat``)."""
-    from pathlib import Path
-
-    times: dict[str, tuple[float, float]] = {}
+def _thread_times() -> dict[int, tuple[str, float, float]]:
+    """Per thread of this process (by its id): its name, seconds on a CPU and seconds
+    runnable but waiting for one, from the scheduler's own count (Linux ``schedstat``)."""
+    times = {}
     for task in Path("/proc/self/task").iterdir():
         try:
             name = (task / "comm").read_text().strip()
             ran, waited = (int(x) / 1e9 for x in (task / "schedstat").read_text().split()[:2])
         except (OSError, ValueError):
             continue
-        old = times.get(name, (0.0, 0.0))
-        times[name] = (old[0] + ran, old[1] + waited)
+        times[int(task.name)] = (name, ran, waited)
     return times
 
 
-def _times_since(before: dict[str, tuple[float, float]], seconds: float) -> str:
+def _times_since(before: dict[int, tuple[str, float, float]], seconds: float) -> str:
     """Each busy thread's share of the wall time on a CPU, and waiting for one."""
     after = _thread_times()
-    used = {name: tuple(a - b for a, b in zip(after[name], before.get(name, (0.0, 0.0)), strict=True))
-            for name in after}
-    top = sorted(used.items(), key=lambda kv: -kv[1][0])[:3]
+    used = [(name, ran - before.get(tid, ("", 0.0, 0.0))[1], waited - before.get(tid, ("", 0.0, 0.0))[2])
+            for tid, (name, ran, waited) in after.items()]
+    top = sorted(used, key=lambda u: -u[1])[:3]
     return ", ".join(f"{name} {ran / seconds:.0%} running, {waited / seconds:.0%} waiting for a CPU"
-                     for name, (ran, waited) in top if ran / seconds >= 0.005)
+                     for name, ran, waited in top if ran / seconds >= 0.005)
 
 
 SIGNALS = ("state_changed", "status_changed", "progress_changed", "link_changed", "log_added", "frame_logged",
