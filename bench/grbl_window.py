@@ -123,7 +123,7 @@ def _count_signals(worker) -> dict[str, int]:
 
 
 def _head(path, lines: int, folder):
-    """``path`` cut to about ``lines`` device lines (the whole file when it has fewer)."""
+    """``path`` cut to its first ``lines`` source lines (the whole file when it has fewer)."""
     with path.open() as src:
         head = [line for _, line in zip(range(lines), src, strict=False)]
     if len(head) < lines:
@@ -161,9 +161,10 @@ def _ready(app, window, driver: str) -> None:
 
 
 def bench_window(lines_limit: int = 100_000, driver: str = "grbl") -> None:
-    """The window streaming about ``lines_limit`` lines of bench_ui's job (see the module)."""
+    """The window streaming bench_ui's job (100,000 device lines), or its first
+    ``lines_limit`` source lines (see the module)."""
     from app.ui.connection_bar import DRIVERS
-    from bench.bench_ui import _describe, _lateness, _wait, _window, job_file
+    from bench.bench_ui import JOB_LINES, _describe, _lateness, _wait, _window, job_file
 
     pump_ms = os.environ.get("BENCH_GRBL_PUMP_MS")
     if pump_ms:
@@ -173,7 +174,8 @@ def bench_window(lines_limit: int = 100_000, driver: str = "grbl") -> None:
     with tempfile.TemporaryDirectory() as config:
         app, window = _window(Path(config))
         binder = window.binder
-        window.open_file(_head(job_file(), lines_limit, Path(config)))
+        job = job_file()
+        window.open_file(job if lines_limit >= JOB_LINES else _head(job, lines_limit, Path(config)))
         _wait(app, lambda: window.loaded is not None, 120)
         proc, pty = _machine(driver, Path(config) / "sd")
         try:
