@@ -77,6 +77,8 @@ class GrblJob:
         self.stopping = False
         self.cut_off = False  # the link was lost: nothing more goes out
         self.finished_sending = False
+        self.modes: tuple[str, ...] = ()  # the work system and coolant it runs in (set by the session)
+        self.boot = 0  # the machine's boot count when it started (set by the session)
         self._sync_out = False
         self._motion = deque()  # program indices of answered motion lines, newest last
 
