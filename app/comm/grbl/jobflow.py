@@ -128,6 +128,8 @@ class GrblJobControl:
             return False
         if job.boot == self.boots:
             self._restart_on_welcome, self._reset_when_still = job, True
+            self._log("info", msg("the machine is reset once at rest (its buffer cleared), then the job "
+                                  "starts again at line {line}", line=self._source_line(job.done + 1)))
             return True
         return self._restart(job)
 
