@@ -79,6 +79,8 @@ def test_a_failed_port_then_reconnect_offers_start_here(qtbot, grbl_job):
     window.alert.abandon.click()  # the operator abandons it instead
     qtbot.waitUntil(lambda: binder.state == "READY", timeout=10_000)
     assert not window.alert.isVisible()
+    qtbot.waitUntil(lambda: binder.last_job_event is not None, timeout=10_000)
+    assert not binder.last_job_event.completed and binder.tracker.ended is not None  # the clock stops
 
 
 def test_the_grbl_alert_in_vietnamese(qtbot, window):

@@ -105,7 +105,7 @@ class GrblJobControl:
         by a link loss or a reset (no Start here taken) is abandoned."""
         job = self.job
         if self.state in (S.INTERRUPTED, S.RESTART_REQUIRED):
-            self._abandon(job)
+            self._abandon()
             job = None
         if job is None:
             self._realtime(p.FEED_HOLD)
@@ -141,11 +141,11 @@ class GrblJobControl:
             self.last_job = self._restart_on_welcome = None
             self._settle()
 
-    def _abandon(self, job) -> None:
-        if job is not None:
-            self._end_job(False, msg("abandoned by the operator"))
-            self.last_job = None
-        self.abandon_restart()
+    def _abandon(self) -> None:
+        """The job cut off (INTERRUPTED, or waiting for Start here) ends, as any job ends."""
+        self.job, self._restart_on_welcome = self.job or self.last_job, None
+        self._end_job(False, msg("abandoned by the operator"))
+        self.last_job = None
 
     # ------------------------------------------------------------------ answers
 
