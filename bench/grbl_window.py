@@ -6,7 +6,8 @@ reaches the GUI thread), the garbage collector's pauses, when the stalls came, a
 load average. ``driver`` "grbl" streams to ``cnc-sim --grbl --pty`` (115200 baud, real
 time; share of the character-counting ceiling), "frame" to ``cnc-sim --pty --speed 2``
 (the student mill's protocol, as ``bench_ui`` does): the same window, job and figures.
-``BENCH_GRBL_PUMP_MS`` tries another pump period of the worker for GRBL.
+``BENCH_GRBL_PUMP_MS`` tries another pump period of the worker for GRBL;
+``BENCH_GRBL_VERBOSE=1`` streams with the console showing every line each way.
 """
 
 from __future__ import annotations
@@ -182,6 +183,9 @@ def bench_window(lines_limit: int = 100_000, driver: str = "grbl") -> None:
             window.connection.driver.setCurrentIndex([key for key, _ in DRIVERS].index(driver))
             window.operator.connect_to(pty)
             _ready(app, window, driver)
+            if os.environ.get("BENCH_GRBL_VERBOSE") == "1":
+                window.console.show_stream.setChecked(True)
+                window.link.call("set_verbose_frames", True)
             idle_before = _thread_times()
             idle = _lateness(app, 5.0)
             idle_threads = _times_since(idle_before, 5.0)
