@@ -77,7 +77,8 @@ class GrblJobControl:
             return msg("a job is already running")
         if not self.attached or self.status is None:
             return msg("the machine is not connected")
-        if self.state not in (S.READY, S.RESTART_REQUIRED):
+        restarting = self.state is S.STARTING and self._restart_on_welcome is not None
+        if self.state not in (S.READY, S.RESTART_REQUIRED) and not restarting:
             return msg("the machine is not ready ({state})", state=self.state.name)
         if self.alarm is not None and not self.check_mode:
             return msg("the machine is in alarm: home ($H) or unlock ($X) first")
@@ -104,7 +105,7 @@ class GrblJobControl:
         """End the job now: hold, then a reset once the machine is at rest. A job cut off
         by a link loss or a reset (no Start here taken) is abandoned."""
         job = self.job
-        if self.state in (S.INTERRUPTED, S.RESTART_REQUIRED):
+        if self.state in (S.INTERRUPTED, S.RESTART_REQUIRED) or self._restart_on_welcome is not None:
             self._abandon()
             job = None
         if job is None:
@@ -121,13 +122,15 @@ class GrblJobControl:
         """After a cut-off: run the job again from the line after the last one finished.
         After a link loss (no reset since), GRBL may hold the start of a line cut off
         mid-way, which the next line would complete: it is reset first, once at rest (a
-        reset at rest keeps the position), and the job restarts on its welcome."""
+        reset at rest keeps the position), and the job restarts on its welcome (STARTING
+        meanwhile; a link loss before it cuts the job off again, ``stop()`` abandons it)."""
         job = self.last_job
         if self.state is not S.RESTART_REQUIRED or job is None:
             self._error("REFUSED", msg("there is no interrupted job to restart"))
             return False
         if job.boot == self.boots:
             self._restart_on_welcome, self._reset_when_still = job, True
+            self._set_state(S.STARTING)
             self._log("info", msg("the machine is reset once at rest (its buffer cleared), then the job "
                                   "starts again at line {line}", line=self._source_line(job.done + 1)))
             return True
@@ -252,6 +255,9 @@ class GrblJobControl:
         self._job_reconnected(same_boot=False)
 
     def _job_link_lost(self, reason: str) -> None:
+        pending, self._restart_on_welcome = self._restart_on_welcome, None
+        if pending is not None:  # Start here confirmed, the reset not yet seen: cut off again
+            self.job, self._reset_when_still = pending, False
         job = self.job
         if job is None:
             return

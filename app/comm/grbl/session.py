@@ -270,7 +270,7 @@ class GrblSession(SessionCore, GrblJobControl, GrblOperations, FrameVerbs):
                                                  info=msg("the machine was reset"), code="RESET"))
         self.merger.reset()
         self.merger.inches = self.settings.get(13) == "1"
-        restart, self._restart_on_welcome = self._restart_on_welcome, None
+        restart = self._restart_on_welcome
         homed = self.homed and restart is not None  # this host's reset at rest kept the position
         self.homed, self.critical, self.check_mode, self.alarm = homed, False, False, None
         if self.fixed_rx is None:
@@ -281,8 +281,9 @@ class GrblSession(SessionCore, GrblJobControl, GrblOperations, FrameVerbs):
         if self.job is not None:
             self._job_reset()
         self.refresh()
-        if restart is not None and self.state is S.RESTART_REQUIRED:
+        if restart is not None and self.state is S.STARTING:
             self._restart(restart)
+        self._restart_on_welcome = None
 
     def _on_report(self, item: p.Report) -> None:
         self._contact = True

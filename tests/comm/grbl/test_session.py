@@ -237,6 +237,32 @@ def test_stop_abandons_a_job_cut_off_by_a_link_loss(reconnect):
     assert len(ended) == 1 and not ended[0].completed and "abandoned" in ended[0].reason
 
 
+@pytest.mark.parametrize("then", ["stop", "lost"])
+def test_start_here_after_a_link_loss_waits_for_the_reset_and_can_be_stopped_or_cut_off(then):
+    h = Harness()
+    h.answer_refresh()
+    h.session.start_job([f"G01 X{i} F100" for i in range(10)])
+    h.feed("ok", "ok", "ok", "ok")
+    h.advance(3.5)
+    h.feed("<Idle|MPos:0,0,0|FS:0,0>")
+    assert h.session.confirm_restart()
+    assert h.session.state is SessionState.STARTING  # the job is starting: reset first
+    h.take()
+    if then == "stop":
+        h.session.stop()
+        assert h.session.state is SessionState.READY and not h.rec.of("on_job_finished")[-1].completed
+        h.feed(WELCOME.decode().strip())  # the reset stop() and the restart both asked for
+        assert h.session.job is None and h.session.state is SessionState.READY
+        return
+    h.advance(3.5)  # silent again before the machine came to rest
+    assert h.session.state is SessionState.INTERRUPTED
+    h.feed("<Idle|MPos:0,0,0|FS:0,0>")
+    assert h.session.state is SessionState.RESTART_REQUIRED and len(h.rec.of("on_resume_offer")) == 2
+    assert h.session.confirm_restart()
+    h.feed("<Idle|MPos:0,0,0|FS:0,0>", WELCOME.decode().strip())
+    assert h.session.state is SessionState.STREAMING and "G01 X2 F100" in h.lines()
+
+
 @pytest.mark.parametrize(("state", "modes"), [
     ("G0 G54 G17 G21 G90 G94 M5 M9 T0 F0 S0", ("G54",)),
     ("G1 G59 G17 G21 G90 G94 M3 M7 M8 T1 F100 S900", ("G59", "M7", "M8")),
