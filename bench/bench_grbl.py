@@ -8,15 +8,16 @@ worker does for GRBL: at 5 ms the share was 94 %).
 Printed: lines, bytes, simulated seconds, the character-counting ceiling (the bytes
 at 115200 baud, 10 bits a byte: the fastest any sender can go) and the share of it
 reached (goal >= 95 %), and the wall time the run took. Then the window streaming
-100,000 lines to ``cnc-sim --grbl --pty`` in real time: the GUI's longest stall (goal
-<= 50 ms) and the share reached through a real pty. ``BENCH_GRBL="[LINES] [stream|window]"
-python -m bench bench_grbl`` limits the lines or runs one part. Figures only.
+100,000 lines to ``cnc-sim --grbl --pty`` in real time (``grbl_window.py``): the GUI's
+longest stall (goal <= 50 ms), what explains it, and the share reached through a real pty.
+``BENCH_GRBL="[LINES] [stream|window|frame]" python -m bench bench_grbl`` limits the lines
+or runs one part; ``frame`` runs the window part with GRBL, then with the mill's own
+protocol for comparison. Figures only.
 """
 
 from __future__ import annotations
 
 import os
-import sys
 import time
 
 from app.comm.grbl.events import GrblListener
@@ -75,10 +76,14 @@ def stream(lines: list[str]) -> dict:
 def main(argv: list[str] | None = None) -> None:
     argv = os.environ.get("BENCH_GRBL", "").split() if argv is None else argv
     limit = next((int(a) for a in argv if a.isdigit()), None)
-    if "window" not in argv:
+    if "window" not in argv and "frame" not in argv:
         bench_stream(limit)
     if "stream" not in argv:
+        from bench.grbl_window import bench_window
+
         bench_window(limit or 100_000)
+        if "frame" in argv:
+            bench_window(limit or 100_000, "frame")
 
 
 def bench_stream(limit: int | None) -> None:
@@ -100,55 +105,3 @@ def bench_stream(limit: int | None) -> None:
 
 if __name__ == "__main__":
     main()
-
-
-def _step(ok: bool, what: str) -> None:
-    if not ok:
-        raise RuntimeError(f"bench_grbl: no {what} from the GRBL simulator")
-
-
-def bench_window(lines_limit: int = 100_000) -> None:
-    """The window streaming bench_ui's 100,000-line job to ``cnc-sim --grbl --pty`` (real
-    time, 115200 baud, check mode): the 10 ms timer's lateness (GUI stall, goal <= 50 ms)
-    and the lines per second against the baud-rate ceiling."""
-    import subprocess
-    import tempfile
-    from pathlib import Path
-
-    from bench.bench_ui import _describe, _lateness, _wait, _window, job_file
-
-    with tempfile.TemporaryDirectory() as config:
-        app, window = _window(Path(config))
-        binder = window.binder
-        window.open_file(job_file())
-        _wait(app, lambda: window.loaded is not None, 120)
-        proc = subprocess.Popen([sys.executable, "-m", "backend_sim", "--grbl", "--pty"],
-                                stdout=subprocess.PIPE, text=True)
-        pty = proc.stdout.readline().split()[-1]
-        try:
-            window.connection.driver.setCurrentIndex(2)  # GRBL
-            window.operator.connect_to(pty)
-            _step(_wait(app, lambda: binder.status is not None, 30), "a status report")
-            window.link.call("send_command", "$X")
-            _step(_wait(app, lambda: binder.status.state == "IDLE", 30), "the unlock")
-            window.controls.check_mode.setChecked(True)
-            _step(_wait(app, lambda: window.link.worker.session.check_mode, 30), "check mode")
-            idle = _lateness(app, 5.0)
-            started = time.monotonic()
-            window.operator.start()
-            trace = os.environ.get("BENCH_UI_TRACE") == "1"  # where the GUI thread was when late
-            busy = _lateness(app, 900.0, lambda: binder.last_job_event is not None, trace)
-            took = time.monotonic() - started
-            event = binder.last_job_event
-        finally:
-            window.close()
-            proc.terminate()
-            proc.wait(5)
-    lines = window.loaded.program.device_lines
-    sent = sum(len(line) + 1 for line in lines) + len("G21 G90 G94 G17\nG4 P0\n")
-    ceiling = sent * 10 / BAUD
-    print(f"window -> cnc-sim --grbl --pty, check mode: {len(lines):,} lines in {took:.1f} s "
-          f"({len(lines) / took:,.0f} lines/s; ceiling {ceiling:.1f} s, share {ceiling / took:.1%}); "
-          f"completed {event.completed if event else None}")
-    print(f"  10 ms timer lateness while streaming: {_describe(busy)} (goal max <= 50 ms)")
-    print(f"  same timer, window idle, 5 s before: {_describe(idle)}; load average {os.getloadavg()[0]:.1f}")

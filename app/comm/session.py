@@ -35,23 +35,21 @@ from app.comm.commands import CommandQueue, next_command_id
 from app.comm.events import (
     AlarmEvent,
     CommandResult,
-    ErrorEvent,
     FrameEvent,
     JobEvent,
     LinkEvent,
-    LogEvent,
     ResumeOffer,
-    StateEvent,
     StatusEvent,
 )
-from app.comm.heartbeat import LinkMonitor, LinkState
+from app.comm.heartbeat import LinkMonitor
 from app.comm.hold_jog import HoldToJog
 from app.comm.holds import HoldWatch, source_words
 from app.comm.jobs import UNKNOWN_BOOT, JobControl
 from app.comm.link_health import ResendMeter
-from app.comm.listener import JOB_STATES, SENDING_STATES, TRANSITIONS, SessionListener, SessionState
+from app.comm.listener import JOB_STATES, SENDING_STATES, SessionListener, SessionState
 from app.comm.realtime import NAMES, UrgentCommands
 from app.comm.rtt import RttEstimator
+from app.comm.session_core import SessionCore
 from app.comm.stops import StopWatch
 from app.comm.stream import Stream
 from app.comm.window import MAX_WINDOW
@@ -62,7 +60,7 @@ S = SessionState
 HEALTH_EVERY_S = 1.0
 
 
-class Session(JobControl):
+class Session(SessionCore, JobControl):
     """One connection to the machine; see the module docstring for the contract."""
 
     def __init__(self, write: Callable[[bytes], object] | None = None,
@@ -107,33 +105,17 @@ class Session(JobControl):
 
     def attach(self, write: Callable[[bytes], object]) -> None:
         """A transport was opened: start talking (ask for a status)."""
-        self._write = write
         self.deframer = dfr.Deframer()
         self.urgent.clear()
         self.holds.forget()
         self._last_progress = (None, float("-inf"))
         self.program_stops.forget()
-        self.link.attach(self.clock())
-        self._emit_link()
-        if self.state is S.DISCONNECTED:
-            self._set_state(S.CONNECTING)
+        self._open_link(write)
         self.submit("STATUS")
 
-    def detach(self, reason: str = "disconnected") -> None:
-        """The transport is gone (closed, unplugged, write failed): a link loss."""
-        if self._write is None:
-            return
-        self._write = None
-        self._out.clear()
-        self.link.detach()
-        self._emit_link(reason)
-        self._link_lost(reason)
+    def _after_detach(self) -> None:
         if self.state in (S.READY, S.CONNECTING, S.UPLOADING, S.STOPPING):
             self._set_state(S.DISCONNECTED)
-
-    @property
-    def attached(self) -> bool:
-        return self._write is not None
 
     # ------------------------------------------------------------------ bytes in, time
 
@@ -149,10 +131,7 @@ class Session(JobControl):
         now = self.clock()
         for item in self.deframer.poll(now):
             self._receive(item, now)
-        if self.link.update(now):
-            self._emit_link()
-            if self.link.state is LinkState.LOST:
-                self._link_lost(msg("no valid frame for {seconds:g} s", seconds=float(self.link.lost_s)))
+        self._check_silence(now)
         self._tick_realtime(now)
         self._tick_commands(now)
         self._tick_stream(now)
@@ -259,9 +238,7 @@ class Session(JobControl):
             text = item.raw.decode("ascii", "replace")
             self.listener.on_frame(FrameEvent("rx", "?", f"{item.reason}: {text!r}", ok=False))
             return
-        self.link.heard(now)
-        if self.link.update(now):
-            self._emit_link()
+        self._heard(now)
         self.listener.on_frame(FrameEvent("rx", item.KIND, item.body()))
         self._handlers[item.KIND](item, now)
 
@@ -333,6 +310,9 @@ class Session(JobControl):
 
     # ------------------------------------------------------------------ link
 
+    def _silence_reason(self) -> str:
+        return msg("no valid frame for {seconds:g} s", seconds=float(self.link.lost_s))
+
     def _link_lost(self, reason: str) -> None:
         self.hold_jog.cancel()
         self._error("LINK_LOST", msg("link to the machine lost: {reason}", reason=reason))
@@ -371,32 +351,6 @@ class Session(JobControl):
     def _send(self, frame: fr.Frame) -> None:
         self._out += frame.encode()
         self.listener.on_frame(FrameEvent("tx", frame.KIND, frame.body()))
-
-    def _flush(self) -> None:
-        if not self._out or self._write is None:
-            return
-        data, self._out = bytes(self._out), bytearray()
-        try:
-            self._write(data)
-        except OSError as exc:
-            self.detach(f"write failed: {exc}")
-
-    def _set_state(self, new: SessionState) -> None:
-        """The one place the state changes: checked against TRANSITIONS, logged, notified."""
-        old = self.state
-        if new is old:
-            return
-        if new not in TRANSITIONS[old]:
-            raise RuntimeError(f"session state {old.name} -> {new.name} is not allowed")
-        self.state = new
-        self.listener.on_state_changed(StateEvent(old.name, new.name))
-
-    def _log(self, level: str, text: str, source: str = "host") -> None:
-        self.listener.on_log(LogEvent(level, text, source))
-
-    def _error(self, code: str, text: str) -> None:
-        self.listener.on_error(ErrorEvent(code, text))
-        self._log("error", text)
 
     def _finish_stream(self, completed: bool, reason: str) -> None:
         stream, self.stream = self.stream, None

@@ -4,8 +4,8 @@ The only Qt module of ``app.comm``. The GUI never calls the worker directly: it 
 ``SerialController`` (GUI thread), whose methods queue a call into the worker thread
 and return at once, so nothing in the GUI thread ever waits on I/O. The worker opens
 the transport inside its own thread, pumps the session with a 5 ms QTimer (read what
-arrived, ``feed``, ``tick``; every 50 ms while no port is open) and turns the session's
-listener calls into signals.
+arrived, ``feed``, ``tick``; every 2 ms while a GRBL job streams, every 50 ms while no
+port is open) and turns the session's listener calls into signals.
 
 Signals (all carry one frozen dataclass of ``app.comm.events`` unless said otherwise):
 
@@ -74,6 +74,7 @@ MACHINE_CALLS = frozenset({"set_feed_override", "set_rapid_override", "set_spind
                            "jog_to_limit", "unlock", "reset", "read_settings", "write_setting"})
 PUMP_MS = 5
 GRBL_PUMP_MS = 2  # GRBL's only window is its 128-byte buffer (11 ms at 115200): answer its oks sooner
+#                  while a job streams; otherwise PUMP_MS (fewer wake-ups competing with the GUI)
 IDLE_PUMP_MS = 50  # with no port open: nothing arrives, the session's timers are coarse
 READ_CHUNK = 65536
 QUIET_KINDS = frozenset({*"DAFS", "job", "preamble", "sync", "<", "ok"})  # GRBL's stream kinds too
@@ -196,6 +197,8 @@ class SerialWorker(QObject):
         self.session.tick()
         if self.transport is not None and not self.session.attached:
             self._lost("write failed")
+        elif self.transport is not None:
+            self._pump_every(self._pump_ms())
 
     # ------------------------------------------------------------------ slots
 
@@ -228,7 +231,7 @@ class SerialWorker(QObject):
         early = getattr(self.transport, "probe_bytes", b"")
         if early:
             self.session.feed(early)
-        self._pump_every(GRBL_PUMP_MS if kind == "grbl" else PUMP_MS)
+        self._pump_every(self._pump_ms())
         self.capabilities_changed.emit(getattr(self.session, "capabilities", FRAME_CAPABILITIES))
         self.connected.emit(url)
 
@@ -318,8 +321,13 @@ class SerialWorker(QObject):
     def _write(self, data: bytes) -> None:
         self.transport.write(data)
 
+    def _pump_ms(self) -> int:
+        """GRBL_PUMP_MS while a GRBL job streams, else PUMP_MS."""
+        grbl = getattr(self.session, "capabilities", FRAME_CAPABILITIES).driver == "grbl"
+        return GRBL_PUMP_MS if grbl and self.session.busy else PUMP_MS
+
     def _pump_every(self, ms: int) -> None:
-        if self._timer is not None:
+        if self._timer is not None and self._timer.interval() != ms:
             self._timer.setInterval(ms)
 
     def _lost(self, reason: str) -> None:

@@ -19,6 +19,9 @@ LOST_TEXT = {
                                               "over the link."),
     "uart": QT_TRANSLATE_NOOP("LinkAlert", "The machine's internal link (UART between the main board and the "
                                            "motion board) is lost."),
+    "report_silence": QT_TRANSLATE_NOOP("LinkAlert", "The machine has sent no status report for 3 s (a "
+                                                     "GRBL machine has no heartbeat: its reports are the "
+                                                     "sign of life)."),
 }
 HEADLINE_LOST = "font-size: 14pt; font-weight: bold; color: #e03030;"
 HEADLINE_OK = "font-size: 14pt; font-weight: bold; color: #39a353;"
@@ -28,17 +31,22 @@ def _t(text: str) -> str:
     return QCoreApplication.translate("LinkAlert", text)
 
 
-def machine_action(job_running: bool, from_sd: bool, what: str = "silence", last_state: str = "") -> str:
+def machine_action(job_running: bool, from_sd: bool, what: str = "silence", last_state: str = "",
+                   host_watch: bool = True) -> str:
     """What the machine does now, as far as this computer can know: the machine's rule
     (docs/protocol.md: a streamed job holds once the host is missed for 3 s, an SD job
-    carries on) and the last state it reported; only the machine's own report of a
-    lost internal link says what it did."""
+    carries on; ``host_watch`` False: a machine that does not watch for its host, as GRBL,
+    runs what its buffer holds) and the last state it reported; only the machine's own
+    report of a lost internal link says what it did."""
     said = QCoreApplication.translate("LinkAlert", "Last state seen: %1.").replace("%1", last_state or "—")
     translate = QCoreApplication.translate
     if from_sd:
         rule = translate("LinkAlert", "A job from the SD card carries on without this computer.")
     elif job_running and what == "uart":
         rule = translate("LinkAlert", "The main board holds the job: the motion board did not answer it.")
+    elif job_running and not host_watch:
+        rule = translate("LinkAlert", "A GRBL machine does not notice that this computer is gone: it runs "
+                                      "the lines already in its buffer, then waits.")
     elif job_running:
         rule = translate("LinkAlert", "If the machine is still powered, it holds the job on the path once "
                                       "it has missed this computer for 3 s; it keeps its place unless it "
@@ -102,15 +110,15 @@ class LinkAlert(QDialog):
             button.setVisible(button in visible)
 
     def show_lost(self, what: str, job_running: bool, from_sd: bool = False, detail: str = "",
-                  last_state: str = "", again: bool = False) -> None:
-        """At once: what was lost (``"port"``, ``"silence"`` or ``"uart"``), what the machine
-        does by its rules and the state it last reported. ``detail`` may be a core message
-        (``app.i18n``): it is shown in the window's language."""
-        self._shown = (self.show_lost, (what, job_running, from_sd, detail, last_state))
+                  last_state: str = "", host_watch: bool = True, again: bool = False) -> None:
+        """At once: what was lost (a key of ``LOST_TEXT``), what the machine does by its
+        rules (``host_watch``: see ``machine_action``) and the state it last reported.
+        ``detail`` may be a core message (``app.i18n``): it is shown in the window's language."""
+        self._shown = (self.show_lost, (what, job_running, from_sd, detail, last_state, host_watch))
         self.headline.setText(self.tr("⚠ Link to the machine lost"))
         self.headline.setStyleSheet(HEADLINE_LOST)
         text = [_t(LOST_TEXT[what]) if what in LOST_TEXT else what,
-                machine_action(job_running, from_sd, what, last_state)]
+                machine_action(job_running, from_sd, what, last_state, host_watch)]
         if detail:
             text.append(localize(detail))
         text.append(self.tr("Check the cable and the machine's power, then reconnect."))
@@ -138,10 +146,37 @@ class LinkAlert(QDialog):
             text = self.tr("The machine was reset and no longer knows its position. Home it, check the "
                            "stock, then restart at line %1 of %2 with the feed and spindle restored.")
         self.body.setText(text.replace("%1", line).replace("%2", lines))
+        self.restart.setText(self.tr("Home and restart"))
         if again:
             return
         self.beeper.stop()
         self._buttons(self.resume, self.abandon) if same_boot else self._buttons(self.restart, self.abandon)
+        self.show()
+        self.raise_()
+
+    def show_restart_offer(self, from_line: int, total: int, needs_home: bool, again: bool = False) -> None:
+        """After reconnecting to a machine that cannot resume exactly (GRBL): Start here at
+        ``from_line`` of ``total`` (source lines), the line after the last one known
+        finished, with the modal state restored; ``needs_home``: it was reset."""
+        self._shown = (self.show_restart_offer, (from_line, total, needs_home))
+        self.headline.setText(self.tr("✓ Link restored"))
+        self.headline.setStyleSheet(HEADLINE_OK)
+        line, lines = integer(from_line), integer(total)
+        text = self.tr("GRBL cannot resume a job exactly. Start again at line %1 of %2, the line after "
+                       "the last one known finished (its “ok” came back and its motion was done), with the "
+                       "units, work system, coolant, spindle and feed restored; lines after it may already "
+                       "have run.")
+        parts = [text.replace("%1", line).replace("%2", lines)]
+        if needs_home:
+            parts.append(self.tr("The machine was reset and no longer knows its position: it is homed "
+                                 "first."))
+        self.body.setText("\n\n".join(parts))
+        self.restart.setText(self.tr("Home and restart") if needs_home
+                             else self.tr("Start here at line %1").replace("%1", line))
+        if again:
+            return
+        self.beeper.stop()
+        self._buttons(self.restart, self.abandon)
         self.show()
         self.raise_()
 

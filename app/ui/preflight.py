@@ -3,6 +3,8 @@ the machine's real work offset (``checks.preflight``).
 
 The offset is read from the machine (``GET OFFSET_X|Y|Z`` on connect) and follows every
 ``ZERO`` answer; until the machine has answered, the profile's default offset stands.
+The travel is the profile's, or a GRBL machine's own ``$130``-``$132`` (from its ``$$``
+print-out and every ``$13x=`` written), as ``app.comm.grbl.dialect.grbl_travel`` reads them.
 The check runs again when a file is opened, the work zero changes or the settings
 change. A program that would leave the travel cannot start (``blocks_start``); only in
 check mode may the operator override it (the "Override travel check" switch).
@@ -10,8 +12,11 @@ check mode may the operator override it (the "Override travel check" switch).
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 from PySide6.QtCore import QObject
 
+from app.comm.grbl.dialect import grbl_travel
 from app.gcode.checks import preflight
 from app.i18n import localize
 
@@ -29,6 +34,8 @@ class Preflight(QObject):
         super().__init__(window)
         self.w = window
         self.offset: list[float | None] = [None, None, None]
+        self.travel = None  # a GRBL machine's own travel ($130-$132), else the profile's
+        self._settings: dict[int, str] = {}
         self.errors: list = []
         worker = window.link.worker
         worker.connected.connect(self.ask_offset)
@@ -38,6 +45,7 @@ class Preflight(QObject):
         window.controls.override_travel.toggled.connect(lambda _on: self.w.binder.refresh_enabled())
 
     def ask_offset(self, url: str = "") -> None:
+        self.travel, self._settings = None, {}  # another machine: its own travel, if it says one
         for name in OFFSET_NAMES:
             self.w.link.call("send_command", f"GET {name}")
 
@@ -49,9 +57,25 @@ class Preflight(QObject):
             self.offset[OFFSET_NAMES.index(name)] = float(value)
             if None not in self.offset:
                 self.run()
+        elif result.verb == "$$" or result.verb.startswith("$13"):
+            self._grbl_settings(result.rows if result.verb == "$$" else (result.verb,))
         elif result.verb == "ZERO":
             words = dict((w[0], float(w[1:])) for w in result.info.split() if w[:1] in "XYZ")
             self.offset = [words.get(axis, old) for axis, old in zip("XYZ", self.offset, strict=True)]
+            self.run()
+
+    def _grbl_settings(self, rows) -> None:
+        """``$n=value`` rows of a GRBL machine: its travel once ``$130``-``$132`` are known."""
+        for row in rows:
+            number, _, value = row.lstrip("$").partition("=")
+            if number.isdigit():
+                self._settings[int(number)] = value
+        try:
+            travel = grbl_travel(self._settings, (0.0, 0.0, 0.0), self.w.profile)[0].travel
+        except ValueError:
+            return  # not all three reported yet (or not a travel): the profile's stands
+        if travel != self.travel:
+            self.travel = travel
             self.run()
 
     def on_loaded(self, loaded) -> None:
@@ -68,7 +92,8 @@ class Preflight(QObject):
         old = [str(e) for e in self.errors]
         self.errors = []
         if program is not None and not program.errors:
-            self.errors = preflight(program.ops, self.w.profile, program.lines, self.current_offset(),
+            profile = self.w.profile if self.travel is None else replace(self.w.profile, travel=self.travel)
+            self.errors = preflight(program.ops, profile, program.lines, self.current_offset(),
                                     program.envelope)  # the lines unsplit; the load's check reused
         if self.errors and [str(e) for e in self.errors] != old:
             self.w.notifier.error(self.tr("Program leaves the travel"), self.message())

@@ -1,6 +1,9 @@
 """Worker events -> widgets. Handlers only store what arrived; a ~30 Hz timer moves
 the latest status and progress to the labels, the preview's tool marker and finished
-part, and the source listing, so a flood of frames never floods the GUI."""
+part, and the source listing, so a flood of frames never floods the GUI. Progress, the
+log and the console's traffic (a line each way per GRBL line when the console shows the
+stream) are taken where the worker emits them and applied by that timer in batches: no
+call per line is queued into the GUI thread."""
 
 from __future__ import annotations
 
@@ -47,6 +50,7 @@ class SessionBinder(QObject):
         self._status_key = None  # (state, flags) of the last status
         self._gui_thread = threading.get_ident()
         self._progress_in: deque = deque()  # progress events from the worker, drained by tick()
+        self._console_in: deque = deque()  # ("log" | "frame", event) in arrival order, drained by tick()
         self.sd_job: str | None = None  # the card file the machine runs (its progress comes in S)
         self.sd_name = ""  # the card file of the last SD run (its figures stay labelled after it)
         self._sd_seen = False  # a status of the SD run has arrived
@@ -76,8 +80,8 @@ class SessionBinder(QObject):
         worker.progress_changed.connect(self._progress_arrived, Qt.ConnectionType.DirectConnection)
         worker.link_changed.connect(self.on_link)
         worker.alarm_raised.connect(self.on_alarm)
-        worker.log_added.connect(self.on_log)
-        worker.frame_logged.connect(self.on_frame)
+        worker.log_added.connect(self._log_arrived, Qt.ConnectionType.DirectConnection)
+        worker.frame_logged.connect(self._frame_arrived, Qt.ConnectionType.DirectConnection)
         worker.command_finished.connect(self.on_command)
         worker.job_finished.connect(self.on_job_finished)
         worker.error_occurred.connect(self.on_error)
@@ -96,6 +100,19 @@ class SessionBinder(QObject):
 
     def on_frame(self, event) -> None:
         self.w.console.add_frame(event.direction, event.kind, event.text, event.ok)
+
+    def _log_arrived(self, event) -> None:
+        """Runs in the emitting thread (DirectConnection): store only, no widgets."""
+        self._console_in.append((self.on_log, event))
+
+    def _frame_arrived(self, event) -> None:
+        self._console_in.append((self.on_frame, event))
+
+    def _drain_console(self) -> None:
+        """The log lines and traffic that arrived since the last tick, in their order."""
+        for _ in range(len(self._console_in)):
+            show, event = self._console_in.popleft()
+            show(event)
 
     def on_error(self, event) -> None:
         if event.code == "LINK_LOST":
@@ -184,13 +201,18 @@ class SessionBinder(QObject):
             self.alert_clock = self.w.link.clock()
         from_sd = self.status is not None and "S" in self.status.flags
         last = self.w.connection.state.text() if self.status is not None else ""
-        self.w.alert.show_lost(what, self.state in JOB or self.state in RECOVERY, from_sd, detail, last)
+        grbl = getattr(self.w.link.capabilities, "driver", "frame") == "grbl"  # no heartbeat, no host watch
+        what = "report_silence" if grbl and what == "silence" else what
+        self.w.alert.show_lost(what, self.state in JOB or self.state in RECOVERY, from_sd, detail, last,
+                               host_watch=not grbl)
         self.refresh_enabled(force=False)
 
     def on_resume_offer(self, offer) -> None:
         line, lines = self.source_line(offer.from_seq), self.source_total()
-        exact = offer.same_boot and self.w.link.capabilities.exact_resume  # else: home, restart at the line
-        self.w.alert.show_offer(exact, line, lines)
+        if not self.w.link.capabilities.exact_resume:  # GRBL: Start here, whatever happened
+            self.w.alert.show_restart_offer(line, lines, offer.needs_home)
+        else:  # the same boot resumes exactly; after a reset: home, restart at the line
+            self.w.alert.show_offer(offer.same_boot, line, lines)
         self.refresh_enabled(force=False)
 
     def source_line(self, seq: int) -> int:
@@ -386,6 +408,7 @@ class SessionBinder(QObject):
 
     def tick(self) -> None:
         self._ticks += 1
+        self._drain_console()
         self._drain_progress()
         if self._dirty and self.status is not None:
             self._dirty = False

@@ -770,6 +770,10 @@
         <translation>Máy không trả lời đã 3 giây: không có khung dữ liệu hợp lệ nào về qua đường truyền.</translation>
     </message>
     <message>
+        <source>The machine has sent no status report for 3 s (a GRBL machine has no heartbeat: its reports are the sign of life).</source>
+        <translation>Máy không gửi báo cáo trạng thái nào trong 3 s (máy GRBL không có nhịp tim: báo cáo trạng thái là dấu hiệu máy còn hoạt động).</translation>
+    </message>
+    <message>
         <source>Last state seen: %1.</source>
         <translation>Trạng thái thấy lần cuối: %1.</translation>
     </message>
@@ -780,6 +784,10 @@
     <message>
         <source>The main board holds the job: the motion board did not answer it.</source>
         <translation>Mạch chính giữ chương trình lại: mạch điều khiển chuyển động không trả lời.</translation>
+    </message>
+    <message>
+        <source>A GRBL machine does not notice that this computer is gone: it runs the lines already in its buffer, then waits.</source>
+        <translation>Máy GRBL không biết máy tính này đã mất kết nối: nó chạy hết các dòng đã có trong bộ đệm, rồi chờ.</translation>
     </message>
     <message>
         <source>If the machine is still powered, it holds the job on the path once it has missed this computer for 3 s; it keeps its place unless it was reset.</source>
@@ -832,6 +840,18 @@
     <message>
         <source>The machine was reset and no longer knows its position. Home it, check the stock, then restart at line %1 of %2 with the feed and spindle restored.</source>
         <translation>Máy đã khởi động lại và không còn biết vị trí. Hãy cho máy về gốc, kiểm tra phôi, rồi chạy lại từ dòng %1 trên %2 với tốc độ chạy dao và trục chính như cũ.</translation>
+    </message>
+    <message>
+        <source>GRBL cannot resume a job exactly. Start again at line %1 of %2, the line after the last one known finished (its “ok” came back and its motion was done), with the units, work system, coolant, spindle and feed restored; lines after it may already have run.</source>
+        <translation>GRBL không thể tiếp tục công việc một cách chính xác. Chạy lại từ dòng %1 trên %2, dòng ngay sau dòng cuối cùng đã biết chắc là xong (đã nhận “ok” và chuyển động đã hoàn tất), với đơn vị, hệ tọa độ làm việc, dung dịch làm mát, trục chính và lượng chạy dao được khôi phục; các dòng sau đó có thể đã chạy.</translation>
+    </message>
+    <message>
+        <source>The machine was reset and no longer knows its position: it is homed first.</source>
+        <translation>Máy đã bị khởi động lại và không còn biết vị trí của nó: máy sẽ về gốc trước.</translation>
+    </message>
+    <message>
+        <source>Start here at line %1</source>
+        <translation>Chạy từ dòng %1</translation>
     </message>
     <message>
         <source>The machine answers again.</source>

@@ -11,7 +11,10 @@ once the hold is complete (a reset while moving would lose the position). In che
 ends failed. ``stop()`` is the same hold-then-reset. A reset the host did not ask for,
 or a link loss, cuts the job off: once the machine answers again, ``ResumeOffer`` at
 the line after the last one known finished (GRBL cannot resume exactly);
-``confirm_restart()`` runs from there with the modal state restored.
+``confirm_restart()`` runs from there with the modal state restored: units, distance
+mode, feed mode and plane (``PREAMBLE``), the work system and coolant the job ran in
+(``$G``, read as the job's first line: a reset puts GRBL back in G54 with coolant off),
+then the spindle, feed and position the lines before it left (``modal.restart_preamble``).
 """
 
 from __future__ import annotations
@@ -19,12 +22,15 @@ from __future__ import annotations
 from app.comm.events import ProgramStopEvent, ResumeOffer
 from app.comm.grbl import protocol as p
 from app.comm.grbl.dialect import PREAMBLE, grbl_lines, line_problems
-from app.comm.grbl.job import GrblJob, Outgoing
+from app.comm.grbl.job import GrblJob, Outgoing, spindle_off_at_tool_changes
 from app.comm.listener import SessionState
-from app.comm.modal import restart_preamble
+from app.comm.modal import modal_state, restart_preamble
 from app.i18n import joined, msg
 
 S = SessionState
+PARSER_STATE = "$G"  # the job's first line: the work system and coolant it runs in
+WORK_SYSTEMS = frozenset(f"G{n}" for n in range(54, 60))
+COOLANT = ("M7", "M8")
 PROGRESS_S = 0.1
 STILL_REPORTS = 2  # reports at rest after the hold before the reset: the first may predate the hold
 _SETTLED = ("Idle", "Check", "Alarm")
@@ -35,10 +41,13 @@ class GrblJobControl:
 
     # ------------------------------------------------------------------ calls
 
-    def start_job(self, device_lines, start: int = 0, name: str = "", line_map=None) -> bool:
+    def start_job(self, device_lines, start: int = 0, name: str = "", line_map=None,
+                  modes: tuple[str, ...] | None = None) -> bool:
         """Stream ``device_lines`` (or a ``Program``: its device lines and line map) from
         index ``start``; False (with an error event) if the machine cannot take a job now.
-        ``line_map`` (device index -> source line) lets messages name the source line."""
+        ``line_map`` (device index -> source line) lets messages name the source line.
+        ``modes`` (a restart: ``held_modes`` of the job cut off) are set before the lines;
+        None reads them from the machine (``$G``) for a later restart."""
         if hasattr(device_lines, "device_lines"):
             program = device_lines
             device_lines = list(program.device_lines)
@@ -48,10 +57,14 @@ class GrblJobControl:
         if why:
             self._error("REFUSED", why)
             return False
-        preamble = PREAMBLE + (tuple(restart_preamble(list(device_lines), start)) if start else ())
-        job = GrblJob(grbl_lines(device_lines, self.optional_stop, start), len(device_lines), name,
-                      preamble, first=start)
+        first = (PARSER_STATE,) + PREAMBLE if modes is None else PREAMBLE + modes
+        preamble = first + (tuple(restart_preamble(list(device_lines), start)) if start else ())
+        rpm = modal_state(list(device_lines), start).spindle_rpm if start else None
+        lines = spindle_off_at_tool_changes(grbl_lines(device_lines, self.optional_stop, start), rpm)
+        job = GrblJob(lines, len(device_lines), name, preamble, first=start)
         job.device_lines, job.line_map, job.errors = device_lines, line_map, []
+        job.modes = held_modes(self.parser_state) if modes is None else modes
+        job.boot = self.boots
         job.end_reason, job.reset_sent, job.cut_off = "", False, False
         self.job, self.last_job, self._last_progress = job, None, float("-inf")
         self._set_state(S.STARTING)
@@ -64,7 +77,8 @@ class GrblJobControl:
             return msg("a job is already running")
         if not self.attached or self.status is None:
             return msg("the machine is not connected")
-        if self.state not in (S.READY, S.RESTART_REQUIRED):
+        restarting = self.state is S.STARTING and self._restart_on_welcome is not None
+        if self.state not in (S.READY, S.RESTART_REQUIRED) and not restarting:
             return msg("the machine is not ready ({state})", state=self.state.name)
         if self.alarm is not None and not self.check_mode:
             return msg("the machine is in alarm: home ($H) or unlock ($X) first")
@@ -88,8 +102,12 @@ class GrblJobControl:
         return True
 
     def stop(self) -> None:
-        """End the job now: hold, then a reset once the machine is at rest."""
+        """End the job now: hold, then a reset once the machine is at rest. A job cut off
+        by a link loss or a reset (no Start here taken) is abandoned."""
         job = self.job
+        if self.state in (S.INTERRUPTED, S.RESTART_REQUIRED) or self._restart_on_welcome is not None:
+            self._abandon()
+            job = None
         if job is None:
             self._realtime(p.FEED_HOLD)
             self._reset_when_still = True
@@ -101,24 +119,45 @@ class GrblJobControl:
         self._realtime(p.SOFT_RESET)
 
     def confirm_restart(self) -> bool:
-        """After a cut-off: run the job again from the line after the last one finished."""
+        """After a cut-off: run the job again from the line after the last one finished.
+        After a link loss (no reset since), GRBL may hold the start of a line cut off
+        mid-way, which the next line would complete: it is reset first, once at rest (a
+        reset at rest keeps the position), and the job restarts on its welcome (STARTING
+        meanwhile; a link loss before it cuts the job off again, ``stop()`` abandons it)."""
         job = self.last_job
         if self.state is not S.RESTART_REQUIRED or job is None:
             self._error("REFUSED", msg("there is no interrupted job to restart"))
             return False
-        return self.start_job(job.device_lines, job.done + 1, job.name, job.line_map)
+        if job.boot == self.boots:
+            self._restart_on_welcome, self._reset_when_still = job, True
+            self._set_state(S.STARTING)
+            self._log("info", msg("the machine is reset once at rest (its buffer cleared), then the job "
+                                  "starts again at line {line}", line=self._source_line(job.done + 1)))
+            return True
+        return self._restart(job)
+
+    def _restart(self, job) -> bool:
+        return self.start_job(job.device_lines, job.done + 1, job.name, job.line_map, job.modes)
 
     def abandon_restart(self) -> None:
         if self.state is S.RESTART_REQUIRED:
-            self.last_job = None
+            self.last_job = self._restart_on_welcome = None
             self._settle()
+
+    def _abandon(self) -> None:
+        """The job cut off (INTERRUPTED, or waiting for Start here) ends, as any job ends."""
+        self.job, self._restart_on_welcome = self.job or self.last_job, None
+        self._end_job(False, msg("abandoned by the operator"))
+        self.last_job = None
 
     # ------------------------------------------------------------------ answers
 
     def _job_ok(self, out: Outgoing) -> None:
         job = self.job
         job.acked_line(out)
-        if out.kind == "sync":
+        if out.kind == "preamble" and out.text == PARSER_STATE:
+            job.modes = held_modes(self.parser_state)  # its [GC:..] came just before the ok
+        elif out.kind == "sync":
             stop = job.synced()
             if stop is not None and not job.stopping:
                 job.prompted = True
@@ -216,6 +255,9 @@ class GrblJobControl:
         self._job_reconnected(same_boot=False)
 
     def _job_link_lost(self, reason: str) -> None:
+        pending, self._restart_on_welcome = self._restart_on_welcome, None
+        if pending is not None:  # Start here confirmed, the reset not yet seen: cut off again
+            self.job, self._reset_when_still = pending, False
         job = self.job
         if job is None:
             return
@@ -260,4 +302,12 @@ class GrblJobControl:
             self.listener.on_progress(self.job.progress())
 
 
-__all__ = ["GrblJobControl", "ProgramStopEvent"]
+def held_modes(parser_state: str) -> tuple[str, ...]:
+    """What of ``$G``'s parser state (``G0 G55 G17 G21 G90 G94 M5 M8 T0 F0 S0``) a reset
+    loses and no job line sets again: the work system and the coolant (``("G55", "M8")``)."""
+    words = parser_state.upper().split()
+    systems = [w for w in words if w in WORK_SYSTEMS]
+    return tuple(systems[:1]) + tuple(w for w in words if w in COOLANT)
+
+
+__all__ = ["GrblJobControl", "ProgramStopEvent", "held_modes"]

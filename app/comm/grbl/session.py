@@ -44,9 +44,9 @@ from app.comm.grbl.jobflow import GrblJobControl
 from app.comm.grbl.operations import GrblOperations
 from app.comm.grbl.status import ReportMerger, to_status_event
 from app.comm.grbl.verbs import FrameVerbs
-from app.comm.heartbeat import LinkMonitor, LinkState
+from app.comm.heartbeat import LinkMonitor
 from app.comm.listener import TRANSITIONS, SessionState
-from app.comm.session import Session
+from app.comm.session_core import SessionCore
 from app.i18n import msg
 
 S = SessionState
@@ -57,7 +57,7 @@ REFRESH = ("$I", "$$", "$#", "$G")  # read at connect and after every reset
 MAX_LINE_BYTES = 1024  # a line from the machine longer than this is noise
 
 
-class GrblSession(GrblJobControl, GrblOperations, FrameVerbs):
+class GrblSession(SessionCore, GrblJobControl, GrblOperations, FrameVerbs):
     """One connection to a GRBL machine; see the module docstring for the contract."""
 
     def __init__(self, write: Callable[[bytes], object] | None = None,
@@ -85,6 +85,7 @@ class GrblSession(GrblJobControl, GrblOperations, FrameVerbs):
         self.optional_stop = True
         self.last_job: GrblJob | None = None  # for Start here after a cut-off
         self._reset_when_still = False  # stop() without a job: reset once at rest
+        self._restart_on_welcome: GrblJob | None = None  # confirm_restart() after a link loss
         self._last_progress = float("-inf")
         self._write = write
         self._out = bytearray()
@@ -107,31 +108,17 @@ class GrblSession(GrblJobControl, GrblOperations, FrameVerbs):
 
     def attach(self, write: Callable[[bytes], object]) -> None:
         """A transport was opened: ask for a report and the build info."""
-        self._write = write
         self._rx.clear()
         self.counter.clear()
         self._contact = False  # no line goes out before the machine has spoken
-        self.link.attach(self.clock())
-        self._emit_link()
-        if self.state is S.DISCONNECTED:
-            self._set_state(S.CONNECTING)
+        self._open_link(write)
         self._next_poll = self.clock()
         self.refresh()
         self.tick()
 
-    def detach(self, reason: str = "disconnected") -> None:
-        """The transport is gone: a link loss."""
-        if self._write is None:
-            return
-        self._write = None
-        self._out.clear()
-        self.link.detach()
-        self._emit_link(reason)
-        self._link_lost(reason)
-
-    @property
-    def attached(self) -> bool:
-        return self._write is not None
+    def _after_detach(self) -> None:
+        if self.job is None and self.state in (S.READY, S.CONNECTING):
+            self._set_state(S.DISCONNECTED)
 
     @property
     def busy(self) -> bool:
@@ -161,10 +148,7 @@ class GrblSession(GrblJobControl, GrblOperations, FrameVerbs):
         if self.attached:
             if self._silence_expected():
                 self.link.heard(now)
-            if self.link.update(now):
-                self._emit_link()
-                if self.link.state is LinkState.LOST:
-                    self._link_lost(msg("no status report for {seconds:g} s", seconds=self.link.lost_s))
+            self._check_silence(now)
             if now >= self._next_poll and not self.critical:
                 self._realtime(p.STATUS_QUERY, quiet=True)
                 running = self.job is not None or (self.status is not None and self.status.state == "JOG")
@@ -226,22 +210,12 @@ class GrblSession(GrblJobControl, GrblOperations, FrameVerbs):
             self.listener.on_frame(FrameEvent("tx", "^", name))
         self._flush()
 
-    # The frame protocol's session's own helpers, as they are: write out (a failed write
-    # is a link loss), the one place the state changes (checked against TRANSITIONS),
-    # the log and errors.
-    _flush = Session._flush
-    _set_state = Session._set_state
-    _log = Session._log
-    _error = Session._error
-
     # ------------------------------------------------------------------ lines in
 
     def _receive(self, text: str) -> None:
         item = p.parse_line(text)
         if not isinstance(item, p.Unknown):
-            self.link.heard(self.clock())
-            if self.link.update(self.clock()):
-                self._emit_link()
+            self._heard(self.clock())
         kind = "<" if isinstance(item, p.Report) else "ok" if isinstance(item, p.Ok) else "rx"
         self.listener.on_frame(FrameEvent("rx", kind, text, ok=not isinstance(item, p.Unknown)))
         self._handlers[type(item)](item)
@@ -296,7 +270,9 @@ class GrblSession(GrblJobControl, GrblOperations, FrameVerbs):
                                                  info=msg("the machine was reset"), code="RESET"))
         self.merger.reset()
         self.merger.inches = self.settings.get(13) == "1"
-        self.homed, self.critical, self.check_mode, self.alarm = False, False, False, None
+        restart = self._restart_on_welcome
+        homed = self.homed and restart is not None  # this host's reset at rest kept the position
+        self.homed, self.critical, self.check_mode, self.alarm = homed, False, False, None
         if self.fixed_rx is None:
             self.counter.capacity = GRBL_RX_BUFFER
         self.info = MachineInfo(item.flavour, item.version, rx_size=self.counter.capacity)
@@ -305,6 +281,9 @@ class GrblSession(GrblJobControl, GrblOperations, FrameVerbs):
         if self.job is not None:
             self._job_reset()
         self.refresh()
+        if restart is not None and self.state is S.STARTING:
+            self._restart(restart)
+        self._restart_on_welcome = None
 
     def _on_report(self, item: p.Report) -> None:
         self._contact = True
@@ -433,8 +412,9 @@ class GrblSession(GrblJobControl, GrblOperations, FrameVerbs):
         self._deferred.clear()
         self._queue.clear()
         self._job_link_lost(reason)
-        if self.job is None and not self.attached and self.state in (S.READY, S.CONNECTING):
-            self._set_state(S.DISCONNECTED)
+
+    def _silence_reason(self) -> str:
+        return msg("no status report for {seconds:g} s", seconds=self.link.lost_s)
 
     def _emit_link(self, reason: str = "") -> None:
         silent = self.link.silent_for(self.clock()) if self.attached else 0.0

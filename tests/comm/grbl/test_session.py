@@ -6,6 +6,7 @@ import pytest
 
 from app.comm.grbl import protocol as p
 from app.comm.grbl.codes import error_text
+from app.comm.grbl.jobflow import held_modes
 from app.comm.grbl.operations import _override_bytes
 from app.comm.grbl.protocol import parse_line
 from app.comm.listener import SessionState
@@ -72,7 +73,7 @@ def test_character_counting_never_overfills_the_buffer():
             break
         in_flight.pop(0)
         h.feed("ok")
-    assert sent_all[0] == "G21 G90 G94 G17" and sent_all[1:-1] == lines and sent_all[-1] == "G4 P0"
+    assert sent_all[:2] == ["$G", "G21 G90 G94 G17"] and sent_all[2:-1] == lines and sent_all[-1] == "G4 P0"
     job = h.rec.of("on_job_finished")[-1]
     assert job.completed and job.done == 199
 
@@ -83,7 +84,7 @@ def test_error_mid_job_stops_at_once_naming_the_line_then_resets_when_held():
     lines = ["G01 X1 F100", "G01 X2", "G99 X3", "G01 X4", "G01 X5"]
     h.session.start_job(lines, line_map=[10, 11, 12, 13, 14])
     h.take()
-    h.feed("ok", "ok", "ok", "error:20")  # preamble, X1, X2, then the G99 line
+    h.feed("ok", "ok", "ok", "ok", "error:20")  # $G, preamble, X1, X2, then the G99 line
     data = h.take()
     assert b"!" in data and b"\x18" not in data
     err = h.rec.of("on_error")[-1]
@@ -106,7 +107,7 @@ def test_check_mode_lists_every_refused_line():
     h.answer_refresh(state="Check")
     h.session.start_job(["G01 X1 F100", "M06 X", "G01 X2", "G77"])
     h.take()
-    h.feed("ok", "ok", "error:36", "ok", "error:20")
+    h.feed("ok", "ok", "ok", "error:36", "ok", "error:20")
     h.take()
     h.feed("ok")
     job = h.rec.of("on_job_finished")[-1]
@@ -117,8 +118,8 @@ def test_program_stop_waits_for_the_machine_then_prompts():
     h = Harness()
     h.answer_refresh()
     h.session.start_job(["G01 X1 F100", "M06 T2", "G01 X2"])
-    assert h.lines() == ["G21 G90 G94 G17", "G01 X1 F100", "G4 P0"]
-    h.feed("ok", "ok")
+    assert h.lines() == ["$G", "G21 G90 G94 G17", "G01 X1 F100", "G4 P0"]
+    h.feed("ok", "ok", "ok")
     assert not h.rec.of("on_program_stop")
     h.feed("ok")  # the sync: everything before has finished
     stop = h.rec.of("on_program_stop")[-1]
@@ -127,6 +128,21 @@ def test_program_stop_waits_for_the_machine_then_prompts():
     assert h.lines() == []
     h.session.resume()
     assert h.lines() == ["G01 X2", "G4 P0"]
+
+
+def test_a_tool_change_stops_the_spindle_for_the_prompt_and_restarts_it():
+    h = Harness()
+    h.answer_refresh()
+    h.session.start_job(["M03 S1000", "G01 X1 F100", "M06 T2", "G01 X2", "M01", "G01 X3"])
+    assert h.lines() == ["$G", "G21 G90 G94 G17", "M03 S1000", "G01 X1 F100", "M05", "G4 P0"]
+    h.feed("ok", "ok", "ok", "ok", "ok")
+    assert not h.rec.of("on_program_stop") and h.session.job.done == -1
+    h.feed("ok")  # the sync: the spindle has stopped, everything before has finished
+    assert h.rec.of("on_program_stop")[-1].tool == 2 and h.session.job.done == 1
+    h.session.resume()
+    assert h.lines() == ["M03 S1000", "G01 X2", "G4 P0"]  # M01 keeps the spindle as GRBL's M0 does
+    h.feed("ok", "ok", "ok")
+    assert h.rec.of("on_program_stop")[-1].code == 1 and h.session.job.done == 3
 
 
 def test_settings_write_is_sent_alone_and_waited_for():
@@ -157,9 +173,11 @@ def test_silence_degrades_then_loses_the_link_but_not_while_homing():
 def test_link_loss_mid_job_offers_start_here_after_last_finished_line():
     h = Harness()
     h.answer_refresh()
+    h.session.command("$H")
+    h.feed("ok")
     h.session.start_job([f"G01 X{i} F100" for i in range(10)])
     h.take()
-    h.feed("ok", "ok", "ok", "ok", "<Run|MPos:0,0,0|FS:100,0|Bf:13,100>")
+    h.feed("ok", "ok", "ok", "ok", "ok", "<Run|MPos:0,0,0|FS:100,0|Bf:13,100>")
     h.advance(3.5)
     assert h.session.state is SessionState.INTERRUPTED
     h.feed("<Idle|MPos:0,0,0|FS:0,0>")
@@ -167,8 +185,91 @@ def test_link_loss_mid_job_offers_start_here_after_last_finished_line():
     assert offer.from_seq == 3 and h.session.state is SessionState.RESTART_REQUIRED
     h.take()
     assert h.session.confirm_restart()
+    assert h.lines() == []  # a line cut off mid-way may wait in GRBL's buffer: reset first
+    h.feed("<Run|MPos:0,0,0|FS:100,0>")
+    assert b"\x18" not in h.take()  # never while it moves (alarm 3, the position lost)
+    h.feed("<Idle|MPos:0,0,0|FS:0,0>")
+    assert b"\x18" in h.take()
+    h.feed(WELCOME.decode().strip())
     sent = h.lines()
-    assert sent[0] == "G21 G90 G94 G17" and "G01 X3 F100" in sent
+    assert sent[:4] == ["$I", "$$", "$#", "$G"] and sent[4:6] == ["G21 G90 G94 G17", "G54"]
+    assert "G01 X3 F100" in sent and h.session.homed  # a reset at rest keeps the position
+
+
+def test_a_restart_after_a_reset_restores_the_work_system_and_coolant_the_job_ran_in():
+    h = Harness()
+    h.answer_refresh()
+    lines = ["M03 S1000", "G00 Z5", "G00 X1 Y1", "G01 Z-1 F100", "G01 X5", "G01 Y5", "G01 X1"]
+    h.session.start_job(lines)
+    assert h.lines()[:2] == ["$G", "G21 G90 G94 G17"]  # the work system and coolant read first
+    h.feed("[GC:G0 G55 G17 G21 G90 G94 M5 M8 T0 F0 S0]", "ok", "ok", "ok", "ok", "ok", "ok", "ok")
+    h.feed("<Run|MPos:0,0,0|FS:100,0|Bf:14,100>")  # lines 0-4 answered, 4 may still be planned
+    h.feed(WELCOME.decode().strip())  # reset by someone else: GRBL is back in G54, coolant off
+    offer = h.rec.of("on_resume_offer")[-1]
+    assert offer.needs_home and offer.from_seq == 4 and h.session.state is SessionState.RESTART_REQUIRED
+    h.answer_refresh()  # its $G now says G54 M9: not what the job ran in
+    h.take()
+    assert h.session.confirm_restart()
+    sent = h.lines()
+    assert sent[:3] == ["G21 G90 G94 G17", "G55", "M8"]  # no second $G: the job's own modes
+    assert sent[3:7] == ["M03 S1000", "G00 Z5.000", "G00 X1.000 Y1.000 F100", "G01 Z-1.000 F100"]
+    assert sent[7] == "G01 X5"
+    assert h.session.job.modes == ("G55", "M8")  # a second cut-off restarts the same way
+
+
+@pytest.mark.parametrize("reconnect", ["<Idle|MPos:0,0,0|FS:0,0>", None])
+def test_stop_abandons_a_job_cut_off_by_a_link_loss(reconnect):
+    h = Harness()
+    h.answer_refresh()
+    h.session.start_job([f"G01 X{i} F100" for i in range(10)])
+    h.feed("ok", "ok", "ok")
+    h.advance(3.5)
+    assert h.session.state is SessionState.INTERRUPTED
+    if reconnect:
+        h.feed(reconnect)
+        assert h.session.state is SessionState.RESTART_REQUIRED
+    h.take()
+    h.session.stop()  # the alert's "Abandon job", or Stop
+    assert h.session.state is SessionState.READY and h.session.job is None
+    assert b"!" in h.take()  # held, then reset once at rest: the buffer may still be running
+    assert not h.session.confirm_restart()
+    ended = h.rec.of("on_job_finished")
+    assert len(ended) == 1 and not ended[0].completed and "abandoned" in ended[0].reason
+
+
+@pytest.mark.parametrize("then", ["stop", "lost"])
+def test_start_here_after_a_link_loss_waits_for_the_reset_and_can_be_stopped_or_cut_off(then):
+    h = Harness()
+    h.answer_refresh()
+    h.session.start_job([f"G01 X{i} F100" for i in range(10)])
+    h.feed("ok", "ok", "ok", "ok")
+    h.advance(3.5)
+    h.feed("<Idle|MPos:0,0,0|FS:0,0>")
+    assert h.session.confirm_restart()
+    assert h.session.state is SessionState.STARTING  # the job is starting: reset first
+    h.take()
+    if then == "stop":
+        h.session.stop()
+        assert h.session.state is SessionState.READY and not h.rec.of("on_job_finished")[-1].completed
+        h.feed(WELCOME.decode().strip())  # the reset stop() and the restart both asked for
+        assert h.session.job is None and h.session.state is SessionState.READY
+        return
+    h.advance(3.5)  # silent again before the machine came to rest
+    assert h.session.state is SessionState.INTERRUPTED
+    h.feed("<Idle|MPos:0,0,0|FS:0,0>")
+    assert h.session.state is SessionState.RESTART_REQUIRED and len(h.rec.of("on_resume_offer")) == 2
+    assert h.session.confirm_restart()
+    h.feed("<Idle|MPos:0,0,0|FS:0,0>", WELCOME.decode().strip())
+    assert h.session.state is SessionState.STREAMING and "G01 X2 F100" in h.lines()
+
+
+@pytest.mark.parametrize(("state", "modes"), [
+    ("G0 G54 G17 G21 G90 G94 M5 M9 T0 F0 S0", ("G54",)),
+    ("G1 G59 G17 G21 G90 G94 M3 M7 M8 T1 F100 S900", ("G59", "M7", "M8")),
+    ("", ()),
+])
+def test_held_modes_from_the_parser_state(state, modes):
+    assert held_modes(state) == modes
 
 
 def test_status_is_polled_faster_while_running():
@@ -258,7 +359,7 @@ def test_done_follows_the_planner_size_without_buffer_reports():
     h.answer_refresh()  # [OPT:V,15,128]; $10=1: no Bf in the reports
     lines = [f"G01 X{i % 10} F100" for i in range(40)]
     h.session.start_job(lines)
-    for _ in range(31):  # the preamble and 30 lines answered
+    for _ in range(32):  # $G, the preamble and 30 lines answered
         h.take()
         h.feed("ok")
     h.feed("<Run|MPos:0,0,0|FS:100,0>")

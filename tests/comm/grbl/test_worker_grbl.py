@@ -3,7 +3,7 @@ machine: capabilities and build info reach the window, a job runs to its end."""
 
 from __future__ import annotations
 
-from app.comm.worker import SerialController, SerialWorker
+from app.comm.worker import GRBL_PUMP_MS, PUMP_MS, SerialController, SerialWorker
 from tests.comm.test_worker import on_gui
 
 
@@ -29,9 +29,11 @@ def test_worker_drives_the_grbl_simulator(qtbot):
         with qtbot.waitSignal(on_gui(worker.program_stopped), timeout=30000) as stop:
             controller.start_job(["G01 X1 Y1 F600", "G01 X2", "M06 T2", "G01 X3"])
         assert stop.args[0].tool == 2
+        qtbot.waitUntil(lambda: worker._timer.interval() == GRBL_PUMP_MS)  # a job: its oks answered at once
         with qtbot.waitSignal(on_gui(worker.job_finished), timeout=60000) as finished:
             controller.resume()
         assert finished.args[0].completed
+        qtbot.waitUntil(lambda: worker._timer.interval() == PUMP_MS)  # no job: fewer wake-ups
         with qtbot.waitSignal(status, timeout=10000, check_params_cb=lambda s: s.free == -1):
             controller.machine_call("set_feed_override", (150,))
     finally:
