@@ -18,6 +18,7 @@ from app.i18n import localize
 from app.ui.enabler import reason_text
 from app.ui.machine_start import MachineStart
 from app.ui.mdi import classify
+from app.ui.missing_tool import MissingTool
 from app.ui.numbers import decimal, fill, integer
 from app.ui.program.summary import device_count
 from app.ui.recent import add_recent
@@ -33,6 +34,7 @@ class OperatorActions(QObject):
         self.link = window.link
         self.refused: list[tuple[str, str]] = []  # (control, reason) of every refusal, for tests
         self.machine_start = MachineStart(window)  # jobs read from where the machine stands
+        self.missing_tool = MissingTool(window)  # the tool table offered from "tool not found"
         self._connect_widgets()
 
     def _connect_widgets(self) -> None:
