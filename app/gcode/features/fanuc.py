@@ -10,8 +10,11 @@ depth plus a constant, called once per layer from a loop:
 
 Layers of uneven depth (a finishing floor after even roughing layers) loop over the even
 ones and call the rest one by one. Hole patterns are a loop over the holes
-(``holes_macro.py``), profiles the paper's program (``paper_macro.py``). Everything else
-is written as in the plain program. Subprograms follow ``M30``; the
+(``holes_macro.py``), profiles the paper's program (``paper_macro.py``), rectangular and
+round pockets and slots loops over layers and rings computed from their sizes
+(``round_macro.py``). Everything else (faces, an exact slot, a pocket of a contour's
+shape: rings of offset outlines that no formula gives) is written as in the plain
+program, its layers folded into a loop. Subprograms follow ``M30``; the
 file is wrapped in ``%`` lines. The loader's expander (issue 9) must give back exactly
 the plain program's moves.
 """
@@ -23,6 +26,9 @@ from .holes_macro import HolePattern, holes_program
 from .moves import ARC, FEED, RAPID, Move
 from .paper_macro import paper_program
 from .plain import line_of, num
+from .round_macro import NUMBERS as POCKET_NUMBERS
+from .round_macro import pocket_program
+from .round_pocket import PocketForm
 
 DIALECTS = ("fanuc21", "fanuc31")
 FIRST_SUB = 1001
@@ -109,6 +115,12 @@ def write_fanuc(moves: list[Move], dialect: str, title: str = "") -> str:
                 subs += written[1]
                 end, note, number = run[-1].end, None, number + 1
                 continue
+        elif isinstance(run[0].block, PocketForm):
+            lines, programs = pocket_program(run[0].block, dialect, number, 3000 + 100 * (number - FIRST_SUB))
+            main += lines
+            subs += programs
+            end, note, number = run[-1].end, None, number + POCKET_NUMBERS
+            continue
         elif run[0].block is not None:
             lines, programs = paper_program(run[0].block, dialect, number, 5000 + 100 * (number - FIRST_SUB))
             main += lines

@@ -2,7 +2,9 @@
 
 Every toolpath starts and ends at the feature's safe height (``top + clearance``).
 Pockets: roughing layers of at most C down to the floor + W (rings at D/2 + U), a floor
-pass at the floor when W > 0, then the walls at D/2 on every layer. Profiles (an island,
+pass at the floor when W > 0, then the walls at D/2 on every layer; a rectangular or
+round pocket or a wide slot by its rings of a rounded rectangle (``round_pocket.py``),
+any other shape by the offsets of its outline (``clearing.Pocket``). Profiles (an island,
 or the walls of a contour pocket) are the paper's compensated program (``profile.py``).
 """
 
@@ -20,6 +22,7 @@ from .holes_macro import HolePattern
 from .kinds import Face, Holes, PocketCircle, PocketRect, Profile, Slot
 from .moves import RAPID, SPINDLE, TOOL, Move, Path
 from .profile import profile_moves
+from .round_pocket import pocket_form
 from .travel import check_travel
 
 
@@ -47,6 +50,9 @@ def _rough(path: Path, area, cut: Cutting) -> None:
 def _pocket(feature, ccw_for_climb: bool = True) -> list[Move]:
     cut = feature.cut
     ccw = cut.climb == ccw_for_climb
+    form = pocket_form(feature, ccw)  # rectangle, circle, slot: rings computed from a few numbers
+    if form is not None:
+        return form.moves()
     region = feature.region()
     pocket = Pocket(region, cut, ccw)
     path = _start(cut, rings.centre_of(region))
