@@ -77,7 +77,8 @@ def ring_program(form: PocketForm, number: int, rounded: bool) -> list[str]:
     a, b = Expr(A), Expr(B)
     if rounded:  # the corner centres are constants: A - rc, B - rc
         ka, kb = shape.a - shape.rc, shape.b - shape.rc
-        steps = ring_steps(a, b, Expr(num(ka)), Expr(num(kb)), True, (kb > 1e-9, ka > 1e-9), form.ccw, Expr("0"))
+        sides = (kb > 1e-9, ka > 1e-9)
+        steps = ring_steps(a, b, Expr(num(ka)), Expr(num(kb)), True, sides, form.ccw, Expr("0"))
     else:
         steps = ring_steps(a, b, a, b, False, (True, True), form.ccw, Expr("0"))
     arc = "G03" if form.ccw else "G02"
@@ -108,7 +109,8 @@ class Writer:
             return [f"G65 P{number}" + (f" Z{depth}" if depth else "")]
         return ([f"{DEPTH} = {depth}"] if depth and depth != DEPTH else []) + [f"M98 P{number}"]
 
-    def loop(self, var: str, first: str, test: str, stop: str, body: list[str], do: int, label: int) -> list[str]:
+    def loop(self, var: str, first: str, test: str, stop: str, body: list[str], do: int,
+             label: int) -> list[str]:
         """``var`` from ``first`` while ``var test stop`` (``LE``/``LT``), by one."""
         if self.f31:
             return [f"{var} = {first}", f"WHILE [{var} {test} {stop}] DO {do}", *body,
@@ -135,7 +137,8 @@ class Writer:
                f"{TURNS} = {form.pairs(form.rough.span / form.rough.count)}"]
         out += self.layers(form.rough, self.layer, self.label, [f"{FROM} = {DEPTH}"])
         if cut.finish_z > 0:
-            out += [f"(the floor pass)", f"{TURNS} = {form.pairs(cut.finish_z)}", *self.call(self.layer, num(cut.floor))]
+            out += ["(the floor pass)", f"{TURNS} = {form.pairs(cut.finish_z)}",
+                    *self.call(self.layer, num(cut.floor))]
         wall = shape.corner(cut.radius)
         out += ["(the wall at the tool radius on every layer)", f"{A} = {num(shape.a - cut.radius)}",
                 f"{B} = {num(shape.b - cut.radius)}"] + ([f"{R} = {num(wall)}"] if wall > 0 else [])
@@ -152,19 +155,21 @@ class Writer:
         arc = "G03" if form.ccw else "G02"
         rho = Expr(num(form.rho))
         back = -rho
-        out = [f"O{self.layer} (one roughing layer at Z{z} from Z{FROM}: a helix at the centre, then the rings)"]
+        out = [f"O{self.layer} (one roughing layer at Z{z} from Z{FROM}: a helix, then the rings)"]
         if cut.safe_z > form.low + 1e-9:
             out.append(f"G00 Z{num(form.low)}")
         out += [f"G01 Z{FROM} F{plunge}", f"G01 {_xy(rho, '0')} F{plunge}"]
         drop = f"[{FROM} - {z}]"
-        turn = [f"{arc} {_xy(back, '0')} Z[{FROM} - {drop}*[2*{TURN} - 1]/[2*{TURNS}]] {_ij(back, '0')} F{plunge}",
-                f"{arc} {_xy(rho, '0')} Z[{FROM} - {drop}*{TURN}/{TURNS}] {_ij(rho, '0')} F{plunge}"]
+        over, home = f"{_xy(back, '0')}", f"{_xy(rho, '0')}"
+        turn = [f"{arc} {over} Z[{FROM} - {drop}*[2*{TURN} - 1]/[2*{TURNS}]] {_ij(back, '0')} F{plunge}",
+                f"{arc} {home} Z[{FROM} - {drop}*{TURN}/{TURNS}] {_ij(rho, '0')} F{plunge}"]
         out += self.loop(TURN, "1", "LE", TURNS, turn, 2, self.label + 10)
-        out += [f"{arc} {_xy(back, '0')} {_ij(back, '0')} F{feed}", f"{arc} {_xy(rho, '0')} {_ij(rho, '0')} F{feed}"]
+        out += [f"{arc} {over} {_ij(back, '0')} F{feed}", f"{arc} {home} {_ij(rho, '0')} F{feed}"]
         first_round = form.first_round()
         for k, (j0, j1, rounded) in enumerate(((0, first_round, False), (first_round, form.n, True))):
             if j1 > j0:
-                out += self.loop(RING, str(j0), "LT", str(j1), self.ring_body(rounded), 3, self.label + 12 + 2 * k)
+                body = self.ring_body(rounded)
+                out += self.loop(RING, str(j0), "LT", str(j1), body, 3, self.label + 12 + 2 * k)
         return out + [f"G00 Z{num(cut.safe_z)}", f"G00 X{num(form.shape.cx)} Y{num(form.shape.cy)}", "M99"]
 
     def ring_body(self, rounded: bool) -> list[str]:
@@ -187,12 +192,14 @@ class Writer:
         if lead is None:
             return out + self.call(ring) + ["M99"]
         arc = "G02" if lead.cw else "G03"
-        p1, p2, p3, p4, p5 = lead.p1, lead.p2, lead.p3, lead.p4, lead.p5
-        return out + [f"G01 X{num(p2[0])} Y{num(p2[1])} F{feed}",
-                      f"{arc} X{num(p3[0])} Y{num(p3[1])} I{num(p4[0] - p2[0])} J{num(p4[1] - p2[1])} F{feed}",
-                      *self.call(ring),
-                      f"{arc} X{num(p5[0])} Y{num(p5[1])} I{num(p4[0] - p3[0])} J{num(p4[1] - p3[1])} F{feed}",
-                      f"G01 X{num(p1[0])} Y{num(p1[1])} F{feed}", "M99"]
+        def arc_to(end, start) -> str:
+            centre = lead.p4
+            return (f"{arc} X{num(end[0])} Y{num(end[1])} I{num(centre[0] - start[0])} "
+                    f"J{num(centre[1] - start[1])} F{feed}")
+
+        return out + [f"G01 X{num(lead.p2[0])} Y{num(lead.p2[1])} F{feed}", arc_to(lead.p3, lead.p2),
+                      *self.call(ring), arc_to(lead.p5, lead.p3),
+                      f"G01 X{num(lead.p1[0])} Y{num(lead.p1[1])} F{feed}", "M99"]
 
     def subprograms(self) -> list[str]:
         form, cut = self.form, self.form.cut

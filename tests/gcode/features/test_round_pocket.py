@@ -1,0 +1,88 @@
+"""Rectangular and round pockets and wide slots as parametric programs (issue 19): the
+rings of a rounded rectangle computed from its sizes and the ring's index in a loop,
+one subprogram per ring kind, the layers in a loop; expanded by the loader they give the
+plain program's moves (0.001 mm)."""
+
+from __future__ import annotations
+
+import re
+
+import pytest
+
+from app.gcode import load_text
+from app.gcode.features import Cutting, PocketCircle, PocketRect, Slot, program_moves, write_plain
+from app.gcode.features.cli import main as feature_main
+from app.gcode.features.fanuc import write_fanuc
+from app.gcode.features.round_pocket import pocket_form
+
+from .test_macro_roundtrip import _same
+
+CUT = Cutting(tool_diameter=6, depth=3, stepdown=1, finish_xy=0.2, finish_z=0.2)
+WIDE = Cutting(tool_diameter=4, depth=2.5, stepdown=0.8, stepover=100, clearance=0.3, top=2, climb=False)
+FLAT = Cutting(tool_diameter=3, depth=1, stepdown=1, stepover=25, finish_xy=1.5)
+POCKETS = [
+    PocketRect(20, 20, 40, 25, CUT),
+    PocketRect(20, 20, 40, 25, CUT, corner_radius=4, angle=15),
+    PocketRect(30, 30, 50, 20, WIDE, corner_radius=10, angle=-30),  # a stadium: r is half a side
+    PocketRect(10, 10, 30, 30, FLAT, corner_radius=2.5),  # rings change from sharp to round
+    PocketCircle(60, 60, 30, CUT),
+    PocketCircle(60, 60, 30, WIDE),
+    PocketCircle(40, 40, 9, FLAT),
+    Slot(20, 20, 60, 40, 8, CUT),
+    Slot(20, 20, 20, 60, 12, WIDE),
+]
+
+
+def _motion(text: str) -> list[str]:
+    return [line for line in text.splitlines() if line[:3] in ("G00", "G01", "G02", "G03")]
+
+
+@pytest.mark.parametrize("dialect", ["fanuc21", "fanuc31"])
+@pytest.mark.parametrize("feature", POCKETS, ids=lambda f: f.kind)
+def test_a_pocket_is_loops_over_layers_and_computed_rings(feature, dialect):
+    assert pocket_form(feature, feature.cut.climb) is not None
+    moves = program_moves([feature])
+    text = write_fanuc(moves, dialect)
+    plain = load_text(write_plain(moves), "plain.nc")
+    macro = load_text(text, "macro.nc")
+    assert plain.errors == [] and macro.errors == []
+    _same(plain.moves, macro.moves)
+    ring = "WHILE [#134 LT" if dialect == "fanuc31" else "IF [#134 GE"
+    assert ring in text and "#135 = [" in text and "#128 = [" in text  # each ring from its index
+    layers = "WHILE [#102 LE" if dialect == "fanuc31" else "IF [#102 GT"
+    assert layers in text
+    subs = text.split("M30\n", 1)[1]
+    rings = [block for block in subs.split("\nO")[1:] if block.startswith(("1002", "1003"))]
+    assert rings and all("one ring" in block for block in rings)
+    for block in rings:  # no point of a ring is written: every X and Y is computed
+        for line in _motion(block):
+            assert re.search(r"[XY]-?\d", line) is None, line
+
+
+def test_the_program_does_not_grow_with_the_rings_or_the_layers():
+    small = PocketCircle(60, 60, 30, CUT)
+    deep = Cutting(tool_diameter=6, depth=12, stepdown=1, finish_xy=0.2, finish_z=0.2)
+    big = PocketCircle(75, 75, 140, deep)
+    for dialect in ("fanuc21", "fanuc31"):
+        a, b = (write_fanuc(program_moves([f]), dialect) for f in (small, big))
+        assert len(_motion(a)) == len(_motion(b)) < 40
+        assert len(program_moves([big])) > 20 * len(_motion(b))
+
+
+@pytest.mark.parametrize("dialect", ["fanuc21", "fanuc31"])
+def test_a_pocket_with_no_room_for_a_helix_keeps_its_points(dialect):
+    """Too narrow for the helix (0.05 mm): the offset outlines and a ramp, written as in
+    the plain program with the layers folded; still the same moves."""
+    feature = PocketCircle(30, 30, 6.09, Cutting(tool_diameter=6, depth=1, stepdown=0.5))
+    assert pocket_form(feature, True) is None
+    moves = program_moves([feature])
+    _same(load_text(write_plain(moves)).moves, load_text(write_fanuc(moves, dialect)).moves)
+
+
+def test_the_command_writes_a_parametric_circle_pocket(capsys):
+    args = ["pocket-circle", "--x", "60", "--y", "60", "--diameter", "50", "--tool-diameter", "3",
+            "--depth", "6", "--macro", "fanuc31"]
+    assert feature_main(args) == 0
+    text = capsys.readouterr().out
+    assert len(_motion(text)) < 40 and ("G65 P1002" in text or "G65 P1003" in text)
+    assert load_text(text).errors == []
