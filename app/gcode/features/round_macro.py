@@ -15,16 +15,16 @@ the rings computing each ring from its index, one subprogram for the ring.
 - ``O<n+3>`` one finishing lap at the given depth: down at point 1, the lead-in, the
   wall (the ring subprogram at the wall's half sizes), the lead-out.
 
-Fanuc 31 loops by ``WHILE [...] DO m``/``END m`` and calls by ``G65``; Fanuc 21 by
-``IF [...] GOTO``/``N`` labels and ``M98`` (the paper's table 1).
+The dialects' loops and calls are ``macro_text.MacroText``'s.
 """
 
 from __future__ import annotations
 
+from .macro_text import DEPTH, MacroText
 from .plain import num
 from .round_pocket import PocketForm, ring_steps
 
-DEPTH, LAYER, FROM = "#101", "#102", "#103"
+FROM = "#103"
 SPACING, CX, CY, COS, SIN = "#128", "#130", "#131", "#132", "#133"
 RING, A, B, R, TURNS, TURN = "#134", "#135", "#136", "#137", "#138", "#139"
 NUMBERS = 4  # subprogram numbers a pocket takes
@@ -95,36 +95,14 @@ def ring_program(form: PocketForm, number: int, rounded: bool) -> list[str]:
     return out + ["M99"]
 
 
-class Writer:
+class Writer(MacroText):
     """The program text of one ``PocketForm`` in one dialect (see the module docstring)."""
 
     def __init__(self, form: PocketForm, dialect: str, number: int, label: int) -> None:
-        self.form, self.f31 = form, dialect == "fanuc31"
+        super().__init__(dialect, form.cut.top)
+        self.form = form
         self.layer, self.sharp, self.round, self.wall = (number + k for k in range(NUMBERS))
         self.label = label
-        self.depth = "#26" if self.f31 else DEPTH  # the layer's depth inside a subprogram
-
-    def call(self, number: int, depth: str | None = None) -> list[str]:
-        if self.f31:
-            return [f"G65 P{number}" + (f" Z{depth}" if depth else "")]
-        return ([f"{DEPTH} = {depth}"] if depth and depth != DEPTH else []) + [f"M98 P{number}"]
-
-    def loop(self, var: str, first: str, test: str, stop: str, body: list[str], do: int,
-             label: int) -> list[str]:
-        """``var`` from ``first`` while ``var test stop`` (``LE``/``LT``), by one."""
-        if self.f31:
-            return [f"{var} = {first}", f"WHILE [{var} {test} {stop}] DO {do}", *body,
-                    f"{var} = [{var} + 1]", f"END {do}"]
-        negated = {"LE": "GT", "LT": "GE"}[test]
-        return [f"{var} = {first}", f"N{label} IF [{var} {negated} {stop}] GOTO {label + 1}", *body,
-                f"{var} = [{var} + 1]", f"GOTO {label}", f"N{label + 1} {var} = 0"]
-
-    def layers(self, levels, number: int, label: int, after: list[str]) -> list[str]:
-        """The loop over ``levels`` (``round_pocket.Levels``) calling ``number`` at each depth."""
-        top = num(self.form.cut.top)
-        body = [f"{DEPTH} = [{top} - {num(levels.span)}*{LAYER}/{levels.count}]", *self.call(number, DEPTH),
-                *after]
-        return self.loop(LAYER, "1", "LE", str(levels.count), body, 1, label)
 
     def main(self) -> list[str]:
         form, cut = self.form, self.form.cut

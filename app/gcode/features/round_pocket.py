@@ -31,6 +31,7 @@ from . import entry, rings
 from .cutting import Cutting
 from .finish import Lead, each_wall_layer, plan_lead
 from .kinds import PocketCircle, PocketRect, Slot
+from .macro_text import Levels, levels_of
 from .moves import RAPID, Move, Path
 
 ROUND = 1e-6  # mm: a corner radius below this is a sharp corner
@@ -136,17 +137,6 @@ def shape_of(feature) -> RoundRect | None:
 
 
 @dataclass(frozen=True)
-class Levels:
-    """Layers ``top - span·k/count`` for k = 1..count, each from the one above."""
-
-    span: float
-    count: int
-
-    def depth(self, k: int, top: float) -> float:
-        return top - self.span * k / self.count
-
-
-@dataclass(frozen=True)
 class PocketForm:
     """One pocket's parametric program (see the module docstring)."""
 
@@ -173,13 +163,11 @@ class PocketForm:
 
     @property
     def rough(self) -> Levels:
-        cut = self.cut
-        levels = cut.layers(cut.floor + cut.finish_z)
-        return Levels(cut.top - levels[-1], len(levels))
+        return levels_of(self.cut, self.cut.floor + self.cut.finish_z)
 
     @property
     def walls(self) -> Levels:
-        return Levels(self.cut.depth, len(self.cut.layers(self.cut.floor)))
+        return levels_of(self.cut, self.cut.floor)
 
     def pairs(self, drop: float) -> int:
         """Helix turns (pairs of half circles) for a descent of ``drop`` at the ramp slope."""
