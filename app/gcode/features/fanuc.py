@@ -12,15 +12,16 @@ Layers of uneven depth (a finishing floor after even roughing layers) loop over 
 ones and call the rest one by one. Hole patterns are a loop over the holes
 (``holes_macro.py``), profiles the paper's program (``paper_macro.py``), rectangular and
 round pockets and slots loops over layers and rings computed from their sizes
-(``round_macro.py``). Everything else (faces, an exact slot, a pocket of a contour's
-shape: rings of offset outlines that no formula gives) is written as in the plain
-program, its layers folded into a loop. Subprograms follow ``M30``; the
-file is wrapped in ``%`` lines. The loader's expander (issue 9) must give back exactly
-the plain program's moves.
+(``round_macro.py``), faces loops over layers and rows (``face_macro.py``). Everything
+else (an exact slot, a pocket of a contour's shape: rings of offset outlines that no
+formula gives) is written as in the plain program, its layers folded into a loop.
+Subprograms follow ``M30``; the file is wrapped in ``%`` lines. The loader's expander
+(issue 9) must give back exactly the plain program's moves.
 """
 
 from __future__ import annotations
 
+from .face_macro import FaceForm, face_program
 from .folding import Inline, Repeat, fold
 from .holes_macro import HolePattern, holes_program
 from .moves import ARC, FEED, RAPID, Move
@@ -115,6 +116,12 @@ def write_fanuc(moves: list[Move], dialect: str, title: str = "") -> str:
                 subs += written[1]
                 end, note, number = run[-1].end, None, number + 1
                 continue
+        elif isinstance(run[0].block, FaceForm):
+            lines, programs = face_program(run[0].block, dialect, number, 3000 + 100 * (number - FIRST_SUB))
+            main += lines
+            subs += programs
+            end, note, number = run[-1].end, None, number + 1
+            continue
         elif isinstance(run[0].block, PocketForm):
             lines, programs = pocket_program(run[0].block, dialect, number, 3000 + 100 * (number - FIRST_SUB))
             main += lines

@@ -10,7 +10,6 @@ or the walls of a contour pocket) are the paper's compensated program (``profile
 
 from __future__ import annotations
 
-import math
 from dataclasses import replace
 
 from app.profile import MachineProfile
@@ -18,6 +17,7 @@ from app.profile import MachineProfile
 from . import entry, finish, rings
 from .clearing import Pocket
 from .cutting import Cutting
+from .face_macro import face_form
 from .holes_macro import HolePattern
 from .kinds import Face, Holes, PocketCircle, PocketRect, Profile, Slot
 from .moves import RAPID, SPINDLE, TOOL, Move, Path
@@ -98,28 +98,7 @@ def _profile(feature: Profile) -> list[Move]:
 
 
 def _face(feature: Face) -> list[Move]:
-    cut = feature.cut
-    r = cut.radius
-    left, right = feature.x - r - 1.0, feature.x + feature.width + r + 1.0
-    if feature.height <= cut.tool_diameter:
-        rows = [feature.y + feature.height / 2]
-    else:
-        span = feature.height - cut.tool_diameter
-        count = math.ceil(span / cut.step - 1e-9) + 1
-        rows = [feature.y + r + span * k / (count - 1) for k in range(count)]
-    path = _start(cut, (left, rows[0]))
-    levels = cut.layers(cut.floor + cut.finish_z) + ([cut.floor] if cut.finish_z > 0 else [])
-    for k, z in enumerate(levels):
-        path.note = f"layer {k + 1}/{len(levels)} z {z:.3f}"
-        entry.approach(path, cut, (left, rows[0]), z)
-        for j, y in enumerate(rows):
-            path.feed(y=y, f=cut.feed)
-            path.feed(right if j % 2 == 0 else left, f=cut.feed)
-        entry.retract(path, cut)  # every layer the same moves at its depth: back over the start
-        path.rapid(left, rows[0])
-        path.note = ""
-    entry.retract(path, cut)
-    return path.moves
+    return face_form(feature).moves()
 
 
 def _holes(feature: Holes) -> list[Move]:

@@ -10,7 +10,7 @@ import re
 import pytest
 
 from app.gcode import load_text
-from app.gcode.features import Cutting, PocketCircle, PocketRect, Slot, program_moves, write_plain
+from app.gcode.features import Cutting, Face, PocketCircle, PocketRect, Slot, program_moves, write_plain
 from app.gcode.features.cli import main as feature_main
 from app.gcode.features.fanuc import write_fanuc
 from app.gcode.features.round_pocket import pocket_form
@@ -86,3 +86,19 @@ def test_the_command_writes_a_parametric_circle_pocket(capsys):
     text = capsys.readouterr().out
     assert len(_motion(text)) < 40 and ("G65 P1002" in text or "G65 P1003" in text)
     assert load_text(text).errors == []
+
+
+FACES = [Face(10, 10, 50, 30, CUT), Face(10, 10, 50, 28.2, WIDE), Face(10, 10, 40, 5, FLAT),
+         Face(5, 5, 30, 20, Cutting(tool_diameter=4, depth=1, stepdown=1, stepover=30))]
+
+
+@pytest.mark.parametrize("dialect", ["fanuc21", "fanuc31"])
+@pytest.mark.parametrize("feature", FACES, ids=lambda f: f"{f.height:g}")
+def test_a_face_is_loops_over_layers_and_computed_rows(feature, dialect):
+    moves = program_moves([feature])
+    text = write_fanuc(moves, dialect)
+    _same(load_text(write_plain(moves)).moves, load_text(text).moves)
+    rows = sum(m.kind == "feed" and m.end[1] != p.end[1] for p, m in zip(moves, moves[1:], strict=False))
+    if rows > 3:  # two or more pairs of rows beyond the first: a loop computing each row's Y
+        assert ("WHILE [#141 LE" if dialect == "fanuc31" else "IF [#141 GT") in text
+        assert "Y[" in text and len(_motion(text)) < 16
