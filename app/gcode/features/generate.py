@@ -18,7 +18,7 @@ from . import entry, finish, rings
 from .clearing import Pocket
 from .cutting import Cutting
 from .face_macro import face_form
-from .holes_macro import HolePattern
+from .holes_macro import HolePattern, peck_depths
 from .kinds import Face, Holes, PocketCircle, PocketRect, Profile, Slot
 from .moves import RAPID, SPINDLE, TOOL, Move, Path
 from .profile import profile_moves
@@ -108,19 +108,16 @@ def _holes(feature: Holes) -> list[Move]:
         path.note = f"hole {k + 1}/{len(feature.centres)}"
         entry.retract(path, cut)
         entry.approach(path, cut, xy, cut.top)
-        depth = cut.top
-        while depth > cut.floor + 1e-9:
-            target = max(cut.floor, depth - feature.peck) if feature.peck > 0 else cut.floor
-            if depth < cut.top:  # a peck: back out above the top, feed down the drilled hole
+        for k, target in enumerate(peck_depths(cut, feature.peck)):
+            if k:  # a peck: back out above the top, feed down the drilled hole
                 path.rapid(z=cut.top + entry.GAP)
             path.feed(z=target, f=cut.plunge_feed)
-            depth = target
         if feature.dwell > 0:
             path.dwell(feature.dwell)
         path.rapid(z=cut.safe_z)
     if not feature.layout:
         return path.moves
-    form = HolePattern(feature.layout, len(feature.centres))  # the macro writers' parametric form
+    form = HolePattern(feature.layout, len(feature.centres), feature.peck)  # the macro's parametric form
     return [replace(m, block=form) for m in path.moves]
 
 

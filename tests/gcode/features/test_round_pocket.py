@@ -10,7 +10,17 @@ import re
 import pytest
 
 from app.gcode import load_text
-from app.gcode.features import Cutting, Face, PocketCircle, PocketRect, Slot, program_moves, write_plain
+from app.gcode.features import (
+    Cutting,
+    Face,
+    PocketCircle,
+    PocketRect,
+    Slot,
+    holes_circle,
+    holes_row,
+    program_moves,
+    write_plain,
+)
 from app.gcode.features.cli import main as feature_main
 from app.gcode.features.fanuc import write_fanuc
 from app.gcode.features.round_pocket import pocket_form
@@ -102,3 +112,18 @@ def test_a_face_is_loops_over_layers_and_computed_rows(feature, dialect):
     if rows > 3:  # two or more pairs of rows beyond the first: a loop computing each row's Y
         assert ("WHILE [#141 LE" if dialect == "fanuc31" else "IF [#141 GT") in text
         assert "Y[" in text and len(_motion(text)) < 16
+
+
+@pytest.mark.parametrize("dialect", ["fanuc21", "fanuc31"])
+@pytest.mark.parametrize("depth", [3.0, 20.0, 20.3])
+def test_a_holes_pecks_are_a_loop_computing_each_depth(dialect, depth):
+    cut = Cutting(tool_diameter=3, depth=depth, top=1)
+    patterns = (holes_circle(60, 60, 40, 7, cut, peck=0.5, dwell=0.2), holes_row(20, 20, 5, 9, cut, peck=1.5))
+    for feature in patterns:
+        moves = program_moves([feature])
+        text = write_fanuc(moves, dialect)
+        _same(load_text(write_plain(moves)).moves, load_text(text).moves)
+        assert len(_motion(text)) < 14
+        if depth / feature.peck > 2:  # pecks between the first and the last
+            assert ("WHILE [#113 LT" if dialect == "fanuc31" else "IF [#113 GE") in text
+            assert "G01 Z[1 - #113*" in text
