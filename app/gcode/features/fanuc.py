@@ -109,33 +109,31 @@ def write_fanuc(moves: list[Move], dialect: str, title: str = "") -> str:
         main.append(f"G00 Z{num(first.end[2])}")
         end = (None, None, first.end[2])
     for run in _runs(moves):
-        if isinstance(run[0].block, HolePattern):
-            written = holes_program(run, dialect, number, 7000 + 10 * (number - FIRST_SUB))
-            if written is not None:
-                main += written[0]
-                subs += written[1]
-                end, note, number = run[-1].end, None, number + 1
-                continue
-        elif isinstance(run[0].block, FaceForm):
-            lines, programs = face_program(run[0].block, dialect, number, 3000 + 100 * (number - FIRST_SUB))
-            main += lines
-            subs += programs
-            end, note, number = run[-1].end, None, number + 1
-            continue
-        elif isinstance(run[0].block, PocketForm):
-            lines, programs = pocket_program(run[0].block, dialect, number, 3000 + 100 * (number - FIRST_SUB))
-            main += lines
-            subs += programs
-            end, note, number = run[-1].end, None, number + POCKET_NUMBERS
-            continue
-        elif run[0].block is not None:
-            lines, programs = paper_program(run[0].block, dialect, number, 5000 + 100 * (number - FIRST_SUB))
-            main += lines
-            subs += programs
-            end, note, number = run[-1].end, None, number + 2
+        written = _parametric(run, dialect, number)
+        if written is not None:
+            main += written[0]
+            subs += written[1]
+            end, note, number = run[-1].end, None, number + written[2]
             continue
         end, note, number = _folded(run, dialect, var, main, subs, end, note, number)
     return "\n".join(main + ["M05", "M30"] + subs + ["%"]) + "\n"
+
+
+def _parametric(run: list[Move], dialect: str, number: int):
+    """(main lines, subprograms, subprogram numbers taken) of a run of one parametric form
+    (holes, face, pocket, the paper's profile), its programs numbered from ``number``;
+    None for moves of no form (or holes that differ)."""
+    form, k = run[0].block, number - FIRST_SUB
+    if form is None:
+        return None
+    if isinstance(form, HolePattern):
+        written = holes_program(run, dialect, number, 7000 + 10 * k)
+        return None if written is None else (*written, 1)
+    if isinstance(form, FaceForm):
+        return (*face_program(form, dialect, number, 3000 + 100 * k), 1)
+    if isinstance(form, PocketForm):
+        return (*pocket_program(form, dialect, number, 3000 + 100 * k), POCKET_NUMBERS)
+    return (*paper_program(form, dialect, number, 5000 + 100 * k), 2)
 
 
 def _runs(moves: list[Move]) -> list[list[Move]]:
