@@ -20,6 +20,8 @@ The dialects' loops and calls are ``macro_text.MacroText``'s.
 
 from __future__ import annotations
 
+import math
+
 from .macro_text import DEPTH, MacroText
 from .plain import num
 from .round_pocket import PocketForm, ring_steps
@@ -121,7 +123,8 @@ class Writer(MacroText):
         out += ["(the wall at the tool radius on every layer)", f"{A} = {num(shape.a - cut.radius)}",
                 f"{B} = {num(shape.b - cut.radius)}"] + ([f"{R} = {num(wall)}"] if wall > 0 else [])
         start = form.lead.p1 if form.lead else form.wall_start()
-        out.append(f"G00 X{num(start[0])} Y{num(start[1])}")
+        if math.dist(start, (shape.cx, shape.cy)) > 1e-9:  # from over the centre (a move of no length: none)
+            out.append(f"G00 X{num(start[0])} Y{num(start[1])}")
         if cut.safe_z > low + 1e-9:
             out.append(f"G00 Z{num(low)}")
         out += self.layers(form.walls, self.wall, self.label + 4, [])
@@ -145,20 +148,26 @@ class Writer(MacroText):
         out += [f"{arc} {over} {_ij(back, '0')} F{feed}", f"{arc} {home} {_ij(rho, '0')} F{feed}"]
         first_round = form.first_round()
         for k, (j0, j1, rounded) in enumerate(((0, first_round, False), (first_round, form.n, True))):
+            if j0 == 0 < j1 and abs(form.shape.a - form.offset(0) - form.rho) < 1e-9:
+                # the helix ends where the first ring starts: no feed over (a move of no length)
+                out += [f"{RING} = 0", *self.ring_body(rounded, feed=False)]
+                j0 = 1
             if j1 > j0:
                 body = self.ring_body(rounded)
                 out += self.loop(RING, str(j0), "LT", str(j1), body, 3, self.label + 12 + 2 * k)
         return out + [f"G00 Z{num(cut.safe_z)}", f"G00 X{num(form.shape.cx)} Y{num(form.shape.cy)}", "M99"]
 
-    def ring_body(self, rounded: bool) -> list[str]:
-        """Ring ``#134``'s sizes, the feed over to its start, the call of its subprogram."""
+    def ring_body(self, rounded: bool, feed: bool = True) -> list[str]:
+        """Ring ``#134``'s sizes, the feed over to its start (``feed``), the call of its
+        subprogram."""
         form = self.form
         shape, outer, n = form.shape, form.h_out, form.n
         inward = f"[{n - 1} - {RING}]*{SPACING}"
         body = [f"{A} = [{num(shape.a - outer)} - {inward}]", f"{B} = [{num(shape.b - outer)} - {inward}]"]
         if rounded:
             body.append(f"{R} = [{num(shape.rc - outer)} - {inward}]")
-        body.append(f"G01 {_xy(A, '0')} F{num(form.cut.feed)}")
+        if feed:
+            body.append(f"G01 {_xy(A, '0')} F{num(form.cut.feed)}")
         return body + self.call(self.round if rounded else self.sharp)
 
     def wall_program(self) -> list[str]:

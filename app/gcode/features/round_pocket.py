@@ -30,11 +30,11 @@ from shapely.geometry import Polygon
 from . import entry, rings
 from .cutting import Cutting
 from .finish import Lead, each_wall_layer, plan_lead
-from .kinds import PocketCircle, PocketRect, Slot
+from .kinds import ROUND_CORNER, PocketCircle, PocketRect, Slot
 from .macro_text import Levels, levels_of
 from .moves import RAPID, Move, Path
 
-ROUND = 1e-6  # mm: a corner radius below this is a sharp corner
+ROUND = ROUND_CORNER  # mm: a corner radius below this is a sharp corner
 MIN_HELIX = 0.05  # mm: the least helix radius (as clearing.Pocket)
 
 

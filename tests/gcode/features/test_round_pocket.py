@@ -5,9 +5,12 @@ plain program's moves (0.001 mm)."""
 
 from __future__ import annotations
 
+import math
 import re
 
 import pytest
+from hypothesis import given
+from hypothesis import strategies as st
 
 from app.gcode import load_text
 from app.gcode.features import (
@@ -25,6 +28,7 @@ from app.gcode.features.cli import main as feature_main
 from app.gcode.features.fanuc import write_fanuc
 from app.gcode.features.round_pocket import pocket_form
 
+from .test_machining import SETTINGS, _accepted, cuttings
 from .test_macro_roundtrip import _same
 
 CUT = Cutting(tool_diameter=6, depth=3, stepdown=1, finish_xy=0.2, finish_z=0.2)
@@ -40,7 +44,9 @@ POCKETS = [
     PocketCircle(40, 40, 9, FLAT),
     Slot(20, 20, 60, 40, 8, CUT),
     Slot(20, 20, 20, 60, 12, WIDE),
-]
+    PocketRect(40, 40, 10, 10, Cutting(tool_diameter=4, depth=0.5, stepdown=0.4, stepover=60, climb=False)),
+    PocketCircle(60, 60, 26, Cutting(tool_diameter=6, depth=1)),  # the lead's point 1 is the centre
+]  # the second last: the helix ends where the first ring starts
 
 
 def _motion(text: str) -> list[str]:
@@ -127,3 +133,23 @@ def test_a_holes_pecks_are_a_loop_computing_each_depth(dialect, depth):
         if depth / feature.peck > 2:  # pecks between the first and the last
             assert ("WHILE [#113 LT" if dialect == "fanuc31" else "IF [#113 GE") in text
             assert "G01 Z[1 - #113*" in text
+
+
+@SETTINGS
+@given(cuttings(), st.sampled_from(["rect", "circle", "slot", "face"]), st.floats(10, 40), st.floats(10, 30),
+       st.floats(0, 1), st.floats(-40, 40), st.sampled_from(["fanuc21", "fanuc31"]))
+def test_any_pocket_or_face_expands_to_its_plain_moves(cut, kind, width, height, share, angle, dialect):
+    """Whatever the sizes, corner, angle and cutting options: the parametric program gives
+    the plain program's moves."""
+    make = {"rect": lambda: PocketRect(40, 40, width, height, cut, share * min(width, height) / 2, angle),
+            "circle": lambda: PocketCircle(60, 60, width, cut),
+            "slot": lambda: Slot(60, 60, 60 + height * math.cos(math.radians(angle)),
+                                 60 + height * math.sin(math.radians(angle)), width / 3, cut),
+            "face": lambda: Face(20, 20, width, height, cut)}[kind]
+    feature = _accepted(make)
+    if feature is None:
+        return
+    moves = program_moves([feature])
+    plain, macro = load_text(write_plain(moves)), load_text(write_fanuc(moves, dialect))
+    assert plain.errors == [] and macro.errors == []
+    _same(plain.moves, macro.moves)
