@@ -86,12 +86,14 @@ def _loop(dialect: str, number: int, depths: list[float], label: int) -> list[st
         if dialect == "fanuc31":
             return [f"G65 P{number} Z{num(d)}" for d in depths]
         return [line for d in depths for line in (f"{DEPTH} = {num(d)}", call)]
-    head = [f"({len(depths)} layers from Z{num(depths[0])} by {num(step)})", f"{DEPTH} = {num(depths[0])}",
-            f"{COUNT} = 1"]
-    advance = [f"{DEPTH} = {DEPTH} + [{num(step)}]", f"{COUNT} = {COUNT} + 1"]
+    n, span = len(depths), depths[-1] - depths[0]
+    head = [f"({n} layers from Z{num(depths[0])} to Z{num(depths[-1])})", f"{COUNT} = 1"]
+    sign = "-" if span < 0 else "+"
+    depth = f"{DEPTH} = [{num(depths[0])} {sign} {num(abs(span))}*[{COUNT} - 1]/{n - 1}]"  # not a sum
+    advance = [f"{COUNT} = {COUNT} + 1"]
     if dialect == "fanuc31":
-        return head + [f"WHILE [{COUNT} LE {len(depths)}] DO 1", call, *advance, "END 1"]
-    return head + [f"N{label} IF [{COUNT} GT {len(depths)}] GOTO {label + 1}", call, *advance,
+        return head + [f"WHILE [{COUNT} LE {n}] DO 1", depth, call, *advance, "END 1"]
+    return head + [f"N{label} IF [{COUNT} GT {n}] GOTO {label + 1}", depth, call, *advance,
                    f"GOTO {label}", f"N{label + 1} {COUNT} = 0"]
 
 

@@ -153,3 +153,15 @@ def test_any_pocket_or_face_expands_to_its_plain_moves(cut, kind, width, height,
     plain, macro = load_text(write_plain(moves)), load_text(write_fanuc(moves, dialect))
     assert plain.errors == [] and macro.errors == []
     _same(plain.moves, macro.moves)
+
+
+@pytest.mark.parametrize("dialect", ["fanuc21", "fanuc31"])
+def test_hundreds_of_folded_layers_keep_their_depth(dialect):
+    """A slot as wide as the tool, 567 layers of 0.03 mm (0.0299.. each): each layer's
+    depth is computed from its index, never summed from a rounded step (0.01 mm off at
+    the bottom before)."""
+    feature = Slot(20, 20, 60, 40, 6, Cutting(tool_diameter=6, depth=17, stepdown=0.03))
+    moves = program_moves([feature])
+    text = write_fanuc(moves, dialect)
+    assert "[#102 - 1]/566]" in text
+    _same(load_text(write_plain(moves)).moves, load_text(text).moves)
