@@ -131,3 +131,22 @@ def test_the_reading_again_runs_off_the_gui_thread(qtbot, window, tmp_path):
     qtbot.waitUntil(lambda: window.binder.last_job_event is not None, timeout=60_000)
     assert threads and threads[0] is not threading.main_thread()
     assert f"G00 Z{status.z - 2:g}" in _executed(window)[-7:]
+
+
+def test_a_failed_reading_again_is_said_and_nothing_is_sent(qtbot, window, tmp_path):
+    _jogged(qtbot, window, tmp_path)
+    path = tmp_path / "relative.ngc"
+    path.write_text(RELATIVE)
+    loaded = open_and_wait(qtbot, window, path)
+    sent = len(_executed(window))
+
+    def broken(position):
+        raise MemoryError("no room")
+
+    loaded.program._again = broken
+    with qtbot.waitSignal(window.notifier.notified, timeout=20_000) as said:
+        window.operator.start()
+    level, title, text = said.args
+    assert level == "error" and title == "Program not started" and "MemoryError: no room" in text
+    assert not window.operator.machine_start.busy and window.binder.last_job_event is None
+    assert len(_executed(window)) == sent
