@@ -378,9 +378,62 @@ def bench_3d(config: Path) -> None:
     gl = PathGLView()
     gl.resize(1600, 1000)
     gl.show()
-    for name, mesh in (("1 M-line file", view.mesh), ("100 k-line file", _mesh_of(app, window, job_file()))):
+    for name, mesh in (("1 M-line file", view.mesh), ("100 k-line file", _mesh_of(app, window, job_file())),
+                       ("a relief of 1 M distinct segments (no repeats; generated)", _relief())):
         _orbit(app, gl, mesh, name)
+        _honest(app, gl)
+        _back_to_a_pose(app, gl)
     window.close()
+
+
+def _relief():
+    from app.ui.preview3d.mesh import PathMesh
+    from tests.ui.test_preview3d_model import raster
+
+    mesh = PathMesh.from_geometry(raster(rows=2000, per_row=500))
+    mesh.build_levels()
+    return mesh
+
+
+def _grab_full(app, gl, full_cell_pixels: float):
+    """The full-detail picture (h, w, 3) and the lines it drew."""
+    from tests.ui.test_preview3d_gl import _frame
+
+    gl.full_cell_pixels = full_cell_pixels
+    gl._full.forget()
+    gl.drawn = ("none", 0)
+    gl.update()
+    _wait(app, lambda: gl.drawn[0] == "full", 120)
+    return _frame(type("V", (), {"gl": gl})), gl.full_lines
+
+
+def _honest(app, gl) -> None:
+    """Full detail against every segment drawn, pixel by pixel (tests/ui/test_preview3d_full)."""
+    from app.ui.preview3d.glview import FULL_CELL_PIXELS
+    from tests.ui.test_preview3d_full import compare
+
+    fast, lines = _grab_full(app, gl, FULL_CELL_PIXELS)
+    every, _ = _grab_full(app, gl, 0.0)
+    seen = compare(every, fast)
+    gl.full_cell_pixels = FULL_CELL_PIXELS
+    print(f"    full detail drew {lines:,} lines; against every segment drawn: {seen['differ']:.4%} of "
+          f"{seen['lit']:,} lit pixels differ, {seen['unexplained']:.4%} not by a one-pixel shift")
+
+
+def _back_to_a_pose(app, gl) -> None:
+    """Top, isometric, then top again: the time to full detail on coming back."""
+    gl.drawn = ("none", 0)
+    for name in ("top", "isometric"):
+        gl.camera.preset(name)
+        gl.fit()
+        _wait(app, lambda: gl.drawn[0] == "full", 120)
+        gl.drawn = ("none", 0)
+    gl.camera.preset("top")
+    gl.fit()
+    started = time.perf_counter()
+    _wait(app, lambda: gl.drawn[0] == "full", 120)
+    print(f"    back to the top preset: full detail {(time.perf_counter() - started) * 1000:.0f} ms after "
+          f"(its picture kept); load average {_load()}")
 
 
 def _mesh_of(app, window, path: Path):
@@ -430,7 +483,8 @@ def _orbit(app, gl, mesh, name: str, seconds: float = 4.0) -> None:
           f"GPU (+ {mesh.level_bytes_per_segment():.1f} for the levels of detail; Candle: 80); orbiting at "
           f"{gl.width()}x{gl.height()}: {fps:.1f} fps ({drawn[1]:,} segments a frame while moving); a "
           f"full detail drawn anew {statistics.median(full) * 1000:.0f} ms; after orbiting, full detail "
-          f"{done[0] - stopped:.2f} s after the camera stops (target <= 0.3 s); load average {_load()}")
+          f"{done[0] - stopped:.2f} s after the camera stops (target <= 0.3 s), {gl.full_lines:,} lines; "
+          f"load average {_load()}")
 
 
 def _progress_calls(view, program) -> None:

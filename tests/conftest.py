@@ -1,5 +1,30 @@
-"""Suite-wide setup: headless Qt."""
+"""Suite-wide setup: headless Qt, and a private home for everything the code keeps per user.
 
+The simulator's SD card and flash (work offsets), the tool table and the window's
+settings live in the user's data and config folders (platformdirs, QStandardPaths).
+A test must neither read what the developer left there (a `SET WCS 55` in the window
+moves every later simulated job) nor write into it, and two test processes must not
+share it: each process gets fresh folders of its own before anything is imported.
+"""
+
+import atexit
 import os
+import shutil
+import sys
+import tempfile
 
 os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
+
+
+def _private_user_folders() -> None:
+    root = tempfile.mkdtemp(prefix="cnc-tests-")
+    atexit.register(shutil.rmtree, root, ignore_errors=True)
+    for name in ("XDG_DATA_HOME", "XDG_CONFIG_HOME", "XDG_CACHE_HOME", "XDG_STATE_HOME"):
+        os.environ[name] = os.path.join(root, name.lower())
+    if sys.platform == "win32":
+        os.environ["APPDATA"] = os.environ["LOCALAPPDATA"] = os.path.join(root, "appdata")
+    elif sys.platform == "darwin":  # platformdirs and Qt read ~/Library there
+        os.environ["HOME"] = root
+
+
+_private_user_folders()

@@ -28,8 +28,15 @@ def controls_of(window) -> dict[str, list]:
     c, a, sd = window.controls, window.actions_by_name, window.sd_panel
     both = {name: [c.buttons[name], a[name]] for name in
             ("home", "home_recover", "start", "pause", "resume", "stop", "spindle_on", "spindle_off")}
+    alarm = getattr(getattr(window, "grbl", None), "alarm", None)  # issue 23: the alarm banner's buttons
+    grbl = {name: [a[name]] if name in a else [] for name in ("machine_settings", "unlock")}
+    if alarm is not None:
+        both["home"].append(alarm.buttons["home"])
+        both["stop"].append(alarm.buttons["reset"])
+        grbl["unlock"].append(alarm.buttons["unlock"])
     return {
         **both,
+        **grbl,
         "start_here": [window.program_panel.start_here_action],
         "jog": [*(() if c.jog.hold_mode else c.jog.buttons.values()),
                 *(a[n] for n in a if n.startswith("jog_"))],
@@ -76,8 +83,9 @@ def apply(window, inputs: Inputs) -> dict[str, Verdict]:
 def _set_reason(target, reason: str) -> None:
     tip, old = target.toolTip(), target.property(SUFFIX) or ""
     base = tip[: -len(old)] if old and tip.endswith(old) else tip
-    if isinstance(target, QAction) and base == target.text().replace("&", ""):
-        base = ""  # a QAction's tooltip defaults to its text
+    plain = target.text().replace("&", "") if isinstance(target, QAction) else None
+    if plain is not None and base in (plain, plain.removesuffix("…")):
+        base = ""  # a QAction's tooltip defaults to its text (without the ellipsis)
     suffix = "" if not reason else ("\n" if base else "") + QCoreApplication.translate(
         "StateTable", "Not now: %1").replace("%1", reason)
     target.setProperty(SUFFIX, suffix)

@@ -104,3 +104,12 @@ def actual_feed(previous, current) -> float | None:
         return None
     distance = sum((a - b) ** 2 for a, b in zip(current.position, previous.position, strict=True)) ** 0.5
     return distance / (current.time - previous.time) * 60.0
+
+
+def machine_modes(words: str) -> ModalView:
+    """The modal state a machine reports as one line of words (GRBL's ``$G``:
+    ``G0 G54 G17 G21 G90 G94 M5 M9 T0 F0 S0``); its ``T`` is the tool in the spindle."""
+    tracker = ModalTracker([words])
+    view = tracker.advance_to(1)
+    view.tool = next((int(w[1:]) for w in words.split() if w[:1] == "T" and w[1:].isdigit()), 0)
+    return view

@@ -115,6 +115,9 @@ class MainWindow(QMainWindow):
         self.custom_commands = CustomCommands(self, self.custom_bar)
         self.start_here = StartHere(self)
         self.actions_by_name = build_menus(self)
+        from app.ui.grbl_window import GrblWindow
+
+        self.grbl = GrblWindow(self)  # issue 23: settings, unlock, $G/$# and holds on a GRBL machine
         self.retranslate_ui()  # applies the state table too
         if restore:
             self.restore_state()

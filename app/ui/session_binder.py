@@ -176,7 +176,7 @@ class SessionBinder(QObject):
         self.w.console.add_log("warning", f"alarm {event.code}: {event.text}", "machine")
         if event.code == "UART_LOST":
             self._alert("uart", event.text)
-        elif event.code not in ("HOST_LOST", "BOOT"):
+        elif event.code not in ("HOST_LOST", "BOOT") and not event.code.startswith("ALARM:"):  # GRBL: banner
             self.w.notifier.warning(self.tr("Machine alarm"), alarm_text(event.code, event.text))
 
     def _alert(self, what: str, detail: str) -> None:

@@ -77,6 +77,8 @@ COLUMNS = {
     "ovfd": "feed_override",
     "ovsp": "spindle_override",
     "ovrp": "rapid_override",
+    "sets": "machine_settings",
+    "unlk": "unlock",
 }
 
 TABLE = """
@@ -114,6 +116,24 @@ alarm        Y    Y    Y
 cover_open   Y    Y    Y
 """
 
+# A machine's own settings table and its alarm lock (issue 23, GRBL's ``$$`` and ``$X``):
+# GRBL takes a setting write only idle or in alarm, and ``$X`` lifts an alarm's lock.
+MACHINE_TABLE = """
+state        sets unlk
+idle         Y    .
+check_mode   .    .
+homing       .    .
+jog          .    .
+spindle      .    .
+run_host     .    .
+run_sd       .    .
+upload       .    .
+hold         .    .
+program_stop .    .
+alarm        Y    Y
+cover_open   .    .
+"""
+
 # Controls the link alone decides (enabled whenever the link is up, as the machine
 # answers them in every state): queries, and the connect/disconnect button always.
 LINK_ONLY = ("query",)
@@ -128,6 +148,7 @@ NEEDS_CAPABILITY = {"sd_save": "sd_card", "sd_list": "sd_card", "sd_delete": "sd
 # machine takes them in, except while a homing, a jog or an upload has the machine.
 OVERRIDE_CONTROLS = {"FEED": "feed_override", "SPINDLE": "spindle_override", "RAPID": "rapid_override"}
 NEEDS_CAPABILITY.update(dict.fromkeys(OVERRIDE_CONTROLS.values(), "overrides"))
+NEEDS_CAPABILITY.update({"machine_settings": "settings_table", "unlock": "unlock"})
 
 
 def _parse(table: str) -> tuple[tuple[str, ...], dict[Machine, dict[str, str]]]:
@@ -144,10 +165,11 @@ def _parse(table: str) -> tuple[tuple[str, ...], dict[Machine, dict[str, str]]]:
 
 
 TABLE_CONTROLS, CELLS = _parse(TABLE)
-_more, _more_cells = _parse(OVERRIDE_TABLE)
-TABLE_CONTROLS += _more
-for _machine, _row in _more_cells.items():
-    CELLS[_machine].update(_row)
+for _table in (OVERRIDE_TABLE, MACHINE_TABLE):
+    _more, _more_cells = _parse(_table)
+    TABLE_CONTROLS += _more
+    for _machine, _row in _more_cells.items():
+        CELLS[_machine].update(_row)
 CONTROLS = (*TABLE_CONTROLS, *LINK_ONLY, *ALWAYS, "panel", "cover_switch")
 
 # Why a control is not allowed, in the operator's words ("StateTable" context).
@@ -174,6 +196,8 @@ IDLE_REASONS = {
     "resume": QT_TRANSLATE_NOOP("StateTable", "nothing is held"),
     "override_travel": QT_TRANSLATE_NOOP("StateTable", "only in check mode"),
     "sd_run": QT_TRANSLATE_NOOP("StateTable", "check mode is on"),
+    "machine_settings": QT_TRANSLATE_NOOP("StateTable", "check mode is on"),
+    "unlock": QT_TRANSLATE_NOOP("StateTable", "the machine is not in alarm"),
 }
 NOT_HOMED = QT_TRANSLATE_NOOP("StateTable", "home the machine first")
 DIALOG = QT_TRANSLATE_NOOP("StateTable", "answer the open dialog first")
@@ -183,6 +207,9 @@ CAPABILITY_REASONS = {
     "oled_panel": QT_TRANSLATE_NOOP("StateTable", "this machine has no panel of its own"),
     "cover": QT_TRANSLATE_NOOP("StateTable", "this machine has no cover switch"),
     "overrides": QT_TRANSLATE_NOOP("StateTable", "this machine takes no overrides"),
+    "settings_table": QT_TRANSLATE_NOOP("StateTable", "this machine has no settings table of its own: "
+                                                      "its settings are in File > Settings"),
+    "unlock": QT_TRANSLATE_NOOP("StateTable", "this machine has no alarm lock to lift: home it"),
 }
 
 
@@ -211,7 +238,7 @@ def decide(control: str, inputs: Inputs) -> Verdict:
     if control in ALWAYS:
         return YES
     capability = NEEDS_CAPABILITY.get(control)
-    if capability and not getattr(inputs.capabilities, capability):
+    if capability and not getattr(inputs.capabilities, capability, False):
         return Verdict(False, CAPABILITY_REASONS[capability])
     if control in ("panel", "cover_switch"):
         return YES if inputs.panel_attached else Verdict(False, LINK_REASONS[Link.NONE])
@@ -320,4 +347,6 @@ LABELS = {
     "feed_override": QT_TRANSLATE_NOOP("StateTable", "Feed override"),
     "spindle_override": QT_TRANSLATE_NOOP("StateTable", "Spindle override"),
     "rapid_override": QT_TRANSLATE_NOOP("StateTable", "Rapid override"),
+    "machine_settings": QT_TRANSLATE_NOOP("StateTable", "Machine settings ($$)"),
+    "unlock": QT_TRANSLATE_NOOP("StateTable", "Unlock ($X)"),
 }

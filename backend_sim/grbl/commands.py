@@ -1,7 +1,9 @@
 """The simulated GRBL's ``$`` system commands and real-time bytes (a mixin of
 ``GrblMachine``), as GRBL 1.1's commands documentation describes them:
 
-``$`` help, ``$$`` settings, ``$x=val`` (idle only: error 8), ``$#`` parameters,
+``$`` help, ``$$`` settings (not while a job runs or holds: error 8), ``$x=val`` and ``$#``
+parameters (Idle or Alarm only, not Jog, Door or Check: error 8; a write keeps the machine
+deaf while it writes its EEPROM, ``machine.EEPROM_WRITE_MS``),
 ``$G`` parser state, ``$I`` build info, ``$N`` startup lines (none stored), ``$C``
 check mode (leaving it resets), ``$X`` unlock, ``$H`` homing (``$22`` off: error 5),
 ``$J=`` jog (G91/G90, G20/G21, G53, X Y Z and a required F; soft limits: error 15),
@@ -45,13 +47,27 @@ class SystemCommands:
         self.write(HELP)
         self.write("ok")
 
+    def _cycling(self) -> bool:
+        """A job or a hold under way: GRBL refuses ``$$`` then (error 8: its print-out takes
+        too long)."""
+        return self.motion.state in ("RUN", "HOLD") or self.pending is not None or self.paused
+
+    def _idle_or_alarm(self) -> bool:
+        """GRBL's state is Idle or Alarm (not Run, Hold, Jog, Door or Check): what ``$#`` and a
+        setting write need (error 8 otherwise)."""
+        return (self.motion.state in ("IDLE", "ALARM") and self.pending is None and not self.paused
+                and not self.check_mode and not self.door)
+
     def _print_settings(self) -> None:
+        if self._cycling():
+            self.write("error:8")
+            return
         for number, value in sorted(self.settings.items()):
             self.write(format_setting(number, value))
         self.write("ok")
 
     def _write_setting(self, line: str) -> None:
-        if self.motion.state not in ("IDLE", "ALARM") or self.pending is not None:
+        if not self._idle_or_alarm():
             self.write("error:8")
             return
         number, _, value = line[1:].partition("=")
@@ -60,9 +76,12 @@ class SystemCommands:
         except ValueError as exc:
             self.write(f"error:{exc.args[0]}")
             return
-        self.write("ok")
+        self.eeprom_until_ms = self.clock.now_ms + self.EEPROM_WRITE_MS  # "ok" once written
 
     def _print_parameters(self) -> None:
+        if not self._idle_or_alarm():
+            self.write("error:8")
+            return
         for row in reports.parameters(self):
             self.write(row)
         self.write("ok")

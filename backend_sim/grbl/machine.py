@@ -12,6 +12,9 @@ buffer fills: the host's character counting is what keeps it from overflowing. A
 (``G4``) is answered when it has run, after everything before it (so ``G4 P0`` is a
 sync). Machine position (``MPos``) is the motion model's measured millimetres minus
 ``origin`` (the travel's far corner), so the machine space is ``[-$13x, 0]``.
+A setting write (``$x=val``) stores to EEPROM for ``EEPROM_WRITE_MS``, with the serial
+interrupt off as on the real part: every byte that lands meanwhile, real-time bytes too,
+is lost (``lost_to_eeprom``), and the ``ok`` comes after the write.
 """
 
 from __future__ import annotations
@@ -28,6 +31,7 @@ from backend_sim.motion.events import Alarm, Finished, Homed, MotionError
 
 RX_BUFFER = 128
 PLANNER_BLOCKS = 15
+EEPROM_WRITE_MS = 25  # an ATmega328P writes an EEPROM byte in about 3.4 ms
 VERSION = "1.1h"
 WELCOME = f"Grbl {VERSION} ['$' for help]"
 STATES = {"IDLE": "Idle", "RUN": "Run", "HOLD": "Hold", "JOG": "Jog", "HOMING": "Home", "ALARM": "Alarm"}
@@ -36,7 +40,7 @@ STATES = {"IDLE": "Idle", "RUN": "Run", "HOLD": "Hold", "JOG": "Jog", "HOMING": 
 class GrblMachine(SystemCommands):
     """See the module docstring."""
 
-    VERSION, PLANNER_BLOCKS, RX_BUFFER = VERSION, PLANNER_BLOCKS, RX_BUFFER
+    VERSION, PLANNER_BLOCKS, RX_BUFFER, EEPROM_WRITE_MS = VERSION, PLANNER_BLOCKS, RX_BUFFER, EEPROM_WRITE_MS
 
     def __init__(self, profile, clock, out_wire, motion) -> None:
         self.profile, self.clock, self.out_wire = profile, clock, out_wire
@@ -48,6 +52,8 @@ class GrblMachine(SystemCommands):
         self.gcode.offsets[0] = [t.work_x - t.x_max, t.work_y - t.y_max, t.work_z - t.z_max]
         self.rx = bytearray()
         self.overflowed = 0  # bytes lost to a full receive buffer
+        self.lost_to_eeprom = 0  # bytes that landed while a setting was being written
+        self.eeprom_until_ms: int | None = None  # a setting write in progress until then
         self.executed: list[str] = []  # every G-code line accepted (tests: each line once)
         self.report_due = False
         self.pending: tuple | None = None  # (actions, line) waiting for the planner
@@ -81,6 +87,8 @@ class GrblMachine(SystemCommands):
         self.alarm = alarm
         self.locked = locked or alarm is not None
         self.show_wco = self.show_ov = True
+        self.overrides = [100, 100, 100]  # GRBL starts every reset at 100 %
+        self.eeprom_until_ms = None
         self.write("\r\n" + WELCOME)
         if self.door:
             self.write("[MSG:Check Door]")
@@ -107,6 +115,9 @@ class GrblMachine(SystemCommands):
     # ------------------------------------------------------------------ bytes in
 
     def receive(self, data: bytes) -> None:
+        if self.eeprom_until_ms is not None:
+            self.lost_to_eeprom += len(data)
+            return
         for byte in data:
             handler = self.REALTIME.get(byte)
             if handler is not None:
@@ -122,6 +133,8 @@ class GrblMachine(SystemCommands):
     # ------------------------------------------------------------------ time
 
     def next_due_ms(self) -> int | None:
+        if self.eeprom_until_ms is not None:
+            return self.eeprom_until_ms
         if self.report_due or (self.pending is None and b"\n" in self.rx and not self.paused):
             return self.clock.now_ms
         if not self.motion.idle():
@@ -130,6 +143,11 @@ class GrblMachine(SystemCommands):
 
     def service(self) -> None:
         now = self.clock.now_ms
+        if self.eeprom_until_ms is not None:
+            if now < self.eeprom_until_ms:
+                return
+            self.eeprom_until_ms = None
+            self.write("ok")
         if now > self._last_ms:
             before = self.motion.commanded_mm
             self.motion.advance(now - self._last_ms)

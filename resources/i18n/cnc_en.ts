@@ -12,6 +12,23 @@
     </message>
 </context>
 <context>
+    <name>GrblSettingsDialog</name>
+    <message numerus="yes">
+        <source>%n setting(s) backed up to %1</source>
+        <translation>
+            <numerusform>%n setting backed up to %1</numerusform>
+            <numerusform>%n settings backed up to %1</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n setting(s) differ from the machine&apos;s; check them, then Send changes.</source>
+        <translation>
+            <numerusform>%1: %n setting differs from the machine&apos;s; check it, then Send changes.</numerusform>
+            <numerusform>%1: %n settings differ from the machine&apos;s; check them, then Send changes.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>LoaderTexts</name>
     <message numerus="yes">
         <source>%1 does not look like G-code: nothing in it can be run (%n error(s); first, line %2: %3).</source>

@@ -568,6 +568,148 @@
     </message>
 </context>
 <context>
+    <name>GrblAlarmBar</name>
+    <message>
+        <source>Reset</source>
+        <translation>Đặt lại (reset)</translation>
+    </message>
+    <message>
+        <source>Home ($H)</source>
+        <translation>Về gốc ($H)</translation>
+    </message>
+    <message>
+        <source>Unlock ($X)</source>
+        <translation>Mở khóa ($X)</translation>
+    </message>
+    <message>
+        <source>Lets the machine move without homing: it may not know where it is</source>
+        <translation>Cho máy chuyển động mà không về gốc: máy có thể không biết mình đang ở đâu</translation>
+    </message>
+    <message>
+        <source>Alarm</source>
+        <translation>Báo động</translation>
+    </message>
+    <message>
+        <source>MACHINE LOCKED (alarm): %1</source>
+        <translation>MÁY ĐANG KHÓA (báo động): %1</translation>
+    </message>
+    <message>
+        <source>Machine locked: %1</source>
+        <translation>Máy đang khóa: %1</translation>
+    </message>
+</context>
+<context>
+    <name>GrblSettingsDialog</name>
+    <message>
+        <source>Machine settings ($$)</source>
+        <translation>Cài đặt của máy ($$)</translation>
+    </message>
+    <message>
+        <source>Setting</source>
+        <translation>Cài đặt</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Giá trị</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Đơn vị</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Tên</translation>
+    </message>
+    <message>
+        <source>Meaning</source>
+        <translation>Ý nghĩa</translation>
+    </message>
+    <message>
+        <source>Read again</source>
+        <translation>Đọc lại</translation>
+    </message>
+    <message>
+        <source>Back up to a file…</source>
+        <translation>Sao lưu ra tệp…</translation>
+    </message>
+    <message>
+        <source>Restore from a file…</source>
+        <translation>Khôi phục từ tệp…</translation>
+    </message>
+    <message>
+        <source>Send changes</source>
+        <translation>Gửi các thay đổi</translation>
+    </message>
+    <message>
+        <source>Discard changes</source>
+        <translation>Bỏ các thay đổi</translation>
+    </message>
+    <message>
+        <source>Changes to send (one at a time, each waited for):</source>
+        <translation>Các thay đổi sẽ gửi (từng cái một, chờ máy trả lời từng cái):</translation>
+    </message>
+    <message>
+        <source>$%1: “%2” is not a number; nothing changed</source>
+        <translation>$%1: “%2” không phải là số; không có gì thay đổi</translation>
+    </message>
+    <message>
+        <source>The machine has not sent its settings yet: nothing to back up.</source>
+        <translation>Máy chưa gửi các cài đặt của nó: chưa có gì để sao lưu.</translation>
+    </message>
+    <message>
+        <source>Back up the machine&apos;s settings</source>
+        <translation>Sao lưu cài đặt của máy</translation>
+    </message>
+    <message>
+        <source>Settings (*.txt);;All files (*)</source>
+        <translation>Cài đặt (*.txt);;Mọi file (*)</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>Không ghi được %1: %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n setting(s) backed up to %1</source>
+        <translation>
+            <numerusform>Đã sao lưu %n cài đặt vào %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Restore the machine&apos;s settings</source>
+        <translation>Khôi phục cài đặt của máy</translation>
+    </message>
+    <message>
+        <source>no such file</source>
+        <translation>không có tệp này</translation>
+    </message>
+    <message>
+        <source>Backup not read, nothing changed: %1</source>
+        <translation>Không đọc được bản sao lưu, không có gì thay đổi: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n setting(s) differ from the machine&apos;s; check them, then Send changes.</source>
+        <translation>
+            <numerusform>%1: %n cài đặt khác với của máy; hãy kiểm tra, rồi nhấn Gửi các thay đổi.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Left out (this machine has no such setting): %1</source>
+        <translation>Bỏ qua (máy này không có cài đặt đó): %1</translation>
+    </message>
+    <message>
+        <source>Every change was written; the settings are read again.</source>
+        <translation>Mọi thay đổi đã được ghi; đang đọc lại các cài đặt.</translation>
+    </message>
+    <message>
+        <source>Writing $%1=%2 (%3 left)…</source>
+        <translation>Đang ghi $%1=%2 (còn %3)…</translation>
+    </message>
+    <message>
+        <source>$%1 was refused (%2); it and the changes after it were not written.</source>
+        <translation>$%1 bị từ chối (%2); nó và các thay đổi sau nó chưa được ghi.</translation>
+    </message>
+</context>
+<context>
     <name>JobStatusBar</name>
     <message>
         <source>machine position in work coordinates (mm)</source>
@@ -1442,6 +1584,14 @@ If the link drops, the machine holds; reconnect and resume from the alert.</sour
 4. Về gốc máy (Ctrl+H), rồi Chạy (Ctrl+R). Tạm dừng Ctrl+P, Tiếp tục Ctrl+Shift+P, Dừng Esc.
 5. Chạy tay bằng Ctrl+mũi tên (X/Y) và Ctrl+PgUp/PgDn (Z); bước Alt+1/2/3.
 Nếu mất kết nối, máy giữ nguyên vị trí; kết nối lại và chạy tiếp từ hộp thông báo.</translation>
+    </message>
+    <message>
+        <source>Machine settings (&amp;$$)…</source>
+        <translation>Cài đặt của &amp;máy ($$)…</translation>
+    </message>
+    <message>
+        <source>&amp;Unlock ($X)</source>
+        <translation>&amp;Mở khóa ($X)</translation>
     </message>
 </context>
 <context>
@@ -2613,6 +2763,10 @@ Hình 2-D hiển thị chương trình.</translation>
         <translation>đang bật chạy thử</translation>
     </message>
     <message>
+        <source>the machine is not in alarm</source>
+        <translation>máy không ở trạng thái báo động</translation>
+    </message>
+    <message>
         <source>home the machine first</source>
         <translation>hãy cho máy về gốc trước</translation>
     </message>
@@ -2639,6 +2793,14 @@ Hình 2-D hiển thị chương trình.</translation>
     <message>
         <source>this machine takes no overrides</source>
         <translation>máy này không nhận điều chỉnh tốc độ</translation>
+    </message>
+    <message>
+        <source>this machine has no settings table of its own: its settings are in File &gt; Settings</source>
+        <translation>máy này không có bảng cài đặt riêng: các cài đặt của nó nằm ở Tệp &gt; Cài đặt</translation>
+    </message>
+    <message>
+        <source>this machine has no alarm lock to lift: home it</source>
+        <translation>máy này không có khóa báo động để mở: hãy cho máy về gốc</translation>
     </message>
     <message>
         <source>Home</source>
@@ -2759,6 +2921,14 @@ Hình 2-D hiển thị chương trình.</translation>
     <message>
         <source>Rapid override</source>
         <translation>Điều chỉnh chạy nhanh</translation>
+    </message>
+    <message>
+        <source>Machine settings ($$)</source>
+        <translation>Cài đặt của máy ($$)</translation>
+    </message>
+    <message>
+        <source>Unlock ($X)</source>
+        <translation>Mở khóa ($X)</translation>
     </message>
 </context>
 <context>

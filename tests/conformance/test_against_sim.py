@@ -37,12 +37,16 @@ def test_passes_against_cnc_sim_on_a_pty(tmp_path, capsys, speed, quick):
 
 
 def test_passes_against_sim_url_and_writes_markdown(tmp_path, capsys):
+    """At speed 1 (the pty runs above cover the other sections), where a host can hold a
+    continuous jog with its keep-alives."""
     report = tmp_path / "report.md"
-    code, out = run_cli(capsys, f"sim://?speed=10&sd={tmp_path / 'sd'}", "--quick", "--report", str(report))
+    url = f"sim://?speed=1&sd={tmp_path / 'sd'}"
+    code, out = run_cli(capsys, url, "--section", "cover", "--section", "jog", "--report", str(report))
     assert code == 0, out
     text = report.read_text()
     assert text.startswith("# Conformance of sim://") and "| pass | `frames.crc-check-values` |" in text
     assert "| pass | `cover.open-alarm-and-flag` |" in text  # sim:// opens its cover through the panel
+    assert "| pass | `jog.keep-alive` |" in text and "| pass | `jog.change-of-direction` |" in text
     assert " 0 failed" in out
 
 

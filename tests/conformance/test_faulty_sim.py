@@ -68,6 +68,33 @@ def forgets_realtime_ids(sim):
         recent.answers = lambda rid: []
 
 
+def no_dead_man(sim):
+    """A continuous jog runs on without keep-alives (to the end of its travel)."""
+    tick = sim.cnc.jogging.tick
+
+    def tick_without_dead_man():
+        running = sim.cnc.jogging.running
+        if running is not None:
+            running.deadline_ms = sim.cnc.clock.now_ms + 10**9
+        tick()
+
+    sim.cnc.jogging.tick = tick_without_dead_man
+
+
+def work_positions_ignore_the_system(monkeypatch):
+    """`SET WCS` is stored but the work positions keep the old system's offset."""
+    from backend_sim import flash, work_systems
+
+    def store(mcu):
+        mcu.flash.save_systems(mcu.systems, mcu.wcs)
+        mcu.reset_parser()
+
+    def patch(sim):
+        assert flash.SYSTEMS  # the module the patch stands in for is the one the machine uses
+        monkeypatch.setattr(work_systems, "store", store)
+    return patch
+
+
 CASES = [
     (wrong_crc_in_statuses, ["frames"], "frames.machine-frames-valid"),
     (no_n_for_a_gap, ["stream"], "stream.gap-answered-n"),
@@ -76,6 +103,8 @@ CASES = [
     (no_selective_repeat, ["stream"], "stream.selective-repeat"),
     (duplicate_run_twice, ["stream"], "stream.duplicate-reacked"),
     (forgets_realtime_ids, ["realtime"], "realtime.repeat-not-executed"),
+    (forgets_realtime_ids, ["overrides"], "overrides.repeat-not-taken"),
+    (no_dead_man, ["jog"], "jog.dead-man"),
 ]
 
 
@@ -93,6 +122,12 @@ def test_the_kit_names_a_lenient_set_grammar(tmp_path, monkeypatch):
             "errors.set-choice-leading-zero"} <= set(failed), sorted(failed)
 
 
-@pytest.mark.parametrize("sections", [["frames"], ["stream"], ["link"], ["errors"], ["realtime"]])
+def test_the_kit_names_work_positions_that_ignore_the_system(tmp_path, monkeypatch):
+    failed = failures(tmp_path, ["systems"], work_positions_ignore_the_system(monkeypatch))
+    assert "systems.work-position-follows" in failed, sorted(failed)
+
+
+@pytest.mark.parametrize("sections", [["frames"], ["stream"], ["link"], ["errors"], ["realtime"],
+                                      ["overrides", "systems", "jog"]])
 def test_the_honest_machine_passes_the_same_sections(tmp_path, sections):
     assert failures(tmp_path, sections) == {}

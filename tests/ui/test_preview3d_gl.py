@@ -40,7 +40,9 @@ def test_under_xvfb(qapp):
     if shutil.which("xvfb-run") is None:
         pytest.skip(f"no OpenGL here ({reason}) and no xvfb-run to start a display")
     env = dict(os.environ, QT_QPA_PLATFORM="xcb", **{CHILD: "1"})
-    files = [__file__, str(ROOT / "tests" / "ui" / "test_preview3d_screens.py")]
+    files = [__file__, *(
+        str(ROOT / "tests" / "ui" / f"test_preview3d_{name}.py")
+        for name in ("full", "screens"))]
     run = subprocess.run(["xvfb-run", "-a", "-s", "-screen 0 1600x1000x24", sys.executable, "-m", "pytest",
                           "-q", "-p", "no:cacheprovider", "-k", "not test_under_xvfb", *files],
                          cwd=ROOT, env=env, capture_output=True, text=True, timeout=280)
@@ -49,20 +51,26 @@ def test_under_xvfb(qapp):
     assert "skipped" not in run.stdout and " passed" in run.stdout, tail
 
 
-@pytest.fixture
-def gl_view(qtbot):
+def gl_widget(qtbot, make, ready):
+    """``make()`` shown at 900 x 700 until ``ready(widget)`` (OpenGL started); skips where
+    this process cannot show an OpenGL widget."""
     reason = _gl_reason()
     if reason:
         pytest.skip(f"no OpenGL widget here: {reason} (test_under_xvfb runs these on Xvfb)")
+    widget = make()
+    qtbot.addWidget(widget)
+    widget.resize(900, 700)
+    widget.show()
+    qtbot.waitExposed(widget)
+    qtbot.waitUntil(lambda: ready(widget))
+    return widget
+
+
+@pytest.fixture
+def gl_view(qtbot):
     from app.ui.preview3d.view import Preview3D
 
-    view = Preview3D()
-    qtbot.addWidget(view)
-    view.resize(900, 700)
-    view.show()
-    qtbot.waitExposed(view)
-    qtbot.waitUntil(lambda: view.gl is not None and bool(view.gl.renderer))
-    return view
+    return gl_widget(qtbot, Preview3D, lambda view: view.gl is not None and bool(view.gl.renderer))
 
 
 def _show_star(qtbot, view):
@@ -136,6 +144,7 @@ def test_full_detail_in_slices_is_the_same_picture_and_progress_draws_only_what_
     gl = gl_view.gl
     whole = _frame(gl_view)
     gl.direct_segments = 0  # in slices however small
+    gl.full_cell_pixels = 0  # of every segment (test_preview3d_full: a level's full detail)
     gl._full.slice_segments = 7  # the first slice: 7 of the star's segments, then sized to the renderer
     slices = []
     cut = gl._full.slice
@@ -191,3 +200,26 @@ def test_a_shader_that_does_not_compile_leaves_the_message(qtbot, monkeypatch):
         view.show()
     assert failed.args[0] and view.gl is None
     assert view.stack.currentWidget() is view.message and "cannot start" in view.message.text()
+
+
+def test_coming_back_to_a_pose_shows_its_picture_at_once(qtbot, gl_view):
+    program = _show_star(qtbot, gl_view)
+    gl = gl_view.gl
+    gl.direct_segments = 0  # in slices, as a big program is
+    gl.full_cell_pixels = 0
+    seen, slices = [], []
+    gl.frame_drawn.connect(lambda: seen.append(gl.drawn))
+    cut = gl._full.slice
+    gl._full.slice = lambda draw: slices.append(cut(draw)) or slices[-1]
+    for name in ("top", "isometric"):
+        gl_view.preset(name)
+        qtbot.waitUntil(lambda: bool(seen) and seen[-1][0] == "full")
+    undone = _frame(gl_view)
+    gl_view.set_done(len(program.device_lines) // 2)  # progress while away: drawn over on return
+    qtbot.waitUntil(lambda: bool(seen) and seen[-1][0] == "full")
+    seen.clear()
+    slices.clear()
+    gl_view.preset("top")
+    qtbot.waitUntil(lambda: bool(seen))
+    assert seen[0][0] == "full" and not slices  # no slice drawn again
+    assert _count(_frame(gl_view), DONE_COLOUR) > 20 and _count(undone, DONE_COLOUR) == 0

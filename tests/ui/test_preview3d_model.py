@@ -1,5 +1,5 @@
 """The 3-D view's model without a GPU: mesh, levels of detail, camera, measured path,
-scene lines and the window feed."""
+and scene lines."""
 
 from __future__ import annotations
 
@@ -10,12 +10,10 @@ import numpy as np
 import pytest
 
 from app.gcode import load_text
-from app.ui.plot.history import PositionHistory
 from app.ui.preview.geometry import RAPID_GROUP
 from app.ui.preview.model import PreviewModel
 from app.ui.preview3d import scene
 from app.ui.preview3d.camera import PRESETS, Camera
-from app.ui.preview3d.feed import WindowFeed
 from app.ui.preview3d.measured import RAMP, TOLERANCE_MM, MeasuredPath, deviation_colour
 from app.ui.preview3d.mesh import PathMesh
 
@@ -69,25 +67,50 @@ def _spiral(n: int, turns: float = 30, passes: int = 3) -> SimpleNamespace:
     return SimpleNamespace(points=points, group=np.full(n, 2, np.int8), move=np.arange(n))
 
 
-def test_levels_are_real_segments_in_program_order_coarser_each_time():
-    mesh = PathMesh.from_geometry(_spiral(200_000))
+def _distance_to_segments(p, a, b) -> np.ndarray:
+    ab = b - a
+    t = np.clip(np.sum((p - a) * ab, axis=1) / np.maximum(np.sum(ab * ab, axis=1), 1e-12), 0, 1)
+    return np.linalg.norm(a + ab * t[:, None] - p, axis=1)
+
+
+def raster(rows: int = 200, per_row: int = 500) -> SimpleNamespace:
+    """A relief carved row by row (zigzag in X, a step in Y each row, Z waving): what a
+    million-line file from an image looks like."""
+    x = np.linspace(10, 110, per_row)
+    chains = []
+    for row in range(rows):
+        y = 10 + 100 * row / rows
+        xs = x if row % 2 == 0 else x[::-1]
+        chains.append(np.column_stack([xs, np.full(per_row, y), -1 - 0.5 * np.sin(xs / 7) * np.cos(y / 5)]))
+    points = np.concatenate(chains)
+    return SimpleNamespace(points=points, group=np.full(len(points), 3, np.int8), move=np.arange(len(points)))
+
+
+def test_levels_are_spans_of_the_path_in_program_order_each_near_the_path_it_stands_for():
+    mesh = PathMesh.from_geometry(_spiral(60_000))
+    mesh.group[30_000:30_050] = RAPID_GROUP  # a run of another colour
     mesh.build_levels()
     assert mesh.levels and [lv.cell for lv in mesh.levels] == sorted(lv.cell for lv in mesh.levels)
     counts = [len(lv.ends) for lv in mesh.levels]
-    assert counts == sorted(counts, reverse=True) and counts[-1] < counts[0] < mesh.segments
-    previous = set(range(1, len(mesh.points)))
+    assert counts == sorted(counts, reverse=True) and counts[-1] < counts[0] <= 0.6 * mesh.segments
     for level in mesh.levels:
-        ends = level.ends.astype(np.int64)
-        assert np.all(np.diff(ends) > 0) and ends.min() >= 1
-        assert set(ends.tolist()) <= previous  # each level from the finer one
-        previous = set(ends.tolist())
-        pairs = level.pairs().reshape(-1, 2).astype(np.int64)
-        np.testing.assert_array_equal(pairs[:, 1] - pairs[:, 0], 1)  # segments of the path itself
+        starts, ends = level.starts.astype(np.int64), level.ends.astype(np.int64)
+        assert np.all(np.diff(ends) > 0) and np.all(starts < ends) and starts.min() >= 0
+        np.testing.assert_array_equal(level.pairs().reshape(-1, 2), np.column_stack([starts, ends]))
+        for s, e in zip(starts, ends, strict=True):  # one colour per span, the path within reach
+            assert np.all(mesh.group[s + 1:e + 1] == mesh.group[e])
+        # (no repeats in the spiral: the spans follow the path, each vertex near its span)
+        span = np.repeat(np.arange(len(ends)), ends - starts)
+        inside = np.concatenate([np.arange(s + 1, e + 1) for s, e in zip(starts, ends, strict=True)])
+        reach = _distance_to_segments(mesh.points[inside], mesh.points[starts[span]], mesh.points[ends[span]])
+        assert reach.max() <= 2 * math.sqrt(3) * level.cell
+        assert level.spans_done(-1) == 0 and level.spans_done(int(ends[-1])) == len(ends)
+        assert level.spans_done(int(ends[3])) == 4 and level.spans_done(int(ends[3]) - 1) == 3
 
 
-def test_levels_keep_depth_passes_apart_and_repeats_once():
-    # the same square ten times at Z -1, then once at Z -2: the coarse level keeps one
-    # square per depth, not one in all
+def test_levels_keep_depth_passes_apart_and_repeats_once_the_last():
+    # the same square ten times at Z -1, then once at Z -2: a level keeps one square per
+    # depth, not one in all, and of the repeats the last (it is on top in a full draw)
     square = np.array([[0, 0], [10, 0], [10, 10], [0, 10]], float)
     loop = [np.column_stack([square, np.full(4, -1.0)])] * 10 + [np.column_stack([square, np.full(4, -2.0)])]
     points = np.concatenate(loop)
@@ -95,11 +118,12 @@ def test_levels_keep_depth_passes_apart_and_repeats_once():
     geometry = SimpleNamespace(points=points, group=np.full(n, 2, np.int8), move=np.arange(n))
     mesh = PathMesh.from_geometry(geometry)
     mesh.build_levels()
-    coarse = mesh.levels[-1]
-    kept_z = {(float(mesh.points[e - 1, 2]), float(mesh.points[e, 2])) for e in coarse.ends}
-    assert (-1.0, -1.0) in kept_z and (-2.0, -2.0) in kept_z
-    flat = [e for e in coarse.ends if mesh.points[e - 1, 2] == mesh.points[e, 2] == -1.0]
-    assert len(flat) == 4  # the four sides at Z -1 once, not ten times
+    for level in mesh.levels:
+        z = mesh.points[:, 2]
+        kept_z = {(float(z[s]), float(z[e])) for s, e in zip(level.starts, level.ends, strict=True)}
+        assert (-1.0, -1.0) in kept_z and (-2.0, -2.0) in kept_z
+        flat = [e for s, e in zip(level.starts, level.ends, strict=True) if z[s] == z[e] == -1.0]
+        assert len(flat) == 4 and min(flat) >= 36  # the four sides at Z -1 once: of the tenth square
 
 
 def test_pick_level_fits_the_pixel_and_the_budget():
@@ -111,6 +135,15 @@ def test_pick_level_fits_the_pixel_and_the_budget():
     assert all(lv.cell > 0.5 or lv is level or lv.cell < level.cell for lv in mesh.levels)
     tight = mesh.pick_level(0.0001, 5_000)
     assert len(tight.ends) <= 5_000 or tight is mesh.levels[-1]
+
+
+def test_pick_full_takes_the_coarsest_level_well_under_a_pixel_else_every_segment():
+    mesh = PathMesh.from_geometry(_spiral(100_000))
+    assert mesh.pick_full(1.0, 0.5) is None  # not built: every segment
+    mesh.build_levels()
+    cells = [lv.cell for lv in mesh.levels]
+    assert mesh.pick_full(cells[0] * 1.9, 0.5) is None  # no level fine enough
+    assert mesh.pick_full(cells[2] * 2.5, 0.5) is mesh.levels[2]
 
 
 def test_camera_presets_look_the_way_their_names_say():
@@ -203,38 +236,30 @@ def test_program_tool_and_its_diameter():
     assert scene.tool_diameter({}, 7) == (scene.DEFAULT_DIAMETER, None)
 
 
-def _window(history):
-    binder = SimpleNamespace(job=None, job_done=-1, last_job_event=None, status=None)
-    return SimpleNamespace(loaded=None, history=history, binder=binder, tools={})
+def test_visible_runs_keep_every_segment_on_screen_and_leave_out_the_rest():
+    from app.ui.preview3d.chunks import visible_runs
 
-
-def test_feed_takes_the_history_only_while_a_job_runs():
-    history = PositionHistory(capacity=100)
-    window = _window(history)
-    feed = WindowFeed(window)
-    assert feed.poll().tools == {}
-    history.append(0.0, (1, 1, 1))
-    assert feed.poll().measured is None  # no job
-    loaded = SimpleNamespace(program=object(), preview=None)
-    window.loaded = loaded
-    change = feed.poll()
-    assert change.loaded is loaded and not change.same_program
-    window.loaded = SimpleNamespace(program=loaded.program, preview=None)  # refined
-    assert feed.poll().same_program
-    window.binder.job, window.binder.job_done = loaded, -1
-    history.append(1.0, (2, 2, 2), (2, 2, 2.05))
-    history.append(2.0, (3, 3, 3), (3, 3, 3))
-    change = feed.poll()
-    assert change.job_started
-    np.testing.assert_allclose(change.measured, [[2, 2, 2], [3, 3, 3]])
-    np.testing.assert_allclose(change.commanded, [[2, 2, 2.05], [3, 3, 3]])
-    window.binder.job_done = 40
-    window.binder.status = SimpleNamespace(x=1.0, y=2.0, z=3.0)
-    change = feed.poll()
-    assert change.done_seq == 40 and change.tool == (1.0, 2.0, 3.0) and not change.job_started
-    assert feed.poll() == type(change)()  # nothing changed: nothing said
-    window.binder.last_job_event = object()  # the job ended: rows are not the job's
-    history.append(3.0, (4, 4, 4))
-    assert feed.poll().measured is None
-    window.binder.last_job_event = None  # the same program again
-    assert feed.poll().job_started
+    mesh = PathMesh.from_geometry(raster())
+    mesh.build_levels()
+    cam = Camera(aspect=1.6)
+    cam.preset("top")
+    cam.fit(*mesh.bounds())
+    assert visible_runs(mesh.boxes, cam.project, mesh.segments) == [(0, mesh.segments)]  # all in view
+    x, y, _ = cam.project(mesh.points[35_000][None])[0]
+    cam.zoom_at(8.0, x, y)  # a part of the path
+    runs = visible_runs(mesh.boxes, cam.project, mesh.segments)
+    drawn = np.zeros(mesh.segments + 1, bool)
+    for first, last in runs:
+        drawn[first + 1:last + 1] = True  # the strip's segments first+1..last
+    ndc = cam.project(mesh.points)
+    inside = np.all(np.abs(ndc[:, :2]) <= 1, axis=1)
+    on_screen = np.flatnonzero(inside[1:] | inside[:-1]) + 1  # segments with an end in view
+    assert len(on_screen) and drawn[on_screen].all()
+    assert drawn.sum() < mesh.segments / 4
+    level = mesh.levels[0]
+    spans = visible_runs(level.boxes, cam.project, len(level.ends))
+    kept = np.zeros(len(level.ends), bool)
+    for first, last in spans:
+        kept[first:last] = True
+    seen = inside[level.starts] | inside[level.ends]
+    assert seen.any() and kept[seen].all() and kept.sum() < len(kept) / 4

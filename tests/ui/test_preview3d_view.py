@@ -73,35 +73,3 @@ def test_without_gl_progress_and_the_largest_deviation_still_work(qtbot):
     view.jump_to_largest()
     assert view.deviation_label.text() == "largest deviation 0.200 mm at X 1.000 Y 2.200 Z -1.000"
     assert np.allclose(view.mark_at, (1.0, 2.2, -1.0))
-
-
-def test_the_view_follows_the_window_without_gl(qtbot):
-    from types import SimpleNamespace
-
-    from app.gcode import load_text
-    from app.ui.plot.history import PositionHistory
-
-    program = load_text(star_program())
-    loaded = SimpleNamespace(program=program, preview=PreviewModel(program.toolpath, threads=1))
-    binder = SimpleNamespace(job=None, job_done=-1, last_job_event=None, status=None)
-    tool = SimpleNamespace(diameter=6.0)
-    window = SimpleNamespace(loaded=None, history=PositionHistory(), binder=binder, tools={1: tool})
-    view = Preview3D(probe=lambda: "none here")
-    qtbot.addWidget(view)
-    view.follow(window)
-    window.loaded = loaded
-    qtbot.waitUntil(lambda: view.model is loaded.preview)
-    assert view.tools == {1: tool}
-    binder.job, binder.job_done = loaded, _seq_before(program, loaded.preview, rapid=False)
-    binder.status = SimpleNamespace(x=60.0, y=70.0, z=-1.0)
-    window.history.append(1.0, (60.0, 70.0, -1.0), (60.0, 70.03, -1.0))
-    window.history.append(1.1, (60.0, 70.5, -1.0), (60.0, 70.5, -1.0))
-    qtbot.waitUntil(lambda: len(view.measured) == 2)
-    assert view.tool_at == (60.0, 70.0, -1.0)
-    assert np.allclose(view.measured.rows()[:, 3], [0.03, 0.0], atol=1e-6)
-    binder.last_job_event = SimpleNamespace(completed=True)  # after the job: kept, no more rows
-    window.history.append(1.2, (0.0, 0.0, 10.0))
-    view._poll()  # (what the 30 Hz timer does)
-    assert len(view.measured) == 2
-    binder.last_job_event = None  # run again: a fresh measured path
-    qtbot.waitUntil(lambda: len(view.measured) == 0)

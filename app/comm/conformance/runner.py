@@ -3,7 +3,7 @@
 ``run(port, quick=False, sections=None, cover=None)`` -> list of ``Result``. A check
 that raises is a failure naming the exception (a firmware that answers nothing must
 not hang or crash the kit); a dead port ends the run with a failure saying so.
-``--quick`` leaves out what needs homing and real motion (a few seconds in all).
+``--quick`` leaves out what needs homing and real motion (`motion`, `jog`) (a few seconds in all).
 ``cover(open)`` opens or closes the cover when the port can (the simulator's panel
 through ``sim://``); without it the cover's rules are reported as not checkable.
 """
@@ -17,9 +17,11 @@ from app.comm.conformance import (
     checks_cover,
     checks_errors,
     checks_frames,
+    checks_jog,
     checks_link,
     checks_motion,
     checks_noisy,
+    checks_overrides,
     checks_realtime,
     checks_resume,
     checks_sd,
@@ -40,9 +42,12 @@ SECTIONS = {
     "cover": checks_cover.CHECKS,
     "motion": checks_motion.CHECKS,
     "realtime": checks_realtime.CHECKS,
+    "overrides": checks_overrides.OVERRIDES,
+    "systems": checks_overrides.SYSTEMS,
+    "jog": checks_jog.CHECKS,
     "noisy": checks_noisy.CHECKS,
 }
-SLOW = {"motion"}
+SLOW = {"motion", "jog"}
 FINAL = [checks_frames.every_frame_well_formed, checks_link.no_false_host_lost, checks_realtime.why_field]
 
 

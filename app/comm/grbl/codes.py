@@ -67,6 +67,19 @@ ALARMS: dict[int, str] = {
 
 # Alarms after which GRBL cannot vouch for the position (homing is the way out).
 POSITION_LOST = frozenset({1, 3, 6, 7, 8, 9, 10})
+# Critical alarms (hard and soft limit): GRBL answers nothing but a reset (0x18) until it
+# gets one ("[MSG:Reset to continue]"); after the reset it is locked like the others.
+RESET_FIRST = frozenset({1, 2})
+
+# Why GRBL holds: the substate of ``Hold:n`` and ``Door:n`` in a status report.
+HOLDS: dict[str, str] = {
+    "Hold:0": N_("feed hold complete: Resume goes on"),
+    "Hold:1": N_("feed hold: the machine is slowing down to a stop"),
+    "Door:0": N_("safety door closed: Resume goes on"),
+    "Door:1": N_("safety door open: the machine stopped; close it to go on"),
+    "Door:2": N_("safety door opened: the machine is stopping (parking)"),
+    "Door:3": N_("safety door closed: the machine is restoring from parking"),
+}
 
 
 def error_text(code: int) -> Message:
@@ -81,8 +94,21 @@ def alarm_text(code: int) -> Message:
     return msg(template) if template else msg("alarm {code} (not in GRBL 1.1's list)", code=code)
 
 
+def hold_text(state: str) -> Message | str:
+    """``Hold:0`` .. ``Door:3`` (a status's state with its substate) in words; a plain
+    ``Hold`` or ``Door`` as GRBL names it; "" for a state that is not a hold."""
+    if state in HOLDS:
+        return msg(HOLDS[state])
+    if state.split(":")[0] in ("Hold", "Door"):
+        return msg("held ({state})", state=state)
+    return ""
+
+
 def unlock_advice(code: int | None) -> Message:
     """What to tell the operator before ``$X``: why the machine is locked and the risk."""
+    if code in RESET_FIRST:
+        return msg("Alarm {code}: {what}. The machine answers nothing until it is reset: reset it, "
+                   "then home ($H) it, since the position may be lost.", code=code, what=alarm_text(code))
     if code is None:
         return msg("The machine starts locked until it is homed ($H). Unlocking ($X) without homing "
                    "means it does not know where it is: jog carefully and home soon.")

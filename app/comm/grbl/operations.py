@@ -75,18 +75,21 @@ class GrblOperations:
 
     # ------------------------------------------------------------------ overrides
 
-    def _current_overrides(self) -> tuple[int, int, int]:
-        return self.grbl_status.overrides if self.grbl_status is not None else (100, 100, 100)
-
     def set_feed_override(self, percent: int) -> None:
-        data = _override_bytes(self._current_overrides()[0], percent, p.FEED_100,
-                               (p.FEED_PLUS_10, p.FEED_MINUS_10), (p.FEED_PLUS_1, p.FEED_MINUS_1))
-        for byte in data:
-            self._realtime(bytes([byte]))
+        self._step_override(0, percent, p.FEED_100, (p.FEED_PLUS_10, p.FEED_MINUS_10),
+                            (p.FEED_PLUS_1, p.FEED_MINUS_1))
 
     def set_spindle_override(self, percent: int) -> None:
-        data = _override_bytes(self._current_overrides()[2], percent, p.SPINDLE_100,
-                               (p.SPINDLE_PLUS_10, p.SPINDLE_MINUS_10), (p.SPINDLE_PLUS_1, p.SPINDLE_MINUS_1))
+        self._step_override(2, percent, p.SPINDLE_100, (p.SPINDLE_PLUS_10, p.SPINDLE_MINUS_10),
+                            (p.SPINDLE_PLUS_1, p.SPINDLE_MINUS_1))
+
+    def _step_override(self, index: int, percent: int, reset: bytes, tens, ones) -> None:
+        """The fewest bytes from what the machine has (or will have, once it reads what was
+        sent before: ``ReportMerger.overrides_now``) to ``percent``."""
+        target = max(10, min(200, int(percent)))
+        data = _override_bytes(self.merger.overrides_now()[index], target, reset, tens, ones)
+        if data and self.attached:
+            self.merger.expect(index, target)
         for byte in data:
             self._realtime(bytes([byte]))
 

@@ -3,7 +3,8 @@
 A backup file is GRBL's own ``$$`` print-out: one ``$n=value`` per line (comments after
 ``;`` or ``(``, blank lines allowed), so a file saved by another sender reads too.
 ``read_backup(text, name)`` -> ``{n: value}``, ``ValueError`` naming the file and line of
-a bad line; ``write_backup(settings)`` -> text; ``diff_settings(current, wanted)`` ->
+a bad line, of a setting given twice, or a file with no setting at all;
+``write_backup(settings)`` -> text; ``diff_settings(current, wanted)`` ->
 ``SettingChange`` rows (``old``/``new`` None for a setting only one side has), values
 compared as numbers; ``table(settings)`` -> rows of number, value, name, unit, meaning.
 """
@@ -52,6 +53,7 @@ def format_value(value) -> str:
 
 def read_backup(text: str, name: str = "<backup>") -> dict[int, str]:
     out: dict[int, str] = {}
+    where: dict[int, int] = {}
     for n, raw in enumerate(text.splitlines(), 1):
         line = re.split(r"[;(]", raw, maxsplit=1)[0].strip()
         if not line or line == "ok":
@@ -60,7 +62,13 @@ def read_backup(text: str, name: str = "<backup>") -> dict[int, str]:
         if match is None:
             raise ValueError(msg("{name}, line {line}: not a '$n=value' setting: {text}", name=name, line=n,
                                  text=raw.strip()[:60]))
-        out[int(match[1])] = match[2]
+        number = int(match[1])
+        if number in where:
+            raise ValueError(msg("{name}, line {line}: ${number} is given again (first on line {first})",
+                                 name=name, line=n, number=number, first=where[number]))
+        out[number], where[number] = match[2], n
+    if not out:
+        raise ValueError(msg("{name}: no '$n=value' setting in the file", name=name))
     return out
 
 
@@ -68,7 +76,8 @@ def write_backup(settings: dict[int, str]) -> str:
     return "".join(f"${n}={settings[n]}\n" for n in sorted(settings))
 
 
-def _same(a: str, b: str) -> bool:
+def same_value(a: str, b: str) -> bool:
+    """Two setting values alike (as numbers when both are; else as text)."""
     try:
         return math.isclose(float(a), float(b), rel_tol=0, abs_tol=1e-6)
     except ValueError:
@@ -79,7 +88,7 @@ def diff_settings(current: dict[int, str], wanted: dict[int, str]) -> list[Setti
     out = []
     for number in sorted(set(current) | set(wanted)):
         old, new = current.get(number), wanted.get(number)
-        if old is None or new is None or not _same(old, new):
+        if old is None or new is None or not same_value(old, new):
             out.append(SettingChange(number, old, new))
     return out
 

@@ -5,7 +5,13 @@
 position (``WPos = MPos - WCO``). ``to_status_event`` maps a ``GrblStatus`` onto the
 shared ``StatusEvent`` (state names of docs/protocol.md: Idle IDLE, Run RUN, Hold HOLD,
 Jog JOG, Home HOMING, Alarm ALARM, Door HOLD with flag C, Check IDLE, Sleep ALARM;
-flags ``H`` homed, ``C`` door open, ``P`` spindle on, ``W`` waiting at a program stop).
+flags ``H`` homed, ``C`` door open, ``P`` spindle on, ``W`` waiting at a program stop;
+``why`` GRBL's hold with its substate, ``Hold:0``..``Door:3``, for ``codes.hold_text``).
+
+Overrides asked for (``expect``) count as the machine's until a report shows them, or
+until the second report after the asking carries ``Ov:`` (the first may have been made
+before the bytes were read): ``overrides_now()``, what the next step is counted from, so
+a slider moved twice between two reports does not step twice from the same value.
 """
 
 from __future__ import annotations
@@ -31,16 +37,34 @@ class ReportMerger:
         self.overrides = (100, 100, 100)
         self.accessories = ""
         self.inches = False
+        self.merged = 0  # reports merged since the last reset
+        self._expected: dict[int, tuple[int, int]] = {}  # Ov index -> (percent, merged when asked)
 
     def reset(self) -> None:
         self.__init__()
 
+    def expect(self, index: int, percent: int) -> None:
+        """Override ``index`` (0 feed, 1 rapid, 2 spindle: GRBL's ``Ov`` order) was asked to
+        become ``percent``."""
+        self._expected[index] = (percent, self.merged)
+
+    def overrides_now(self) -> tuple[int, int, int]:
+        """The overrides as they are once what was asked for has been read (see the module)."""
+        return tuple(self._expected[k][0] if k in self._expected else v for k, v in enumerate(self.overrides))
+
+    def _reported_overrides(self, values) -> None:
+        self.overrides = tuple(values)
+        for index, (percent, asked_at) in list(self._expected.items()):
+            if values[index] == percent or self.merged > asked_at + 1:
+                del self._expected[index]
+
     def merge(self, report: Report, now: float) -> GrblStatus:
         scale = INCH if self.inches else 1.0
+        self.merged += 1
         if report.wco is not None:
             self.wco = _mm(report.wco, scale)
         if report.overrides is not None:
-            self.overrides = report.overrides
+            self._reported_overrides(report.overrides)
             self.accessories = report.accessories or ""
         elif report.accessories is not None:
             self.accessories = report.accessories
@@ -71,5 +95,6 @@ def to_status_event(status: GrblStatus, boot: str, acc: int, done: int, homed: b
     x, y, z = status.wpos
     free = status.planner_free if status.planner_free is not None else -1
     feed, rapid, spindle = status.overrides  # GRBL's Ov order; the event's is feed, spindle, rapid
+    why = f"{status.state}:{status.substate or 0}" if status.state in ("Hold", "Door") else ""
     return StatusEvent(boot, STATES.get(status.state, status.state.upper()), x, y, z, acc, done,
-                       free, int(status.rpm), flags, status.time, overrides=(feed, spindle, rapid))
+                       free, int(status.rpm), flags, status.time, why, overrides=(feed, spindle, rapid))

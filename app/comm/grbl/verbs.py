@@ -2,8 +2,14 @@
 can send the same words to either driver (a mixin of ``GrblSession``).
 
 ``send_command(text)``: ``SPINDLE <rpm>`` / ``SPINDLE OFF`` -> ``M3 S<rpm>`` / ``M5``;
-``ZERO X Y Z`` (any of them) -> ``G10 L20 P1 X0 ..`` (work zero here, in G54), answered
-with the new zero once a report carries it;
+``ZERO X Y Z`` (any of them) -> ``G10 L20 P<n> X0 ..`` (work zero here, in the active
+system ``$G`` names), answered with the new zero once a report carries it;
+the work systems as the frame protocol names them (docs/protocol.md "Work coordinate
+systems"): ``GET WCS`` reads ``$#`` and ``$G`` and answers ``WCS 54``..``59``; ``GET
+G55_X`` answers from the last ``$#``; ``SET WCS 55`` sends ``G55``, ``SET G55_X v`` sends
+``G21 G10 L2 P2 X..`` and reads ``$#`` again (both answered once a report has come after:
+its ``WCO`` is the new one). Their values are machine millimetres from the near end of
+GRBL's travel, as ``GET OFFSET_X`` (below);
 ``SET CHECK 1|0`` -> ``$C`` when the mode differs; ``SET OPTSTOP 1|0`` is the host's own
 switch; ``GET OFFSET_X|Y|Z`` is answered from the live ``WCO``, as machine millimetres
 from the near end of GRBL's travel (the frame protocol's machine frame), once ``$$`` and a
@@ -15,11 +21,15 @@ GRBL). Any other line goes to the machine as it is (``G0 X10``, ``$$``, ``$H``).
 
 from __future__ import annotations
 
+import re
+
 from app.comm.events import CommandResult, JobEvent
 from app.comm.grbl.dialect import axis_range
 from app.i18n import msg
 
 _AXES = ("X", "Y", "Z")
+_ROW = re.compile(r"G(5[4-9])_([XYZ])")
+_SYSTEMS = tuple(f"G{n}" for n in range(54, 60))
 
 
 class FrameVerbs:
@@ -81,7 +91,7 @@ class FrameVerbs:
 
         self._deferred.append((cid, verb, tuple(args), lambda: self._work_zero_text() if after and
                                self.reports > after[0] else None))
-        self.command(f"G10 L20 P1 {words}", then=written)
+        self.command(f"G10 L20 P{self.active_system() - 53} {words}", then=written)
         return cid
 
     def _verb_home(self, verb: str, args) -> int:
@@ -102,20 +112,93 @@ class FrameVerbs:
         if args[:1] == ["OPTSTOP"] and len(args) > 1:
             self.optional_stop = args[1] not in ("0", "OFF")
             return self._local(verb, args, info=f"OPTSTOP {int(self.optional_stop)}")
+        if args[:1] == ["WCS"] and args[1:2] and args[1] in {s[1:] for s in _SYSTEMS}:
+            return self._chain(verb, args, [f"G{args[1]}", "$G"], lambda: f"WCS {self.active_system()}")
+        row = _ROW.fullmatch(args[0]) if len(args) == 2 else None
+        if row is not None:
+            return self._set_row(verb, args, int(row[1]), "XYZ".index(row[2]))
         return self._unsupported(verb, args)
+
+    def _set_row(self, verb: str, args, system: int, k: int) -> int:
+        try:
+            value = float(args[1])
+        except ValueError:
+            value = float("nan")
+        if not (abs(value) < 1e6) or 130 + k not in self.settings:
+            return self._local(verb, args, False, msg("{name}: {value} is not a work offset in millimetres",
+                                                      name=args[0], value=args[1]), "BAD_ARGS")
+        grbl = value + axis_range(self.settings, k)[0]
+        line = f"G21 G10 L2 P{system - 53} {_AXES[k]}{grbl:.3f}"
+        return self._chain(verb, args, [line, "$#"], lambda: self._row_text(args[0], system, k))
 
     def _verb_get(self, verb: str, args) -> int:
         """``GET OFFSET_X|Y|Z``: answered once the machine has reported its travel ($$) and a
-        WCO; anything else is not on GRBL."""
+        WCO; ``GET WCS`` and ``GET G5x_A`` (see the module); anything else is not on GRBL."""
         name = args[0] if args else ""
+        if name == "WCS":
+            return self._chain(verb, args, ["$#", "$G"], lambda: f"WCS {self.active_system()}")
+        row = _ROW.fullmatch(name)
+        if row is not None:
+            system, k = int(row[1]), "XYZ".index(row[2])
+            return self._deferred_answer(verb, args, lambda: self._row_text(name, system, k))
         if name not in ("OFFSET_X", "OFFSET_Y", "OFFSET_Z"):
             return self._unsupported(verb, args)
         k = "XYZ".index(name[-1])
+        return self._deferred_answer(verb, args, lambda: f"{name} {self._work_zero()[k]:.3f}"
+                                     if self._work_zero() is not None else None)
+
+    def _deferred_answer(self, verb: str, args, answer) -> int:
+        """A local command answered (``answer()`` not None) once the machine has reported it."""
         cid = self._reserve_id()
-        self._deferred.append((cid, verb, tuple(args), lambda: f"{name} {self._work_zero()[k]:.3f}"
-                               if self._work_zero() is not None else None))
+        self._deferred.append((cid, verb, tuple(args), answer))
         self.answer_deferred()
         return cid
+
+    def _chain(self, verb: str, args, lines: list[str], answer) -> int:
+        """Send ``lines`` one after the other (each once the one before is answered ok), then
+        answer ``verb args`` with ``answer()`` once a report has come after the last: a
+        failed line ends it with that line's refusal."""
+        cid = self._reserve_id()
+        args = tuple(args)
+
+        def send(index: int) -> None:
+            def answered(result) -> None:
+                if not result.ok:
+                    self._command_done(CommandResult(cid, verb, args, False, result.info, result.code))
+                elif index + 1 < len(lines):
+                    send(index + 1)
+                else:
+                    mark = self.reports
+                    fresh = lambda: answer() if self.reports > mark else None  # noqa: E731
+                    self._deferred.append((cid, verb, args, fresh))
+                    self.answer_deferred()
+
+            self.command(lines[index], then=answered)
+
+        send(0)
+        return cid
+
+    def active_system(self) -> int:
+        """The work system in force (54..59) as the last ``$G`` said; 54 before one."""
+        words = self.parser_state.split()
+        return next((int(w[1:]) for w in words if w in _SYSTEMS), 54)
+
+    def system_offset(self, system: int):
+        """The zero of ``G<system>`` from the last ``$#``, in millimetres from the near end of
+        GRBL's travel (as ``_work_zero``), or None before ``$#`` and ``$$``."""
+        text = self.parameters.get(f"G{system}")
+        if text is None or any(130 + k not in self.settings for k in range(3)):
+            return None
+        try:
+            values = [float(v) for v in text.split(":")[0].split(",")[:3]]
+        except ValueError:
+            return None
+        scale = 25.4 if self.settings.get(13) == "1" else 1.0
+        return tuple(v * scale - axis_range(self.settings, k)[0] for k, v in enumerate(values))
+
+    def _row_text(self, name: str, system: int, k: int):
+        offset = self.system_offset(system)
+        return None if offset is None or len(offset) <= k else f"{name} {offset[k]:.3f}"
 
     def _work_zero(self):
         """The work zero in millimetres from the near end of GRBL's travel (the frame

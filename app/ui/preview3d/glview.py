@@ -5,8 +5,14 @@ classes (no PyOpenGL).
 Geometry goes to the GPU once per model (``set_mesh``); the progress of a job is a
 uniform (``set_done_vertex``: O(1), nothing uploaded), the measured path only sends
 its new rows. While the camera moves, the path is drawn from the mesh's level of
-detail sized to the pixels and a frame budget; SETTLE_MS after the last move the
-full model is drawn again, a slice per frame for a big one (``fullframe``). A context
+detail sized to the pixels and a frame budget; SETTLE_MS after the last move full
+detail is drawn again, a slice per frame for a big one (``fullframe``): the coarsest
+level whose cells are at most FULL_CELL_PIXELS of a pixel (it draws the same picture
+as every segment, but for a few pixels one off: ``tests/ui/test_preview3d_full.py``),
+or every segment when no level is that fine; of either only the chunks the camera
+sees (``chunks``), and the pictures of the last poses are kept for when the camera
+comes back (``FullFrame``). Path lines are opaque (rapids a darker
+colour, not see-through), so a line drawn twice looks as drawn once. A context
 or shader that cannot be made ends in ``gl_failed`` with the reason, and the widget
 then draws nothing.
 """
@@ -25,14 +31,16 @@ from PySide6.QtOpenGLWidgets import QOpenGLWidget
 from app.ui.preview.widget import DONE_COLOUR, group_colours
 from app.ui.preview3d import shaders
 from app.ui.preview3d.camera import Camera
-from app.ui.preview3d.fullframe import SLICE_SEGMENTS, FullFrame
+from app.ui.preview3d.chunks import visible_runs
+from app.ui.preview3d.fullframe import SLICE_SEGMENTS, FullFrame, FullSource
 from app.ui.preview3d.measured import RAMP, TOLERANCE_MM, MeasuredPath
 from app.ui.preview3d.mesh import PathMesh
 
-SETTLE_MS = 100  # full detail this long after the camera stops
+SETTLE_MS = 50  # full detail this long after the camera stops (a drag moves every ~16 ms)
 MOVING_BUDGET = 60_000  # segments per frame while the camera moves (llvmpipe: ~8 M segments/s)
 LOD_PIXELS = 1.0  # cell of the level drawn while moving, in pixels
-RAPID_ALPHA = 0.45  # rapids are drawn faint
+FULL_CELL_PIXELS = 0.5  # cell of a level drawn as full detail, in pixels (test_preview3d_full)
+RAPID_SHADE = 0.45  # rapids are drawn faint: their colour this dark, opaque (drawn twice, the same)
 ORBIT_DEG_PER_PX = 0.4
 WHEEL_STEP = 1.0015  # zoom factor per 1/8 degree of wheel
 GL_LINES, GL_LINE_STRIP = 0x0001, 0x0003
@@ -51,9 +59,9 @@ def surface_format() -> QSurfaceFormat:
     return fmt
 
 
-def _rgba(hex_colour: str, alpha: float = 1.0) -> list[float]:
+def _rgba(hex_colour: str, shade: float = 1.0) -> list[float]:
     c = QColor(hex_colour)
-    return [c.redF(), c.greenF(), c.blueF(), alpha]
+    return [c.redF() * shade, c.greenF() * shade, c.blueF() * shade, 1.0]
 
 
 class PathGLView(QOpenGLWidget):
@@ -80,11 +88,13 @@ class PathGLView(QOpenGLWidget):
         self._mesh_serial = 0
         self._refiner = QTimer(self, singleShot=True, interval=0, timeout=self._refine)
         self.direct_segments = SLICE_SEGMENTS  # up to this many, full detail in one frame
+        self.full_cell_pixels = FULL_CELL_PIXELS  # 0: full detail draws every segment
+        self.full_lines = 0  # the lines the last full picture drew
         self._gl = None
         self._settle = QTimer(self, singleShot=True, interval=SETTLE_MS, timeout=self._settled)
         self._press: tuple[QPointF, Qt.MouseButton] | None = None
         colours = group_colours()
-        self._colours = [_rgba(c, RAPID_ALPHA if i == 0 else 1.0) for i, c in enumerate(colours)]
+        self._colours = [_rgba(c, shade=RAPID_SHADE if i == 0 else 1.0) for i, c in enumerate(colours)]
         self._colours += [[1.0, 1.0, 1.0, 1.0]] * (8 - len(self._colours))
 
     # -- what to draw -------------------------------------------------------------------
@@ -92,6 +102,7 @@ class PathGLView(QOpenGLWidget):
     def set_mesh(self, mesh: PathMesh | None, fit: bool = True) -> None:
         self.mesh = mesh
         self._mesh_serial += 1  # (an id() may come back for another mesh)
+        self._full.forget()  # the pictures of the last model (their buffers go with them)
         self._pending["mesh"] = self._pending["levels"] = True
         if fit:
             self.fit()
@@ -180,13 +191,12 @@ class PathGLView(QOpenGLWidget):
         self._upload()
         f.glClearColor(0.0, 0.0, 0.0, 1.0)
         f.glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT)
-        f.glEnable(GL_DEPTH_TEST)
-        f.glDepthFunc(GL_LEQUAL)
-        f.glEnable(GL_BLEND)
-        f.glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA)
+        _path_state(f)
         mvp = QMatrix4x4(*self.camera.matrix().ravel())
         self._draw_path(f, mvp)  # first: a full-detail picture is copied over the whole frame
         self._draw_lines(f, mvp)
+        f.glEnable(GL_BLEND)  # the measured path's rapids are see-through
+        f.glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA)
         f.glDisable(GL_DEPTH_TEST)  # the measured path is drawn over the programmed one
         self._draw_measured(f, mvp)
         self.frame_drawn.emit()
@@ -211,11 +221,13 @@ class PathGLView(QOpenGLWidget):
         moving = self._level(pixel * LOD_PIXELS, MOVING_BUDGET) if self.moving else None
         if moving is not None:
             self._draw_level(*moving)
-        elif mesh.segments <= self.direct_segments:
-            f.glDrawArrays(GL_LINE_STRIP, 0, len(mesh.points))
-            self.drawn = ("full", mesh.segments)
         else:
-            self._draw_full_picture(f)
+            source = self._full_source(f)
+            if source.total <= self.direct_segments:
+                source.draw(0, source.total)
+                self.drawn, self.full_lines = ("full", mesh.segments), source.total
+            else:
+                self._draw_full_picture(f, source)
         self._vao["path"].release()
 
     def _bind_path(self, mvp) -> None:
@@ -227,22 +239,39 @@ class PathGLView(QOpenGLWidget):
         program.setUniformValue("u_done_colour", *_rgba(DONE_COLOUR))
         self._vao["path"].bind()
 
-    def _full_key(self):
-        return self._mesh_serial, tuple(self.camera.matrix().ravel())
+    def _full_source(self, f) -> FullSource:
+        """What full detail draws at this zoom: the coarsest level whose cells are at most
+        FULL_CELL_PIXELS of a pixel (it looks like every segment), else the whole strip."""
+        mesh = self.mesh
+        level = None
+        if self.full_cell_pixels > 0 and len(self._level_buffers) == len(mesh.levels):
+            level = mesh.pick_full(self.camera.pixel(self.height()), self.full_cell_pixels)
+        if level is None:
+            runs = [(0, mesh.segments)] if mesh.boxes is None else visible_runs(
+                mesh.boxes, self.camera.project, mesh.segments)  # (boxes come with the levels)
+            return FullSource.strip(f, runs, self.done_vertex)
+        index = next(i for i, candidate in enumerate(mesh.levels) if candidate is level)
+        self._level_buffers[index].bind()  # the path's VAO keeps it
+        runs = visible_runs(level.boxes, self.camera.project, len(level.ends))
+        return FullSource.spans(self._draw_elements, level, index, runs, self.done_vertex)
 
-    def _draw_full_picture(self, f) -> None:
+    def _full_key(self, source: FullSource):
+        return self._mesh_serial, source.name, tuple(self.camera.matrix().ravel())
+
+    def _draw_full_picture(self, f, source: FullSource) -> None:
         """The full picture when it is whole (with the newly finished segments drawn over
         it); until then a level of detail, while ``_refine`` draws it between frames."""
-        mesh, full = self.mesh, self._full
+        full = self._full
         ratio = self.devicePixelRatioF()
         size = QSize(round(self.width() * ratio), round(self.height() * ratio))
-        full.prepare(f, self._full_key(), size, len(mesh.points) - 1, self.done_vertex)
-        full.overdraw(self._strip(f), self.done_vertex)
+        full.prepare(f, self._full_key(source), size, source.total, source.done)
+        full.overdraw(source.draw, source.done)
         level = None if full.complete else self._level(self.camera.pixel(self.height()) * LOD_PIXELS,
                                                        MOVING_BUDGET)
         if level is None:
             full.blit()
-            self.drawn = ("full" if full.complete else "partial", full.next)
+            self.drawn = ("full", self.mesh.segments) if full.complete else ("partial", full.next)
+            self.full_lines = source.total
         else:
             self._draw_level(*level)
         if not full.complete:
@@ -252,30 +281,24 @@ class PathGLView(QOpenGLWidget):
         """One slice of the full picture, outside any frame (no window to compose each
         time); the widget repaints once it is whole."""
         full, mesh = self._full, self.mesh
-        if self._gl is None or mesh is None or full.complete or full.key != self._full_key():
-            return  # the next frame starts it again for what is shown then
+        if self._gl is None or mesh is None or full.complete:
+            return
         self.makeCurrent()
         f = self._gl
         self._bind_path(QMatrix4x4(*self.camera.matrix().ravel()))
-        f.glEnable(GL_DEPTH_TEST)
-        f.glDepthFunc(GL_LEQUAL)
-        f.glEnable(GL_BLEND)
-        f.glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA)
-        started = time.perf_counter()
-        sliced = full.slice(self._strip(f))
-        f.glFinish()  # the slice's own time
-        full.tune(time.perf_counter() - started, sliced)
+        source = self._full_source(f)
+        if full.key == self._full_key(source):  # else the next frame starts what is shown then
+            _path_state(f)
+            started = time.perf_counter()
+            sliced = full.slice(source.draw)
+            f.glFinish()  # the slice's own time
+            full.tune(time.perf_counter() - started, sliced)
         self._vao["path"].release()
         self.doneCurrent()
-        if full.complete:
+        if full.key != self._full_key(source) or full.complete:
             self.update()
         else:
             self._refiner.start()
-
-    @staticmethod
-    def _strip(f):
-        """Draw vertices first..last as a line strip with the bound program."""
-        return lambda first, last: f.glDrawArrays(GL_LINE_STRIP, first, last - first + 1)
 
     def _level(self, pixel: float, budget: int) -> tuple[int, int] | None:
         """(level, segments) for this pixel size and budget; None without levels (or when the
@@ -289,7 +312,7 @@ class PathGLView(QOpenGLWidget):
 
     def _draw_level(self, index: int, count: int) -> None:
         self._level_buffers[index].bind()  # the path's VAO keeps it
-        self._draw_elements(GL_LINES, 2 * count, GL_UNSIGNED_INT, None)  # from the buffer's start
+        self._draw_elements(GL_LINES, 2 * count, GL_UNSIGNED_INT, None)  # the whole level
         self.drawn = ("level", count)
 
     def _draw_measured(self, f, mvp) -> None:
@@ -405,6 +428,14 @@ class PathGLView(QOpenGLWidget):
     def ndc(self, pos: QPointF) -> tuple[float, float]:
         """Widget pixels -> normalised device coordinates."""
         return 2 * pos.x() / max(self.width(), 1) - 1, 1 - 2 * pos.y() / max(self.height(), 1)
+
+
+def _path_state(f) -> None:
+    """Opaque lines with the depth test: a later line wins at equal depth, and drawing a
+    line twice changes nothing (what lets a level stand for repeated segments)."""
+    f.glEnable(GL_DEPTH_TEST)
+    f.glDepthFunc(GL_LEQUAL)
+    f.glDisable(GL_BLEND)
 
 
 _DRAW_ELEMENTS = ctypes.CFUNCTYPE(None, ctypes.c_uint, ctypes.c_int, ctypes.c_uint, ctypes.c_void_p)

@@ -8,11 +8,19 @@ one line strip whose segment ``i`` takes the attributes of its last vertex, so t
 vertex index is the segment index: the finished part of a job is every vertex up to
 ``vertex_of_move(move)``, compared in the shader with one number.
 
-Level of detail: ``levels[k]`` keeps, for cells of ``cells[k]`` millimetres (the 2-D
-view's ``LEVEL_STEPS`` from extent / 2048 on), the first segment of each (start cell,
-end cell) pair in 3-D, as the 2-D view does in XY; depth passes over the same XY stay
-apart since their cells differ in Z. A level is an index array of segment ends drawn
-as pairs (``i - 1``, ``i``); each is built from the next finer one.
+Levels of detail: ``levels[k]`` is the path as seen with cells of ``cells[k]``
+millimetres (extent / 2**k for k in STEPS). The chain of vertices is simplified first:
+of a run of consecutive vertices in one 3-D cell only the first stays (and the last
+vertex of a run of one group, so a kept span never mixes colours); then, of the spans
+that start and end in the same two cells in the same group, only the last in program
+order stays (the one a full draw shows on top, done or not, since later lines win at
+equal depth). Every vertex of the path is within a cell's diagonal of what a level
+draws, so a level whose cell is a small fraction of a pixel looks like the full path
+(``pick_full``), and a coarser one is drawn while the camera moves (``pick_level``).
+A level is kept spans (start vertex, end vertex), ends ascending, drawn as line pairs
+whose colour and progress are the end vertex's. Each level is built from the finer
+one's spans (cells nest; a path of a million repeated segments costs one full pass);
+a level that keeps more than USEFUL of the path is not made.
 """
 
 from __future__ import annotations
@@ -21,26 +29,33 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from app.ui.preview.lod import LEVEL_STEPS
+from app.ui.preview3d.chunks import span_boxes, strip_boxes
 
 POSITION_BYTES = 12  # float32 x, y, z
 GROUP_BYTES = 1  # uint8
-INDEX_BYTES = 8  # two uint32 per segment of a level
-STEPS = [k for k in LEVEL_STEPS if k <= 11]  # finer cells than extent / 2048 keep almost every segment
+INDEX_BYTES = 8  # two uint32 per span of a level
+STEPS = range(15, 5, -1)  # cells of extent / 2**k, finest first
+USEFUL = 0.6  # a level keeping more than this share of the segments is not made (not worth its memory)
 _MIX = np.int64(0x2545F4914F6CDD1D >> 1)  # an odd multiplier that spreads the start cell
 
 
 @dataclass(frozen=True)
 class MeshLevel:
     cell: float  # mm
-    ends: np.ndarray  # (k,) uint32 end vertex of each kept segment, ascending
+    starts: np.ndarray  # (k,) uint32 first vertex of each kept span
+    ends: np.ndarray  # (k,) uint32 its last vertex, ascending
+    boxes: np.ndarray  # (chunks, 2, 3) of its spans (chunks.span_boxes)
 
     def pairs(self) -> np.ndarray:
-        """(2k,) uint32 vertex indices drawn as lines: (end - 1, end) per segment."""
+        """(2k,) uint32 vertex indices drawn as lines: (start, end) per span."""
         out = np.empty((len(self.ends), 2), np.uint32)
-        out[:, 0] = self.ends - 1
+        out[:, 0] = self.starts
         out[:, 1] = self.ends
         return out.ravel()
+
+    def spans_done(self, vertex: int) -> int:
+        """How many spans end at or before ``vertex`` (the finished ones: a prefix)."""
+        return int(np.searchsorted(self.ends, vertex, "right")) if vertex >= 0 else 0
 
 
 @dataclass
@@ -49,6 +64,7 @@ class PathMesh:
     group: np.ndarray  # (m,) uint8
     move: np.ndarray  # (m,) int64 (kept on the CPU: move -> vertex)
     levels: list[MeshLevel] = field(default_factory=list)  # finest first
+    boxes: np.ndarray | None = None  # (chunks, 2, 3) of the strip (chunks.strip_boxes), with the levels
 
     @classmethod
     def from_geometry(cls, geometry) -> PathMesh:
@@ -87,22 +103,30 @@ class PathMesh:
         return [extent / 2**k for k in STEPS]
 
     def build_levels(self) -> None:
-        """Every level, finest first, each from the one before (cells nest)."""
+        """The strip's chunk boxes and every useful level, finest first, each from the
+        finer one's spans."""
+        self.boxes = strip_boxes(self.points)
         if self.segments == 0:
             self.levels = []
             return
-        low, high = self.bounds()
-        origin, span = low.astype(np.float32), float(np.max(high - low))
-        ends = np.arange(1, len(self.points), dtype=np.uint32)
+        low, _ = self.bounds()
+        origin = low.astype(np.float32)
+        chain = np.arange(len(self.points), dtype=np.uint32)
+        begins = np.zeros(len(chain), bool)  # where a run of the chain begins (none joins the one before)
+        begins[0] = True
         levels = []
         for cell in self.cells():
-            ends = _representatives(self.points, origin, span, ends, cell)
-            levels.append(MeshLevel(cell, ends))
+            cells = _cell_keys(self.points, origin, chain, cell)
+            chain, cells, begins = _simplified(chain, cells, self.group, begins)
+            starts, ends = _last_of_each_span(chain, cells, self.group, begins)
+            if len(ends) <= USEFUL * self.segments:
+                levels.append(MeshLevel(cell, starts, ends, span_boxes(self.points, starts, ends)))
+            chain, begins = _chain_of(starts, ends)  # the next level from this one's spans
         self.levels = levels
 
     def pick_level(self, pixel: float, budget: int) -> MeshLevel | None:
         """The coarsest level whose cell is no larger than ``pixel`` (the finest when none
-        is), or a coarser one until its segments fit ``budget`` (at last the coarsest);
+        is), or a coarser one until its spans fit ``budget`` (at last the coarsest);
         ``None`` when the levels are not built."""
         if not self.levels:
             return None
@@ -112,16 +136,55 @@ class PathMesh:
                 return level
         return self.levels[-1]
 
-def _representatives(points, origin, span, ends, cell) -> np.ndarray:
-    """The ends (ascending: program order) of the first segment of every 3-D (start
-    cell, end cell) pair among the segments ending at ``ends``. The pair is hashed to
-    one int64 (wrapping; two pairs of a level collide with odds of about n**2 / 2**64)."""
-    side = int(span / cell) + 2  # cells along the longest axis, and one to spare
-    key = np.zeros(len(ends), np.int64)
-    for vertex in (ends - 1, ends):
-        q = ((np.take(points, vertex, axis=0) - origin) / np.float32(cell)).astype(np.int64)  # (a take
-        key = key * _MIX + (q[:, 0] * side + q[:, 1]) * side + q[:, 2]  # lets the GIL go, indexing not)
+    def pick_full(self, pixel: float, fraction: float) -> MeshLevel | None:
+        """The coarsest level whose cell is at most ``fraction`` of ``pixel`` (its picture is
+        the full path's, to the pixel); ``None``: none is, draw every segment."""
+        fine = [level for level in self.levels if level.cell <= pixel * fraction]
+        return fine[-1] if fine else None
+
+
+def _cell_keys(points, origin, chain, cell) -> np.ndarray:
+    """One int64 per vertex of ``chain``: the 3-D cell it lies in."""
+    q = ((np.take(points, chain, axis=0) - origin) / np.float32(cell)).astype(np.int64)  # (a take lets
+    side = np.int64(q.max() + 2)  # the GIL go, indexing does not)
+    return (q[:, 0] * side + q[:, 1]) * side + q[:, 2]
+
+
+def _simplified(chain, cells, group, begins) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Of each run of ``chain`` in one cell its first vertex, of each run of one group
+    its last, and the ends of the chain's runs: (vertices, their cells, run begins)."""
+    g = np.take(group, chain)
+    keep = np.ones(len(chain), bool)
+    keep[1:-1] = (cells[1:-1] != cells[:-2]) | (g[1:-1] != g[2:]) | begins[1:-1] | begins[2:]
+    return chain[keep], cells[keep], begins[keep]
+
+
+def _last_of_each_span(chain, cells, group, begins) -> tuple[np.ndarray, np.ndarray]:
+    """The spans (chain[i - 1], chain[i]) within runs, of those with the same start cell,
+    end cell and group only the last; in program order. The three are hashed to one
+    int64 (wrapping; two spans of a level collide with odds of about n**2 / 2**64)."""
+    inner = np.flatnonzero(~begins[1:]) + 1  # the vertices that end a span
+    ends = np.take(chain, inner)
+    key = np.take(cells, inner - 1) * _MIX + np.take(cells, inner)
+    key = key * _MIX + np.take(group, ends).astype(np.int64)
     order = np.argsort(key, kind="stable")  # (its GIL holds are the shortest; np.unique's are long)
     ordered = np.take(key, order)
     runs = np.flatnonzero(np.concatenate([[True], ordered[1:] != ordered[:-1]]))
-    return np.take(ends, np.sort(np.minimum.reduceat(order, runs)))
+    kept = np.take(inner, np.sort(np.maximum.reduceat(order, runs)))
+    return np.take(chain, kept - 1), np.take(chain, kept)
+
+
+def _chain_of(starts, ends) -> tuple[np.ndarray, np.ndarray]:
+    """Spans in program order as one vertex list: a span that does not start where the
+    one before ended begins a new run. (vertices, run begins)."""
+    joined = np.zeros(len(ends), bool)
+    joined[1:] = starts[1:] == ends[:-1]
+    counts = 2 - joined.astype(np.int64)
+    at = np.cumsum(counts) - counts
+    chain = np.empty(int(counts.sum()), np.uint32)
+    begins = np.zeros(len(chain), bool)
+    fresh = np.flatnonzero(~joined)
+    chain[at[fresh]] = starts[fresh]
+    begins[at[fresh]] = True
+    chain[at + counts - 1] = ends
+    return chain, begins

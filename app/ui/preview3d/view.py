@@ -6,8 +6,8 @@ a reason (no context, too old a version) leaves a message in its place, says so 
 ``unavailable``, and the window keeps its 2-D view. The GL widget is made the first
 time the view is shown, and the mesh of a program is built then, on a thread
 (``MeshBuilder``): the positions first, drawn at once, then the levels of detail.
-``follow(window)`` reads the open program, the job's progress, the tool position and
-the measured path from the window at 30 Hz (``feed.WindowFeed``).
+``follow(window)`` follows the open program, the job's progress, the tool position and
+the measured path by the window's signals (``feed.WindowFeed``).
 """
 
 from __future__ import annotations
@@ -15,7 +15,7 @@ from __future__ import annotations
 import threading
 
 import numpy as np
-from PySide6.QtCore import QCoreApplication, QEvent, QObject, Qt, QTimer, Signal
+from PySide6.QtCore import QCoreApplication, QEvent, QObject, Qt, Signal
 from PySide6.QtGui import QColor, QGuiApplication, QOffscreenSurface, QOpenGLContext
 from PySide6.QtWidgets import QHBoxLayout, QLabel, QPushButton, QStackedWidget, QVBoxLayout, QWidget
 
@@ -28,7 +28,6 @@ from app.ui.preview3d.feed import WindowFeed
 from app.ui.preview3d.measured import TOLERANCE_MM, MeasuredPath, deviation_colour
 from app.ui.preview3d.mesh import PathMesh
 
-FOLLOW_MS = 33
 AXIS_FRACTION = 0.12  # axes as long as this much of the travel
 JUMP_HALF_HEIGHT = 4.0  # mm of view around the largest deviation
 NO_GL_WIDGETS = ("offscreen", "minimal")  # Qt platforms whose windows cannot show a QOpenGLWidget
@@ -111,8 +110,7 @@ class Preview3D(QWidget):
         self.builder.levels_built.connect(self._levels_built)
         self._built_for = None  # the model whose mesh was asked for
         self._done_seq = -1
-        self._feed = None
-        self._follow = QTimer(self, interval=FOLLOW_MS, timeout=self._poll)
+        self.feed = None
         self._build_ui()
         self.retranslate_ui()
 
@@ -292,24 +290,8 @@ class Preview3D(QWidget):
     # -- a job ----------------------------------------------------------------------------
 
     def follow(self, window) -> None:
-        """Follow ``window``'s program, job, tool and measured path (polled at 30 Hz)."""
-        self._feed = WindowFeed(window)
-        self._follow.start()
-
-    def _poll(self) -> None:
-        change = self._feed.poll()
-        if change.tools is not None:
-            self.set_tools(change.tools)
-        if change.loaded is not None:
-            self.show_model(change.loaded.preview, change.loaded.program, keep_camera=change.same_program)
-        if change.job_started:
-            self.begin_job()
-        if change.done_seq is not None:
-            self.set_done(change.done_seq)
-        if change.tool is not None:
-            self.set_tool(*change.tool)
-        if change.measured is not None:
-            self.add_measured(change.measured, change.commanded)
+        """Follow ``window``'s program, job, tool and measured path (by its signals)."""
+        self.feed = WindowFeed(window, self)
 
     def begin_job(self) -> None:
         self.measured.clear()
@@ -317,12 +299,12 @@ class Preview3D(QWidget):
         self.deviation_label.clear()
         self.set_done(-1)
 
-    def _executing_rapid(self) -> bool:
-        """Whether the move after the last finished one is a rapid."""
+    def _executing_rapid(self, done: int) -> bool:
+        """Whether the move after device line ``done`` (the last finished) is a rapid."""
         if self.model is None or self.model.empty:
             return False
         kind = self.model.toolpath.kind
-        move = self.model.move_of_device_line(self._done_seq + 1)
+        move = self.model.move_of_device_line(done + 1)
         return 0 <= move < len(kind) and int(kind[move]) == RAPID
 
     def set_done(self, seq: int) -> None:
@@ -336,11 +318,14 @@ class Preview3D(QWidget):
         self.tool_at = (x, y, z)
         self._update_lines()
 
-    def add_measured(self, measured: np.ndarray, commanded: np.ndarray) -> None:
-        """New rows of the job's measured path (taken during the move being executed)."""
-        rapid = self._executing_rapid()
-        for m, c in zip(np.atleast_2d(measured), np.atleast_2d(commanded), strict=True):
-            self.measured.append(m, c, rapid)
+    def add_measured(self, measured: np.ndarray, commanded: np.ndarray, done=None) -> None:
+        """New rows of the job's measured path, each taken during the move after its
+        ``done`` (the last finished device line when the machine reported it; default:
+        the job's last finished line now)."""
+        rows = np.atleast_2d(measured)
+        dones = [self._done_seq] * len(rows) if done is None else [int(d) for d in done]
+        for m, c, d in zip(rows, np.atleast_2d(commanded), dones, strict=True):
+            self.measured.append(m, c, self._executing_rapid(d))
         if self.gl is not None:
             self.gl.update()
 

@@ -103,3 +103,34 @@ def test_jog_cancel_flushes_the_jog(grbl):
     assert grbl.say(b"?").startswith("<Jog")
     grbl.say(b"\x85", 2.0)
     assert grbl.say(b"?").startswith("<Idle")
+
+
+def test_a_setting_write_is_deaf_until_its_eeprom_write_ends_then_answers(grbl):
+    port = grbl.host_port
+    port.write(b"$110=500\n")
+    grbl.run_for(0.005)  # the line is read: the EEPROM write has begun
+    port.write(b"$111=500\n?")  # sent without waiting: lost, as on the real part
+    grbl.run_for(0.2)
+    assert port.read(port.in_waiting).decode() == "ok\r\n"
+    assert grbl.machine.lost_to_eeprom == len(b"$111=500\n?")
+    assert grbl.machine.settings[110] == 500 and grbl.machine.settings[111] != 500
+    assert grbl.say(b"$111=500\n") == "ok\r\n"
+
+
+def test_a_reset_brings_the_overrides_back_to_100(grbl):
+    grbl.say(b"$X\n")
+    grbl.say(bytes([0x91, 0x91, 0x9B]))
+    assert grbl.machine.overrides == [120, 100, 90]
+    grbl.say(b"\x18")
+    assert grbl.machine.overrides == [100, 100, 100]
+
+
+def test_settings_and_parameters_wait_for_idle_or_alarm_as_grbl_does(grbl):
+    grbl.say(b"$X\n")
+    assert grbl.say(b"$C\n").endswith("ok\r\n")
+    assert grbl.say(b"$#\n") == "error:8\r\n" and grbl.say(b"$1=30\n") == "error:8\r\n"
+    assert grbl.say(b"$$\n").endswith("ok\r\n")  # only a cycle or a hold blocks the print-out
+    grbl.say(b"$C\n")  # leaving check mode resets
+    grbl.say(b"$X\n")
+    assert grbl.say(b"G1 X100 F300\n", 0.3) == "ok\r\n"
+    assert grbl.say(b"$$\n") == "error:8\r\n" and grbl.say(b"$#\n") == "error:8\r\n"
