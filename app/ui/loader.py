@@ -48,11 +48,23 @@ class LoadedProgram:
     model_s: float  # preview model
 
 
+@dataclass(frozen=True)
+class ReadAgain:
+    """A program read again from the machine's position (``Program.from_start``) for the
+    request ``token``: ``job`` (its device lines rendered), or ``error`` (a sentence)."""
+
+    token: object
+    program: object
+    job: object = None
+    error: str = ""
+
+
 class ProgramLoader(QObject):
     loaded = Signal(object)  # LoadedProgram
     failed = Signal(str, str)  # path, message
     refined = Signal(object)  # LoadedProgram with the preview at the real tolerance, all levels built
     prepared = Signal(object)  # LoadedProgram whose device lines are rendered (Start is instant)
+    read_again = Signal(object)  # ReadAgain: ``read_from``'s answer
 
     def __init__(self, parent=None, tolerance: float = 0.01):
         super().__init__(parent)
@@ -74,6 +86,24 @@ class ProgramLoader(QObject):
         thread.start()
         if wait:
             thread.join()
+
+    def read_from(self, program, position, token) -> None:
+        """``program.from_start(position)`` and its device lines on a thread of their own,
+        the answer by ``read_again`` (a queued signal): the window stays responsive while a
+        big relative-start program is read again from where the machine stands."""
+        args = (program, tuple(float(v) for v in position), token)
+        threading.Thread(target=self._read_again, args=args, name="gcode-read-again", daemon=True).start()
+
+    def _read_again(self, program, position, token) -> None:
+        try:
+            job = program.from_start(position)
+            job.device_lines  # noqa: B018 (rendered here, not on the GUI thread)
+        except Exception as exc:  # a bug must not leave the operator waiting forever
+            said = QCoreApplication.translate("Loader", "the program could not be read from the machine's "
+                                                        "position: %1")
+            self.read_again.emit(ReadAgain(token, program, error=fill(said, f"{type(exc).__name__}: {exc}")))
+            return
+        self.read_again.emit(ReadAgain(token, program, job))
 
     def shown(self) -> None:
         """The window has drawn the loaded program: the rest of the work may start."""

@@ -16,7 +16,9 @@ from PySide6.QtCore import QCoreApplication, QObject
 from app.gcode.checks import preflight
 from app.i18n import localize
 from app.ui.enabler import reason_text
+from app.ui.machine_start import MachineStart
 from app.ui.mdi import classify
+from app.ui.missing_tool import MissingTool
 from app.ui.numbers import decimal, fill, integer
 from app.ui.program.summary import device_count
 from app.ui.recent import add_recent
@@ -31,6 +33,8 @@ class OperatorActions(QObject):
         self.w = window
         self.link = window.link
         self.refused: list[tuple[str, str]] = []  # (control, reason) of every refusal, for tests
+        self.machine_start = MachineStart(window)  # jobs read from where the machine stands
+        self.missing_tool = MissingTool(window)  # the tool table offered from "tool not found"
         self._connect_widgets()
 
     def _connect_widgets(self) -> None:
@@ -104,20 +108,30 @@ class OperatorActions(QObject):
 
     def start(self) -> None:
         if self.allowed("start") and self.can_start():
-            job = self.from_machine(self.w.loaded.program)
-            problems = job.errors or (job is not self.w.loaded.program and preflight(
-                job.ops, self.w.profile, job.lines, self.w.preflight.current_offset()))
-            if problems:  # read again from where the machine stands (a relative start)
-                title = self.tr("Program has errors") if job.errors else self.tr("Program leaves the travel")
-                self.w.notifier.error(title, problems[0].localized())
-                return
+            self.machine_start.request(self.w.loaded.program, self._start_job)
+
+    def _start_job(self, job) -> None:
+        """Start ``job`` (the open program as read from the machine's position)."""
+        if self.allowed("start") and not self.job_refused(job):
             self.w.binder.begin_job(self.w.loaded)
             self.link.call("start_job", job)
 
+    def job_refused(self, job) -> bool:
+        """Whether ``job``, read again from where the machine stands (a relative start),
+        has errors or leaves the travel from there; if so the operator is told."""
+        problems = job.errors or (job is not self.w.loaded.program and preflight(
+            job.ops, self.w.profile, job.lines, self.w.preflight.current_offset()))
+        if problems:
+            title = self.tr("Program has errors") if job.errors else self.tr("Program leaves the travel")
+            self.w.notifier.error(title, problems[0].localized())
+        return bool(problems)
+
     def from_machine(self, program):
-        """``program`` as a job from the position the machine reports (``Program.from_start``)."""
-        status = self.w.binder.status
-        return program if status is None else program.from_start((status.x, status.y, status.z))
+        """``program`` as a job from the position the machine reports (``Program.from_start``),
+        read here: for the small programs of MDI and custom commands (a file's job goes
+        through ``machine_start``, off the GUI thread)."""
+        position = self.machine_start.position()
+        return program if position is None else program.from_start(position)
 
     def can_start(self) -> bool:
         """Whether the open program may start now; if not, the operator is told why."""
@@ -211,9 +225,15 @@ class OperatorActions(QObject):
             self.w.notifier.warning(self.tr("No program"),
                                     self.tr("Open a G-code file to save it to the card."))
             return
-        program = self.w.loaded.program
-        self.w.sd_panel.set_progress(0, device_count(program))
-        self.link.call("upload_to_sd", name, program)  # the worker thread renders the lines
+        self.machine_start.request(self.w.loaded.program, lambda job: self._upload_job(name, job))
+
+    def _upload_job(self, name: str, job) -> None:
+        """Save ``job`` (the open program as read from the machine's position) as ``name``."""
+        if not self.allowed("sd_save") or self.job_refused(job):
+            self.w.sd_panel.upload_finished(False, self.tr("not saved"))
+            return
+        self.w.sd_panel.set_progress(0, device_count(job))
+        self.link.call("upload_to_sd", name, job)  # the worker thread renders the lines
 
     def run_from_sd(self, name: str) -> None:
         if self._send("sd_run", "run_from_sd", name):

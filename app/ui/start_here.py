@@ -5,6 +5,9 @@ the lines before it restored by the preamble of ``app.comm.modal`` (spindle and 
 feed, then the position: retract, rapid over, feed down; units, distance mode and plane
 need no line: the machine's dialect is absolute millimetres in the XY plane). A
 window-modal confirmation shows that state and the preamble before anything moves.
+A program whose first moves are relative is first read again from the position the
+machine reports (``app.ui.machine_start``, off the GUI thread): the state, the preamble
+and the lines sent are that job's, never a reading from (0, 0, 0).
 """
 
 from __future__ import annotations
@@ -39,22 +42,31 @@ class StartHere(QObject):
         self.w = window
         self.dialog: QMessageBox | None = None
         self.pending: int | None = None  # the device line the dialog would start at
+        self.job = None  # the program as a job from the machine's position, for the dialog
         window.program_panel.start_here_requested.connect(self.ask)
 
     def ask(self, source_line: int) -> None:
-        """Show the confirmation for starting at ``source_line`` (if the program may start)."""
-        loaded = self.w.loaded
+        """Show the confirmation for starting at ``source_line`` (if the program may start),
+        once the program is read as a job from where the machine stands (``MachineStart``)."""
         if not self.w.operator.allowed("start_here") or not self.w.operator.can_start():
             return
-        index = device_index_of(loaded.program.line_map.tolist(), source_line)
+        confirm = lambda job: self._confirm(job, source_line)  # noqa: E731
+        self.w.operator.machine_start.request(self.w.loaded.program, confirm)
+
+    def _confirm(self, job, source_line: int) -> None:
+        """The confirmation of starting ``job`` at ``source_line``: the state and the preamble
+        as the job's own lines give them (read from the machine's position)."""
+        if not self.w.operator.allowed("start_here") or not self.w.operator.can_start():
+            return
+        index = device_index_of(job.line_map.tolist(), source_line)
         if index is None:
             self.w.notifier.warning(self.tr("Start here"), _fill(self.tr("Nothing runs from line %1 on."),
                                                                  source_line))
             return
-        lines = loaded.program.device_lines
-        self.pending = index
+        lines = job.device_lines
+        self.pending, self.job = index, job
         self.dialog = box = QMessageBox(QMessageBox.Icon.Question, self.tr("Start here"),
-                                        self._text(source_line, len(loaded.program.lines)), parent=self.w)
+                                        self._text(source_line, len(job.lines)), parent=self.w)
         box.setInformativeText(self._state(lines, index))
         box.setDetailedText("\n".join(restart_preamble(lines, index)) or self.tr("(nothing to restore)"))
         self.start_button = box.addButton(self.tr("Start"), QMessageBox.ButtonRole.AcceptRole)
@@ -96,10 +108,18 @@ class StartHere(QObject):
 
     def _answered(self, button) -> None:
         index, self.pending = self.pending, None
+        job, self.job = self.job, None
         self.w.binder.refresh_enabled()
         if button is not self.start_button or index is None:
             return
-        if not self.w.operator.allowed("start_here") or not self.w.operator.can_start():
+        operator = self.w.operator
+        if not operator.allowed("start_here") or not operator.can_start() or operator.job_refused(job):
+            return
+        position = operator.machine_start.position()
+        moved = position is not None and job.start.needs_reading_from(position)
+        if job is not self.w.loaded.program and moved:
+            self.w.notifier.warning(self.tr("Start here"), self.tr(
+                "The machine moved since the program was read from its position: choose Start here again."))
             return
         self.w.binder.begin_job(self.w.loaded, index)
-        self.w.link.call("start_job", self.w.loaded.program, index)
+        self.w.link.call("start_job", job, index)

@@ -95,6 +95,13 @@
             <numerusform>%n warnings</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <source>Tool %1 is not in the tool table: edit the tool table…</source>
+        <translation>
+            <numerusform>Tool %1 is not in the tool table: edit the tool table…</numerusform>
+            <numerusform>Tools %1 are not in the tool table: edit the tool table…</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>SessionBinder</name>

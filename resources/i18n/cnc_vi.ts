@@ -935,6 +935,10 @@
 <context>
     <name>Loader</name>
     <message>
+        <source>the program could not be read from the machine&apos;s position: %1</source>
+        <translation>không đọc được chương trình từ vị trí của máy: %1</translation>
+    </message>
+    <message>
         <source>%1 could not be loaded: %2</source>
         <translation>Không tải được %1: %2</translation>
     </message>
@@ -1210,6 +1214,17 @@
     <message>
         <source>buzzer off</source>
         <translation>còi tắt</translation>
+    </message>
+</context>
+<context>
+    <name>MachineStart</name>
+    <message>
+        <source>Reading the program again from where the machine stands…</source>
+        <translation>Đang đọc lại chương trình từ vị trí máy đang đứng…</translation>
+    </message>
+    <message>
+        <source>Program not started</source>
+        <translation>Chương trình chưa chạy</translation>
     </message>
 </context>
 <context>
@@ -1647,6 +1662,10 @@ Nếu mất kết nối, máy giữ nguyên vị trí; kết nối lại và ch�
         <source>Open a G-code file to save it to the card.</source>
         <translation>Hãy mở một file G-code để lưu vào thẻ nhớ.</translation>
     </message>
+    <message>
+        <source>not saved</source>
+        <translation>chưa lưu</translation>
+    </message>
     <message numerus="yes">
         <source>Opened %1: %n line(s) in %2 s</source>
         <translation>
@@ -1998,6 +2017,12 @@ Hình 2-D hiển thị chương trình.</translation>
     <message>
         <source>Start here</source>
         <translation>Chạy từ đây</translation>
+    </message>
+    <message numerus="yes">
+        <source>Tool %1 is not in the tool table: edit the tool table…</source>
+        <translation>
+            <numerusform>Dao %1 không có trong bảng dao: sửa bảng dao…</numerusform>
+        </translation>
     </message>
     <message>
         <source>error</source>
@@ -2673,6 +2698,10 @@ Hình 2-D hiển thị chương trình.</translation>
     <message>
         <source>Tool T%1 must be in the spindle (the last tool change before this line).</source>
         <translation>Dao T%1 phải đang lắp trên trục chính (lần thay dao cuối cùng trước dòng này).</translation>
+    </message>
+    <message>
+        <source>The machine moved since the program was read from its position: choose Start here again.</source>
+        <translation>Máy đã di chuyển sau khi chương trình được đọc từ vị trí của nó: hãy chọn lại “Chạy từ đây”.</translation>
     </message>
 </context>
 <context>

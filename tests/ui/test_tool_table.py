@@ -63,3 +63,38 @@ def test_damaged_table_is_reported_at_start(make_window, tmp_path, notifier):
     window = make_window(config_dir=config)
     assert window.tools == {}
     assert any("tool table is damaged" in text for _, _, text in notifier.messages)
+
+
+def test_a_missing_tool_offers_the_tool_table_on_that_tool_and_reloads(qtbot, window, tmp_path):
+    """A LinuxCNC program asks for T3 (G43 H3, G41 D3) with T1 alone in the table: the
+    Problems page offers the editor on T3's row; once saved the program loads cleanly."""
+    from PySide6.QtCore import Qt
+
+    window.tools = window.loader.tools = {1: Tool(1, 6.0)}
+    path = tmp_path / "t3.ngc"
+    path.write_text("G21 G90 F300\nT3 M6\nG43 H3\nG0 X10 Y10 Z5\nG1 Z-1\nG41 D3\nG1 X30\nG1 Y30\n"
+                    "G40\nG0 Z5\nM2\n")
+    loaded = open_and_wait(qtbot, window, path)
+    assert any("Requested tool 3 not found" in str(e) for e in loaded.program.errors)
+    panel = window.program_panel
+    assert panel.tabs.currentWidget() is panel.problems_page
+    assert panel.tool_button.isVisibleTo(panel) and "T3" in panel.tool_button.text()
+    qtbot.mouseClick(panel.tool_button, Qt.MouseButton.LeftButton)
+    dialog = window.operator.missing_tool.dialog
+    assert dialog is not None and dialog.isVisible()
+    row = dialog.table.currentRow()
+    assert dialog.table.item(row, 0).text() == "3" and dialog.table.currentColumn() == 1
+    assert [dialog.table.item(r, 0).text() for r in range(dialog.table.rowCount())] == ["1", "3"]
+    dialog.table.item(row, 1).setText("4")
+    with qtbot.waitSignal(window.loader.loaded, timeout=20_000) as blocker:
+        dialog.button_box.button(dialog.button_box.StandardButton.Ok).click()
+    assert blocker.args[0].program.errors == []
+    assert load_tools(window.config_dir / FILE_NAME).tools[3] == Tool(3, 4.0)
+    assert not panel.tool_button.isVisibleTo(panel)
+
+
+def test_the_editor_focuses_a_tool_it_already_has(qtbot):
+    dialog = ToolTableDialog({1: Tool(1, 6.0), 5: Tool(5, 2.0)})
+    qtbot.addWidget(dialog)
+    dialog.focus_tool(5)
+    assert dialog.table.rowCount() == 2 and dialog.table.item(dialog.table.currentRow(), 0).text() == "5"

@@ -57,9 +57,11 @@ def ramp(path: Path, points, z_to: float, cut: Cutting) -> None:
     lap(path, points[1:], cut)
 
 
-def helix(path: Path, centre, radius: float, toward, z_to: float, cut: Cutting, ccw: bool) -> None:
-    """Helix of ``radius`` about ``centre`` from the current height down to ``z_to``,
-    ending (after a flat circle) at the point of the circle towards ``toward``."""
+def helix(path: Path, centre, radius: float, toward, z_to: float, cut: Cutting, ccw: bool,
+          halves: int | None = None) -> None:
+    """Helix of ``radius`` about ``centre`` from the current height down to ``z_to`` in
+    ``halves`` half circles (None: as few as the ramp slope allows), ending (after a flat
+    circle) at the point of the circle towards ``toward``."""
     cx, cy = centre
     dx, dy = toward[0] - cx, toward[1] - cy
     norm = math.hypot(dx, dy)
@@ -68,7 +70,7 @@ def helix(path: Path, centre, radius: float, toward, z_to: float, cut: Cutting, 
     opposite = (cx - radius * ux, cy - radius * uy)
     path.feed(start[0], start[1], f=cut.plunge_feed)
     drop = path.pos[2] - z_to
-    halves = 2 * max(1, math.ceil(drop / (2 * math.pi * radius * RAMP_SLOPE)))
+    halves = halves or 2 * max(1, math.ceil(drop / (2 * math.pi * radius * RAMP_SLOPE)))
     z0 = path.pos[2]
     for k in range(1, halves + 1):
         x, y = opposite if k % 2 else start

@@ -10,19 +10,26 @@ depth plus a constant, called once per layer from a loop:
 
 Layers of uneven depth (a finishing floor after even roughing layers) loop over the even
 ones and call the rest one by one. Hole patterns are a loop over the holes
-(``holes_macro.py``), profiles the paper's program (``paper_macro.py``). Everything else
-is written as in the plain program. Subprograms follow ``M30``; the
-file is wrapped in ``%`` lines. The loader's expander (issue 9) must give back exactly
-the plain program's moves.
+(``holes_macro.py``), profiles the paper's program (``paper_macro.py``), rectangular and
+round pockets and slots loops over layers and rings computed from their sizes
+(``round_macro.py``), faces loops over layers and rows (``face_macro.py``). Everything
+else (an exact slot, a pocket of a contour's shape: rings of offset outlines that no
+formula gives) is written as in the plain program, its layers folded into a loop.
+Subprograms follow ``M30``; the file is wrapped in ``%`` lines. The loader's expander
+(issue 9) must give back exactly the plain program's moves.
 """
 
 from __future__ import annotations
 
+from .face_macro import FaceForm, face_program
 from .folding import Inline, Repeat, fold
 from .holes_macro import HolePattern, holes_program
 from .moves import ARC, FEED, RAPID, Move
 from .paper_macro import paper_program
 from .plain import line_of, num
+from .round_macro import NUMBERS as POCKET_NUMBERS
+from .round_macro import pocket_program
+from .round_pocket import PocketForm
 
 DIALECTS = ("fanuc21", "fanuc31")
 FIRST_SUB = 1001
@@ -79,12 +86,14 @@ def _loop(dialect: str, number: int, depths: list[float], label: int) -> list[st
         if dialect == "fanuc31":
             return [f"G65 P{number} Z{num(d)}" for d in depths]
         return [line for d in depths for line in (f"{DEPTH} = {num(d)}", call)]
-    head = [f"({len(depths)} layers from Z{num(depths[0])} by {num(step)})", f"{DEPTH} = {num(depths[0])}",
-            f"{COUNT} = 1"]
-    advance = [f"{DEPTH} = {DEPTH} + [{num(step)}]", f"{COUNT} = {COUNT} + 1"]
+    n, span = len(depths), depths[-1] - depths[0]
+    head = [f"({n} layers from Z{num(depths[0])} to Z{num(depths[-1])})", f"{COUNT} = 1"]
+    sign = "-" if span < 0 else "+"
+    depth = f"{DEPTH} = [{num(depths[0])} {sign} {num(abs(span))}*[{COUNT} - 1]/{n - 1}]"  # not a sum
+    advance = [f"{COUNT} = {COUNT} + 1"]
     if dialect == "fanuc31":
-        return head + [f"WHILE [{COUNT} LE {len(depths)}] DO 1", call, *advance, "END 1"]
-    return head + [f"N{label} IF [{COUNT} GT {len(depths)}] GOTO {label + 1}", call, *advance,
+        return head + [f"WHILE [{COUNT} LE {n}] DO 1", depth, call, *advance, "END 1"]
+    return head + [f"N{label} IF [{COUNT} GT {n}] GOTO {label + 1}", depth, call, *advance,
                    f"GOTO {label}", f"N{label + 1} {COUNT} = 0"]
 
 
@@ -102,21 +111,31 @@ def write_fanuc(moves: list[Move], dialect: str, title: str = "") -> str:
         main.append(f"G00 Z{num(first.end[2])}")
         end = (None, None, first.end[2])
     for run in _runs(moves):
-        if isinstance(run[0].block, HolePattern):
-            written = holes_program(run, dialect, number, 7000 + 10 * (number - FIRST_SUB))
-            if written is not None:
-                main += written[0]
-                subs += written[1]
-                end, note, number = run[-1].end, None, number + 1
-                continue
-        elif run[0].block is not None:
-            lines, programs = paper_program(run[0].block, dialect, number, 5000 + 100 * (number - FIRST_SUB))
-            main += lines
-            subs += programs
-            end, note, number = run[-1].end, None, number + 2
+        written = _parametric(run, dialect, number)
+        if written is not None:
+            main += written[0]
+            subs += written[1]
+            end, note, number = run[-1].end, None, number + written[2]
             continue
         end, note, number = _folded(run, dialect, var, main, subs, end, note, number)
     return "\n".join(main + ["M05", "M30"] + subs + ["%"]) + "\n"
+
+
+def _parametric(run: list[Move], dialect: str, number: int):
+    """(main lines, subprograms, subprogram numbers taken) of a run of one parametric form
+    (holes, face, pocket, the paper's profile), its programs numbered from ``number``;
+    None for moves of no form (or holes that differ)."""
+    form, k = run[0].block, number - FIRST_SUB
+    if form is None:
+        return None
+    if isinstance(form, HolePattern):
+        written = holes_program(run, dialect, number, 7000 + 10 * k)
+        return None if written is None else (*written, 1)
+    if isinstance(form, FaceForm):
+        return (*face_program(form, dialect, number, 3000 + 100 * k), 1)
+    if isinstance(form, PocketForm):
+        return (*pocket_program(form, dialect, number, 3000 + 100 * k), POCKET_NUMBERS)
+    return (*paper_program(form, dialect, number, 5000 + 100 * k), 2)
 
 
 def _runs(moves: list[Move]) -> list[list[Move]]:

@@ -52,10 +52,12 @@ def _fits(lead: Lead, wall: Polygon, pocket: bool, roughed: Polygon | None) -> b
     return not wall.buffer(-1e-4).intersects(line)
 
 
-def plan_lead(lap, wall: Polygon, radius: float, pocket: bool, roughed: Polygon | None) -> Lead | None:
-    """The largest lead (``radius``, halved until it fits) onto ``lap[0]``, or None."""
+def plan_lead(lap, wall: Polygon, radius: float, pocket: bool, roughed: Polygon | None,
+              tangent=None) -> Lead | None:
+    """The largest lead (``radius``, halved until it fits) onto ``lap[0]``, or None;
+    ``tangent``: the wall's direction there (else from ``lap[0]`` to the next point)."""
     s = lap[0]
-    t = _unit(s, next(p for p in lap[1:] if math.dist(p, s) > 1e-3))
+    t = tangent or _unit(s, next(p for p in lap[1:] if math.dist(p, s) > 1e-3))
     n = (-t[1], t[0])
     probe = Point(s[0] + 0.01 * n[0], s[1] + 0.01 * n[1])
     if wall.contains(probe) != pocket:
@@ -73,14 +75,20 @@ def walls(path: Path, wall: Polygon, hint, cut: Cutting, ccw: bool, pocket: bool
     """Finish the boundary of ``wall`` (the tool-centre region) on every layer."""
     lap = rings.lap_from(rings.ring_points(wall, ccw), hint)
     lead = plan_lead(lap, wall, cut.clearance, pocket, roughed)
-    start = lead.p1 if lead else lap[0]
+    each_wall_layer(path, cut, lead, lap[0], lambda: entry.lap(path, lap[1:], cut), note)
+
+
+def each_wall_layer(path: Path, cut: Cutting, lead: Lead | None, start, lap, note: str) -> None:
+    """On every layer down to the floor: down at point 1 (``start`` without a lead), the
+    lead-in, ``lap()`` (the wall round from point 3 back to it), the lead-out."""
+    start = lead.p1 if lead else start
     for k, z in enumerate(cut.layers(cut.floor)):
         path.note = f"{note} finish wall layer {k + 1}"
         entry.approach(path, cut, start, z)
         if lead:
             path.feed(*lead.p2, f=cut.feed)
             path.arc(*lead.p3, lead.p4, lead.cw, f=cut.feed)
-        entry.lap(path, lap[1:], cut)
+        lap()
         if lead:
             path.arc(*lead.p5, lead.p4, lead.cw, f=cut.feed)
             path.feed(*lead.p1, f=cut.feed)

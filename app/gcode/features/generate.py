@@ -2,13 +2,14 @@
 
 Every toolpath starts and ends at the feature's safe height (``top + clearance``).
 Pockets: roughing layers of at most C down to the floor + W (rings at D/2 + U), a floor
-pass at the floor when W > 0, then the walls at D/2 on every layer. Profiles (an island,
+pass at the floor when W > 0, then the walls at D/2 on every layer; a rectangular or
+round pocket or a wide slot by its rings of a rounded rectangle (``round_pocket.py``),
+any other shape by the offsets of its outline (``clearing.Pocket``). Profiles (an island,
 or the walls of a contour pocket) are the paper's compensated program (``profile.py``).
 """
 
 from __future__ import annotations
 
-import math
 from dataclasses import replace
 
 from app.profile import MachineProfile
@@ -16,10 +17,12 @@ from app.profile import MachineProfile
 from . import entry, finish, rings
 from .clearing import Pocket
 from .cutting import Cutting
-from .holes_macro import HolePattern
+from .face_macro import face_form
+from .holes_macro import HolePattern, peck_depths
 from .kinds import Face, Holes, PocketCircle, PocketRect, Profile, Slot
 from .moves import RAPID, SPINDLE, TOOL, Move, Path
 from .profile import profile_moves
+from .round_pocket import pocket_form
 from .travel import check_travel
 
 
@@ -47,6 +50,9 @@ def _rough(path: Path, area, cut: Cutting) -> None:
 def _pocket(feature, ccw_for_climb: bool = True) -> list[Move]:
     cut = feature.cut
     ccw = cut.climb == ccw_for_climb
+    form = pocket_form(feature, ccw)  # rectangle, circle, slot: rings computed from a few numbers
+    if form is not None:
+        return form.moves()
     region = feature.region()
     pocket = Pocket(region, cut, ccw)
     path = _start(cut, rings.centre_of(region))
@@ -92,28 +98,7 @@ def _profile(feature: Profile) -> list[Move]:
 
 
 def _face(feature: Face) -> list[Move]:
-    cut = feature.cut
-    r = cut.radius
-    left, right = feature.x - r - 1.0, feature.x + feature.width + r + 1.0
-    if feature.height <= cut.tool_diameter:
-        rows = [feature.y + feature.height / 2]
-    else:
-        span = feature.height - cut.tool_diameter
-        count = math.ceil(span / cut.step - 1e-9) + 1
-        rows = [feature.y + r + span * k / (count - 1) for k in range(count)]
-    path = _start(cut, (left, rows[0]))
-    levels = cut.layers(cut.floor + cut.finish_z) + ([cut.floor] if cut.finish_z > 0 else [])
-    for k, z in enumerate(levels):
-        path.note = f"layer {k + 1}/{len(levels)} z {z:.3f}"
-        entry.approach(path, cut, (left, rows[0]), z)
-        for j, y in enumerate(rows):
-            path.feed(y=y, f=cut.feed)
-            path.feed(right if j % 2 == 0 else left, f=cut.feed)
-        entry.retract(path, cut)  # every layer the same moves at its depth: back over the start
-        path.rapid(left, rows[0])
-        path.note = ""
-    entry.retract(path, cut)
-    return path.moves
+    return face_form(feature).moves()
 
 
 def _holes(feature: Holes) -> list[Move]:
@@ -123,19 +108,16 @@ def _holes(feature: Holes) -> list[Move]:
         path.note = f"hole {k + 1}/{len(feature.centres)}"
         entry.retract(path, cut)
         entry.approach(path, cut, xy, cut.top)
-        depth = cut.top
-        while depth > cut.floor + 1e-9:
-            target = max(cut.floor, depth - feature.peck) if feature.peck > 0 else cut.floor
-            if depth < cut.top:  # a peck: back out above the top, feed down the drilled hole
+        for k, target in enumerate(peck_depths(cut, feature.peck)):
+            if k:  # a peck: back out above the top, feed down the drilled hole
                 path.rapid(z=cut.top + entry.GAP)
             path.feed(z=target, f=cut.plunge_feed)
-            depth = target
         if feature.dwell > 0:
             path.dwell(feature.dwell)
         path.rapid(z=cut.safe_z)
     if not feature.layout:
         return path.moves
-    form = HolePattern(feature.layout, len(feature.centres))  # the macro writers' parametric form
+    form = HolePattern(feature.layout, len(feature.centres), feature.peck)  # the macro's parametric form
     return [replace(m, block=form) for m in path.moves]
 
 

@@ -25,6 +25,7 @@ from .ranges import MAX_HOLES, MAX_MOVES, check_count, check_work, round_points,
 from .rings import MIN_AREA, centre_of, quad_segs
 
 ENTRY_ROOM = 0.05  # mm: the least width of roughing area a ramp needs (clearing.Pocket._enter)
+ROUND_CORNER = 1e-6  # mm: a corner radius below this is a sharp corner (GEOS refuses smaller buffers)
 
 
 def _roughable(region, cut: Cutting) -> None:
@@ -100,7 +101,7 @@ class PocketRect:
 
     def region(self) -> Polygon:
         r, w, h = self.corner_radius, self.width, self.height
-        if r > 0:  # the rectangle's core grown by r: a line or a point when r is half a side
+        if r > ROUND_CORNER:  # the rectangle's core grown by r: a line or a point when r is half a side
             lo, hi = (r, r), (max(w - r, r), max(h - r, r))
             core = box(*lo, *hi) if hi[0] > lo[0] and hi[1] > lo[1] else \
                 LineString([lo, hi]) if hi != lo else Point(lo)

@@ -11,6 +11,7 @@ from PySide6.QtWidgets import (
     QHeaderView,
     QLabel,
     QMenu,
+    QPushButton,
     QTableView,
     QTabWidget,
     QTreeWidget,
@@ -20,6 +21,7 @@ from PySide6.QtWidgets import (
 )
 
 from app.i18n import localize
+from app.ui.missing_tool import missing_tools
 from app.ui.numbers import fill
 from app.ui.program.source_model import SourceModel
 from app.ui.program.summary import describe
@@ -30,6 +32,7 @@ MAX_PROBLEMS = 2000
 class ProgramPanel(QWidget):
     line_activated = Signal(int)  # 1-based source line chosen by the operator
     start_here_requested = Signal(int)  # 1-based source line: "Start here" (right-click)
+    tool_table_requested = Signal(int)  # a tool the program needs and the tool table lacks
 
     def __init__(self, parent=None):
         super().__init__(parent)
@@ -49,9 +52,18 @@ class ProgramPanel(QWidget):
         self.problems = QTreeWidget()
         self.problems.setRootIsDecorated(False)
         self.problems.itemActivated.connect(self._problem_activated)
+        self.missing_tool = 0  # the first tool the problems say the tool table lacks
+        self.tool_button = QPushButton()  # offers the tool table editor on that tool
+        self.tool_button.clicked.connect(lambda: self.tool_table_requested.emit(self.missing_tool))
+        self.tool_button.hide()
+        self.problems_page = QWidget()
+        page = QVBoxLayout(self.problems_page)
+        page.setContentsMargins(0, 0, 0, 0)
+        page.addWidget(self.tool_button)
+        page.addWidget(self.problems, 1)
         self.tabs = QTabWidget()
         self.tabs.addTab(self.source, "")
-        self.tabs.addTab(self.problems, "")
+        self.tabs.addTab(self.problems_page, "")
         layout = QVBoxLayout(self)
         layout.setContentsMargins(4, 4, 4, 4)
         layout.addWidget(self.summary)
@@ -102,6 +114,7 @@ class ProgramPanel(QWidget):
         self._shown = None
         self.source_model.set_lines([])
         self.problems.clear()
+        self._offer_tool_table([])
         self.summary.setText(self.tr("No program open."))
 
     def _fill_problems(self, errors, warnings, keep_tab: bool = False) -> None:
@@ -117,8 +130,19 @@ class ProgramPanel(QWidget):
         counts = fill(self.tr("%1, %2"), self.tr("%n error(s)", "", len(errors)),
                       self.tr("%n warning(s)", "", len(warnings)))
         self.tabs.setTabText(1, fill(self.tr("Problems (%1)"), counts))
+        self._offer_tool_table(errors)
         if errors and not keep_tab:
-            self.tabs.setCurrentWidget(self.problems)
+            self.tabs.setCurrentWidget(self.problems_page)
+
+    def _offer_tool_table(self, errors) -> None:
+        """The button to the tool table editor when an error says a tool is not in it."""
+        missing = missing_tools(errors)
+        self.missing_tool = missing[0] if missing else 0
+        if missing:
+            numbers = ", ".join(f"T{n}" for n in missing)
+            text = self.tr("Tool %1 is not in the tool table: edit the tool table…", "", len(missing))
+            self.tool_button.setText(fill(text, numbers))
+        self.tool_button.setVisible(bool(missing))
 
     def _source_menu(self, pos) -> None:
         index = self.source.indexAt(pos)

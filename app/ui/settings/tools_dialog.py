@@ -75,6 +75,15 @@ class ToolTableDialog(QDialog):
         for column, text in enumerate((f"{number}", general(diameter), general(length), comment)):
             self.table.setItem(row, column, QTableWidgetItem(text))
 
+    def focus_tool(self, number: int) -> None:
+        """Select tool ``number``'s row (added when the table lacks it) and edit its diameter."""
+        rows = [r for r in range(self.table.rowCount()) if self._text(r, 0) == str(number)]
+        if not rows:
+            self.add_row(number)
+        row = rows[0] if rows else self.table.rowCount() - 1
+        self.table.setCurrentCell(row, 1)
+        self.table.editItem(self.table.item(row, 1))
+
     def remove_selected(self) -> None:
         for row in sorted({i.row() for i in self.table.selectedIndexes()}, reverse=True):
             self.table.removeRow(row)
@@ -135,9 +144,12 @@ class ToolTableDialog(QDialog):
         super().accept()
 
 
-def open_tool_table(window) -> ToolTableDialog:
-    """Show the editor for ``window.tools``; on OK save it and give it to the loader."""
+def open_tool_table(window, focus: int | None = None, then=None) -> ToolTableDialog:
+    """Show the editor for ``window.tools`` (``focus``: that tool's row, added when
+    missing); on OK save it, give it to the loader, then call ``then()`` if given."""
     dialog = ToolTableDialog(window.tools, window)
+    if focus is not None:
+        dialog.focus_tool(focus)
 
     def apply() -> None:
         window.tools = dialog.tools
@@ -152,6 +164,8 @@ def open_tool_table(window) -> ToolTableDialog:
         saved = QCoreApplication.translate("ToolTableDialog",
                                            "Tool table saved: it applies to the next program opened")
         window.status.showMessage(saved, 5000)
+        if then is not None:
+            then()
 
     dialog.accepted.connect(apply)
     dialog.open()
