@@ -100,7 +100,7 @@ def estimate(toolpath, device_lines, profile, start=None) -> Estimate:
     chain_len = np.zeros(len(order))
     chain_len[is_move] = length[item[is_move]]
     junction_sq = _junctions_sq(is_move, item, v_nom, start_dir, end_dir, accel, mo.junction_deviation_mm)
-    del start_dir, end_dir  # 48 bytes a move, not needed further
+    del order, length, start_dir, end_dir  # 64 bytes a move, not needed further
     reached = _planned_speeds(chain_len, junction_sq, accel, window_s)
     v_out = np.append(reached[1:], 0.0)
     times = trapezoid_times(chain_len[is_move], reached[is_move], v_out[is_move], v_nom[item[is_move]], accel)
