@@ -156,13 +156,13 @@ def scan_stream(data: bytes, n_lines: int, chunks: list | None = None, share_byt
         data, chunks = data + b"\n", None
     big = len(data) >= (SHARE_BYTES if share_bytes is None else share_bytes)
     parts = chunks or chunk_table(data)
-    tail = None
-    if big and len(parts) >= 2 and not workers.ready() and forked.usable():  # a one-shot load
+    tail, helper = None, big and len(parts) >= 2 and workers.ready()
+    if big and len(parts) >= 2 and not helper and forked.usable():  # a one-shot load
         groups = _split(parts)
         tail = forked.Tail(scan_chunks, data, groups)
     else:
-        groups = _groups(parts, big)
-    futures = {k: _submit(data, groups[k]) for k in range(len(groups) - 1, 0, -1)} if not tail else {}
+        groups = _split(parts) if helper else _windows(parts)
+    futures = {k: _submit(data, groups[k]) for k in range(len(groups) - 1, 0, -1)} if helper else {}
     base = 0
     try:
         for k, group in enumerate(groups):
@@ -187,14 +187,8 @@ def scan_chunks(data: bytes, parts: list) -> list:
     return [_scan_chunk(data[start:end], count) for start, end, count in parts]
 
 
-def _groups(parts: list, big: bool) -> list[list]:
-    """``parts`` in HELPER_GROUPS runs of chunks when shared, else in windows."""
-    if not big or len(parts) < 2 or not workers.ready():
-        return _windows(parts)
-    return _split(parts)
-
-
 def _split(parts: list) -> list[list]:
+    """``parts`` in HELPER_GROUPS runs of chunks (each cut in windows if need be)."""
     size = -(-len(parts) // HELPER_GROUPS)
     return [piece for i in range(0, len(parts), size) for piece in _windows(parts[i : i + size])]
 

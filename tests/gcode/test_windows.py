@@ -64,3 +64,16 @@ def _whole_table(data: bytes, n: int, monkeypatch) -> bulk.Scan:
     (window, ready), = bulk.scan_stream(data, n)
     assert window.first == 0 and ready == n
     return window
+
+
+def test_windows_are_not_handed_to_a_helper_that_is_not_running(big, monkeypatch):
+    def refused(*args):
+        raise AssertionError("submitted to a helper that is not running")
+
+    monkeypatch.setattr(bulk, "WINDOW_BYTES", 1)
+    monkeypatch.setattr(workers, "ready", lambda: False)
+    monkeypatch.setattr(workers, "submit", refused)
+    monkeypatch.setattr(bulk.forked, "usable", lambda: False)
+    n = big.count(b"\n")
+    windows = list(bulk.scan_stream(big, n, share_bytes=0))
+    assert len(windows) > 3 and windows[-1][1] == n
