@@ -153,11 +153,15 @@ def _helper_cpu() -> float:
     return total
 
 
-def _stages(path: Path) -> str:
-    """CPU seconds of each stage of one load, the steps of ``program._interpret`` and the
-    ``check`` summary (arcs: the scan reads them with the lines; interpret checks their
-    radii; plan rounds them as sent and counts chords; toolpath their lengths; summary
-    their quadrant points for the bounds)."""
+def _stages(path: Path) -> tuple[str, str]:
+    """CPU seconds of each stage of one load, the steps of ``program._interpret``, the
+    planner's estimate and the ``check`` summary (arcs: the scan reads them with the
+    lines; interpret checks their radii; plan rounds them as sent and counts chords;
+    toolpath their lengths; estimate their tangents and speed limits; summary their
+    quadrant points for the bounds); and where the time goes, largest share first.
+    One process on one core: ``cnc-gcode check`` runs the checks beside plan and
+    toolpath, the estimate beside the last checks, and shares a big scan with a
+    forked child on a quiet machine."""
     from app.gcode import bulk, checks, normalize, runner
     from app.gcode.cli import _summary
     from app.gcode.diagnostics import Report
@@ -185,8 +189,12 @@ def _stages(path: Path) -> str:
     plan = step("plan", lambda: normalize.plan(ops, profile.motion.arc_tolerance_mm))
     toolpath = step("toolpath", lambda: build(ops, plan.first, profile))
     program = Program(str(path), lines, report.finish(), ops, toolpath, profile, plan)
+    step("estimate", lambda: program.planned)  # the machine planner's time (estimate.py)
     step("summary", lambda: _summary(program))  # bounds (arcs' quadrants), lengths, time
-    return ", ".join(f"{name} {cpu:.2f}" for name, cpu in spent.items()) + f" (sum {sum(spent.values()):.2f})"
+    total = sum(spent.values())
+    shares = sorted(spent.items(), key=lambda item: -item[1])
+    where = ", ".join(f"{name} {cpu / total:.0%}" for name, cpu in shares if cpu >= 0.02 * total)
+    return ", ".join(f"{name} {cpu:.2f}" for name, cpu in spent.items()) + f" (sum {total:.2f})", where
 
 
 _GCODEPARSER = ("import sys\nfrom gcodeparser import parse_gcode_lines\n"
@@ -270,7 +278,10 @@ def main() -> None:
         size = path.stat().st_size
         print(f"file: {path.relative_to(ROOT)}: {_count(path):,} lines, {size / 1e6:.1f} MB, from {origin}")
         _versus(path)
-        print(f"  stages of one load, CPU s: {_stages(path)}")
+        stages, where = _stages(path)
+        print(f"  stages of one load, CPU s: {stages} [load {_loadavg()}]")
+        print(f"    where the time goes: {where}; start-up (python, numpy, app) in the "
+              f"'import app.gcode.cli' line below")
         _window(path)
     _spellings(files[2][0])
     small = _small(files[1][0])

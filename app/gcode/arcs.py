@@ -111,6 +111,23 @@ def segments(radius, angle, tolerance: float):
     return np.maximum(1, np.ceil(np.abs(angle) / step)).astype(np.int64)
 
 
+def _frame(start3, end3, center3, plane_axes, turn):
+    """Arcs in their planes: (start, end, centre (n, 2), (normal at start, at end),
+    sweep, radius at the start, radius at the end)."""
+    *flat, normals = in_plane(plane_axes, start3, end3, center3)
+    s, e, c = flat
+    ang = sweep(s, e, c, turn)
+    r = np.hypot(s[:, 0] - c[:, 0], s[:, 1] - c[:, 1])
+    r_end = np.hypot(e[:, 0] - c[:, 0], e[:, 1] - c[:, 1])
+    return s, e, c, normals, ang, r, r_end
+
+
+def chord_counts(start3, end3, center3, plane_axes, turn, tolerance):
+    """The number of chords ``chord_points`` gives each arc (arrays as there)."""
+    *_, ang, r, r_end = _frame(start3, end3, center3, plane_axes, turn)
+    return segments(np.maximum(r, r_end), ang, tolerance)
+
+
 def chord_points(start3, end3, center3, plane_axes, turn, tolerance):
     """Points (k, 3) along arcs, excluding each start: returns (points, owner index).
 
@@ -120,11 +137,7 @@ def chord_points(start3, end3, center3, plane_axes, turn, tolerance):
     out point by point (at the coarse tolerance of a first picture, nearly every arc is
     one chord).
     """
-    *flat, (n_start, n_end) = in_plane(plane_axes, start3, end3, center3)
-    s, e, c = flat
-    ang = sweep(s, e, c, turn)
-    r = np.hypot(s[:, 0] - c[:, 0], s[:, 1] - c[:, 1])
-    r_end = np.hypot(e[:, 0] - c[:, 0], e[:, 1] - c[:, 1])
+    s, e, c, (n_start, n_end), ang, r, r_end = _frame(start3, end3, center3, plane_axes, turn)
     count = segments(np.maximum(r, r_end), ang, tolerance)
     owner = np.repeat(np.arange(len(s)), count)
     last = np.cumsum(count) - 1

@@ -8,9 +8,11 @@ most once, well formed, with nothing but spaces and well-closed comments around 
 and M or S only on a line with no motion word: the shape of nearly every line
 Inkscape's Gcodetools writes (``tokens.py`` gives the byte-level rules). Every other
 line is left to the general lexer and interpreter, which are the reference; the tests
-check that both paths agree. ``scan_stream`` yields the table as it fills, so the
-loader interprets the head of a big file while its tail is still being read (part of
-it by the helper process of ``workers.py``, on the second core).
+check that both paths agree. ``scan_stream`` yields the table a window of lines at a
+time (``Scan.first``: the window's first line), so the loader interprets the head of a
+big file while its tail is still being read (part of it by the helper process of
+``workers.py``, on the second core), and only one window's table (a few MB) is held
+at once, never a table of the whole file (72 bytes a line).
 """
 
 from __future__ import annotations
@@ -30,16 +32,27 @@ _COMMENT = re.compile(rb"\([^()\n]*\)")
 COMMENT_MARK = b"\x01"  # a comment separates words: "X1(c)0" is not X10
 _SEMI = re.compile(rb";[^\n]*")
 SHARE_BYTES = 8 << 20  # a file this big has its tail scanned by the helper process (workers.py)
+WINDOW_BYTES = 4 << 20  # source bytes of one window of the table (about 85,000 lines, 6 MB of table)
 HELPER_GROUPS = 32  # a shared file is scanned in this many runs of chunks (see scan_stream)
 
 @dataclass
 class Scan:
-    """Per-line table of the fast path; rows where ``simple`` is False are unread."""
+    """Per-line table of the fast path for lines ``first .. first + n`` (row ``k`` is
+    line ``first + k``, 0-based); rows where ``simple`` is False are unread."""
 
     simple: np.ndarray  # bool (n,)
     g: np.ndarray  # int8 (n,), motion code 0-3, -1 when none
     units: np.ndarray  # int8 (n,), 1 for G20, 0 for G21, -1 when none
     values: dict[str, np.ndarray]  # letter X Y Z I J F M S -> float64 (n,), NaN when absent
+    first: int = 0
+
+
+def _table(first: int, n: int) -> tuple[Scan, np.ndarray]:
+    """An empty window of ``n`` lines from line ``first`` and its (9, n) table of values."""
+    table = np.full((len(COLUMNS), n), np.nan)  # one contiguous row per letter
+    window = Scan(np.zeros(n, bool), np.full(n, -1, np.int8), np.full(n, -1, np.int8),
+                  {c: table[i] for i, c in enumerate(COLUMNS) if c != "G"}, first)
+    return window, table
 
 
 def _scan_chunk(raw: bytes, n_lines: int):
@@ -117,50 +130,56 @@ def _classify(result: Scan, table: np.ndarray, a: int, b: int) -> None:
 
 
 def scan(data: bytes, n_lines: int, chunks: list | None = None, share_bytes: int | None = None) -> Scan:
-    """Scan ``data`` (``n_lines`` lines joined by newlines) with the fast path;
-    ``chunks``, when given, is ``source.chunks(data)`` (data ending with a newline)."""
-    *_, (result, _) = scan_stream(data, n_lines, chunks, share_bytes)
+    """Scan ``data`` (``n_lines`` lines joined by newlines) with the fast path, the
+    whole table at once; ``chunks``, when given, is ``source.chunks(data)`` (data ending
+    with a newline)."""
+    result, _ = _table(0, n_lines)
+    for window, _ in scan_stream(data, n_lines, chunks, share_bytes):
+        rows = slice(window.first, window.first + len(window.simple))
+        result.simple[rows], result.g[rows], result.units[rows] = window.simple, window.g, window.units
+        for letter, column in window.values.items():
+            result.values[letter][rows] = column
     return result
 
 
 def scan_stream(data: bytes, n_lines: int, chunks: list | None = None, share_bytes: int | None = None):
-    """``scan`` as it goes: yields ``(scan, ready)`` each time lines ``0..ready`` are
-    final (the ``Scan`` is the same object, filled in place), at least once.
+    """``scan`` as it goes: yields ``(window, ready)`` each time lines ``0..ready`` are
+    final, ``window`` the ``Scan`` of lines ``window.first..ready`` (a new one each time:
+    the caller reads it before asking for the next), at least once.
 
     Data of ``share_bytes`` (default ``SHARE_BYTES``) or more is shared with the
     helper process when there is one: it takes groups of chunks from the end while this
     process works from the start (and the caller interprets what is ready); a group the
     helper has not finished when this process reaches it is done here, so the two meet
     wherever their speeds (and the helper's start-up) put them, and nobody waits."""
-    table = np.full((len(COLUMNS), n_lines), np.nan)  # one contiguous row per letter
-    result = Scan(np.zeros(n_lines, bool), np.full(n_lines, -1, np.int8), np.full(n_lines, -1, np.int8),
-                  {c: table[i] for i, c in enumerate(COLUMNS) if c != "G"})
     if not data.endswith(b"\n"):
         data, chunks = data + b"\n", None
     big = len(data) >= (SHARE_BYTES if share_bytes is None else share_bytes)
     parts = chunks or chunk_table(data)
-    tail = None
-    if big and len(parts) >= 2 and not workers.ready() and forked.usable():  # a one-shot load
+    tail, helper = None, big and len(parts) >= 2 and workers.ready()
+    if big and len(parts) >= 2 and not helper and forked.usable():  # a one-shot load
         groups = _split(parts)
         tail = forked.Tail(scan_chunks, data, groups)
     else:
-        groups = _groups(parts, big)
-    futures = {k: _submit(data, groups[k]) for k in range(len(groups) - 1, 0, -1)} if not tail else {}
+        groups = _split(parts) if helper else _windows(parts)
+    futures = {k: _submit(data, groups[k]) for k in range(len(groups) - 1, 0, -1)} if helper else {}
     base = 0
     try:
         for k, group in enumerate(groups):
             words_of = (tail.take(k) if tail and k else _collect(futures.get(k))) or scan_chunks(data, group)
             first = base
+            window, table = _table(first, min(sum(count for *_, count in group), n_lines - first))
             for words, (_, _, count) in zip(words_of, group, strict=True):
-                _fill(table, result.simple, base, *words)
+                _fill(table, window.simple, base - first, *words)
                 base += count
-            _classify(result, table, first, base)
-            yield result, min(base, n_lines)
+            del words_of
+            _classify(window, table, 0, len(window.simple))
+            yield window, min(base, n_lines)
     finally:
         if tail:
             tail.close()
-    if base < n_lines:
-        yield result, n_lines
+    if base < n_lines:  # lines the chunks did not count: none is simple
+        yield _table(base, n_lines - base)[0], n_lines
 
 
 def scan_chunks(data: bytes, parts: list) -> list:
@@ -168,16 +187,22 @@ def scan_chunks(data: bytes, parts: list) -> list:
     return [_scan_chunk(data[start:end], count) for start, end, count in parts]
 
 
-def _groups(parts: list, big: bool) -> list[list]:
-    """``parts`` in HELPER_GROUPS runs of chunks when shared, else one run."""
-    if not big or len(parts) < 2 or not workers.ready():
-        return [parts]
-    return _split(parts)
-
-
 def _split(parts: list) -> list[list]:
+    """``parts`` in HELPER_GROUPS runs of chunks (each cut in windows if need be)."""
     size = -(-len(parts) // HELPER_GROUPS)
-    return [parts[i : i + size] for i in range(0, len(parts), size)]
+    return [piece for i in range(0, len(parts), size) for piece in _windows(parts[i : i + size])]
+
+
+def _windows(parts: list) -> list[list]:
+    """``parts`` in runs of chunks of at most about WINDOW_BYTES each (at least one)."""
+    out, run, size = [], [], 0
+    for part in parts:
+        if run and size + part[1] - part[0] > WINDOW_BYTES:
+            out.append(run)
+            run, size = [], 0
+        run.append(part)
+        size += part[1] - part[0]
+    return [*out, run]
 
 
 def _submit(data: bytes, group: list):

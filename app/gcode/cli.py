@@ -115,14 +115,15 @@ def _expand(p: Program, trace: bool = False) -> int:
 SEVERITIES = (N_("error"), N_("warning"))
 
 
-def _load(path: str, block_delete: bool = False) -> Program:
+def _load(path: str, block_delete: bool = False, plan_ahead: bool = False) -> Program:
     """``load`` without the helper process: for a one-shot run its start-up costs more
-    than the part of the scan it would take over (the setting is restored after)."""
+    than the part of the scan it would take over (the setting is restored after);
+    ``plan_ahead`` for ``check``, which prints the planner's estimate."""
     was = workers.enabled()
     workers.set_enabled(False)
     try:
         with forked.allowed():  # a big file's scan shared with a forked child (forked.py)
-            return load(path, block_delete=block_delete)
+            return load(path, block_delete=block_delete, plan_ahead=plan_ahead)
     finally:
         workers.set_enabled(was)
 
@@ -150,7 +151,7 @@ def main(argv: list[str] | None = None) -> int:
     if args.trace and args.command != "expand":
         parser.error("--trace goes with expand")
     try:
-        program = _load(args.file, args.block_delete)
+        program = _load(args.file, args.block_delete, plan_ahead=args.command == "check")
         return _expand(program, args.trace) if args.command == "expand" else COMMANDS[args.command](program)
     except BrokenPipeError:
         return 0

@@ -42,6 +42,7 @@ HORIZON_ROUNDS = 6
 # this late on average, measured on the simulator (tests/gcode/test_estimate.py).
 REFILL_S = 0.025
 ZERO_MM = 1e-6  # the planner's zero-length move: transparent, no stop
+BLOCK = 1 << 16  # moves whose geometry is worked out at a time (small temporaries)
 
 
 @dataclass
@@ -99,6 +100,7 @@ def estimate(toolpath, device_lines, profile, start=None) -> Estimate:
     chain_len = np.zeros(len(order))
     chain_len[is_move] = length[item[is_move]]
     junction_sq = _junctions_sq(is_move, item, v_nom, start_dir, end_dir, accel, mo.junction_deviation_mm)
+    del order, length, start_dir, end_dir  # 64 bytes a move, not needed further
     reached = _planned_speeds(chain_len, junction_sq, accel, window_s)
     v_out = np.append(reached[1:], 0.0)
     times = trapezoid_times(chain_len[is_move], reached[is_move], v_out[is_move], v_nom[item[is_move]], accel)
@@ -168,17 +170,31 @@ def _first_line_row(tp) -> int | None:
 
 def _geometry(tp, moves: np.ndarray, accel: float, row_length: np.ndarray, first=None):
     """Per move: length, nominal speed (mm/s) and unit tangents at its start and end;
-    ``first``: (row, start) that row starts from instead."""
-    start, end, kind = tp.start[moves], tp.end[moves], tp.kind[moves]
-    if first is not None and len(moves) and moves[0] == first[0]:
-        start[0] = first[1]
-    length = row_length[moves].astype(float)
-    v_nom = tp.feed[moves] / 60.0
+    ``first``: (row, start) that row starts from instead. Worked out ``BLOCK`` moves at a
+    time (every value is the row's own): small temporaries, the same numbers."""
+    n = len(moves)
+    length, v_nom = np.empty(n), np.empty(n)
+    start_dir, end_dir = np.empty((n, 3)), np.empty((n, 3))
+    for a in range(0, n, BLOCK):
+        part = slice(a, a + BLOCK)
+        rows = moves[part]
+        start = tp.start.take(rows, axis=0)
+        if first is not None and a == 0 and rows[0] == first[0]:
+            start[0] = first[1]
+        length[part], v_nom[part], start_dir[part], end_dir[part] = _block_geometry(
+            tp, rows, start, accel, row_length.take(rows).astype(float))
+    return length, v_nom, start_dir, end_dir
+
+
+def _block_geometry(tp, rows: np.ndarray, start: np.ndarray, accel: float, length: np.ndarray):
+    """``_geometry`` of some moves (``start``: their starts)."""
+    end, kind, feed = tp.end.take(rows, axis=0), tp.kind.take(rows), tp.feed.take(rows)
+    v_nom = feed / 60.0
     start_dir = line_tangents(start, end)
     end_dir = start_dir.copy()
     arc = np.flatnonzero((kind == ARC_CW) | (kind == ARC_CCW))
     if len(arc):
-        center = tp.center[moves][arc]
+        center = tp.center.take(rows[arc], axis=0)
         radius = np.hypot(start[arc, 0] - center[:, 0], start[arc, 1] - center[:, 1])
         v_nom[arc] = np.minimum(v_nom[arc], np.sqrt(accel * radius))
         sweep = np.sqrt(np.maximum(length[arc] ** 2 - (end[arc, 2] - start[arc, 2]) ** 2, 0.0))
@@ -188,7 +204,7 @@ def _geometry(tp, moves: np.ndarray, accel: float, row_length: np.ndarray, first
         start_dir[arc] = helix_tangents(start[arc], center, per_mm, dz_per_mm)
         end_dir[arc] = helix_tangents(end[arc], center, per_mm, dz_per_mm)
     rapid = kind == RAPID
-    v_nom[rapid] = tp.feed[moves][rapid] / 60.0
+    v_nom[rapid] = feed[rapid] / 60.0
     return length, v_nom, start_dir, end_dir
 
 
@@ -196,11 +212,12 @@ def _junctions_sq(is_move, item, v_nom, start_dir, end_dir, accel: float, deviat
     """Squared junction speed per chain block: 0 at barriers and after them (from rest)."""
     out = np.zeros(len(is_move))
     follows = np.flatnonzero(is_move[1:] & is_move[:-1]) + 1
-    if len(follows):
-        cur, prev = item[follows], item[follows - 1]
-        vj = junction_speeds(end_dir[prev], start_dir[cur], accel, deviation)
+    for a in range(0, len(follows), BLOCK):  # a block at a time: small temporaries
+        part = follows[a : a + BLOCK]
+        cur, prev = item[part], item[part - 1]
+        vj = junction_speeds(end_dir.take(prev, axis=0), start_dir.take(cur, axis=0), accel, deviation)
         vj = np.minimum(np.minimum(vj, v_nom[cur]), v_nom[prev])
-        out[follows] = vj * vj
+        out[part] = vj * vj
     return out
 
 

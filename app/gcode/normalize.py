@@ -34,6 +34,7 @@ from .numbers import rounded
 from .ops import ARC_CCW, ARC_CW, PLANE_AXES, XY, Ops
 
 ROUNDING = 0.001
+BLOCK = 1 << 16  # arcs checked at a time (the check is per arc: the same result in any blocks)
 
 
 @dataclass
@@ -85,10 +86,12 @@ def plan(ops: Ops, tolerance: float) -> Plan:
     chords = np.zeros(len(ops), bool)
     arcs = np.flatnonzero((kind == ARC_CW) | (kind == ARC_CCW))
     if len(arcs):
-        start = ops.starts().take(arcs, axis=0)
-        end, center = ops.end.take(arcs, axis=0), ops.center.take(arcs, axis=0)
         ok = (ops.plane[arcs] == XY) & (np.abs(ops.turn[arcs]) == 1)
-        ok &= _arc_ok_rounded(start, end, center)
+        starts = ops.starts()
+        for a in range(0, len(arcs), BLOCK):  # a block at a time: small temporaries
+            rows = arcs[a : a + BLOCK]
+            ok[a : a + BLOCK] &= _arc_ok_rounded(starts.take(rows, axis=0), ops.end.take(rows, axis=0),
+                                                 ops.center.take(rows, axis=0))
         chords[arcs[~ok]] = True
         bad = arcs[~ok]
         if len(bad):

@@ -58,6 +58,7 @@ class Program:
     envelope: checks.Envelope | None = field(default=None, repr=False)  # for checks.preflight
     start: StartInfo = field(default_factory=StartInfo)  # where the job starts (start.py)
     _again: object = field(default=None, repr=False)  # origin -> the program read from there
+    _planning: _in_thread | None = field(default=None, repr=False)  # ``planned`` under way (``plan_ahead``)
 
     def from_start(self, position) -> Program:
         """The program as a job from ``position`` (work mm, as the machine reports it):
@@ -131,20 +132,29 @@ class Program:
         """The machine planner's time (``estimate.py``; about 0.5 s for a million lines, so
         in the background; the device lines need not be rendered). From then on the
         toolpath's ``time``, and with it ``estimated_time`` and the progress per line, are
-        the planner's figures."""
-        est = estimate(self.toolpath, EventLines(self.ops, self.plan), self.profile)
+        the planner's figures. Waits for the thread of a load with ``plan_ahead``."""
+        planning, self._planning = self._planning, None
+        est = planning.join() if planning is not None else _estimate(self.toolpath, self.ops, self.plan,
+                                                                      self.profile)
         self.toolpath.time = est.row_seconds
         return est
 
     @property
     def planned_if_ready(self) -> Estimate | None:
-        """``planned`` once something has computed it, else None (never computes it)."""
+        """``planned`` once something has computed it (or its thread has finished), else
+        None (never computes it, never waits)."""
+        if self._planning is not None and not self._planning.is_alive():
+            return self.planned
         return self.__dict__.get("planned")
 
     @cached_property
     def moves(self) -> list[dict]:
         """The interpreted motion in the ``cnc-gcode moves`` JSON format."""
         return moves_of(self.ops)
+
+
+def _estimate(toolpath: Toolpath, ops: Ops, the_plan: normalize.Plan, profile: MachineProfile) -> Estimate:
+    return estimate(toolpath, EventLines(ops, the_plan), profile)
 
 
 def _split(text: str) -> list[str]:
@@ -275,9 +285,10 @@ def _prefix_reader(raw: bytes, lines: Lines, name: str, profile: MachineProfile,
 
 def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfile,
                tools: dict | None = None, folder: Path | None = None, block_delete: bool = False,
-               systems=None, origin=ORIGIN) -> Program:
+               systems=None, origin=ORIGIN, plan_ahead: bool = False) -> Program:
     """Interpret ``lines`` from ``origin`` (work mm): the expander when the bytes in
-    ``data`` need it, else the fast path."""
+    ``data`` need it, else the fast path; ``plan_ahead``: the planner's estimate starts on
+    a thread as soon as the toolpath is there (``Program.planned`` then waits for it)."""
     report = Report()
     settings = (block_delete, systems)
     start = _start_state(profile, tools, *settings, origin)
@@ -310,6 +321,8 @@ def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfi
     checking = _in_thread(checks.run, ops, profile, lines, report)  # numpy lets both run at once
     the_plan = normalize.plan(ops, profile.motion.arc_tolerance_mm)
     toolpath = build(ops, the_plan.first, profile)
+    planning = _in_thread(_estimate, toolpath, ops, the_plan, profile, name="gcode-plan") if plan_ahead \
+        else None  # beside the last checks
     envelope = checking.join()
     program_checks(toolpath, profile, report)
     ops.forget_starts()  # the Toolpath has its own copy of the moves' starts
@@ -319,7 +332,7 @@ def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfi
         return _interpret(lines, [lines.encoded()], name, profile, tools, folder, *settings, position)
 
     return Program(name, lines, report.finish(), ops, toolpath, profile, the_plan, envelope=envelope,
-                   start=where, _again=again)
+                   start=where, _again=again, _planning=planning)
 
 
 def _give_back_free_memory() -> None:
@@ -338,8 +351,8 @@ def _give_back_free_memory() -> None:
 class _in_thread(threading.Thread):
     """``fn(*args)`` on a thread; ``join()`` returns its value or re-raises what it raised."""
 
-    def __init__(self, fn, *args):
-        super().__init__(name="gcode-checks", daemon=True)
+    def __init__(self, fn, *args, name: str = "gcode-checks"):
+        super().__init__(name=name, daemon=True)
         self._call, self._error, self._value = (fn, args), None, None
         self.start()
 
@@ -375,10 +388,12 @@ def load_text(text: str, name: str = "<text>", profile: MachineProfile | None = 
 
 
 def load(path: str | Path, profile: MachineProfile | None = None, tools: dict | None = None,
-         block_delete: bool = False, systems=None) -> Program:
+         block_delete: bool = False, systems=None, plan_ahead: bool = False) -> Program:
     """Read and interpret a G-code file; unreadable or non-UTF-8 files give an error.
     ``tools``, ``block_delete`` and ``systems`` as for ``load_text``; subprogram files are
-    looked for in the file's folder."""
+    looked for in the file's folder. ``plan_ahead``: start the planner's estimate on a
+    thread at once, beside the last checks (for a caller that will ask for it at once,
+    such as ``cnc-gcode check``; the window asks only after its first picture)."""
     path = Path(path)
     profile = profile or MachineProfile()
     try:
@@ -391,4 +406,5 @@ def load(path: str | Path, profile: MachineProfile | None = None, tools: dict | 
     lines = Lines(data=raw)  # split on first use, not here
     data = [raw]  # valid UTF-8: the bytes the fast path reads
     del raw
-    return _interpret(lines, data, str(path), profile, tools, path.parent, block_delete, systems)
+    return _interpret(lines, data, str(path), profile, tools, path.parent, block_delete, systems,
+                      plan_ahead=plan_ahead)

@@ -63,10 +63,13 @@ class Runner:
         self.run_len = RUN_MAX
 
     def advance(self, scan: Scan, ready: int) -> None:
-        state, i, simple = self.state, self.i, scan.simple
-        complex_lines = np.flatnonzero(~simple[i:ready]) + i
+        """Run lines ``self.i .. ready``; ``scan`` holds them (``scan.first`` <= ``self.i``)."""
+        state, i, simple, first = self.state, self.i, scan.simple, scan.first
+        if i >= ready:
+            return
+        complex_lines = np.flatnonzero(~simple[i - first : ready - first]) + i
         while i < ready and not state.ended:
-            if simple[i] and i >= self.slow_until and state.fast_path_ok():
+            if simple[i - first] and i >= self.slow_until and state.fast_path_ok():
                 k = int(np.searchsorted(complex_lines, i))
                 end = min(int(complex_lines[k]) if k < len(complex_lines) else ready, i + self.run_len)
                 state, stop = vector.run(scan, i, end, state, self.ops)

@@ -20,7 +20,7 @@ import numpy as np
 
 from app.profile import MachineProfile
 
-from .arcs import arc_box, arc_length, chord_points, in_plane
+from .arcs import arc_box, arc_length, chord_counts, chord_points, in_plane
 from .ops import ARC_CCW, ARC_CW, DWELL, FEED, PLANE_AXES, RAPID, Ops
 
 KIND_NAMES = {RAPID: "rapid", FEED: "feed", ARC_CW: "arc", ARC_CCW: "arc", DWELL: "dwell"}
@@ -121,38 +121,46 @@ class Toolpath:
             self._cache[key] = self._polyline(tolerance, threads)
         return self._cache[key]
 
-    def _chords(self, arcs: np.ndarray, tolerance: float, threads: int):
-        """``arcs.chord_points`` of these rows; many arcs in two halves on two threads
-        (numpy's arithmetic lets them run at once) unless ``threads`` is 1."""
+    def _chords(self, arcs: np.ndarray, tolerance: float, threads: int, counts: bool = False):
+        """``arcs.chord_points`` of these rows (``counts``: ``arcs.chord_counts``); many
+        arcs in two halves on two threads (numpy's arithmetic lets them run at once)
+        unless ``threads`` is 1."""
         def of(rows):
-            return chord_points(self.start[rows], self.end[rows], self.center[rows],
-                                np.array(PLANE_AXES)[self.plane[rows]], self.turn[rows], tolerance)
+            work = chord_counts if counts else chord_points
+            return work(self.start.take(rows, axis=0), self.end.take(rows, axis=0),
+                        self.center.take(rows, axis=0), np.take(PLANE_AXES, self.plane[rows], axis=0),
+                        self.turn[rows], tolerance)
 
+        join = (lambda parts, _sizes: np.concatenate(parts)) if counts else _joined
         if threads < 2:  # in pieces: no numpy call holds the GIL for long while a window redraws
             pieces = [arcs[i:i + PIECE_ARCS] for i in range(0, len(arcs), PIECE_ARCS)] or [arcs]
-            return _joined([of(piece) for piece in pieces], [len(piece) for piece in pieces])
+            return join([of(piece) for piece in pieces], [len(piece) for piece in pieces])
         if len(arcs) < PARALLEL_ARCS:
             return of(arcs)
         from concurrent.futures import ThreadPoolExecutor  # only here: a CLI start-up need not load it
 
         half = len(arcs) // 2
         with ThreadPoolExecutor(max_workers=2, thread_name_prefix="chords") as pool:
-            return _joined(list(pool.map(of, (arcs[:half], arcs[half:]))), [half, len(arcs) - half])
+            return join(list(pool.map(of, (arcs[:half], arcs[half:]))), [half, len(arcs) - half])
 
     def _polyline(self, tolerance: float, threads: int):
+        """Every move's end, and an arc of several chords its chord ends in its place
+        (counted first: at a first picture's tolerance nearly every arc is one chord,
+        its end, and needs no more work)."""
         moves = np.flatnonzero(self.kind != DWELL)
         if not len(moves):
             return np.empty((0, 3)), np.empty(0, np.int64)
         arc = (self.kind[moves] == ARC_CW) | (self.kind[moves] == ARC_CCW)
         count = np.ones(len(moves), np.int64)
-        arcs = moves[arc]
-        pts_arc, owner = self._chords(arcs, tolerance, threads)
-        count[arc] = np.bincount(owner, minlength=len(arcs))
+        if arc.any():
+            count[arc] = self._chords(moves[arc], tolerance, threads, counts=True)
         index = np.repeat(moves, count)
         pts = self.end.take(index, axis=0)  # a line's end is its point (a take lets the GIL go: repeat
         # of rows would hold it for tens of ms while a window redraws)
-        if len(arcs):
-            pts[np.repeat(arc, count)] = pts_arc  # an arc's rows are its chord points, in order
+        many = count > 1
+        if many.any():
+            pts_arc, _ = self._chords(moves[many], tolerance, threads)
+            pts[np.repeat(many, count)] = pts_arc  # an arc's rows are its chord points, in order
         start = self.start[moves[0]][None, :]
         return np.concatenate([start, pts]), np.concatenate([[moves[0]], index])
 

@@ -45,9 +45,10 @@ class _Run:
     """Columns of lines ``a..b`` and the modal values forward-filled over them."""
 
     def __init__(self, scan: Scan, a: int, b: int, state: State):
-        self.v = {c: scan.values[c][a:b] for c in "XYZIJFMS"}
-        g = scan.g[a:b]
-        units = scan.units[a:b]
+        rows = slice(a - scan.first, b - scan.first)  # the scan may be a window of the program
+        self.v = {c: scan.values[c][rows] for c in "XYZIJFMS"}
+        g = scan.g[rows]
+        units = scan.units[rows]
         self.inch = _ffill(np.where(units >= 0, units, np.nan), float(state.inch)) > 0.5
         self.scale = np.where(self.inch, 25.4, 1.0)
         self.scale_before = np.concatenate(([state.scale], self.scale[:-1]))

@@ -176,3 +176,37 @@ def test_the_programs_own_events_stand_for_its_rendered_lines():
 
 def _words(line: str) -> dict:
     return {word[0]: float(word[1:]) for word in line.split()[1:]}
+
+
+ARCS_AND_STOPS = ("G21 G90 G17\nM3 S3000\nG0 X10 Y10 Z2\nG1 Z-1 F200\n"
+                  + "".join(f"G{2 + k % 2} X{10 + 3 * (k + 1)} Y10 I1.5 J{0.2 * (k % 3)} F{300 + 10 * k}\n"
+                            "G1 X{0} Y12\n".format(10 + 3 * (k + 1)) for k in range(12))
+                  + "G4 P0.5\nM0\nG1 X5 Y5 Z-1.5\nM6 T2\nG2 X9 Y5 I2 J0\nG0 Z5\nM5\nM2\n")
+
+
+def _same_estimate(a, b) -> None:
+    assert np.array_equal(a.row_seconds, b.row_seconds) and np.array_equal(a.line_seconds, b.line_seconds)
+    assert (a.motion, a.dwell, a.spin_up, a.stops, a.tool_changes, a.stop_seconds) == \
+        (b.motion, b.dwell, b.spin_up, b.stops, b.tool_changes, b.stop_seconds)
+
+
+def test_the_geometry_in_blocks_gives_the_same_numbers(monkeypatch):
+    from app.gcode import estimate as module
+
+    whole = load_text(ARCS_AND_STOPS).planned
+    assert whole.stops == 2 and whole.tool_changes == 1 and whole.dwell == pytest.approx(0.5)
+    monkeypatch.setattr(module, "BLOCK", 4)  # blocks that cut through arcs, lines and barriers
+    _same_estimate(load_text(ARCS_AND_STOPS).planned, whole)
+
+
+def test_a_load_that_plans_ahead_gives_the_same_estimate(tmp_path):
+    from app.gcode import load
+
+    path = tmp_path / "job.ngc"
+    path.write_text(ARCS_AND_STOPS)
+    later = load(path)
+    assert later.planned_if_ready is None  # nothing computes it unasked
+    ahead = load(path, plan_ahead=True)
+    _same_estimate(ahead.planned, later.planned)
+    assert ahead.planned_if_ready is ahead.planned
+    assert np.array_equal(ahead.toolpath.time, later.toolpath.time)

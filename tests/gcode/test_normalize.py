@@ -126,3 +126,21 @@ def test_idempotent_on_sample():
 def test_normalising_the_dialect_changes_nothing():
     lines = ["G00 X0 Y0 Z5", "G01 Z-1 F100", "G02 X10 Y0 I5 J0", "G04 P1.5", "M03 S1000", "M05", "M02"]
     assert device("\n".join(lines)) == lines
+
+
+def test_the_plan_in_blocks_of_arcs_is_the_same(monkeypatch):
+    from app.gcode import normalize
+
+    rows, x = [], 10.0
+    for k in range(40):  # half circles; every fourth one and a half turns (P2: chords)
+        r = 0.5 + k % 7
+        rows.append(f"G{2 + k % 2} X{x + 2 * r} Y10 I{r} J0{' P2' if k % 4 == 0 else ''}\n")
+        x += 2 * r
+    text = "G21 G90 F300\nG0 X10 Y10\n" + "".join(rows) + f"G18 G2 X{x + 2} Z0 I1 K0\nM2\n"
+    whole = load_text(text)
+    monkeypatch.setattr(normalize, "BLOCK", 3)
+    blocks = load_text(text)
+    assert whole.plan.chords.any() and not whole.plan.chords.all()
+    assert blocks.plan.count.tolist() == whole.plan.count.tolist()
+    assert blocks.plan.chords.tolist() == whole.plan.chords.tolist()
+    assert blocks.device_lines == whole.device_lines

@@ -149,3 +149,46 @@ def test_starts_and_ends_are_the_rows_and_cannot_be_changed(text):
     for column in shared:
         with pytest.raises(ValueError):
             column[0] = 1  # shared with the interpreted rows or with each other
+
+
+def _every_arc_chorded(tp, tolerance):
+    """The polyline as it was built before arcs were counted first: every arc through
+    ``chord_points``, its points put in its rows."""
+    from app.gcode.arcs import chord_points
+    from app.gcode.ops import ARC_CCW, PLANE_AXES
+
+    moves = np.flatnonzero(tp.kind != DWELL)
+    arc = (tp.kind[moves] == ARC_CW) | (tp.kind[moves] == ARC_CCW)
+    rows = moves[arc]
+    pts_arc, owner = chord_points(tp.start[rows], tp.end[rows], tp.center[rows],
+                                  np.array(PLANE_AXES)[tp.plane[rows]], tp.turn[rows], tolerance)
+    count = np.ones(len(moves), np.int64)
+    count[arc] = np.bincount(owner, minlength=len(rows))
+    index = np.repeat(moves, count)
+    pts = tp.end[index]
+    pts[np.repeat(arc, count)] = pts_arc
+    return np.concatenate([tp.start[moves[:1]], pts]), np.concatenate([moves[:1], index])
+
+
+@pytest.mark.parametrize("threads", [1, 2])
+@pytest.mark.parametrize("tolerance", [0.001, 0.05, 0.6, 5.0])
+def test_arcs_counted_first_give_the_same_polyline(monkeypatch, tolerance, threads):
+    from app.gcode import toolpath as module
+
+    monkeypatch.setattr(module, "PARALLEL_ARCS", 2)  # the two-thread split, even for a few arcs
+    monkeypatch.setattr(module, "PIECE_ARCS", 3)  # pieces that cut between one- and many-chord arcs
+    arcs, x = [], 0.0
+    for k in range(9):  # half circles of radius 0.3 to 9.3 mm, either way, some helical
+        radius = 0.3 + 3 * (k % 4)
+        arcs.append(f"G{2 + k % 2} X{x + 2 * radius:.4f} Y0 Z{-1 - 0.1 * (k % 2):.1f} I{radius:.4f} J0\n"
+                    f"G1 X{x + 2 * radius + 0.2:.4f}\n")
+        x += 2 * radius + 0.2
+        arcs.append(f"G{3 - k % 2} X{x + 0.5 + k:.4f} R{1 + 4 * k}\n")  # short sweeps: one chord when coarse
+        x += 0.5 + k
+    text = ("G0 X0 Y0 Z1\nG1 Z-1 F300\n" + "".join(arcs)
+            + f"G18 G2 X{x + 5:.4f} Z-1 I2.5 K0\nG19 G3 Y5 Z-1 J2.5 K0\nG17 G4 P1\n"
+            + f"G3 X{x + 5:.4f} Y5 I-3 J0\nG2 X{x + 5.02:.4f} Y5 I0.01 J0\nM2\n")
+    tp = toolpath(text)
+    expected = _every_arc_chorded(tp, tolerance)
+    pts, index = tp.polyline(tolerance, threads)
+    assert np.array_equal(pts, expected[0]) and np.array_equal(index, expected[1])
