@@ -24,12 +24,26 @@ def _feed(kit: Kit) -> int:
     return max(1, round(TRAVEL_FEED / kit.pace))
 
 
-def _start(kit: Kit, dirs: str) -> tuple[int, Reply | None]:
-    """Start a jog along ``dirs`` (or its opposite at an edge); the answer."""
-    cid, answer = kit.link.realtime(f"JOG {dirs} {_feed(kit)}")
+def _start(kit: Kit, dirs: str) -> tuple[Reply | None, str]:
+    """Start a jog along ``dirs`` (or its opposite at an edge): the answer, and the
+    direction it was asked for."""
+    _, answer = kit.link.realtime(f"JOG {dirs} {_feed(kit)}")
     if answer is not None and answer.kind == "E" and answer.fields[1] == "SOFT_LIMIT":
-        cid, answer = kit.link.realtime(f"JOG {dirs.replace('+', '-')} {_feed(kit)}")
-    return cid, answer
+        dirs = dirs.replace("+", "-")
+        _, answer = kit.link.realtime(f"JOG {dirs} {_feed(kit)}")
+    return answer, dirs
+
+
+def _held_start(kit: Kit, cid: str, rule: str, dirs: str) -> tuple[int, Reply | None, str] | None:
+    """For a check that holds a jog with keep-alives: the reply index before it, the
+    start's answer and direction; None (the check listed as not checkable) when the
+    machine's clock runs too fast for keep-alives."""
+    if kit.pace > 1.5:
+        kit.skip(cid, JOG, rule, _too_fast(kit))
+        return None
+    kit.ensure_idle()
+    start = len(kit.link.replies)
+    return (start, *_start(kit, dirs))
 
 
 def _idle_within(kit: Kit, seconds: float) -> bool:
@@ -46,7 +60,7 @@ def dead_man(kit: Kit) -> None:
     kit.ensure_idle()
     before = kit.link.status()
     start = len(kit.link.replies)
-    cid, answer = _start(kit, "X+")
+    answer, dirs = _start(kit, "X+")
     started = answer is not None and answer.kind == "O" and answer.fields[1] == "JOG"
     said = kit.link.wait(lambda r: r.kind == "L" and "no keep-alive" in r.text, STOP_WITHIN_S, start)
     if answer is not None and said is not None:  # 250 ms of the machine's clock: its pace
@@ -60,20 +74,17 @@ def dead_man(kit: Kit) -> None:
         "a continuous jog that hears no `JOG` for 250 ms decelerates and stops by itself, and "
         "the CNC MCU sends `L jog stopped: no keep-alive for 250 ms`",
         started and said is not None and stopped and moved,
-        f"R {cid} JOG X+ {_feed(kit)}, then nothing",
+        f"R <id> JOG {dirs} {_feed(kit)}, then nothing",
         kit.got(start),
     )
 
 
 def keep_alive_and_end(kit: Kit) -> None:
     """Keep-alives every 25 ms hold the jog; `JOGEND` ends it, answered."""
-    if kit.pace > 1.5:
-        kit.skip("jog.keep-alive", JOG, "keep-alives hold the jog", _too_fast(kit))
+    held = _held_start(kit, "jog.keep-alive", "keep-alives hold the jog", "Y+")
+    if held is None:
         return
-    kit.ensure_idle()
-    start = len(kit.link.replies)
-    _, answer = _start(kit, "Y+")
-    dirs = "Y+" if answer is None or "Y-" not in str(answer) else "Y-"
+    start, answer, dirs = held
     ended_early = _hold(kit, dirs, HOLD_S)
     cid, end = kit.link.realtime("JOGEND")
     stopped = _idle_within(kit, STOP_WITHIN_S)
@@ -116,12 +127,10 @@ def _hold(kit: Kit, dirs: str, seconds: float) -> bool:
 
 def change_of_direction(kit: Kit) -> None:
     """A `JOG` with other `dirs` while one runs ends it and is refused `BUSY`."""
-    if kit.pace > 1.5:
-        kit.skip("jog.change-of-direction", JOG, "a new direction is refused `BUSY`", _too_fast(kit))
+    held = _held_start(kit, "jog.change-of-direction", "a new direction is refused `BUSY`", "X+")
+    if held is None:
         return
-    kit.ensure_idle()
-    start = len(kit.link.replies)
-    _, answer = _start(kit, "X+")
+    start, answer, dirs = held
     cid, other = kit.link.realtime(f"JOG Z- {_feed(kit)}")
     stopped = _idle_within(kit, STOP_WITHIN_S)
     kit.check(
@@ -135,7 +144,7 @@ def change_of_direction(kit: Kit) -> None:
         and other.kind == "E"
         and other.fields[1] == "BUSY"
         and stopped,
-        f"R <id> JOG X+ {_feed(kit)}, R {cid} JOG Z- {_feed(kit)}",
+        f"R <id> JOG {dirs} {_feed(kit)}, R {cid} JOG Z- {_feed(kit)}",
         kit.got(start),
     )
 
