@@ -67,6 +67,9 @@ class Report:
             self._seen[severity, key] += count
             self.dropped[severity, key] += count
 
+    def has_errors(self) -> bool:
+        return any(severity == ERROR for severity, _ in self._seen)
+
     def error(self, line: int, column: int, message: str, key: str = "") -> None:
         self.add(line, column, ERROR, message, key)
 

@@ -274,6 +274,5 @@ def interpret_line(
     new.commit()
     for item in pending.items:
         final.warning(*item)
-    ops.rows.extend(line_ops.rows)
-    ops.messages.extend(line_ops.messages)
+    ops.extend(line_ops)
     return new, False

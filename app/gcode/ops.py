@@ -106,6 +106,11 @@ class OpBuffer:
         if message is not None:
             self.messages.append(message)
 
+    def extend(self, other: OpBuffer) -> None:
+        """Append the single rows (and messages) ``other`` gathered (one interpreted line's)."""
+        self.rows.extend(other.rows)
+        self.messages.extend(other.messages)
+
     def clear(self) -> None:
         """Drop every row collected so far."""
         self.blocks, self.rows, self.messages = [], [], []

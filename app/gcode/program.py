@@ -195,12 +195,13 @@ def _start_state(profile: MachineProfile, tools: dict | None, block_delete: bool
     return start
 
 
-def _plain(lines: Lines, data: list[bytes], start: State, report: Report, stop: int) -> tuple[Ops, int]:
+def _plain(lines: Lines, data: list[bytes], start: State, report: Report, stop: int,
+           buffer: OpBuffer | None = None) -> tuple[Ops, int]:
     """The fast path over the lines before index ``stop``; ``data`` holds the bytes,
     handed over (emptied) to free them early. (ops, line of M2/M30 or 0)"""
     raw = data.pop()
     n = len(lines)  # reuse the chunks Lines already counted; otherwise scan makes its own
-    buffer = OpBuffer()
+    buffer = OpBuffer() if buffer is None else buffer
     interpreter = runner.Runner(lines, buffer, report, start)
     for scan, ready in bulk.scan_stream(raw, n, lines.chunks or None):  # interpret as lines come
         interpreter.advance(scan, min(ready, stop))
@@ -243,6 +244,10 @@ class _CappedBuffer(OpBuffer):
         super().add_block(line, *rest)
         self._count(len(line))
 
+    def extend(self, other: OpBuffer) -> None:
+        super().extend(other)
+        self._count(len(other.rows))
+
     def _count(self, n: int) -> None:
         self.count += n
         if self.count >= self.cap:
@@ -277,8 +282,12 @@ def _prefix_reader(raw: bytes, lines: Lines, name: str, profile: MachineProfile,
                 return buffer.finish(), False
             return buffer.finish(), True
         cut = _line_end(raw, min(limit, stop))
-        ops, _ = _plain(Lines(data=raw[:cut]), [raw[:cut]], state, report, min(limit, stop))
-        return ops, cut >= len(raw)
+        buffer = _CappedBuffer(cap=limit)  # a line may make many rows (chords of a spline)
+        try:
+            ops, _ = _plain(Lines(data=raw[:cut]), [raw[:cut]], state, report, min(limit, stop), buffer)
+        except _Enough:
+            return buffer.finish(), False
+        return ops, cut >= len(raw) or report.has_errors()  # nothing after an error runs
 
     return read
 

@@ -143,3 +143,21 @@ def test_past_the_probe_limit_an_axis_still_moving_with_the_start_is_relative():
     job = program.from_start((0.0, 7.0, 1.0))
     assert job.device_lines[-1] == "G00 X3" and "G00 Z1 Y7" not in job.device_lines
     assert not any("Y" in line for line in job.device_lines[: PROBE_MAX - 1])
+
+
+def test_the_probe_reads_rows_not_lines_of_a_plain_program(monkeypatch):
+    """A line may make 100,000 rows (a spline's chords): the first-move probe stops at the
+    rows it asked for, and a reading that met an error is whole (nothing after it runs)."""
+    from app.gcode import splines
+
+    calls = []
+    real = splines.run_spline
+    monkeypatch.setattr(splines, "run_spline", lambda *a, **k: calls.append(1) or real(*a, **k))
+    heavy = "G5 I100000 J100000 P-100000 Q100000 X{x} Y1\n"
+    text = "G21 G90 F100\nG0 X0 Y0\n" + "".join(heavy.format(x=k % 2) for k in range(20)) + "M2\n"
+    program = load_text(text)
+    main_reading = 20
+    assert len(calls) <= main_reading + 2 * 3, len(calls)  # two readings a probe, three probes at most
+    job = program.from_start((1.0, 2.0, 7.0))  # Z, never set, undecided past the probe's rows:
+    z_words = {word for line in job.device_lines for word in line.split() if word.startswith("Z")}
+    assert z_words <= {"Z7"}  # read from the machine's Z, never moved
