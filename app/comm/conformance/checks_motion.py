@@ -188,7 +188,7 @@ def program_stop(kit: Kit) -> None:
     link.command(f"JOB {len(lines)}")
     start = len(link.replies)
     streamer = Streamer(link, lines, int(status.free) if status else 1, hold_after={2, 4})
-    streamer.run(8.0)
+    streamer.run(8.0, to_stop=True)
     held = link.wait(lambda r: r.kind == "S" and r.status().has("W"), 20.0, start)
     notice = [r for r in link.since(start) if r.kind == "L" and r.text.startswith("STOP 2 ")]
     kit.check(
@@ -211,17 +211,14 @@ def program_stop(kit: Kit) -> None:
         "C <id> RESUME",
         kit.got(mark),
     )
-    streamer.run(8.0)
-    tool = link.wait(lambda r: r.kind == "S" and r.status().has("W"), 30.0, mark)
-    status = link.status()
+    streamer.run(8.0, to_stop=True)
+    notice = link.wait(lambda r: r.kind == "L" and r.text == "STOP 4 M06 T2", 30.0, mark)
+    status = kit.status_until(lambda st: st.has("W"))  # a status from before the notice may be old
     kit.check(
         "motion.tool-change",
         STOPS,
         "`M06`: the spindle stops and Z rises to the top of its travel; `L STOP 4 M06 T2`",
-        tool is not None
-        and status is not None
-        and not status.has("P")
-        and any(r.kind == "L" and r.text == "STOP 4 M06 T2" for r in link.since(mark)),
+        notice is not None and status is not None and status.has("W") and not status.has("P"),
         "D 4 M06 T2",
         f"{status}; {kit.got(mark)}",
     )

@@ -6,7 +6,9 @@ the lines an ``F`` reports finished), frame ``n`` alone on ``N n`` (a repeat ``N
 within a probe time of its last resend ignored), the first unacknowledged frame alone
 after a probe time without progress. ``hold_after`` keeps the stream at a program
 stop until that line's ``F``. ``run(timeout)`` returns when ``F`` of the last line
-comes, a line is refused (``E -``), or the time is up; ``Outcome`` says which, with
+comes, a line is refused (``E -``), or the time is up (``run(timeout, to_stop=True)``
+also once the stream waits at a program stop with every frame sent acknowledged);
+``Outcome`` says which, with
 the counts the checks judge (``naks``, ``resends``, the highest window used).
 """
 
@@ -54,24 +56,36 @@ class Streamer:
             return False
         return self.next - (self.out.acked + 1) < self.window()
 
+    def _waiting_at_stop(self) -> bool:
+        """Every frame sent is acknowledged and a program stop holds the rest back."""
+        held = any(self.out.done < stop < self.next for stop in self.hold_after)
+        return held and self.out.acked >= self.next - 1
+
     def _send(self, seq: int) -> None:
         self.link.send(f"D {seq} {self.lines[seq]}")
 
-    def run(self, timeout: float) -> Outcome:
+    def run(self, timeout: float, to_stop: bool = False) -> Outcome:
         deadline = self.link.clock() + timeout
         last = len(self.lines) - 1
+        self._take_new()
         while self.out.done < last and self.out.refused is None and self.link.clock() < deadline:
+            if to_stop and self._waiting_at_stop():
+                break
             while self._may_send():
                 self._send(self.next)
                 self.next += 1
                 self.out.most_in_flight = max(self.out.most_in_flight, self.next - self.out.acked - 1)
             self.link.pump()
-            for reply in self.link.since(self.index):
-                self._take(reply)
-            self.index = len(self.link.replies)
+            self._take_new()
             self._probe()
         self.out.complete = self.out.done >= last
         return self.out
+
+    def _take_new(self) -> None:
+        """What came since the last look (also while the caller waited between runs)."""
+        for reply in self.link.since(self.index):
+            self._take(reply)
+        self.index = len(self.link.replies)
 
     def _take(self, reply: Reply) -> None:
         now = self.link.clock()
