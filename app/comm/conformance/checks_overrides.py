@@ -27,6 +27,14 @@ def _ovr_until(kit: Kit, wanted: str) -> str | None:
     return None if status is None else status.ovr
 
 
+def _ovr_changed(kit: Kit, from_: str | None) -> str | None:
+    """The `ovr` of the first status that differs from ``from_`` within the time a
+    status may be old ("Machine conventions"), else ``from_``: a value that must not
+    change is judged only once a change would have shown."""
+    status = kit.status_until(lambda st: st.ovr != from_)
+    return None if status is None else status.ovr
+
+
 def answered_and_reported(kit: Kit) -> None:
     """Each verb is answered `O <id> <VERB> <state>` and its value shows in `ovr`."""
     kit.ensure_idle()
@@ -56,7 +64,7 @@ def repeat_not_taken(kit: Kit) -> None:
     cid, _ = kit.link.realtime("FEED 120")
     start = len(kit.link.replies)
     _, again = kit.link.realtime("FEED 180", cid=cid)
-    ovr = _ovr(kit)
+    ovr = _ovr_changed(kit, from_=_ovr_until(kit, "120/100/100"))
     kit.check(
         "overrides.repeat-not-taken",
         OVR,
@@ -90,7 +98,7 @@ def grammar(kit: Kit) -> None:
     kit.ensure_idle()
     found = _ovr(kit)
     sent = send_bad_frames(kit, BAD_FRAMES)
-    ovr = _ovr(kit)
+    ovr = _ovr_changed(kit, from_=found)
     for name, (cid, text, answer) in sent.items():
         kit.check(
             f"overrides.{name}-dropped",
