@@ -71,6 +71,7 @@ class GrblWindow(QObject):
         worker.status_changed.connect(self.on_status)
         worker.job_finished.connect(self.on_job_finished)
         worker.disconnected.connect(self.on_disconnected)
+        worker.capabilities_changed.connect(window.controls.overrides.set_ranges)
 
     def _add_actions(self, window) -> dict[str, QAction]:
         home = window.actions_by_name["home"]
