@@ -96,13 +96,27 @@ def test_hold_resume_and_stop(rig):
     rig.wait(lambda: rig.session.grbl_status.state == "Run", 10.0, "run")
     rig.cmd_hold()
     assert rig.session.grbl_status.state == "Hold"
+    said = rig.text.getvalue()
+    assert "machine HOLDS [Hold:0, machine]: feed hold complete: Resume goes on" in said  # in words
     rig.session.resume()
     rig.wait(lambda: rig.session.grbl_status.state == "Run", 10.0, "run again")
+    assert "machine: running again" in rig.text.getvalue()[len(said):]
     rig.cmd_stop()
     job = rig.printer.jobs[-1]
     assert not job.completed and "operator" in job.reason
     rig._fresh_status()
     assert rig.session.grbl_status.state == "Idle"  # held before the reset: no alarm 3
+
+
+def test_the_door_is_said_in_words(rig):
+    rig.command("$X")  # out of the homing lock GRBL starts in
+    rig.sim.set_door(True)
+    rig.wait(lambda: rig.session.grbl_status.state == "Door", 10.0, "the door state")
+    rig.sim.set_door(False)
+    rig.wait(lambda: rig.session.grbl_status.substate == 0, 10.0, "the door closed")
+    said = rig.text.getvalue()
+    assert "[Door:1, cover]: safety door open: the machine stopped; close it to go on" in said
+    assert "[Door:0, cover]: safety door closed: Resume goes on" in said
 
 
 def test_overrides_reach_the_machine(rig):
