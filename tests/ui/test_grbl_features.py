@@ -205,6 +205,19 @@ def test_a_grbl_window_sets_the_spindle_below_the_mills_fifty_percent(qtbot, mak
     assert machine.overrides == [100, 100, 30]
 
 
+def test_the_consoles_stream_box_turns_the_workers_verbose_frames_on_and_off(qtbot, make_window):
+    window, _machine = connect_grbl(qtbot, make_window)
+    console, worker = window.console, window.link.worker
+    reports = lambda: "← <" in console.log.toPlainText()  # noqa: E731 (GRBL's status reports)
+    console.flush()
+    assert not worker.verbose_frames and not reports()
+    console.show_stream.setChecked(True)
+    qtbot.waitUntil(reports, timeout=WAIT)
+    assert worker.verbose_frames
+    console.show_stream.setChecked(False)
+    qtbot.waitUntil(lambda: not worker.verbose_frames, timeout=WAIT)
+
+
 def test_g92_from_dollar_hash_reaches_the_live_modal_panel_after_an_mdi_line(qtbot, make_window):
     window, machine = connect_grbl(qtbot, make_window)
     window.grbl.alarm.buttons["home"].click()
