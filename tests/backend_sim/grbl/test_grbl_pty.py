@@ -219,9 +219,13 @@ def test_link_loss_mid_job_offers_start_here_and_finishes(rig):
     rig.transport = serial.Serial(path, 115200, timeout=0)
     rig.session.attach(rig.transport.write)
     rig.wait(lambda: rig.session.state.name == "RESTART_REQUIRED", 60.0, "the offer", through_loss=True)
-    start = rig.session.last_job.done + 1
-    assert 0 < start <= 61
+    offered = rig.session.last_job.done + 1
+    assert 0 < offered <= 61
     rig.wait(lambda: rig.session.grbl_status.state == "Idle", 120.0, "the machine to finish its buffer")
+    job = rig.session.last_job
+    assert job.done == job.acked  # the offer followed the buffer the machine ran meanwhile
+    start = job.done + 1
+    assert start >= offered and rig.session.state.name == "RESTART_REQUIRED"
     jobs = len(rig.printer.jobs)
     assert rig.session.confirm_restart()
     rig._wait_job(jobs)
