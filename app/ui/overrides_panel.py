@@ -4,11 +4,12 @@
 to 100) and the spindle (steps of 10, reset), and three buttons for the rapid rate (25 /
 50 / 100 %). The ranges are the connected driver's (``set_ranges(capabilities)``,
 ``driver.Capabilities.override_range``): the mill's feed 10-200 % and spindle 50-150 %,
-GRBL's 10-200 % both; a rapid rate the driver lacks is hidden. Each change emits ``override_requested(verb, percent)``
-with the absolute value (``FEED``, ``SPINDLE``, ``RAPID``); the window sends it only if
-the state table allows. ``show_machine(overrides)`` shows what the machine reports in
-its status and moves the controls to it (the OLED menu can set them too), except for a
-value just asked for that the machine has not reported yet.
+GRBL's 10-200 % both; a rapid rate the driver lacks is hidden. Each change emits
+``override_requested(verb, percent)`` with the absolute value (``FEED``, ``SPINDLE``,
+``RAPID``); the window sends it only if the state table allows.
+``show_machine(overrides)`` shows what the machine reports in its status and moves the
+controls to it (the OLED menu can set them too), except for a value just asked for that
+the machine has not reported yet.
 """
 
 from __future__ import annotations

@@ -300,14 +300,15 @@ class GrblSession(SessionCore, GrblJobControl, GrblOperations, FrameVerbs):
         job = self.job
         if self.state is S.CONNECTING:
             self._set_state(S.READY)
+        still = status.state in ("Idle", "Alarm", "Check") or (
+            status.state in ("Hold", "Door") and status.substate == 0)
         if job is not None:
             self._job_report(status)
         else:
-            self._follow_cut_off_job(status)
-        if job is None and self._reset_when_still and status.state in ("Idle", "Alarm", "Check", "Hold", "Door") \
-                and (status.state not in ("Hold", "Door") or status.substate == 0):
-            self._reset_when_still = False
-            self._realtime(p.SOFT_RESET)
+            self._follow_cut_off_job(status)  # before the reset below: what finished first
+            if self._reset_when_still and still:
+                self._reset_when_still = False
+                self._realtime(p.SOFT_RESET)
         job = self.job
         waiting = job is not None and job.stop_at is not None
         acc = job.acked if job else -1
