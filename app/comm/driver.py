@@ -18,6 +18,7 @@ from dataclasses import dataclass
 from typing import Protocol
 
 from app.capabilities import Capabilities as BaseCapabilities
+from app.comm.frame import OVERRIDE_RANGES
 
 DRIVERS = ("frame", "grbl")
 _GRBL_SIGNS = re.compile(rb"(?im)^(grbl|grblhal) \d|^<[A-Za-z]+[|:]|^\[(MSG|GC|VER|OPT):"
@@ -37,12 +38,23 @@ class Capabilities(BaseCapabilities):
     hold_to_jog: bool = False  # a jog that is cancelled on key release
     home_recover: bool = True  # HOME RECOVER after a fault
     driver: str = "frame"
+    # the percentages each override takes (docs/protocol.md, "Overrides"; GRBL's are wider)
+    feed_override: range = OVERRIDE_RANGES["FEED"]
+    spindle_override: range = OVERRIDE_RANGES["SPINDLE"]
+    rapid_override: tuple[int, ...] = tuple(OVERRIDE_RANGES["RAPID"])
+
+    def override_range(self, verb: str):
+        """The percentages override ``verb`` (``FEED``, ``SPINDLE``, ``RAPID``) takes, in
+        order (a ``range`` for the sliders, the rapid rate's few values)."""
+        return getattr(self, f"{verb.lower()}_override")
 
 
 FRAME_CAPABILITIES = Capabilities()
 GRBL_CAPABILITIES = Capabilities(sd_card=False, exact_resume=False, crc_link=False, oled_panel=False,
                                  cover=True, overrides=True, settings_table=True, unlock=True,
-                                 hold_to_jog=True, home_recover=False, driver="grbl")
+                                 hold_to_jog=True, home_recover=False, driver="grbl",
+                                 feed_override=range(10, 201), spindle_override=range(10, 201),
+                                 rapid_override=(25, 50, 100))
 
 
 class Machine(Protocol):

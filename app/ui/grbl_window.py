@@ -20,8 +20,7 @@ from __future__ import annotations
 from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, QObject, Signal
 from PySide6.QtGui import QAction
 
-from app.comm.events import HoldEvent
-from app.comm.grbl.codes import hold_text
+from app.comm.grbl.status import hold_event
 from app.ui.grbl_alarm import GrblAlarmBar
 from app.ui.live_modal import machine_modes
 from app.ui.menus import SOURCE_TEXT
@@ -71,6 +70,7 @@ class GrblWindow(QObject):
         worker.status_changed.connect(self.on_status)
         worker.job_finished.connect(self.on_job_finished)
         worker.disconnected.connect(self.on_disconnected)
+        worker.capabilities_changed.connect(window.controls.overrides.set_ranges)
 
     def _add_actions(self, window) -> dict[str, QAction]:
         home = window.actions_by_name["home"]
@@ -123,11 +123,7 @@ class GrblWindow(QObject):
         if event.why == self.why or not (self.on_grbl or self.why):
             return
         self.why = event.why
-        if not event.why:
-            self.w.binder.on_hold(HoldEvent("", event.state))
-            return
-        source = "cover" if event.why.startswith("Door") else "machine"
-        self.w.binder.on_hold(HoldEvent(event.why, event.state, source, hold_text(event.why)))
+        self.w.binder.on_hold(hold_event(event))
 
     def on_disconnected(self, _reason: str) -> None:
         self.why = ""

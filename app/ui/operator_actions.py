@@ -58,6 +58,7 @@ class OperatorActions(QObject):
         w.sd_panel.delete_requested.connect(lambda name: self._send("sd_delete", "delete_sd", name))
         w.sd_panel.run_requested.connect(self.run_from_sd)
         w.console.mdi_submitted.connect(self.mdi)
+        w.console.show_stream.toggled.connect(lambda on: self.link.call("set_verbose_frames", on))
         w.alert.reconnect_requested.connect(self.reconnect)
         w.alert.resume_requested.connect(self.resume_after_reconnect)
         w.alert.restart_requested.connect(self.restart_after_reset)

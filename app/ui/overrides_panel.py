@@ -1,12 +1,15 @@
 """Feed, spindle and rapid overrides while a job runs (docs/protocol.md, "Overrides").
 
-``OverridesPanel`` has a slider and step buttons for the feed (10-200 %, steps of 1 and
-10, reset to 100) and the spindle (50-150 %, steps of 10, reset), and three buttons for
-the rapid rate (25 / 50 / 100 %). Each change emits ``override_requested(verb, percent)``
-with the absolute value (``FEED``, ``SPINDLE``, ``RAPID``); the window sends it only if
-the state table allows. ``show_machine(overrides)`` shows what the machine reports in
-its status and moves the controls to it (the OLED menu can set them too), except for a
-value just asked for that the machine has not reported yet.
+``OverridesPanel`` has a slider and step buttons for the feed (steps of 1 and 10, reset
+to 100) and the spindle (steps of 10, reset), and three buttons for the rapid rate (25 /
+50 / 100 %). The ranges are the connected driver's (``set_ranges(capabilities)``,
+``driver.Capabilities.override_range``): the mill's feed 10-200 % and spindle 50-150 %,
+GRBL's 10-200 % both; a rapid rate the driver lacks is hidden. Each change emits
+``override_requested(verb, percent)`` with the absolute value (``FEED``, ``SPINDLE``,
+``RAPID``); the window sends it only if the state table allows.
+``show_machine(overrides)`` shows what the machine reports in its status and moves the
+controls to it (the OLED menu can set them too), except for a value just asked for that
+the machine has not reported yet.
 """
 
 from __future__ import annotations
@@ -14,19 +17,14 @@ from __future__ import annotations
 from PySide6.QtCore import QEvent, Qt, Signal
 from PySide6.QtWidgets import QButtonGroup, QGridLayout, QGroupBox, QLabel, QPushButton, QSlider
 
+from app.comm.driver import FRAME_CAPABILITIES
 from app.comm.frame import NO_OVERRIDES, OVERRIDE_RANGES
 
 VERBS = ("FEED", "SPINDLE", "RAPID")
 SLIDERS = ("FEED", "SPINDLE")
 STEPS = {"FEED": (-10, -1, 1, 10), "SPINDLE": (-10, 10)}
-RAPIDS = tuple(OVERRIDE_RANGES["RAPID"])
+RAPIDS = tuple(OVERRIDE_RANGES["RAPID"])  # the rapid buttons; a driver offers some of them
 STALE_AFTER = 20  # statuses (about a second) after which an unreported request is forgotten
-
-
-def clamp(verb: str, percent: int) -> int:
-    """``percent`` brought into the range of ``verb``'s override."""
-    allowed = OVERRIDE_RANGES[verb]
-    return min(max(percent, allowed[0]), allowed[-1])
 
 
 class OverridesPanel(QGroupBox):
@@ -46,15 +44,37 @@ class OverridesPanel(QGroupBox):
         self.machine = QLabel()
         grid.addWidget(self.machine, len(SLIDERS) + 1, 0, 1, 8)
         self._reported: tuple[int, int, int] | None = None
+        self.ranges: dict[str, tuple[int, ...]] = {}
+        self.set_ranges(FRAME_CAPABILITIES)
         self.retranslate_ui()
+
+    def set_ranges(self, capabilities) -> None:
+        """The connected driver's override ranges (``capabilities.override_range(verb)``)
+        on the sliders and rapid buttons; a rapid rate with no button is refused."""
+        ranges = {verb: tuple(capabilities.override_range(verb)) for verb in VERBS}
+        unknown = set(ranges["RAPID"]) - set(RAPIDS)
+        if unknown or not all(ranges.values()):
+            raise ValueError(f"override ranges the panel cannot show: {ranges}")
+        self.ranges = ranges
+        for verb in SLIDERS:  # a value the new range clamps is shown, not sent
+            slider = self.sliders[verb]
+            slider.setProperty("syncing", True)
+            slider.setRange(ranges[verb][0], ranges[verb][-1])
+            slider.setProperty("syncing", False)
+        for button in self.rapid_group.buttons():
+            button.setVisible(self.rapid_group.id(button) in ranges["RAPID"])
+
+    def clamp(self, verb: str, percent: int) -> int:
+        """``percent`` brought into the range of ``verb``'s override."""
+        allowed = self.ranges[verb]
+        return min(max(percent, allowed[0]), allowed[-1])
 
     # -- building ------------------------------------------------------------------
     def _slider_row(self, grid: QGridLayout, row: int, verb: str) -> None:
         self.names[verb] = QLabel()
         grid.addWidget(self.names[verb], row, 0)
         slider = self.sliders[verb] = QSlider(Qt.Orientation.Horizontal)
-        allowed = OVERRIDE_RANGES[verb]
-        slider.setRange(allowed[0], allowed[-1])
+        slider.setRange(min(OVERRIDE_RANGES[verb]), max(OVERRIDE_RANGES[verb]))
         slider.setValue(100)
         slider.setPageStep(10)
         slider.sliderReleased.connect(lambda v=verb: self.request(v, self.sliders[v].value()))
@@ -114,7 +134,7 @@ class OverridesPanel(QGroupBox):
 
     def step(self, verb: str, delta: int) -> None:
         """One step from the value shown (``+10``, ``-1``...), kept within the range."""
-        self.request(verb, clamp(verb, self.value(verb) + delta))
+        self.request(verb, self.clamp(verb, self.value(verb) + delta))
 
     def request(self, verb: str, percent: int) -> None:
         """Show ``percent`` and ask the window to send it."""

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import pytest
 
-from app.comm.driver import FRAME_CAPABILITIES
+from app.comm.driver import FRAME_CAPABILITIES, GRBL_CAPABILITIES
 from app.ui.connection_bar import DRIVERS
 from app.ui.state_table import Inputs, Link, Machine, decide
 
@@ -168,6 +168,54 @@ def test_override_sliders_drive_grbls_real_time_bytes_and_show_what_it_reports(q
     qtbot.waitUntil(lambda: window.binder.status.overrides == (133, 80, 25), timeout=WAIT)
     assert machine.overrides == [133, 25, 80]  # GRBL's own order: feed, rapid, spindle
     qtbot.waitUntil(lambda: "feed 133 %, spindle 80 %, rapid 25 %" in panel.machine.text(), timeout=WAIT)
+
+
+def test_the_override_panel_takes_the_drivers_ranges(qtbot):
+    from app.ui.overrides_panel import OverridesPanel
+
+    panel = OverridesPanel()
+    qtbot.addWidget(panel)
+    sent = []
+    panel.override_requested.connect(lambda verb, pct: sent.append((verb, pct)))
+    assert panel.sliders["SPINDLE"].minimum() == 50 and panel.sliders["SPINDLE"].maximum() == 150
+    panel.set_ranges(GRBL_CAPABILITIES)
+    assert [(s.minimum(), s.maximum()) for s in panel.sliders.values()] == [(10, 200), (10, 200)]
+    for _ in range(12):
+        panel.step("SPINDLE", -10)
+    for _ in range(12):
+        panel.step("FEED", 10)
+    assert sent[-13] == ("SPINDLE", 10) and sent[-1] == ("FEED", 200)
+    panel.set_ranges(FRAME_CAPABILITIES)  # the mill again: the 10 % shown becomes 50, not sent
+    assert panel.value("SPINDLE") == 50 and len(sent) == 24
+    panel.step("SPINDLE", 10)
+    panel.step("SPINDLE", 100)
+    assert sent[-2:] == [("SPINDLE", 60), ("SPINDLE", 150)]
+    assert FRAME_CAPABILITIES.override_range("RAPID") == (25, 50, 100)
+    assert FRAME_CAPABILITIES.override_range("FEED") == range(10, 201)
+
+
+def test_a_grbl_window_sets_the_spindle_below_the_mills_fifty_percent(qtbot, make_window):
+    window, machine = connect_grbl(qtbot, make_window)
+    unlocked(qtbot, window)
+    panel = window.controls.overrides
+    assert panel.sliders["SPINDLE"].minimum() == 10
+    for _ in range(7):
+        panel.step("SPINDLE", -10)
+    qtbot.waitUntil(lambda: window.binder.status.overrides == (100, 30, 100), timeout=WAIT)
+    assert machine.overrides == [100, 100, 30]
+
+
+def test_the_consoles_stream_box_turns_the_workers_verbose_frames_on_and_off(qtbot, make_window):
+    window, _machine = connect_grbl(qtbot, make_window)
+    console, worker = window.console, window.link.worker
+    reports = lambda: "← <" in console.log.toPlainText()  # noqa: E731 (GRBL's status reports)
+    console.flush()
+    assert not worker.verbose_frames and not reports()
+    console.show_stream.setChecked(True)
+    qtbot.waitUntil(reports, timeout=WAIT)
+    assert worker.verbose_frames
+    console.show_stream.setChecked(False)
+    qtbot.waitUntil(lambda: not worker.verbose_frames, timeout=WAIT)
 
 
 def test_g92_from_dollar_hash_reaches_the_live_modal_panel_after_an_mdi_line(qtbot, make_window):

@@ -54,9 +54,14 @@ def test_silence_degrades_then_loses_the_link_then_offers_start_here(qtbot, grbl
     line = binder.source_line(job.done + 1)
     assert f"line {line} of" in said and window.alert.restart.text() == f"Start here at line {line}"
     assert job.done == job.acked  # idle after the cut: every answered line has finished
+    restart_runs_each_line_once(qtbot, window, job.done + 1)
+
+
+def restart_runs_each_line_once(qtbot, window, start: int) -> None:
+    """Start here (device line ``start``) runs the lines from there once, behind the modes."""
+    binder = window.binder
     program = window.loaded.program
     expected = [g.text for g in grbl_lines(program.device_lines) if g.text]
-    start = job.done + 1
     before = len(lines_run(window))
     window.alert.restart.click()
     qtbot.waitUntil(lambda: binder.last_job_event is not None and binder.state == "READY", timeout=120_000)
@@ -64,6 +69,32 @@ def test_silence_degrades_then_loses_the_link_then_offers_start_here(qtbot, grbl
     restarted = lines_run(window)[before:]
     assert restarted[:2] == ["G54", "M03 S1000"]  # the work system and spindle before the line come first
     assert restarted[-(len(expected) - start):] == expected[start:]  # then each line once, in order
+
+
+def _pace(sim, speed: float) -> None:
+    with sim.lock:
+        sim.clock.set_speed(speed)
+        sim.wake()
+
+
+def test_the_offered_line_follows_what_the_machine_finishes_after_the_offer(qtbot, grbl_job):
+    window, binder = grbl_job, grbl_job.binder
+    sim = window.link.sim
+    _pace(sim, 1)  # the buffer now lasts many seconds: the offer comes while it still runs
+    sim.wires["usb_up"].set_cut(True)
+    qtbot.waitUntil(lambda: binder.link_state == "LOST", timeout=10_000)
+    sim.wires["usb_up"].set_cut(False)
+    qtbot.waitUntil(lambda: window.alert.restart.isVisible(), timeout=20_000)
+    first = window.alert.restart.text()
+    assert sim.machine.motion.state != "IDLE"
+    _pace(sim, 30)
+    qtbot.waitUntil(lambda: sim.machine.motion.state == "IDLE", timeout=60_000)
+    job = window.link.worker.session.last_job
+    qtbot.waitUntil(lambda: job.done == job.acked, timeout=10_000)  # the idle report came
+    line = binder.source_line(job.done + 1)
+    qtbot.waitUntil(lambda: window.alert.restart.text() == f"Start here at line {line}", timeout=10_000)
+    assert first != window.alert.restart.text() and f"line {line} of" in window.alert.body.text()
+    restart_runs_each_line_once(qtbot, window, job.done + 1)
 
 
 def test_a_failed_port_then_reconnect_offers_start_here(qtbot, grbl_job):

@@ -8,7 +8,8 @@ from tests.ui.conftest import SAMPLES, open_and_wait
 
 
 def test_window_runs_a_job_on_the_grbl_simulator(qtbot, make_window):
-    window = make_window(port_lister=lambda: [("sim://", "mill"), ("sim://grbl?speed=30", "GRBL")])
+    # 300 times real time: the star sample runs in seconds, and still fills GRBL's buffers
+    window = make_window(port_lister=lambda: [("sim://", "mill"), ("sim://grbl?speed=300", "GRBL")])
     bar = window.connection
     bar.ports.setCurrentIndex(1)
     bar.driver.setCurrentIndex([key for key, _ in DRIVERS].index("grbl"))

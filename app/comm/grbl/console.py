@@ -23,6 +23,7 @@ from app.comm.console_printer import Printer
 from app.comm.grbl.events import GrblListener
 from app.comm.grbl.session import GrblSession
 from app.comm.grbl.settings import read_backup, table, write_backup
+from app.comm.grbl.status import hold_event
 from app.comm.listener import SessionState
 from app.comm.modal import device_index_of
 from app.i18n import localize
@@ -32,7 +33,11 @@ QUIET_KINDS = frozenset({"job", "preamble", "sync", "<", "ok"})
 
 class GrblPrinter(Printer, GrblListener):
     """The console's printer with GRBL's traffic: ``-q`` hides job lines, their ``ok``
-    and the reports."""
+    and the reports; holds and door states in words."""
+
+    def __init__(self, out, quiet: bool) -> None:
+        super().__init__(out, quiet)
+        self.why = ""  # the hold last printed (a status's ``why``)
 
     def on_frame(self, event):
         quiet = self.quiet and event.kind in QUIET_KINDS
@@ -41,6 +46,13 @@ class GrblPrinter(Printer, GrblListener):
 
     def on_log(self, event):
         print(f"[{event.source} {event.level}] {localize(event.text)}", file=self.out)
+
+    def on_status(self, event):
+        """A hold or door state in words when it changes (``status.hold_event``), as the
+        mill's console prints the holds its machine explains."""
+        if event.why != self.why:
+            self.why = event.why
+            self.on_hold(hold_event(event))
 
 
 class GrblConsole(ConsoleClient):

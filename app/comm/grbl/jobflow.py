@@ -275,6 +275,10 @@ class GrblJobControl:
         if same_boot and self.grbl_status is not None and self.grbl_status.state in ("Idle", "Check"):
             job.done = max(job.done, job.acked)
         self.last_job = job
+        self._set_state(S.RESTART_REQUIRED)
+        self._offer_restart(job, same_boot)
+
+    def _offer_restart(self, job: GrblJob, same_boot: bool) -> None:
         if same_boot:
             reason = msg("the link was lost during the job; GRBL cannot resume exactly: start again at "
                          "line {line}, the line after the last one known finished (lines after it may "
@@ -284,7 +288,31 @@ class GrblJobControl:
                          "the line after the last one known finished", line=self._source_line(job.done + 1))
         self._log("warning", reason)
         self.listener.on_progress(job.progress())
-        self._offer(ResumeOffer(False, job.done + 1, job.done, job.total, not same_boot, reason))
+        self.listener.on_resume_offer(ResumeOffer(False, job.done + 1, job.done, job.total, not same_boot,
+                                                  reason))
+
+    def _follow_cut_off_job(self, status) -> None:
+        """After a link loss (no reset since) the machine runs what its buffer holds: until
+        the operator answers Start here, and until the reset that a confirmed restart waits
+        for, the restart line follows what the reports show finished (the offer is made
+        again with it), so no line the machine finished runs twice."""
+        pending = self._restart_on_welcome
+        job = pending or (self.last_job if self.state is S.RESTART_REQUIRED else None)
+        if job is None or job.boot != self.boots:
+            return
+        before = job.done
+        if status.state in ("Idle", "Check"):
+            job.all_finished()
+        else:
+            job.planner_report(self._blocks_used(status))
+        if job.done == before:
+            return
+        if pending is None:
+            self._offer_restart(job, same_boot=True)
+        else:
+            self.listener.on_progress(job.progress())
+            self._log("info", msg("the machine finished more lines meanwhile: the job starts again at line "
+                                  "{line}", line=self._source_line(job.done + 1)))
 
     # ------------------------------------------------------------------ helpers
 

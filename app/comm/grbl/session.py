@@ -33,7 +33,6 @@ from app.comm.events import (
     FrameEvent,
     JobEvent,
     LinkEvent,
-    ResumeOffer,
 )
 from app.comm.grbl import protocol as p
 from app.comm.grbl.charcount import GRBL_RX_BUFFER, CharCounter
@@ -301,12 +300,15 @@ class GrblSession(SessionCore, GrblJobControl, GrblOperations, FrameVerbs):
         job = self.job
         if self.state is S.CONNECTING:
             self._set_state(S.READY)
+        still = status.state in ("Idle", "Alarm", "Check") or (
+            status.state in ("Hold", "Door") and status.substate == 0)
         if job is not None:
             self._job_report(status)
-        elif self._reset_when_still and status.state in ("Idle", "Alarm", "Check", "Hold", "Door") \
-                and (status.state not in ("Hold", "Door") or status.substate == 0):
-            self._reset_when_still = False
-            self._realtime(p.SOFT_RESET)
+        else:
+            self._follow_cut_off_job(status)  # before the reset below: what finished first
+            if self._reset_when_still and still:
+                self._reset_when_still = False
+                self._realtime(p.SOFT_RESET)
         job = self.job
         waiting = job is not None and job.stop_at is not None
         acc = job.acked if job else -1
@@ -426,10 +428,6 @@ class GrblSession(SessionCore, GrblJobControl, GrblOperations, FrameVerbs):
         method = getattr(self.listener, name, None)
         if method is not None:
             method(event)
-
-    def _offer(self, offer: ResumeOffer) -> None:
-        self._set_state(S.RESTART_REQUIRED)
-        self.listener.on_resume_offer(offer)
 
     def _end_job(self, completed: bool, reason: str) -> None:
         job, self.job = self.job, None

@@ -16,7 +16,8 @@ a slider moved twice between two reports does not step twice from the same value
 
 from __future__ import annotations
 
-from app.comm.events import StatusEvent
+from app.comm.events import HoldEvent, StatusEvent
+from app.comm.grbl.codes import hold_text
 from app.comm.grbl.events import GrblStatus
 from app.comm.grbl.protocol import Report
 
@@ -98,3 +99,12 @@ def to_status_event(status: GrblStatus, boot: str, acc: int, done: int, homed: b
     why = f"{status.state}:{status.substate or 0}" if status.state in ("Hold", "Door") else ""
     return StatusEvent(boot, STATES.get(status.state, status.state.upper()), x, y, z, acc, done,
                        free, int(status.rpm), flags, status.time, why, overrides=(feed, spindle, rapid))
+
+
+def hold_event(status: StatusEvent) -> HoldEvent:
+    """A status's hold in words (``why`` ``Hold:0``..``Door:3``, the door's source the
+    cover), as the frame protocol's sessions report holds; ``why`` "": running again."""
+    if not status.why:
+        return HoldEvent("", status.state)
+    source = "cover" if status.why.startswith("Door") else "machine"
+    return HoldEvent(status.why, status.state, source, hold_text(status.why))

@@ -50,6 +50,13 @@ def rig():
     sim.stop()
 
 
+def pace(sim, speed: float) -> None:
+    """The simulated machine's speed factor from now on."""
+    with sim.lock:
+        sim.clock.set_speed(speed)
+        sim.wake()
+
+
 def _job_lines(path) -> list[str]:
     program = load_program(str(path))
     return [line.text for line in grbl_lines(program.device_lines) if line.text]
@@ -61,6 +68,9 @@ def _executed(sim) -> list[str]:
 
 @pytest.mark.parametrize("name", ["star_passes.ngc", "potrace_logo.ngc"])
 def test_samples_stream_to_the_end_each_line_once(rig, name):
+    # 300 times real time: the sample's short arcs at F300 still take far longer to cut than
+    # to send at 115200 baud, so the planner and the receive buffer fill as at 30
+    pace(rig.sim, 300.0)
     rig.cmd_home()  # unhomed, the machine does not know where it stands
     rig.cmd_check(str(SAMPLES / name)) if name == "potrace_logo.ngc" else rig.cmd_run(str(SAMPLES / name))
     assert _executed(rig.sim) == _job_lines(SAMPLES / name)
@@ -96,13 +106,27 @@ def test_hold_resume_and_stop(rig):
     rig.wait(lambda: rig.session.grbl_status.state == "Run", 10.0, "run")
     rig.cmd_hold()
     assert rig.session.grbl_status.state == "Hold"
+    said = rig.text.getvalue()
+    assert "machine HOLDS [Hold:0, machine]: feed hold complete: Resume goes on" in said  # in words
     rig.session.resume()
     rig.wait(lambda: rig.session.grbl_status.state == "Run", 10.0, "run again")
+    assert "machine: running again" in rig.text.getvalue()[len(said):]
     rig.cmd_stop()
     job = rig.printer.jobs[-1]
     assert not job.completed and "operator" in job.reason
     rig._fresh_status()
     assert rig.session.grbl_status.state == "Idle"  # held before the reset: no alarm 3
+
+
+def test_the_door_is_said_in_words(rig):
+    rig.command("$X")  # out of the homing lock GRBL starts in
+    rig.sim.set_door(True)
+    rig.wait(lambda: rig.session.grbl_status.state == "Door", 10.0, "the door state")
+    rig.sim.set_door(False)
+    rig.wait(lambda: rig.session.grbl_status.substate == 0, 10.0, "the door closed")
+    said = rig.text.getvalue()
+    assert "[Door:1, cover]: safety door open: the machine stopped; close it to go on" in said
+    assert "[Door:0, cover]: safety door closed: Resume goes on" in said
 
 
 def test_overrides_reach_the_machine(rig):
@@ -205,9 +229,13 @@ def test_link_loss_mid_job_offers_start_here_and_finishes(rig):
     rig.transport = serial.Serial(path, 115200, timeout=0)
     rig.session.attach(rig.transport.write)
     rig.wait(lambda: rig.session.state.name == "RESTART_REQUIRED", 60.0, "the offer", through_loss=True)
-    start = rig.session.last_job.done + 1
-    assert 0 < start <= 61
+    offered = rig.session.last_job.done + 1
+    assert 0 < offered <= 61
     rig.wait(lambda: rig.session.grbl_status.state == "Idle", 120.0, "the machine to finish its buffer")
+    job = rig.session.last_job
+    assert job.done == job.acked  # the offer followed the buffer the machine ran meanwhile
+    start = job.done + 1
+    assert start >= offered and rig.session.state.name == "RESTART_REQUIRED"
     jobs = len(rig.printer.jobs)
     assert rig.session.confirm_restart()
     rig._wait_job(jobs)

@@ -170,8 +170,9 @@ def test_silence_degrades_then_loses_the_link_but_not_while_homing():
     assert h.rec.of("on_link_changed")[-1].state == "CONNECTED"
 
 
-def test_link_loss_mid_job_offers_start_here_after_last_finished_line():
-    h = Harness()
+def cut_off(h) -> None:
+    """Ten moves; five answers (the $G, the preamble, lines 0-2), a report with two
+    planner blocks in use (line 0 finished), then the link lost."""
     h.answer_refresh()
     h.session.command("$H")
     h.feed("ok")
@@ -180,6 +181,11 @@ def test_link_loss_mid_job_offers_start_here_after_last_finished_line():
     h.feed("ok", "ok", "ok", "ok", "ok", "<Run|MPos:0,0,0|FS:100,0|Bf:13,100>")
     h.advance(3.5)
     assert h.session.state is SessionState.INTERRUPTED
+
+
+def test_link_loss_mid_job_offers_start_here_after_last_finished_line():
+    h = Harness()
+    cut_off(h)
     h.feed("<Idle|MPos:0,0,0|FS:0,0>")
     offer = h.rec.of("on_resume_offer")[-1]
     assert offer.from_seq == 3 and h.session.state is SessionState.RESTART_REQUIRED
@@ -194,6 +200,42 @@ def test_link_loss_mid_job_offers_start_here_after_last_finished_line():
     sent = h.lines()
     assert sent[:4] == ["$I", "$$", "$#", "$G"] and sent[4:6] == ["G21 G90 G94 G17", "G54"]
     assert "G01 X3 F100" in sent and h.session.homed  # a reset at rest keeps the position
+
+
+def test_the_offered_line_follows_what_the_machine_finishes_until_the_operator_answers():
+    h = Harness()
+    cut_off(h)
+    h.feed("<Run|MPos:0,0,0|FS:100,0|Bf:12,100>")  # back while the machine still runs its buffer
+    offered = lambda: [o.from_seq for o in h.rec.of("on_resume_offer")]  # noqa: E731
+    assert offered() == [1]
+    h.feed("<Run|MPos:0,0,0|FS:100,0|Bf:14,100>")  # one block in use: lines 0 and 1 finished
+    assert offered() == [1, 2] and h.session.state is SessionState.RESTART_REQUIRED
+    h.feed("<Run|MPos:0,0,0|FS:100,0|Bf:14,100>")  # nothing new: no new offer
+    h.feed("<Idle|MPos:0,0,0|FS:0,0|Bf:15,100>")
+    assert offered() == [1, 2, 3]
+    assert "line 4" in h.rec.of("on_resume_offer")[-1].reason and h.rec.of("on_progress")[-1].done == 2
+    h.take()
+    assert h.session.confirm_restart()
+    h.feed("<Idle|MPos:0,0,0|FS:0,0>")
+    assert b"\x18" in h.take()
+    h.feed(WELCOME.decode().strip())
+    sent = h.lines()
+    assert "G01 X3 F100" in sent and "G01 X2 F100" not in sent  # each line once
+
+
+def test_a_confirmed_restart_waiting_for_rest_starts_after_what_finished_meanwhile():
+    h = Harness()
+    cut_off(h)
+    h.feed("<Run|MPos:0,0,0|FS:100,0|Bf:12,100>")
+    assert h.rec.of("on_resume_offer")[-1].from_seq == 1
+    assert h.session.confirm_restart()  # while the machine still runs
+    h.feed("<Run|MPos:0,0,0|FS:100,0|Bf:14,100>")
+    assert b"\x18" not in h.take()
+    h.feed("<Idle|MPos:0,0,0|FS:0,0|Bf:15,100>")
+    assert b"\x18" in h.take() and len(h.rec.of("on_resume_offer")) == 1
+    h.feed(WELCOME.decode().strip())
+    sent = h.lines()
+    assert "G01 X3 F100" in sent and not {"G01 X0 F100", "G01 X1 F100", "G01 X2 F100"} & set(sent)
 
 
 def test_a_restart_after_a_reset_restores_the_work_system_and_coolant_the_job_ran_in():
