@@ -99,16 +99,12 @@ def estimate(toolpath, device_lines, profile, start=None) -> Estimate:
     barriers = _barriers(toolpath, device_lines, profile)
     is_move = _chain(toolpath.device_index, moves, [b.line for b in barriers])
     at = _index(np.flatnonzero(is_move))  # each move's place in the queue
+    first = None if first is None else (first, start)
     chain_len, junction_sq, v_nom = _geometry(toolpath, moves, at, is_move, accel, row_length,
-                                              mo.junction_deviation_mm, None if first is None else (first, start))
+                                              mo.junction_deviation_mm, first)
     reached = _planned_speeds(chain_len, junction_sq, accel, window_s)
     del junction_sq
-    times = np.empty(len(moves))
-    for a in range(0, len(moves), BLOCK):
-        place = at[a : a + BLOCK]
-        after = place + 1
-        v_out = np.where(after < len(reached), reached[np.minimum(after, len(reached) - 1)], 0.0)
-        times[a : a + BLOCK] = trapezoid_times(chain_len[place], reached[place], v_out, v_nom[a : a + BLOCK], accel)
+    times = _move_times(at, chain_len, reached, v_nom, accel)
     del reached, chain_len, v_nom, at
     # the S-curve settles for its window where the path stops before a barrier
     barrier_at = np.flatnonzero(~is_move)
@@ -138,6 +134,19 @@ def estimate(toolpath, device_lines, profile, start=None) -> Estimate:
         dwell=spent["dwell"], spin_up=spent["spindle"], stops=len(stops),
         tool_changes=sum(1 for b in stops if _is_tool_change(device_lines[b.line])),
         stop_seconds=stop_settle + sum(b.stop_ms for b in stops) / 1000.0)
+
+
+def _move_times(at, chain_len, reached, v_nom, accel: float) -> np.ndarray:
+    """Seconds of each move (its place in the queue ``at``), a block at a time: from the
+    speed reached at its entry to the next block's (0 after the last)."""
+    times = np.empty(len(at))
+    for a in range(0, len(at), BLOCK):
+        place = at[a : a + BLOCK]
+        after = place + 1
+        v_out = np.where(after < len(reached), reached[np.minimum(after, len(reached) - 1)], 0.0)
+        v_in, v = reached[place], v_nom[a : a + BLOCK]
+        times[a : a + BLOCK] = trapezoid_times(chain_len[place], v_in, v_out, v, accel)
+    return times
 
 
 def _index(rows: np.ndarray) -> np.ndarray:

@@ -66,7 +66,8 @@ def test_the_estimate_is_the_whole_array_estimate_to_the_last_bit(programs):
 
 @pytest.mark.parametrize("chunk", [1, 7, 1000])
 def test_any_chunk_size_gives_the_same_figures(programs, monkeypatch, chunk):
-    from app.gcode import estimate as module, estimate_passes as passes
+    from app.gcode import estimate as module
+    from app.gcode import estimate_passes as passes
 
     monkeypatch.setattr(passes, "CHUNK", chunk)
     monkeypatch.setattr(module, "BLOCK", chunk)
