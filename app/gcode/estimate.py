@@ -124,8 +124,9 @@ def estimate(toolpath, device_lines, profile, start=None) -> Estimate:
     rows = np.clip(rows, 0, max(len(toolpath) - 1, 0))
     if len(toolpath):
         np.add.at(row_seconds, rows, waits)  # a dwell row is its own line's row
-    line_seconds = np.bincount(toolpath.device_index[moves], weights=times,
-                               minlength=len(device_lines)).astype(float)
+    line_seconds = np.zeros(len(device_lines))
+    for a in range(0, len(moves), BLOCK):  # in order: each line's sum as one bincount's, to the bit
+        np.add.at(line_seconds, toolpath.device_index[moves[a : a + BLOCK]], times[a : a + BLOCK])
     np.add.at(line_seconds, lines, waits)
     stops = [b for b in barriers if b.kind == "stop"]
     return Estimate(
