@@ -27,8 +27,8 @@ from .estimate_passes import (
     helix_tangents,
     junction_speeds,
     line_tangents,
-    look_ahead_binds,
     path_before,
+    queue_binds,
     queue_horizons,
     reached_speeds_sq,
     speeds_close,
@@ -44,7 +44,7 @@ HORIZON_ROUNDS = 6
 # this late on average, measured on the simulator (tests/gcode/test_estimate.py).
 REFILL_S = 0.025
 ZERO_MM = 1e-6  # the planner's zero-length move: transparent, no stop
-BLOCK = 1 << 16  # moves whose geometry is worked out at a time (small temporaries)
+BLOCK = 1 << 14  # moves whose geometry is worked out at a time (small temporaries)
 
 
 @dataclass
@@ -169,13 +169,17 @@ def _planned_speeds(length, junction_sq, accel: float, window_s: float) -> np.nd
         if before is not None and speeds_close(reached, before, rtol=1e-4, atol=1e-6):
             break  # the look-ahead no longer changes the speeds
         before = reached
-        implied, end = queue_horizons(length, reached, trail_s, QUEUE_BLOCKS, s=s)
-        if queue_end is None and not look_ahead_binds(length, entry, accel, implied, end, s=s):
+        if queue_end is None and not queue_binds(length, reached, entry, accel, trail_s, QUEUE_BLOCKS, s):
             break  # the queue is long enough everywhere: the full look-ahead's speeds hold
         del entry
+        implied, end = queue_horizons(length, reached, trail_s, QUEUE_BLOCKS, s=s)
         horizon = (horizon + implied + 1) // 2
         del implied
-        queue_end = end if queue_end is None else (queue_end + end) / 2.0
+        if queue_end is None:
+            queue_end = end
+        else:  # in place: the same numbers as (queue_end + end) / 2
+            queue_end += end
+            queue_end /= 2.0
         del end
     return reached
 

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 
-CHUNK = 1 << 16  # blocks a pass works on at a time (small temporaries)
+CHUNK = 1 << 15  # blocks a pass works on at a time (small temporaries)
 STRAIGHT = 0.999999  # the planner's cosine beyond which a corner is straight on / a reversal
 
 
@@ -158,16 +158,21 @@ def queue_horizons(length: np.ndarray, speed: np.ndarray, trail_s: float, capaci
     s = path_before(length) if s is None else s
     blocks, queue_end = np.empty(n, np.int16), np.empty(n)
     for a, b in _chunks(n):
-        trail = s[a:b] - speed[a:b] * trail_s
-        head = np.minimum(np.searchsorted(s[1:], trail, side="right"), max(n - 1, 0))
-        with np.errstate(divide="ignore", invalid="ignore"):
-            frac = np.clip(np.where(length[head] > 0, (trail - s[head]) / length[head], 0.0), 0.0, 1.0)
-        end = np.minimum(head + frac + capacity, n)
-        whole = np.floor(end).astype(np.int64)
-        last = np.where(whole < n, length[np.minimum(whole, n - 1)], 0.0)
-        queue_end[a:b] = s[whole] + (end - whole) * last
-        blocks[a:b] = np.clip(whole - np.arange(a, b), 1, capacity - 1)
+        blocks[a:b], queue_end[a:b] = _queue_chunk(length, speed, trail_s, capacity, s, a, b)
     return blocks, queue_end
+
+
+def _queue_chunk(length, speed, trail_s: float, capacity: int, s, a: int, b: int):
+    """``queue_horizons`` of blocks ``a..b``."""
+    n = len(length)
+    trail = s[a:b] - speed[a:b] * trail_s
+    head = np.minimum(np.searchsorted(s[1:], trail, side="right"), max(n - 1, 0))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        frac = np.clip(np.where(length[head] > 0, (trail - s[head]) / length[head], 0.0), 0.0, 1.0)
+    end = np.minimum(head + frac + capacity, n)
+    whole = np.floor(end).astype(np.int64)
+    last = np.where(whole < n, length[np.minimum(whole, n - 1)], 0.0)
+    return np.clip(whole - np.arange(a, b), 1, capacity - 1), s[whole] + (end - whole) * last
 
 
 def look_ahead_binds(length, entry_sq, accel: float, horizon, queue_end, s: np.ndarray | None = None) -> bool:
@@ -177,9 +182,21 @@ def look_ahead_binds(length, entry_sq, accel: float, horizon, queue_end, s: np.n
     path cannot stop from the entry speed by that end."""
     n = len(length)
     s = path_before(length) if s is None else s
-    for a, b in _chunks(n):
-        need = entry_sq[a:b] * (1.0 - 1e-9) + 2.0 * accel * s[a:b]
-        end = np.minimum(s[np.minimum(np.arange(a, b) + _horizons(horizon, n, a, b), n)], queue_end[a:b])
-        if (2.0 * accel * end < need).any():
-            return True
-    return False
+    return any(_binds_chunk(entry_sq, accel, _horizons(horizon, n, a, b), queue_end[a:b], s, a, b)
+               for a, b in _chunks(n))
+
+
+def queue_binds(length, speed, entry_sq, accel: float, trail_s: float, capacity: int, s) -> bool:
+    """``look_ahead_binds`` of the ``queue_horizons`` at ``speed``, a chunk at a time
+    (neither kept whole: where it binds, they are worked out again, whole)."""
+    chunks = _chunks(len(length))
+    queues = ((a, b, _queue_chunk(length, speed, trail_s, capacity, s, a, b)) for a, b in chunks)
+    return any(_binds_chunk(entry_sq, accel, *queue, s, a, b) for a, b, queue in queues)
+
+
+def _binds_chunk(entry_sq, accel: float, horizon, queue_end, s, a: int, b: int) -> bool:
+    """``look_ahead_binds`` of blocks ``a..b`` (``horizon``, ``queue_end``: theirs)."""
+    n = len(s) - 1
+    need = entry_sq[a:b] * (1.0 - 1e-9) + 2.0 * accel * s[a:b]
+    end = np.minimum(s[np.minimum(np.arange(a, b) + horizon, n)], queue_end)
+    return bool((2.0 * accel * end < need).any())
