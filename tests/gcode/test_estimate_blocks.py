@@ -28,6 +28,10 @@ WHOLE_ARRAY_DIGESTS = {
     'arcs and stops from a start': '545ca2e710ca56cc',
     'short segments': 'eb8c23e485df045f',
     'gcodetools': 'c0f221e185f1c5b3',
+    'nothing': 'dc38c07cffa723ae',
+    'events only': '47d3f173eea99cd1',
+    'moves that go nowhere': '6aa90590aab9bba6',
+    'one move from a start': 'def5c63661b249a6',
 }
 
 
@@ -48,6 +52,10 @@ def _programs(tmp: Path) -> dict:
     out["arcs and stops from a start"] = (load_text(ARCS_AND_STOPS), (1.0, -2.0, 3.0))
     out["short segments"] = (load_text(short_segments(0.025, 600)), None)
     out["gcodetools"] = (load(arcfile.build(tmp / "arcs.ngc", 20_000)), None)
+    out["nothing"] = (load_text(""), None)
+    out["events only"] = (load_text("M3 S1000\nG4 P1\nM0\nM5\nM2\n"), None)
+    out["moves that go nowhere"] = (load_text("G0 X0 Y0 Z0\nG1 X0 F100\nG4 P0.5\nG1 X1\nG1 X1\nM2\n"), None)
+    out["one move from a start"] = (load_text("G1 X10 Y5 F600\n"), (0.0, 0.0, 0.0))
     return out
 
 
