@@ -100,12 +100,13 @@ def estimate(toolpath, device_lines, profile, start=None) -> Estimate:
     is_move = _chain(toolpath.device_index, moves, [b.line for b in barriers])
     at = _index(np.flatnonzero(is_move))  # each move's place in the queue
     first = None if first is None else (first, start)
-    chain_len, junction_sq, v_nom = _geometry(toolpath, moves, at, is_move, accel, row_length,
-                                              mo.junction_deviation_mm, first)
+    chain_len, junction_sq = _geometry(toolpath, moves, at, is_move, accel, row_length,
+                                      mo.junction_deviation_mm, first)
+    del at  # the passes need a few numbers per block only
     reached = _planned_speeds(chain_len, junction_sq, accel, window_s)
     del junction_sq
-    times = _move_times(at, chain_len, reached, v_nom, accel)
-    del reached, chain_len, v_nom, at
+    times = _move_times(toolpath, moves, is_move, chain_len, reached, accel, first)
+    del reached, chain_len
     # the S-curve settles for its window where the path stops before a barrier
     barrier_at = np.flatnonzero(~is_move)
     settles = (barrier_at > 0) & is_move[np.maximum(barrier_at - 1, 0)]
@@ -137,15 +138,17 @@ def estimate(toolpath, device_lines, profile, start=None) -> Estimate:
         stop_seconds=stop_settle + sum(b.stop_ms for b in stops) / 1000.0)
 
 
-def _move_times(at, chain_len, reached, v_nom, accel: float) -> np.ndarray:
-    """Seconds of each move (its place in the queue ``at``), a block at a time: from the
-    speed reached at its entry to the next block's (0 after the last)."""
-    times = np.empty(len(at))
+def _move_times(tp, moves, is_move, chain_len, reached, accel: float, first) -> np.ndarray:
+    """Seconds of each move, a block at a time: from the speed reached at its entry to the
+    next block's (0 after the last), never above its nominal speed (worked out again: not
+    kept through the passes)."""
+    times = np.empty(len(moves))
+    at = _index(np.flatnonzero(is_move))
     for a in range(0, len(at), BLOCK):
         place = at[a : a + BLOCK]
         after = place + 1
         v_out = np.where(after < len(reached), reached[np.minimum(after, len(reached) - 1)], 0.0)
-        v_in, v = reached[place], v_nom[a : a + BLOCK]
+        v_in, v = reached[place], _nominal_speeds(tp, moves[a : a + BLOCK], accel, first)[0]
         times[a : a + BLOCK] = trapezoid_times(chain_len[place], v_in, v_out, v, accel)
     return times
 
@@ -203,51 +206,67 @@ def _first_line_row(tp) -> int | None:
 def _geometry(tp, moves: np.ndarray, at: np.ndarray, is_move: np.ndarray, accel: float, row_length,
               deviation: float, first=None):
     """Per queue block its length and squared junction speed from the block before (0 at
-    barriers and after them: from rest), and per move its nominal speed (mm/s); ``first``:
+    barriers and after them: from rest); ``first``:
     (row, start) that row starts from instead. Worked out ``BLOCK`` moves at a time, each
     block's first tangent meeting the last end tangent of the block before (the same
     numbers as whole arrays, a few MB at a time)."""
     n = len(moves)
-    chain_len, junction_sq, v_nom = np.zeros(len(is_move)), np.zeros(len(is_move)), np.empty(n)
+    chain_len, junction_sq = np.zeros(len(is_move)), np.zeros(len(is_move))
     last_dir, last_v = np.zeros((1, 3)), np.zeros(1)
     for a in range(0, n, BLOCK):
         part = slice(a, a + BLOCK)
         rows = moves[part]
-        start = tp.start.take(rows, axis=0)
-        if first is not None:
-            start[rows == first[0]] = first[1]
-        length, v_nom[part], start_dir, end_dir = _block_geometry(
-            tp, rows, start, accel, row_length.take(rows).astype(float))
+        row_len = row_length.take(rows).astype(float)
+        length, v_nom, start_dir, end_dir = _block_geometry(tp, rows, accel, row_len, first)
         place = at[part]
         chain_len[place] = length
-        end_dir, v = np.concatenate((last_dir, end_dir)), np.concatenate((last_v, v_nom[part]))
+        end_dir, v = np.concatenate((last_dir, end_dir)), np.concatenate((last_v, v_nom))
         last_dir, last_v = end_dir[-1:], v[-1:]
         follows = np.flatnonzero((place > 0) & is_move[np.maximum(place - 1, 0)])
         vj = junction_speeds(end_dir[follows], start_dir[follows], accel, deviation)
         vj = np.minimum(np.minimum(vj, v[follows + 1]), v[follows])
         junction_sq[place[follows]] = vj * vj
-    return chain_len, junction_sq, v_nom
+    return chain_len, junction_sq
 
 
-def _block_geometry(tp, rows: np.ndarray, start: np.ndarray, accel: float, length: np.ndarray):
-    """``_geometry`` of some moves (``start``: their starts)."""
-    end, kind, feed = tp.end.take(rows, axis=0), tp.kind.take(rows), tp.feed.take(rows)
+def _starts(tp, rows: np.ndarray, first) -> np.ndarray:
+    """Where these rows start (``first``: (row, start) that row starts from instead)."""
+    start = tp.start.take(rows, axis=0)
+    if first is not None:
+        start[rows == first[0]] = first[1]
+    return start
+
+
+def _nominal_speeds(tp, rows: np.ndarray, accel: float, first):
+    """(mm/s each of these moves runs at most: its feed, arcs at most sqrt(a r); their
+    kinds; the arcs among them; the arcs' centres and radii)."""
+    kind, feed = tp.kind.take(rows), tp.feed.take(rows)
     v_nom = feed / 60.0
+    arc = np.flatnonzero((kind == ARC_CW) | (kind == ARC_CCW))
+    center = radius = None
+    if len(arc):
+        start = _starts(tp, rows[arc], first)
+        center = tp.center.take(rows[arc], axis=0)
+        radius = np.hypot(start[:, 0] - center[:, 0], start[:, 1] - center[:, 1])
+        v_nom[arc] = np.minimum(v_nom[arc], np.sqrt(accel * radius))
+    rapid = kind == RAPID
+    v_nom[rapid] = feed[rapid] / 60.0
+    return v_nom, kind, arc, center, radius
+
+
+def _block_geometry(tp, rows: np.ndarray, accel: float, length: np.ndarray, first):
+    """``_geometry`` of some moves, and their nominal speeds."""
+    start, end = _starts(tp, rows, first), tp.end.take(rows, axis=0)
+    v_nom, kind, arc, center, radius = _nominal_speeds(tp, rows, accel, first)
     start_dir = line_tangents(start, end)
     end_dir = start_dir.copy()
-    arc = np.flatnonzero((kind == ARC_CW) | (kind == ARC_CCW))
     if len(arc):
-        center = tp.center.take(rows[arc], axis=0)
-        radius = np.hypot(start[arc, 0] - center[:, 0], start[arc, 1] - center[:, 1])
-        v_nom[arc] = np.minimum(v_nom[arc], np.sqrt(accel * radius))
         sweep = np.sqrt(np.maximum(length[arc] ** 2 - (end[arc, 2] - start[arc, 2]) ** 2, 0.0))
         sweep = np.where(kind[arc] == ARC_CW, -1.0, 1.0) * sweep / np.where(radius > 0, radius, 1.0)
         per_mm = sweep / np.where(length[arc] > 0, length[arc], 1.0)
         dz_per_mm = (end[arc, 2] - start[arc, 2]) / np.where(length[arc] > 0, length[arc], 1.0)
         start_dir[arc] = helix_tangents(start[arc], center, per_mm, dz_per_mm)
         end_dir[arc] = helix_tangents(end[arc], center, per_mm, dz_per_mm)
-    rapid = kind == RAPID
-    v_nom[rapid] = feed[rapid] / 60.0
     return length, v_nom, start_dir, end_dir
 
 
