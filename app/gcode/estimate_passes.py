@@ -6,6 +6,9 @@ queue order; speeds in mm/s, lengths in mm, ``accel`` in mm/s^2. A barrier (dwel
 spindle, stop, end) is a block of length 0 whose entry speed is 0. The planner keeps
 ``horizon`` blocks after the one it is moving in (its queue's length): the entry speed of
 a block is the fastest from which the path can still stop by the end of that horizon.
+Every pass works ``CHUNK`` blocks at a time, carrying what crosses a chunk's edge (the
+path before it, ``s``; the forward pass's running minimum; the few blocks a horizon
+reaches past it): small temporaries, the same bits as one whole-array pass (issue 24).
 """
 
 from __future__ import annotations
