@@ -193,7 +193,8 @@ def _chain(device_index: np.ndarray, moves: np.ndarray, barrier_lines: list[int]
     no move's)."""
     bars = np.asarray(barrier_lines, dtype=np.int64)
     is_move = np.ones(len(moves) + len(bars), bool)
-    is_move[np.arange(len(bars)) + np.searchsorted(device_index[moves], bars, side="right")] = False
+    rows_up_to = np.searchsorted(device_index, bars, side="right")  # the rows before each barrier
+    is_move[np.arange(len(bars)) + np.searchsorted(moves, rows_up_to.astype(moves.dtype))] = False
     return is_move
 
 
@@ -277,7 +278,9 @@ def _is_tool_change(line: str) -> bool:
 def _barriers(tp, device_lines, profile) -> list[_Barrier]:
     """The non-motion device lines in order, each with how long it holds the path."""
     taken = np.zeros(len(device_lines), bool)
-    taken[tp.device_index[tp.kind != DWELL]] = True
+    for a in range(0, len(tp), BLOCK):  # a block at a time: small temporaries
+        part = slice(a, a + BLOCK)
+        taken[tp.device_index[part][tp.kind[part] != DWELL]] = True
     out: list[_Barrier] = []
     rpm = 0.0
     z_at = _z_before(tp, len(device_lines), profile)
@@ -306,12 +309,16 @@ def _word(text: str, letter: str, default: float) -> float:
 
 
 def _z_before(tp, n_lines: int, profile):
-    """Machine Z where the tool is before device line ``line`` (work Z plus the offset)."""
-    rows = np.flatnonzero(tp.kind != DWELL)
-    lines, z = tp.device_index[rows], tp.end[rows, 2]
+    """Machine Z where the tool is before device line ``line`` (work Z plus the offset); the
+    moves' lines and Z are gathered at the first stop that asks (most programs have none)."""
+    moves: list = []
     offset_z = profile.travel.work_offset()[2]
 
     def at(line: int) -> float:
+        if not moves:
+            rows = np.flatnonzero(tp.kind != DWELL)
+            moves[:] = [tp.device_index[rows], tp.end[rows, 2]]
+        lines, z = moves
         k = int(np.searchsorted(lines, line)) - 1
         return float(z[k] if k >= 0 else (tp.start[0, 2] if len(tp) else 0.0)) + offset_z
     return at
