@@ -166,7 +166,7 @@ def _stages(path: Path) -> tuple[str, str]:
     from app.gcode.cli import _summary
     from app.gcode.diagnostics import Report
     from app.gcode.ops import OpBuffer
-    from app.gcode.program import Program
+    from app.gcode.program import Program, _estimate
     from app.gcode.source import Lines
     from app.gcode.toolpath import build
     from app.profile import MachineProfile
@@ -194,7 +194,22 @@ def _stages(path: Path) -> tuple[str, str]:
     total = sum(spent.values())
     shares = sorted(spent.items(), key=lambda item: -item[1])
     where = ", ".join(f"{name} {cpu / total:.0%}" for name, cpu in shares if cpu >= 0.02 * total)
+    traced = _traced_mb(partial(_estimate, toolpath, ops, plan, profile))
+    where += f"; the estimate alone allocates at most {traced:.0f} MB"
     return ", ".join(f"{name} {cpu:.2f}" for name, cpu in spent.items()) + f" (sum {total:.2f})", where
+
+
+def _traced_mb(fn) -> float:
+    """Peak MB that ``fn()`` allocates (numpy arrays and Python objects, ``tracemalloc``)
+    on top of what is there: a figure the machine's load and the allocator do not move."""
+    import tracemalloc
+
+    tracemalloc.start()
+    try:
+        fn()
+        return tracemalloc.get_traced_memory()[1] / 2**20
+    finally:
+        tracemalloc.stop()
 
 
 _GCODEPARSER = ("import sys\nfrom gcodeparser import parse_gcode_lines\n"

@@ -27,9 +27,11 @@ from .estimate_passes import (
     helix_tangents,
     junction_speeds,
     line_tangents,
-    look_ahead_binds,
+    path_before,
+    queue_binds,
     queue_horizons,
     reached_speeds_sq,
+    speeds_close,
     trapezoid_times,
 )
 from .estimate_spindle import spin_wait_ms
@@ -42,7 +44,7 @@ HORIZON_ROUNDS = 6
 # this late on average, measured on the simulator (tests/gcode/test_estimate.py).
 REFILL_S = 0.025
 ZERO_MM = 1e-6  # the planner's zero-length move: transparent, no stop
-BLOCK = 1 << 16  # moves whose geometry is worked out at a time (small temporaries)
+BLOCK = 1 << 14  # moves whose geometry is worked out at a time (small temporaries)
 
 
 @dataclass
@@ -81,9 +83,10 @@ class _Barrier:
 
 
 def estimate(toolpath, device_lines, profile, start=None) -> Estimate:
-    """The planner's time for ``toolpath`` whose rows come from ``device_lines``; ``start``
-    (work mm), where the machine is when the job starts, if known: the first move is a
-    straight one from there rather than from where the program assumed."""
+    """The planner's time for ``toolpath`` whose rows come from ``device_lines`` (in their
+    order); ``start`` (work mm), where the machine is when the job starts, if known: the
+    first move is a straight one from there rather than from where the program assumed.
+    Kept whole: a few numbers per planner block; the rest is worked out in blocks."""
     mo = profile.motion
     accel = mo.accel_mm_s2
     window_s = max(1, round(accel / mo.jerk_mm_s3 * 1000)) / 1000.0
@@ -92,45 +95,67 @@ def estimate(toolpath, device_lines, profile, start=None) -> Estimate:
     if first is not None:
         row_length = row_length.copy()
         row_length[first] = float(np.linalg.norm(toolpath.end[first] - np.asarray(start, float)))
-    moves = np.flatnonzero((toolpath.kind != DWELL) & (row_length >= ZERO_MM))
+    moves = _index(np.flatnonzero((toolpath.kind != DWELL) & (row_length >= ZERO_MM)))
     barriers = _barriers(toolpath, device_lines, profile)
-    order, is_move, item = _chain(toolpath.device_index[moves], [b.line for b in barriers])
-    length, v_nom, start_dir, end_dir = _geometry(toolpath, moves, accel, row_length,
-                                                  None if first is None else (first, start))
-    chain_len = np.zeros(len(order))
-    chain_len[is_move] = length[item[is_move]]
-    junction_sq = _junctions_sq(is_move, item, v_nom, start_dir, end_dir, accel, mo.junction_deviation_mm)
-    del order, length, start_dir, end_dir  # 64 bytes a move, not needed further
+    is_move = _chain(toolpath.device_index, moves, [b.line for b in barriers])
+    at = _index(np.flatnonzero(is_move))  # each move's place in the queue
+    first = None if first is None else (first, start)
+    chain_len, junction_sq = _geometry(toolpath, moves, at, is_move, accel, row_length,
+                                      mo.junction_deviation_mm, first)
+    del at  # the passes need a few numbers per block only
     reached = _planned_speeds(chain_len, junction_sq, accel, window_s)
-    v_out = np.append(reached[1:], 0.0)
-    times = trapezoid_times(chain_len[is_move], reached[is_move], v_out[is_move], v_nom[item[is_move]], accel)
+    del junction_sq
+    times = _move_times(toolpath, moves, is_move, chain_len, reached, accel, first)
+    del reached, chain_len
     # the S-curve settles for its window where the path stops before a barrier
-    settles = np.flatnonzero(~is_move[1:] & is_move[:-1]) + 1
+    barrier_at = np.flatnonzero(~is_move)
+    settles = (barrier_at > 0) & is_move[np.maximum(barrier_at - 1, 0)]
     row_seconds = np.zeros(len(toolpath))
-    row_seconds[moves[item[is_move]]] = times
+    row_seconds[moves] = times
     waits = np.zeros(len(barriers))  # seconds each barrier holds the path (stops: 0)
-    np.add.at(waits, item[settles], window_s)
+    waits[settles] += window_s
     spent = {"dwell": 0.0, "spindle": 0.0, "stop": 0.0}
     for k, b in enumerate(barriers):
         if b.kind in spent:
             spent[b.kind] += b.ms / 1000.0
         waits[k] = 0.0 if b.kind == "stop" else waits[k] + b.ms / 1000.0
-    stop_settle = sum(window_s for k in settles if barriers[item[k]].kind == "stop")
+    stop_settle = sum(window_s for k in np.flatnonzero(settles).tolist() if barriers[k].kind == "stop")
     lines = np.array([b.line for b in barriers], dtype=np.int64)
     rows = np.searchsorted(toolpath.device_index, lines, side="right") - 1
     rows = np.clip(rows, 0, max(len(toolpath) - 1, 0))
     if len(toolpath):
         np.add.at(row_seconds, rows, waits)  # a dwell row is its own line's row
-    line_seconds = np.bincount(toolpath.device_index[moves][item[is_move]], weights=times,
-                               minlength=len(device_lines)).astype(float)
+    line_seconds = np.zeros(len(device_lines))
+    for a in range(0, len(moves), BLOCK):  # in order: each line's sum as one bincount's, to the bit
+        np.add.at(line_seconds, toolpath.device_index[moves[a : a + BLOCK]], times[a : a + BLOCK])
     np.add.at(line_seconds, lines, waits)
     stops = [b for b in barriers if b.kind == "stop"]
     return Estimate(
         line_seconds=line_seconds[: len(device_lines)], row_seconds=row_seconds,
-        motion=float(times.sum()) + window_s * len(settles) - stop_settle,
+        motion=float(times.sum()) + window_s * int(settles.sum()) - stop_settle,
         dwell=spent["dwell"], spin_up=spent["spindle"], stops=len(stops),
         tool_changes=sum(1 for b in stops if _is_tool_change(device_lines[b.line])),
         stop_seconds=stop_settle + sum(b.stop_ms for b in stops) / 1000.0)
+
+
+def _move_times(tp, moves, is_move, chain_len, reached, accel: float, first) -> np.ndarray:
+    """Seconds of each move, a block at a time: from the speed reached at its entry to the
+    next block's (0 after the last), never above its nominal speed (worked out again: not
+    kept through the passes)."""
+    times = np.empty(len(moves))
+    at = _index(np.flatnonzero(is_move))
+    for a in range(0, len(at), BLOCK):
+        place = at[a : a + BLOCK]
+        after = place + 1
+        v_out = np.where(after < len(reached), reached[np.minimum(after, len(reached) - 1)], 0.0)
+        v_in, v = reached[place], _nominal_speeds(tp, moves[a : a + BLOCK], accel, first)[0]
+        times[a : a + BLOCK] = trapezoid_times(chain_len[place], v_in, v_out, v, accel)
+    return times
+
+
+def _index(rows: np.ndarray) -> np.ndarray:
+    """Row numbers in 4 bytes each when they fit (half the memory of numpy's default)."""
+    return rows.astype(np.int32) if len(rows) < 2**31 - 1 else rows
 
 
 def _planned_speeds(length, junction_sq, accel: float, window_s: float) -> np.ndarray:
@@ -139,27 +164,38 @@ def _planned_speeds(length, junction_sq, accel: float, window_s: float) -> np.nd
     round moving the horizon half way to what the last speeds imply (undamped, it swings)."""
     trail_s = (window_s - 0.001) / 2.0 + REFILL_S  # a moving average of n ms trails by (n - 1) / 2 ms
     horizon, queue_end, before = QUEUE_BLOCKS - 1, None, None
+    s = path_before(length)
     for _ in range(HORIZON_ROUNDS):
-        entry = entry_speeds_sq(length, junction_sq, accel, horizon, queue_end)
-        reached = np.sqrt(reached_speeds_sq(length, entry, accel))
-        if before is not None and np.allclose(reached, before, rtol=1e-4, atol=1e-6):
+        entry = entry_speeds_sq(length, junction_sq, accel, horizon, queue_end, s=s)
+        reached = reached_speeds_sq(length, entry, accel, s=s)
+        np.sqrt(reached, out=reached)
+        if before is not None and speeds_close(reached, before, rtol=1e-4, atol=1e-6):
             break  # the look-ahead no longer changes the speeds
         before = reached
-        implied, end = queue_horizons(length, reached, trail_s, QUEUE_BLOCKS)
-        if queue_end is None and not look_ahead_binds(length, entry, accel, implied, end):
+        if queue_end is None and not queue_binds(length, reached, entry, accel, trail_s, QUEUE_BLOCKS, s):
             break  # the queue is long enough everywhere: the full look-ahead's speeds hold
+        del entry
+        implied, end = queue_horizons(length, reached, trail_s, QUEUE_BLOCKS, s=s)
         horizon = (horizon + implied + 1) // 2
-        queue_end = end if queue_end is None else (queue_end + end) / 2.0
+        del implied
+        if queue_end is None:
+            queue_end = end
+        else:  # in place: the same numbers as (queue_end + end) / 2
+            queue_end += end
+            queue_end /= 2.0
+        del end
     return reached
 
 
-def _chain(move_lines: np.ndarray, barrier_lines: list[int]):
-    """Queue order of moves and barriers (by device line): (order, is_move, item index)."""
-    keys = np.concatenate((move_lines, np.asarray(barrier_lines, dtype=move_lines.dtype)))
-    order = np.argsort(keys, kind="stable")
-    is_move = order < len(move_lines)
-    item = np.where(is_move, order, order - len(move_lines))
-    return order, is_move, item
+def _chain(device_index: np.ndarray, moves: np.ndarray, barrier_lines: list[int]) -> np.ndarray:
+    """Whether each block of the queue is a move (else a barrier): the moves and the
+    barriers merged by device line (the rows are in device line order; a barrier's line is
+    no move's)."""
+    bars = np.asarray(barrier_lines, dtype=np.int64)
+    is_move = np.ones(len(moves) + len(bars), bool)
+    rows_up_to = np.searchsorted(device_index, bars, side="right")  # the rows before each barrier
+    is_move[np.arange(len(bars)) + np.searchsorted(moves, rows_up_to.astype(moves.dtype))] = False
+    return is_move
 
 
 def _first_line_row(tp) -> int | None:
@@ -168,57 +204,71 @@ def _first_line_row(tp) -> int | None:
     return int(rows[0]) if len(rows) and tp.kind[rows[0]] not in (ARC_CW, ARC_CCW) else None
 
 
-def _geometry(tp, moves: np.ndarray, accel: float, row_length: np.ndarray, first=None):
-    """Per move: length, nominal speed (mm/s) and unit tangents at its start and end;
-    ``first``: (row, start) that row starts from instead. Worked out ``BLOCK`` moves at a
-    time (every value is the row's own): small temporaries, the same numbers."""
+def _geometry(tp, moves: np.ndarray, at: np.ndarray, is_move: np.ndarray, accel: float, row_length,
+              deviation: float, first=None):
+    """Per queue block its length and squared junction speed from the block before (0 at
+    barriers and after them: from rest); ``first``:
+    (row, start) that row starts from instead. Worked out ``BLOCK`` moves at a time, each
+    block's first tangent meeting the last end tangent of the block before (the same
+    numbers as whole arrays, a few MB at a time)."""
     n = len(moves)
-    length, v_nom = np.empty(n), np.empty(n)
-    start_dir, end_dir = np.empty((n, 3)), np.empty((n, 3))
+    chain_len, junction_sq = np.zeros(len(is_move)), np.zeros(len(is_move))
+    last_dir, last_v = np.zeros((1, 3)), np.zeros(1)
     for a in range(0, n, BLOCK):
         part = slice(a, a + BLOCK)
         rows = moves[part]
-        start = tp.start.take(rows, axis=0)
-        if first is not None and a == 0 and rows[0] == first[0]:
-            start[0] = first[1]
-        length[part], v_nom[part], start_dir[part], end_dir[part] = _block_geometry(
-            tp, rows, start, accel, row_length.take(rows).astype(float))
-    return length, v_nom, start_dir, end_dir
+        row_len = row_length.take(rows).astype(float)
+        length, v_nom, start_dir, end_dir = _block_geometry(tp, rows, accel, row_len, first)
+        place = at[part]
+        chain_len[place] = length
+        end_dir, v = np.concatenate((last_dir, end_dir)), np.concatenate((last_v, v_nom))
+        last_dir, last_v = end_dir[-1:], v[-1:]
+        follows = np.flatnonzero((place > 0) & is_move[np.maximum(place - 1, 0)])
+        vj = junction_speeds(end_dir[follows], start_dir[follows], accel, deviation)
+        vj = np.minimum(np.minimum(vj, v[follows + 1]), v[follows])
+        junction_sq[place[follows]] = vj * vj
+    return chain_len, junction_sq
 
 
-def _block_geometry(tp, rows: np.ndarray, start: np.ndarray, accel: float, length: np.ndarray):
-    """``_geometry`` of some moves (``start``: their starts)."""
-    end, kind, feed = tp.end.take(rows, axis=0), tp.kind.take(rows), tp.feed.take(rows)
+def _starts(tp, rows: np.ndarray, first) -> np.ndarray:
+    """Where these rows start (``first``: (row, start) that row starts from instead)."""
+    start = tp.start.take(rows, axis=0)
+    if first is not None:
+        start[rows == first[0]] = first[1]
+    return start
+
+
+def _nominal_speeds(tp, rows: np.ndarray, accel: float, first):
+    """(mm/s each of these moves runs at most: its feed, arcs at most sqrt(a r); their
+    kinds; the arcs among them; the arcs' centres and radii)."""
+    kind, feed = tp.kind.take(rows), tp.feed.take(rows)
     v_nom = feed / 60.0
+    arc = np.flatnonzero((kind == ARC_CW) | (kind == ARC_CCW))
+    center = radius = None
+    if len(arc):
+        start = _starts(tp, rows[arc], first)
+        center = tp.center.take(rows[arc], axis=0)
+        radius = np.hypot(start[:, 0] - center[:, 0], start[:, 1] - center[:, 1])
+        v_nom[arc] = np.minimum(v_nom[arc], np.sqrt(accel * radius))
+    rapid = kind == RAPID
+    v_nom[rapid] = feed[rapid] / 60.0
+    return v_nom, kind, arc, center, radius
+
+
+def _block_geometry(tp, rows: np.ndarray, accel: float, length: np.ndarray, first):
+    """``_geometry`` of some moves, and their nominal speeds."""
+    start, end = _starts(tp, rows, first), tp.end.take(rows, axis=0)
+    v_nom, kind, arc, center, radius = _nominal_speeds(tp, rows, accel, first)
     start_dir = line_tangents(start, end)
     end_dir = start_dir.copy()
-    arc = np.flatnonzero((kind == ARC_CW) | (kind == ARC_CCW))
     if len(arc):
-        center = tp.center.take(rows[arc], axis=0)
-        radius = np.hypot(start[arc, 0] - center[:, 0], start[arc, 1] - center[:, 1])
-        v_nom[arc] = np.minimum(v_nom[arc], np.sqrt(accel * radius))
         sweep = np.sqrt(np.maximum(length[arc] ** 2 - (end[arc, 2] - start[arc, 2]) ** 2, 0.0))
         sweep = np.where(kind[arc] == ARC_CW, -1.0, 1.0) * sweep / np.where(radius > 0, radius, 1.0)
         per_mm = sweep / np.where(length[arc] > 0, length[arc], 1.0)
         dz_per_mm = (end[arc, 2] - start[arc, 2]) / np.where(length[arc] > 0, length[arc], 1.0)
         start_dir[arc] = helix_tangents(start[arc], center, per_mm, dz_per_mm)
         end_dir[arc] = helix_tangents(end[arc], center, per_mm, dz_per_mm)
-    rapid = kind == RAPID
-    v_nom[rapid] = feed[rapid] / 60.0
     return length, v_nom, start_dir, end_dir
-
-
-def _junctions_sq(is_move, item, v_nom, start_dir, end_dir, accel: float, deviation: float) -> np.ndarray:
-    """Squared junction speed per chain block: 0 at barriers and after them (from rest)."""
-    out = np.zeros(len(is_move))
-    follows = np.flatnonzero(is_move[1:] & is_move[:-1]) + 1
-    for a in range(0, len(follows), BLOCK):  # a block at a time: small temporaries
-        part = follows[a : a + BLOCK]
-        cur, prev = item[part], item[part - 1]
-        vj = junction_speeds(end_dir.take(prev, axis=0), start_dir.take(cur, axis=0), accel, deviation)
-        vj = np.minimum(np.minimum(vj, v_nom[cur]), v_nom[prev])
-        out[part] = vj * vj
-    return out
 
 
 def _is_tool_change(line: str) -> bool:
@@ -228,7 +278,9 @@ def _is_tool_change(line: str) -> bool:
 def _barriers(tp, device_lines, profile) -> list[_Barrier]:
     """The non-motion device lines in order, each with how long it holds the path."""
     taken = np.zeros(len(device_lines), bool)
-    taken[tp.device_index[tp.kind != DWELL]] = True
+    for a in range(0, len(tp), BLOCK):  # a block at a time: small temporaries
+        part = slice(a, a + BLOCK)
+        taken[tp.device_index[part][tp.kind[part] != DWELL]] = True
     out: list[_Barrier] = []
     rpm = 0.0
     z_at = _z_before(tp, len(device_lines), profile)
@@ -257,12 +309,16 @@ def _word(text: str, letter: str, default: float) -> float:
 
 
 def _z_before(tp, n_lines: int, profile):
-    """Machine Z where the tool is before device line ``line`` (work Z plus the offset)."""
-    rows = np.flatnonzero(tp.kind != DWELL)
-    lines, z = tp.device_index[rows], tp.end[rows, 2]
+    """Machine Z where the tool is before device line ``line`` (work Z plus the offset); the
+    moves' lines and Z are gathered at the first stop that asks (most programs have none)."""
+    moves: list = []
     offset_z = profile.travel.work_offset()[2]
 
     def at(line: int) -> float:
+        if not moves:
+            rows = np.flatnonzero(tp.kind != DWELL)
+            moves[:] = [tp.device_index[rows], tp.end[rows, 2]]
+        lines, z = moves
         k = int(np.searchsorted(lines, line)) - 1
         return float(z[k] if k >= 0 else (tp.start[0, 2] if len(tp) else 0.0)) + offset_z
     return at

@@ -6,12 +6,16 @@ queue order; speeds in mm/s, lengths in mm, ``accel`` in mm/s^2. A barrier (dwel
 spindle, stop, end) is a block of length 0 whose entry speed is 0. The planner keeps
 ``horizon`` blocks after the one it is moving in (its queue's length): the entry speed of
 a block is the fastest from which the path can still stop by the end of that horizon.
+Every pass works ``CHUNK`` blocks at a time, carrying what crosses a chunk's edge (the
+path before it, ``s``; the forward pass's running minimum; the few blocks a horizon
+reaches past it): small temporaries, the same bits as one whole-array pass (issue 24).
 """
 
 from __future__ import annotations
 
 import numpy as np
 
+CHUNK = 1 << 15  # blocks a pass works on at a time (small temporaries)
 STRAIGHT = 0.999999  # the planner's cosine beyond which a corner is straight on / a reversal
 
 
@@ -42,52 +46,99 @@ def junction_speeds(end_dir: np.ndarray, start_dir: np.ndarray, accel: float, de
     return np.where(cos_theta > STRAIGHT, 0.0, v)
 
 
+def path_before(length: np.ndarray) -> np.ndarray:
+    """``s`` (n + 1): the path length before each block, then the whole path's."""
+    s = np.empty(len(length) + 1)
+    s[0] = 0.0
+    np.cumsum(length, out=s[1:])
+    return s
+
+
+def _chunks(n: int):
+    """(a, b) bounds of consecutive ``CHUNK``-block pieces of n blocks."""
+    return ((a, min(a + CHUNK, n)) for a in range(0, n, CHUNK))
+
+
+def _horizons(horizon, n: int, a: int, b: int) -> np.ndarray:
+    """Blocks ``a..b``'s look-ahead (``horizon`` an int or one per block), within 1..n."""
+    h = np.asarray(horizon)
+    h = h[a:b] if h.ndim else np.full(b - a, int(h))
+    return np.clip(h.astype(np.int64), 1, max(n, 1))
+
+
 def entry_speeds_sq(length: np.ndarray, junction_sq: np.ndarray, accel: float, horizon,
-                    queue_end: np.ndarray | None = None) -> np.ndarray:
+                    queue_end: np.ndarray | None = None, s: np.ndarray | None = None) -> np.ndarray:
     """Squared entry speed of each block as the planner's backward pass gives it while the
     previous block runs with ``horizon`` blocks (an int, or one per block) queued from this
-    one on, the last of them stopping.
+    one on, the last of them stopping; ``s``: ``path_before(length)`` if known.
 
     With S the path length before each block, the backward recursion ``e[k]^2 =
     min(vj[k]^2, e[k+1]^2 + 2 a L[k])`` unrolls to ``min over j in [k, k+h) of (vj[j]^2 +
     2a S[j]) - 2a S[k]``, the queue's end adding ``2a S[k+h]`` (or ``2a queue_end[k]``
     when given, a path position within the last block): a sliding minimum, grown one
-    block at a time up to the largest horizon."""
+    block at a time up to the largest horizon, ``CHUNK`` blocks at a time (each chunk
+    reading the few blocks after it its horizons reach)."""
     n = len(length)
     two_a = 2.0 * accel
-    s = np.concatenate(([0.0], np.cumsum(length)))  # s[k]: path before block k
-    q = junction_sq + two_a * s[:n]
-    h_of = np.clip(np.broadcast_to(np.asarray(horizon, dtype=np.int64), (n,)), 1, max(n, 1))
-    top = int(h_of.max(initial=1))
-    by_h = np.argsort(h_of, kind="stable")
-    bounds = np.searchsorted(h_of[by_h], np.arange(1, top + 2))
-    window_min = q.copy()  # min of q[k .. k+h-1] (blocks past the end: none)
+    s = path_before(length) if s is None else s
     out = np.empty(n)
-    for h in range(1, top + 1):
-        if h > 1:
-            np.minimum(window_min[: n - h + 1], q[h - 1:], out=window_min[: n - h + 1])
-        group = by_h[bounds[h - 1]:bounds[h]]
-        if len(group):
-            out[group] = np.minimum(window_min[group], two_a * s[np.minimum(group + h, n)])
-    if queue_end is not None:
-        np.minimum(out, two_a * queue_end, out=out)
-    return np.maximum(out - two_a * s[:n], 0.0)
+    for a, b in _chunks(n):
+        h_of = _horizons(horizon, n, a, b)
+        top = int(h_of.max())
+        reach = min(b + top - 1, n)
+        q = junction_sq[a:reach] + two_a * s[a:reach]
+        window_min = q.copy()  # min of q[k .. k+h-1] (blocks past the end: none)
+        m = reach - a
+        part = out[a:b]
+        for h in range(1, top + 1):
+            if h > 1 and m - h + 1 > 0:
+                np.minimum(window_min[: m - h + 1], q[h - 1:], out=window_min[: m - h + 1])
+            group = np.flatnonzero(h_of == h)
+            if len(group):
+                part[group] = np.minimum(window_min[group], two_a * s[np.minimum(a + group + h, n)])
+        if queue_end is not None:
+            np.minimum(part, two_a * queue_end[a:b], out=part)
+        part[:] = np.maximum(part - two_a * s[a:b], 0.0)
+    return out
 
 
-def reached_speeds_sq(length: np.ndarray, entry_sq: np.ndarray, accel: float) -> np.ndarray:
+def reached_speeds_sq(length: np.ndarray, entry_sq: np.ndarray, accel: float,
+                      s: np.ndarray | None = None) -> np.ndarray:
     """Squared speed actually reached at each block's entry: the forward pass
-    ``f[k] = min(e[k]^2, f[k-1] + 2a L[k-1])``, from rest, as a running minimum."""
+    ``f[k] = min(e[k]^2, f[k-1] + 2a L[k-1])``, from rest, as a running minimum (carried
+    from chunk to chunk)."""
     two_a = 2.0 * accel
-    s = np.concatenate(([0.0], np.cumsum(length)))[: len(length)]
-    shifted = entry_sq.copy()
-    if len(shifted):
-        shifted[0] = 0.0
-    return np.maximum(np.minimum.accumulate(shifted - two_a * s) + two_a * s, 0.0)
+    s = path_before(length) if s is None else s
+    out = np.empty(len(length))
+    low = np.inf
+    for a, b in _chunks(len(length)):
+        two_s = two_a * s[a:b]
+        shifted = entry_sq[a:b].copy()
+        if a == 0:
+            shifted[0] = 0.0
+        running = np.minimum.accumulate(shifted - two_s)
+        np.minimum(running, low, out=running)
+        low = running[-1]
+        out[a:b] = np.maximum(running + two_s, 0.0)
+    return out
+
+
+def speeds_close(a: np.ndarray, b: np.ndarray, rtol: float, atol: float) -> bool:
+    """``np.allclose(a, b, rtol, atol)`` a chunk at a time (small temporaries)."""
+    return all(np.allclose(a[i:j], b[i:j], rtol=rtol, atol=atol) for i, j in _chunks(len(a)))
 
 
 def trapezoid_times(length, v_in, v_out, v_nom, accel: float) -> np.ndarray:
     """Seconds to run ``length`` mm from ``v_in`` to ``v_out`` accelerating at ``accel``,
-    never above ``v_nom`` (cruise when it is reached, a triangle when not)."""
+    never above ``v_nom`` (cruise when it is reached, a triangle when not); arrays of
+    one length, worked out a chunk at a time."""
+    out = np.empty(len(length))
+    for a, b in _chunks(len(length)):
+        out[a:b] = _trapezoid(length[a:b], v_in[a:b], v_out[a:b], v_nom[a:b], accel)
+    return out
+
+
+def _trapezoid(length, v_in, v_out, v_nom, accel: float) -> np.ndarray:
     peak_sq = np.minimum(v_nom * v_nom, (2.0 * accel * length + v_in * v_in + v_out * v_out) / 2.0)
     peak_sq = np.maximum(peak_sq, np.maximum(v_in, v_out) ** 2)
     peak = np.sqrt(peak_sq)
@@ -98,32 +149,57 @@ def trapezoid_times(length, v_in, v_out, v_nom, accel: float) -> np.ndarray:
     return np.where(length > 0, ramps + cruise, 0.0)
 
 
-def queue_horizons(length: np.ndarray, speed: np.ndarray, trail_s: float, capacity: int):
+def queue_horizons(length: np.ndarray, speed: np.ndarray, trail_s: float, capacity: int,
+                   s: np.ndarray | None = None):
     """Where the look-ahead ends when the path enters each block at ``speed``: the queue
     holds ``capacity`` blocks from the one the machine last reported finished, which trails
     the path by ``speed * trail_s`` mm (the S-curve's moving average, the refill), so every
     block it trails by takes a place from the look-ahead. Returns the blocks queued from
-    each block on (int) and, the trailing point taken within its block, the path position
-    (mm) where the queue ends."""
+    each block on (int16: ``capacity`` < 16384) and, the trailing point taken within its
+    block, the path position (mm) where the queue ends."""
     n = len(length)
-    s = np.concatenate(([0.0], np.cumsum(length)))
-    trail = s[:n] - speed * trail_s
+    s = path_before(length) if s is None else s
+    blocks, queue_end = np.empty(n, np.int16), np.empty(n)
+    for a, b in _chunks(n):
+        blocks[a:b], queue_end[a:b] = _queue_chunk(length, speed, trail_s, capacity, s, a, b)
+    return blocks, queue_end
+
+
+def _queue_chunk(length, speed, trail_s: float, capacity: int, s, a: int, b: int):
+    """``queue_horizons`` of blocks ``a..b``."""
+    n = len(length)
+    trail = s[a:b] - speed[a:b] * trail_s
     head = np.minimum(np.searchsorted(s[1:], trail, side="right"), max(n - 1, 0))
     with np.errstate(divide="ignore", invalid="ignore"):
         frac = np.clip(np.where(length[head] > 0, (trail - s[head]) / length[head], 0.0), 0.0, 1.0)
     end = np.minimum(head + frac + capacity, n)
     whole = np.floor(end).astype(np.int64)
-    queue_end = s[whole] + (end - whole) * np.append(length, 0.0)[whole]
-    return np.clip(whole - np.arange(n), 1, capacity - 1), queue_end
+    last = np.where(whole < n, length[np.minimum(whole, n - 1)], 0.0)
+    return np.clip(whole - np.arange(a, b), 1, capacity - 1), s[whole] + (end - whole) * last
 
 
-def look_ahead_binds(length, entry_sq, accel: float, horizon, queue_end) -> bool:
+def look_ahead_binds(length, entry_sq, accel: float, horizon, queue_end, s: np.ndarray | None = None) -> bool:
     """Whether a look-ahead of ``horizon`` blocks ending at ``queue_end`` (mm) would lower
     any of ``entry_sq`` (computed with a longer one). A shorter queue only drops terms of
     the backward pass that are at least its new end's, so it changes nothing unless the
     path cannot stop from the entry speed by that end."""
     n = len(length)
-    s = np.concatenate(([0.0], np.cumsum(length)))
-    need = entry_sq * (1.0 - 1e-9) + 2.0 * accel * s[:n]
-    end = np.minimum(s[np.minimum(np.arange(n) + horizon, n)], queue_end)
+    s = path_before(length) if s is None else s
+    return any(_binds_chunk(entry_sq, accel, _horizons(horizon, n, a, b), queue_end[a:b], s, a, b)
+               for a, b in _chunks(n))
+
+
+def queue_binds(length, speed, entry_sq, accel: float, trail_s: float, capacity: int, s) -> bool:
+    """``look_ahead_binds`` of the ``queue_horizons`` at ``speed``, a chunk at a time
+    (neither kept whole: where it binds, they are worked out again, whole)."""
+    chunks = _chunks(len(length))
+    queues = ((a, b, _queue_chunk(length, speed, trail_s, capacity, s, a, b)) for a, b in chunks)
+    return any(_binds_chunk(entry_sq, accel, *queue, s, a, b) for a, b, queue in queues)
+
+
+def _binds_chunk(entry_sq, accel: float, horizon, queue_end, s, a: int, b: int) -> bool:
+    """``look_ahead_binds`` of blocks ``a..b`` (``horizon``, ``queue_end``: theirs)."""
+    n = len(s) - 1
+    need = entry_sq[a:b] * (1.0 - 1e-9) + 2.0 * accel * s[a:b]
+    end = np.minimum(s[np.minimum(np.arange(a, b) + horizon, n)], queue_end)
     return bool((2.0 * accel * end < need).any())
