@@ -147,7 +147,8 @@ def reset(kit: Kit) -> None:
         "commands.reset",
         CONV,
         "`O <id> RESET` then `X BOOT <new boot>`",
-        answer is not None and answer.kind == "O" and boot is not None and order[:2] == ["O", "X"],
+        answer is not None and answer.kind == "O" and boot is not None and "X" in order
+        and order.index("O") < order.index("X"),  # a retried command is answered again
         "C <id> RESET",
         kit.got(start),
     )
