@@ -53,7 +53,7 @@ run: $(STAMP) translations bytecode
 	$(BIN)/python -m app.run
 
 test: $(STAMP) translations bytecode
-	QT_QPA_PLATFORM=offscreen $(BIN)/python -m pytest -q -n 2
+	QT_QPA_PLATFORM=offscreen $(BIN)/python -m pytest -q
 
 bench: $(STAMP) bytecode
 	QT_QPA_PLATFORM=offscreen $(BIN)/python -m bench
