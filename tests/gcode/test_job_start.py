@@ -146,18 +146,27 @@ def test_past_the_probe_limit_an_axis_still_moving_with_the_start_is_relative():
 
 
 def test_the_probe_reads_rows_not_lines_of_a_plain_program(monkeypatch):
-    """A line may make 100,000 rows (a spline's chords): the first-move probe stops at the
-    rows it asked for, and a reading that met an error is whole (nothing after it runs)."""
-    from app.gcode import splines
+    """A line may make thousands of rows (a spline's chords): the first-move probe stops at
+    the rows it asked for, never reading on by lines."""
+    import math
+
+    from app.gcode import motion
+    from app.gcode.start import PROBE_MAX, PROBE_ROWS
 
     calls = []
-    real = splines.run_spline
-    monkeypatch.setattr(splines, "run_spline", lambda *a, **k: calls.append(1) or real(*a, **k))
+    real = motion.run_spline
+    monkeypatch.setattr(motion, "run_spline", lambda *a, **k: calls.append(1) or real(*a, **k))
+    lines = 40
     heavy = "G5 I100000 J100000 P-100000 Q100000 X{x} Y1\n"
-    text = "G21 G90 F100\nG0 X0 Y0\n" + "".join(heavy.format(x=k % 2) for k in range(20)) + "M2\n"
+    text = "G21 G90 F100\nG0 X0 Y0\n" + "".join(heavy.format(x=k % 2) for k in range(lines)) + "M2\n"
     program = load_text(text)
-    main_reading = 20
-    assert len(calls) <= main_reading + 2 * 3, len(calls)  # two readings a probe, three probes at most
+    per_line = (len(program.ops) - 1) / lines
+    caps, cap = [], PROBE_ROWS
+    while cap <= PROBE_MAX:
+        caps.append(cap)
+        cap *= 8
+    probed = len(calls) - lines  # the main reading calls it once a line
+    assert 0 < probed <= 2 * sum(math.ceil(c / per_line) for c in caps) < 2 * lines, (probed, per_line)
     job = program.from_start((1.0, 2.0, 7.0))  # Z, never set, undecided past the probe's rows:
     z_words = {word for line in job.device_lines for word in line.split() if word.startswith("Z")}
     assert z_words <= {"Z7"}  # read from the machine's Z, never moved
