@@ -21,17 +21,11 @@ def _ovr(kit: Kit) -> str | None:
     return None if status is None else status.ovr
 
 
-def _ovr_until(kit: Kit, wanted: str) -> str | None:
-    """The `ovr` of the first status showing ``wanted`` (or the last one)."""
-    status = kit.status_until(lambda st: st.ovr == wanted)
-    return None if status is None else status.ovr
-
-
-def _ovr_changed(kit: Kit, from_: str | None) -> str | None:
-    """The `ovr` of the first status that differs from ``from_`` within the time a
-    status may be old ("Machine conventions"), else ``from_``: a value that must not
-    change is judged only once a change would have shown."""
-    status = kit.status_until(lambda st: st.ovr != from_)
+def _ovr_when(kit: Kit, match) -> str | None:
+    """The `ovr` of the first status whose `ovr` ``match``es, asked for as long as a
+    status may be old ("Machine conventions"), else of the last one. A value that must
+    not change is judged this way too: only once a change would have shown."""
+    status = kit.status_until(lambda st: match(st.ovr))
     return None if status is None else status.ovr
 
 
@@ -45,7 +39,7 @@ def answered_and_reported(kit: Kit) -> None:
     ):
         start = len(kit.link.replies)
         cid, answer = kit.link.realtime(f"{verb} {pct}")
-        ovr = _ovr_until(kit, shown)
+        ovr = _ovr_when(kit, lambda ovr, shown=shown: ovr == shown)
         kit.check(
             f"overrides.{verb.lower()}-taken",
             OVR,
@@ -64,7 +58,8 @@ def repeat_not_taken(kit: Kit) -> None:
     cid, _ = kit.link.realtime("FEED 120")
     start = len(kit.link.replies)
     _, again = kit.link.realtime("FEED 180", cid=cid)
-    ovr = _ovr_changed(kit, from_=_ovr_until(kit, "120/100/100"))
+    taken = _ovr_when(kit, lambda ovr: ovr == "120/100/100")
+    ovr = _ovr_when(kit, lambda ovr: ovr != taken)
     kit.check(
         "overrides.repeat-not-taken",
         OVR,
@@ -98,7 +93,7 @@ def grammar(kit: Kit) -> None:
     kit.ensure_idle()
     found = _ovr(kit)
     sent = send_bad_frames(kit, BAD_FRAMES)
-    ovr = _ovr_changed(kit, from_=found)
+    ovr = _ovr_when(kit, lambda ovr: ovr != found)
     for name, (cid, text, answer) in sent.items():
         kit.check(
             f"overrides.{name}-dropped",
