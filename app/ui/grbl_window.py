@@ -20,6 +20,7 @@ from __future__ import annotations
 from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, QObject, Signal
 from PySide6.QtGui import QAction
 
+from app.comm.grbl.settings import homing_enabled
 from app.comm.grbl.status import hold_event
 from app.ui.grbl_alarm import GrblAlarmBar
 from app.ui.live_modal import machine_modes
@@ -96,10 +97,10 @@ class GrblWindow(QObject):
             return
         if result.verb == "$$":
             self.settings = settings_of(result.rows)
-            self.settings_changed.emit()
+            self._settings_read()
         elif settings_of([result.verb]) and self.settings:  # a write from anywhere (the console too)
             self.settings.update(settings_of([result.verb]))
-            self.settings_changed.emit()
+            self._settings_read()
         elif result.verb == "$#":
             self.g92 = g92_of(result.rows)
         elif result.verb == "$G":
@@ -108,6 +109,10 @@ class GrblWindow(QObject):
                 view = machine_modes(words)
                 view.g92 = self.g92
                 self.w.live_panel.show_machine(view)
+
+    def _settings_read(self) -> None:
+        self.alarm.set_homing(homing_enabled(self.settings))
+        self.settings_changed.emit()
 
     def on_job_finished(self, event) -> None:
         """After a job or MDI line: the work systems (not in check mode, where GRBL refuses

@@ -2,7 +2,8 @@
 grbl ...``; ``sim://grbl`` and a machine that greets as GRBL choose it by themselves).
 
 Commands: ``status``, ``info`` (``$I``), ``home`` (``$H``), ``unlock`` (says why the
-machine is locked, then ``$X``), ``run FILE`` (home or refuse if locked, stream, answer
+machine is locked, then ``$X``), ``run FILE`` (home if locked, or refuse on a machine
+without homing, ``$22=0``; stream, answer
 program stops as ``--at-stops`` says, exit 0 only if every line completed), ``check
 FILE`` (the whole program through ``$C`` check mode; every refused line listed),
 ``hold``/``pause``, ``resume``, ``stop``, ``reset``, ``jog AXIS MM FEED``, ``cancel``
@@ -213,6 +214,8 @@ class GrblConsole(ConsoleClient):
         self._fresh_status()
         if self.session.status.state == "ALARM" and not self.session.check_mode:
             print(localize(self.session.unlock_advice()), file=self.out)
+            if not self.session.homing_enabled:  # nothing to home ($22=0): the operator unlocks
+                raise ConsoleError("the machine is in alarm and has no homing: unlock it first (unlock)")
             print("homing first ($H)", file=self.out)
             self.cmd_home()
             self._fresh_status()

@@ -81,6 +81,8 @@ class GrblJobControl:
         if self.state not in (S.READY, S.RESTART_REQUIRED) and not restarting:
             return msg("the machine is not ready ({state})", state=self.state.name)
         if self.alarm is not None and not self.check_mode:
+            if not self.homing_enabled:
+                return msg("the machine is in alarm: unlock ($X) first")
             return msg("the machine is in alarm: home ($H) or unlock ($X) first")
         if not 0 <= start < len(device_lines):
             return msg("no line {start} to start from", start=start)
@@ -283,12 +285,17 @@ class GrblJobControl:
             reason = msg("the link was lost during the job; GRBL cannot resume exactly: start again at "
                          "line {line}, the line after the last one known finished (lines after it may "
                          "have run)", line=self._source_line(job.done + 1))
-        else:
+        elif self.homing_enabled:
             reason = msg("the machine was reset during the job; home it, then start again at line {line}, "
                          "the line after the last one known finished", line=self._source_line(job.done + 1))
+        else:
+            reason = msg("the machine was reset during the job; start again at line {line}, the line after "
+                         "the last one known finished (it has no homing: check its position and work zero "
+                         "first)", line=self._source_line(job.done + 1))
         self._log("warning", reason)
         self.listener.on_progress(job.progress())
-        self.listener.on_resume_offer(ResumeOffer(False, job.done + 1, job.done, job.total, not same_boot,
+        needs_home = not same_boot and self.homing_enabled
+        self.listener.on_resume_offer(ResumeOffer(False, job.done + 1, job.done, job.total, needs_home,
                                                   reason))
 
     def _follow_cut_off_job(self, status) -> None:

@@ -23,7 +23,7 @@ import math
 from app.comm.grbl import protocol as p
 from app.comm.grbl.codes import unlock_advice
 from app.comm.grbl.dialect import axis_range
-from app.comm.grbl.settings import SettingChange, diff_settings, format_value
+from app.comm.grbl.settings import SettingChange, diff_settings, format_value, homing_enabled
 from app.i18n import msg
 
 JOG_SPAN_MM = 1000.0  # hold-to-jog distance when the travel is unknown
@@ -106,9 +106,21 @@ class GrblOperations:
         frame protocol's and changes nothing)."""
         return self.as_verb("HOME", (mode,), "$H", then)
 
+    @property
+    def homing_enabled(self) -> bool:
+        """The machine has a homing cycle (``$22``); without one it starts unlocked, ``$H``
+        is refused (error 5) and nothing waits for a homing."""
+        return homing_enabled(self.settings)
+
+    @property
+    def position_trusted(self) -> bool:
+        """Homed since the last reset, or a machine without homing (nothing to home): the
+        status's ``H`` flag, what Start and Start here ask for."""
+        return self.homed or not self.homing_enabled
+
     def unlock_advice(self):
         """Why the machine is locked, to show before ``unlock``."""
-        return unlock_advice(self.alarm or None)
+        return unlock_advice(self.alarm or None, self.homing_enabled)
 
     def unlock(self, then=None) -> int:
         return self.command("$X", then=then)

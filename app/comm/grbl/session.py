@@ -313,7 +313,8 @@ class GrblSession(SessionCore, GrblJobControl, GrblOperations, FrameVerbs):
         waiting = job is not None and job.stop_at is not None
         acc = job.acked if job else -1
         done = job.done if job else -1
-        self.status = to_status_event(status, f"grbl-{self.boots}", acc, done, self.homed, waiting)
+        self.status = to_status_event(status, f"grbl-{self.boots}", acc, done, self.position_trusted,
+                                      waiting)
         self._notify("on_grbl_status", status)
         self.listener.on_status(self.status)
         self.reports += 1
