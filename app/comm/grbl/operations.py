@@ -7,7 +7,9 @@ check mode, settings and the ``$#``/``$G`` reads. A mixin of ``GrblSession``.
   hold-to-jog (needs ``$13x`` and homing, else ``JOG_SPAN_MM``), ``jog_cancel()`` sends
   0x85 (on key release).
 - ``set_feed_override(percent)`` / ``set_spindle_override`` send the fewest
-  0x90-0x94 / 0x99-0x9D bytes from the value of the last report;
+  0x90-0x94 / 0x99-0x9D bytes from the value of the last report, within the ranges of
+  the session's ``capabilities`` (``driver.Capabilities.override_range``, what the
+  window's sliders take);
   ``set_rapid_override(100|50|25)``.
 - ``home()`` ``$H`` (answered as ``HOME``); ``unlock_advice()`` says why the machine is locked (say it before
   ``unlock()``, ``$X``); ``set_check_mode(on)`` toggles ``$C``.
@@ -31,8 +33,9 @@ JOG_SPAN_MM = 1000.0  # hold-to-jog distance when the travel is unknown
 
 def _override_bytes(current: int, target: int, reset: bytes, tens: tuple[bytes, bytes],
                     ones: tuple[bytes, bytes]) -> bytes:
-    """The bytes that take an override from ``current`` % to ``target`` % (10 %..200 %)."""
-    target = max(10, min(200, int(target)))
+    """The bytes that take an override from ``current`` % to ``target`` % (the caller keeps
+    ``target`` within what the machine takes)."""
+    target = int(target)
     if target == current:
         return b""
     start, out = current, b""
@@ -76,17 +79,19 @@ class GrblOperations:
     # ------------------------------------------------------------------ overrides
 
     def set_feed_override(self, percent: int) -> None:
-        self._step_override(0, percent, p.FEED_100, (p.FEED_PLUS_10, p.FEED_MINUS_10),
+        self._step_override(0, "FEED", percent, p.FEED_100, (p.FEED_PLUS_10, p.FEED_MINUS_10),
                             (p.FEED_PLUS_1, p.FEED_MINUS_1))
 
     def set_spindle_override(self, percent: int) -> None:
-        self._step_override(2, percent, p.SPINDLE_100, (p.SPINDLE_PLUS_10, p.SPINDLE_MINUS_10),
+        self._step_override(2, "SPINDLE", percent, p.SPINDLE_100, (p.SPINDLE_PLUS_10, p.SPINDLE_MINUS_10),
                             (p.SPINDLE_PLUS_1, p.SPINDLE_MINUS_1))
 
-    def _step_override(self, index: int, percent: int, reset: bytes, tens, ones) -> None:
+    def _step_override(self, index: int, verb: str, percent: int, reset: bytes, tens, ones) -> None:
         """The fewest bytes from what the machine has (or will have, once it reads what was
-        sent before: ``ReportMerger.overrides_now``) to ``percent``."""
-        target = max(10, min(200, int(percent)))
+        sent before: ``ReportMerger.overrides_now``) to ``percent``, kept within the range
+        the session's ``capabilities`` give (the one the window's sliders take)."""
+        allowed = self.capabilities.override_range(verb)
+        target = max(allowed[0], min(allowed[-1], int(percent)))
         data = _override_bytes(self.merger.overrides_now()[index], target, reset, tens, ones)
         if data and self.attached:
             self.merger.expect(index, target)
@@ -95,8 +100,10 @@ class GrblOperations:
 
     def set_rapid_override(self, percent: int) -> None:
         byte = {100: p.RAPID_100, 50: p.RAPID_50, 25: p.RAPID_25}.get(int(percent))
-        if byte is None:
-            raise ValueError(msg("GRBL's rapid override is 100, 50 or 25 %, not {percent}", percent=percent))
+        rates = sorted(self.capabilities.override_range("RAPID"), reverse=True)
+        if byte is None or int(percent) not in rates:
+            raise ValueError(msg("the machine's rapid override is {allowed} %, not {percent}",
+                                 allowed=", ".join(map(str, rates)), percent=percent))
         self._realtime(byte)
 
     # ------------------------------------------------------------------ machine commands

@@ -27,6 +27,7 @@ from __future__ import annotations
 import time
 from collections.abc import Callable
 
+from app.comm.driver import GRBL_CAPABILITIES
 from app.comm.events import (
     AlarmEvent,
     CommandResult,
@@ -58,6 +59,8 @@ MAX_LINE_BYTES = 1024  # a line from the machine longer than this is noise
 
 class GrblSession(SessionCore, GrblJobControl, GrblOperations, FrameVerbs):
     """One connection to a GRBL machine; see the module docstring for the contract."""
+
+    capabilities = GRBL_CAPABILITIES  # what the window offers; the overrides' ranges come from it
 
     def __init__(self, write: Callable[[bytes], object] | None = None,
                  listener: GrblListener | None = None, clock: Callable[[], float] = time.monotonic,
