@@ -22,14 +22,13 @@ from app.comm.console_client import ConsoleClient, ConsoleError, load_program
 from app.comm.console_jobs import JobCommands
 from app.comm.console_printer import Printer
 from app.comm.grbl.events import GrblListener
+from app.comm.grbl.protocol import STREAM_KINDS
 from app.comm.grbl.session import GrblSession
 from app.comm.grbl.settings import read_backup, table, write_backup
 from app.comm.grbl.status import hold_event
 from app.comm.listener import SessionState
 from app.comm.modal import device_index_of
 from app.i18n import localize
-
-QUIET_KINDS = frozenset({"job", "preamble", "sync", "<", "ok"})
 
 
 class GrblPrinter(Printer, GrblListener):
@@ -41,7 +40,7 @@ class GrblPrinter(Printer, GrblListener):
         self.why = ""  # the hold last printed (a status's ``why``)
 
     def on_frame(self, event):
-        quiet = self.quiet and event.kind in QUIET_KINDS
+        quiet = self.quiet and event.kind in STREAM_KINDS
         if not quiet:
             print(("> " if event.direction == "tx" else "< ") + event.text, file=self.out)
 
@@ -81,7 +80,7 @@ class GrblConsole(ConsoleClient):
         handler(*words[1:])
 
     def command(self, text: str, *args, timeout: float | None = None):
-        cid = self.session.command(" ".join([text, *map(str, args)]))
+        cid = self.session.send_command(" ".join([text, *map(str, args)]))
         found = lambda: [r for r in self.printer.results if r.id == cid]  # noqa: E731
         self.wait(lambda: bool(found()), timeout, f"{text} to be answered")
         result = found()[0]

@@ -100,6 +100,7 @@ class GrblSession(SessionCore, GrblJobControl, GrblOperations, FrameVerbs):
         self._contact = False
         self._settings_rows: list[tuple[int, str]] = []
         self._deferred: list[tuple] = []  # local answers waiting for a report (verbs.py)
+        self._asked_reports: list[int] = []  # the operator's own ``?`` waiting for a report
         self.reports = 0  # status reports received
         self._handlers = {p.Ok: self._on_ok, p.Error: self._on_error, p.Alarm: self._on_alarm,
                           p.Welcome: self._on_welcome, p.Report: self._on_report,
@@ -218,9 +219,22 @@ class GrblSession(SessionCore, GrblJobControl, GrblOperations, FrameVerbs):
         item = p.parse_line(text)
         if not isinstance(item, p.Unknown):
             self._heard(self.clock())
-        kind = "<" if isinstance(item, p.Report) else "ok" if isinstance(item, p.Ok) else "rx"
+        kind = self._rx_kind(item)
         self.listener.on_frame(FrameEvent("rx", kind, text, ok=not isinstance(item, p.Unknown)))
         self._handlers[type(item)](item)
+        if kind == "report":
+            self.answer_asked_reports(text)
+
+    def _rx_kind(self, item) -> str:
+        """The console kind of a line (``p.STREAM_KINDS`` are hidden unless asked for): "<"
+        a polled report, "report" one the operator asked for (``?``), "ok" the answer to a
+        streamed line, "rx" the rest (a command's ``ok``, messages, errors)."""
+        if isinstance(item, p.Report):
+            return "report" if self._asked_reports else "<"
+        if isinstance(item, p.Ok):
+            oldest = self.counter.oldest()
+            return "rx" if oldest is None or oldest.kind == "command" else "ok"
+        return "rx"
 
     def _answered(self) -> Outgoing | None:
         out = self.counter.answered()
@@ -416,6 +430,9 @@ class GrblSession(SessionCore, GrblJobControl, GrblOperations, FrameVerbs):
         for cid, verb, args, _answer in self._deferred:
             self._command_done(CommandResult(cid, verb, args, ok=False, info=reason, code="LINK_LOST"))
         self._deferred.clear()
+        for cid in self._asked_reports:
+            self._command_done(CommandResult(cid, "?", (), ok=False, info=reason, code="LINK_LOST"))
+        self._asked_reports.clear()
         self._queue.clear()
         self._job_link_lost(reason)
 

@@ -16,20 +16,25 @@ from the near end of GRBL's travel (the frame protocol's machine frame), once ``
 report have come; ``HOME``
 ``$H``; ``JOG X 10 300`` a ``$J=`` jog; ``STATUS``/``PING`` answered by the next report;
 other ``SET``/``GET`` and the SD verbs are refused with ``UNSUPPORTED`` (no such thing on
-GRBL). Any other line goes to the machine as it is (``G0 X10``, ``$$``, ``$H``).
+GRBL). Any other line goes to the machine as it is (``G0 X10``, ``$$``, ``$H``; a write
+of GRBL's EEPROM, ``$n=``, ``$Nn=``, ``$RST=``, alone and waited for), but
+``?``: the operator's own status query goes as the real-time byte it is, and the next
+report answers it (shown in the console as kind "report", where the polls' "<" are not).
 """
 
 from __future__ import annotations
 
 import re
 
-from app.comm.events import CommandResult, JobEvent
+from app.comm.events import CommandResult, FrameEvent, JobEvent
+from app.comm.grbl import protocol as p
 from app.comm.grbl.dialect import axis_range
 from app.i18n import msg
 
 _AXES = ("X", "Y", "Z")
 _ROW = re.compile(r"G(5[4-9])_([XYZ])")
 _SYSTEMS = tuple(f"G{n}" for n in range(54, 60))
+_EEPROM_WRITE = re.compile(r"\$(\d+|N\d+|RST)=", re.IGNORECASE)  # sent alone, waited for
 
 
 class FrameVerbs:
@@ -40,10 +45,28 @@ class FrameVerbs:
         words = text.strip().split()
         if not words:
             return None
+        if words == ["?"]:
+            return self.ask_report()
         handler = getattr(self, f"_verb_{words[0].lower()}", None)
         if handler is None or not (words[0].isalpha() and words[0].isupper()):
-            return self.command(text)
+            return self.command(text, exclusive=_EEPROM_WRITE.match(text.strip()) is not None)
         return handler(words[0].upper(), [w.upper() for w in words[1:]])
+
+    def ask_report(self) -> int:
+        """The operator's ``?``: answered (``info`` and ``rows``: the report's text) by the next
+        status report, which the console shows (kind "report")."""
+        if not self.attached:
+            return self._local("?", (), False, msg("the machine is not connected"), "LINK_LOST")
+        cid = self._reserve_id()
+        self._asked_reports.append(cid)
+        self.listener.on_frame(FrameEvent("tx", "command", "?"))
+        self._realtime(p.STATUS_QUERY, quiet=True)
+        return cid
+
+    def answer_asked_reports(self, text: str) -> None:
+        asked, self._asked_reports = self._asked_reports, []
+        for cid in asked:
+            self._command_done(CommandResult(cid, "?", (), True, text, rows=(text,)))
 
     def _local(self, verb: str, args, ok: bool = True, info: str = "", code: str = "") -> int:
         cid = self._reserve_id()
