@@ -209,15 +209,23 @@ class FrameVerbs:
     def system_offset(self, system: int):
         """The zero of ``G<system>`` from the last ``$#``, in millimetres from the near end of
         GRBL's travel (as ``_work_zero``), or None before ``$#`` and ``$$``."""
-        text = self.parameters.get(f"G{system}")
-        if text is None or any(130 + k not in self.settings for k in range(3)):
+        values = self.parameter_mm(f"G{system}")
+        if values is None or len(values) < 3 or any(130 + k not in self.settings for k in range(3)):
+            return None
+        return tuple(v - axis_range(self.settings, k)[0] for k, v in enumerate(values[:3]))
+
+    def parameter_mm(self, name: str) -> tuple[float, ...] | None:
+        """The values of ``$#``'s ``[name:x,y,z]`` (``G54``..``G59``, ``G92``, ``TLO``) in
+        millimetres (``$13=1`` prints inches), or None before ``$#`` or if unreadable."""
+        text = self.parameters.get(name)
+        if text is None:
             return None
         try:
-            values = [float(v) for v in text.split(":")[0].split(",")[:3]]
+            values = [float(v) for v in text.split(":")[0].split(",")]
         except ValueError:
             return None
         scale = 25.4 if self.settings.get(13) == "1" else 1.0
-        return tuple(v * scale - axis_range(self.settings, k)[0] for k, v in enumerate(values))
+        return tuple(v * scale for v in values)
 
     def _row_text(self, name: str, system: int, k: int):
         offset = self.system_offset(system)
