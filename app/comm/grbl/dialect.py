@@ -72,6 +72,19 @@ def axis_range(settings: dict[int, str], k: int) -> tuple[float, float]:
     return (-travel, 0.0)
 
 
+def tool_change_height(settings: dict[int, str]) -> float | None:
+    """The machine Z (``G53``) a tool change lifts to: the top of the Z travel less the
+    homing pull-off (``$27``, at least 1 mm: where homing leaves Z, off its switch), as
+    gSender's ``G53 G0 Z[safe height]``; None without ``$132``."""
+    if 132 not in settings:
+        return None
+    try:
+        pull_off = float(settings.get(27, "1") or 1)
+    except ValueError:
+        pull_off = 1.0
+    return axis_range(settings, 2)[1] - max(pull_off, 1.0)
+
+
 def grbl_travel(settings: dict[int, str], wco, profile: MachineProfile | None = None):
     """(profile with GRBL's travel, work offset) for ``checks.preflight``; ValueError if a
     ``$13x`` setting is missing or not a positive number."""

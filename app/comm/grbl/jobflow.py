@@ -22,10 +22,10 @@ from __future__ import annotations
 
 from app.comm.events import ProgramStopEvent, ResumeOffer
 from app.comm.grbl import protocol as p
-from app.comm.grbl.dialect import PREAMBLE, grbl_lines, line_problems
-from app.comm.grbl.job import GrblJob, Outgoing, spindle_off_at_tool_changes
+from app.comm.grbl.dialect import PREAMBLE, grbl_lines, line_problems, tool_change_height
+from app.comm.grbl.job import GrblJob, Outgoing, safe_tool_changes
 from app.comm.listener import SessionState
-from app.comm.modal import modal_state, restart_preamble
+from app.comm.modal import ModalState, modal_state, restart_preamble
 from app.i18n import joined, msg
 
 S = SessionState
@@ -66,8 +66,9 @@ class GrblJobControl:
         else:
             first = PREAMBLE + modes + self._offset_lines(offsets, modes)
         preamble = first + (tuple(restart_preamble(list(device_lines), start)) if start else ())
-        rpm = modal_state(list(device_lines), start).spindle_rpm if start else None
-        lines = spindle_off_at_tool_changes(grbl_lines(device_lines, self.optional_stop, start), rpm)
+        before = modal_state(list(device_lines), start) if start else ModalState()
+        lines = safe_tool_changes(grbl_lines(device_lines, self.optional_stop, start), before,
+                                  self._tool_change_lift())
         job = GrblJob(lines, len(device_lines), name, preamble, first=start)
         job.device_lines, job.line_map, job.errors = device_lines, line_map, []
         job.modes = held_modes(self.parser_state) if modes is None else modes
@@ -330,6 +331,15 @@ class GrblJobControl:
             self.listener.on_progress(job.progress())
             self._log("info", msg("the machine finished more lines meanwhile: the job starts again at line "
                                   "{line}", line=self._source_line(job.done + 1)))
+
+    def _tool_change_lift(self) -> tuple[str, float] | None:
+        """``G53 G00 Z..`` near the top of the Z travel (``dialect.tool_change_height``) and
+        the work Z it reaches (the live WCO) once homed; None (the program's own highest Z)
+        on a machine not homed, whose machine coordinates say nothing of the travel."""
+        height = tool_change_height(self.settings) if self.homed else None
+        if height is None or self.grbl_status is None:
+            return None
+        return f"G53 G00 Z{height:.3f}", height - self.grbl_status.wco[2]
 
     # ------------------------------------------------------------------ offsets a reset clears
 

@@ -128,7 +128,7 @@ def test_program_stop_waits_for_the_machine_then_prompts():
     h.advance(0.5)
     assert h.lines() == []
     h.session.resume()
-    assert h.lines() == ["G01 X2", "G4 P0"]
+    assert h.lines() == ["G01 F100", "G01 X2", "G4 P0"]  # back as it was (no Y, no Z known: the feed)
 
 
 def test_a_tool_change_stops_the_spindle_for_the_prompt_and_restarts_it():
@@ -141,8 +141,8 @@ def test_a_tool_change_stops_the_spindle_for_the_prompt_and_restarts_it():
     h.feed("ok")  # the sync: the spindle has stopped, everything before has finished
     assert h.rec.of("on_program_stop")[-1].tool == 2 and h.session.job.done == 1
     h.session.resume()
-    assert h.lines() == ["M03 S1000", "G01 X2", "G4 P0"]  # M01 keeps the spindle as GRBL's M0 does
-    h.feed("ok", "ok", "ok")
+    assert h.lines() == ["M03 S1000", "G01 F100", "G01 X2", "G4 P0"]  # M01 keeps the spindle as GRBL's M0
+    h.feed("ok", "ok", "ok", "ok")
     assert h.rec.of("on_program_stop")[-1].code == 1 and h.session.job.done == 3
 
 
