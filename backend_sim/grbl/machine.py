@@ -168,8 +168,8 @@ class GrblMachine(SystemCommands):
         """Take and handle one line if the machine can; False when it must wait."""
         if self.pending is not None and not self._plan(*self.pending):
             return False
-        if self.waiting_seq is not None or self.paused:
-            return False
+        if self.waiting_seq is not None or self.paused or self.critical:
+            return False  # after a hard or soft limit GRBL reads nothing until it is reset
         end = self.rx.find(b"\n")
         if end < 0:
             return False
