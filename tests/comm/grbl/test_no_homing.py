@@ -74,3 +74,16 @@ def test_the_alarm_advice_without_homing_never_says_home():
     for code in (None, 1, 3, 9):
         text = localize(unlock_advice(code, homing=False))
         assert "($H)" not in text and "homing" in text, (code, text)
+
+
+def test_the_words_for_a_machine_without_homing_read_in_vietnamese():
+    from app.i18n import gettext, set_language
+
+    set_language("vi")
+    try:
+        for code in (None, 1, 3):
+            text = unlock_advice(code, homing=False)
+            assert gettext(text.template) != text.template, code
+        assert localize(unlock_advice(None, homing=False)).startswith("Máy đang báo động")
+    finally:
+        set_language(None)
