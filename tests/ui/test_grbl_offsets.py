@@ -6,7 +6,7 @@ read again once the machine is back."""
 from __future__ import annotations
 
 from app.ui.work_offsets import WorkSystems
-from tests.ui.test_grbl_features import WAIT, connect_grbl, unlocked
+from tests.ui.test_grbl_features import WAIT, connect_grbl, systems_read, unlocked, with_systems_in_check_mode
 
 
 def test_a_failed_read_keeps_the_systems_unknown_and_only_no_systems_means_one_offset():
@@ -19,12 +19,8 @@ def test_a_failed_read_keeps_the_systems_unknown_and_only_no_systems_means_one_o
 
 
 def test_a_refused_dollar_hash_is_said_and_read_again_once_the_machine_is_back(qtbot, make_window):
-    window, machine = connect_grbl(qtbot, make_window)
-    unlocked(qtbot, window)
+    window, machine = with_systems_in_check_mode(qtbot, make_window)
     dro = window.dro
-    qtbot.waitUntil(lambda: bool(dro.systems.supported) and None not in dro.systems.rows[59], timeout=WAIT)
-    window.controls.check_mode.setChecked(True)
-    qtbot.waitUntil(lambda: machine.check_mode, timeout=WAIT)
     dro.read_all()  # as after a reconnect: GRBL refuses $# in check mode (error 8)
     qtbot.waitUntil(lambda: window.grbl.unread is not None, timeout=WAIT)
     said = window.console.log
@@ -34,22 +30,22 @@ def test_a_refused_dollar_hash_is_said_and_read_again_once_the_machine_is_back(q
     assert window.dro.panel.table.item(0, 0).text() != "0.000"  # none shown as real
     window.controls.check_mode.setChecked(False)  # GRBL resets as it leaves check mode
     qtbot.waitUntil(lambda: not machine.check_mode, timeout=WAIT)
-    qtbot.waitUntil(lambda: bool(dro.systems.supported) and None not in dro.systems.rows[59], timeout=WAIT)
+    qtbot.waitUntil(lambda: systems_read(dro), timeout=WAIT)
     assert window.grbl.unread is None and dro.systems.rows[54] == [0.0, 0.0, 20.0]
 
 
 def test_a_read_cut_off_by_the_reset_after_a_hard_limit_is_read_again_after_it(qtbot, make_window):
-    window, machine = connect_grbl(qtbot, make_window)
+    window, _machine = connect_grbl(qtbot, make_window)
     unlocked(qtbot, window)
     dro, bar = window.dro, window.grbl.alarm
-    qtbot.waitUntil(lambda: bool(dro.systems.supported) and None not in dro.systems.rows[59], timeout=WAIT)
+    qtbot.waitUntil(lambda: systems_read(dro), timeout=WAIT)
     window.link.sim.trip_limit("X")  # ALARM:1: GRBL answers nothing until it is reset
     qtbot.waitUntil(lambda: bar.shown and bar.buttons["reset"].isVisible(), timeout=WAIT)
     dro.read_all()  # as after a job the alarm ended: its $# waits in the machine's buffer
     qtbot.waitUntil(lambda: b"$#" in bytes(window.link.sim.machine.rx), timeout=WAIT)
     assert dro.systems.supported is None
     bar.buttons["reset"].click()
-    qtbot.waitUntil(lambda: bool(dro.systems.supported) and None not in dro.systems.rows[59], timeout=WAIT)
+    qtbot.waitUntil(lambda: systems_read(dro), timeout=WAIT)
     window.console.flush()
     assert "The work offsets could not be read (the machine was reset)" in window.console.log.toPlainText()
     assert dro.systems.rows[54] == [0.0, 0.0, 20.0] and window.grbl.unread is None
