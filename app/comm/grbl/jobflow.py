@@ -349,7 +349,7 @@ class GrblJobControl:
         g92, tlo = self.parameter_mm("G92"), self.parameter_mm("TLO")
         if g92 is None or len(g92) < 3:
             return None
-        return tuple(g92[:3]), (tlo[0] if tlo else 0.0)
+        return tuple(g92[:3]), (tlo[2] if tlo and len(tlo) >= 3 else tlo[0] if tlo else 0.0)  # Z's
 
     def _offset_lines(self, offsets, modes: tuple[str, ...]) -> tuple[str, ...]:
         """``G43.1 Z..`` and ``G92 X.. Y.. Z..`` that put back ``offsets`` (``held_offsets``)
