@@ -58,7 +58,7 @@ def test_a_machine_without_homing_runs_and_restarts_after_a_reset_without_home()
     ran = rig.executed_since(mark)
     start = offer.from_seq
     assert ran[-(len(LINES) - start):] == LINES[start:]  # from the offered line on, each once
-    assert not any(line.startswith("$H") for line in ran)
+    assert "$H" not in {e.text for e in rig.rec.of("on_frame") if e.direction == "tx"}
 
 
 def test_a_restart_after_an_unasked_reset_still_asks_for_home_on_a_machine_that_homes():
@@ -87,3 +87,26 @@ def test_the_words_for_a_machine_without_homing_read_in_vietnamese():
         assert localize(unlock_advice(None, homing=False)).startswith("Máy đang báo động")
     finally:
         set_language(None)
+
+
+def test_start_here_after_a_link_loss_runs_without_home_on_a_machine_without_homing():
+    rig = SimRig({21: 0, 22: 0})
+    session, machine = rig.session, rig.machine
+    assert session.start_job(LINES)
+    rig.until(lambda: session.job is not None and session.job.done >= 5, what="five lines done")
+    rig.sim.wires["usb_up"].set_cut(True)
+    rig.until(lambda: session.state is S.INTERRUPTED, what="the link lost")
+    rig.until(lambda: machine.motion.state == "IDLE", what="its buffer run")
+    rig.sim.wires["usb_up"].set_cut(False)
+    rig.until(lambda: session.state is S.RESTART_REQUIRED and session.status.state == "IDLE",
+              what="the offer")
+    offer = rig.rec.of("on_resume_offer")[-1]
+    assert not offer.needs_home and session.status.homed
+    mark, sent = len(machine.executed), len(rig.rec.of("on_frame"))
+    assert session.confirm_restart()  # the reset at rest leaves it unlocked: no $H, no $X
+    rig.until(lambda: session.job is None and session.state is S.READY, what="the restarted job's end")
+    assert rig.rec.of("on_job_finished")[-1].completed
+    ran = rig.executed_since(mark)
+    start = rig.rec.of("on_resume_offer")[-1].from_seq
+    assert ran[-(len(LINES) - start):] == LINES[start:]
+    assert not {"$H", "$X"} & {e.text for e in rig.rec.of("on_frame")[sent:] if e.direction == "tx"}
