@@ -17,7 +17,8 @@ feeds; on the frame protocol's mill it stays out of the way.
   machine runs, or lost to a reset): said in the status bar and the console, the DRO
   left showing none (``WorkSystems`` keeps them unknown, never the one live offset), and
   read again once the machine is back at rest (another state or boot than at the
-  failure, or ``REREAD_S`` later), not in check mode, where GRBL refuses ``$#``.
+  failure, or ``REREAD_S`` later, twice as long after each failure in a row), not in
+  check mode, where GRBL refuses ``$#``.
 """
 
 from __future__ import annotations
@@ -33,7 +34,8 @@ from app.ui.live_modal import machine_modes
 from app.ui.menus import SOURCE_TEXT
 from app.ui.work_offsets import NO_SYSTEMS
 
-REREAD_S = 5.0  # a failed read of the work systems is tried again this long after, at rest
+REREAD_S = 5.0  # a failed read of the work systems is tried again this long after, at rest,
+REREAD_MAX_S = 60.0  # twice as long after each failure in a row, up to this
 AT_REST = ("IDLE", "ALARM")
 
 ACTIONS = {
@@ -75,6 +77,7 @@ class GrblWindow(QObject):
         self.why = ""  # the hold last shown in the status bar
         self.g92 = ""  # the G92 offset of the last $# ("" when none is in force)
         self.unread: tuple | None = None  # (boot, state, time) when the work systems' read failed
+        self.failed_reads = 0  # failed reads of the work systems in a row
         self.alarm = GrblAlarmBar(window)
         self.actions = self._add_actions(window)
         worker = window.link.worker
@@ -107,6 +110,8 @@ class GrblWindow(QObject):
         if not result.ok:
             self._offsets_not_read(result)
             return
+        if (result.verb, tuple(result.args[:1])) == ("GET", ("WCS",)):
+            self.failed_reads = 0
         if result.verb == "$$":
             self.settings = settings_of(result.rows)
             self._settings_read()
@@ -144,6 +149,7 @@ class GrblWindow(QObject):
             return
         status = self.w.binder.status
         self.unread = (status.boot, status.state, status.time) if status is not None else (None, None, 0.0)
+        self.failed_reads += 1
         why = localize(result.info) or result.code
         text = self.tr("The work offsets could not be read (%1): the DRO shows none until they are read "
                        "again, once the machine is at rest.").replace("%1", why)
@@ -154,7 +160,8 @@ class GrblWindow(QObject):
         if self.unread is None or event.state not in AT_REST or self.w.controls.check_mode.isChecked():
             return
         boot, state, time = self.unread
-        if event.boot == boot and event.state == state and event.time - time < REREAD_S:
+        wait = min(REREAD_S * 2 ** (self.failed_reads - 1), REREAD_MAX_S)
+        if event.boot == boot and event.state == state and event.time - time < wait:
             return
         self.unread = None
         self.w.dro.read_all()

@@ -49,3 +49,27 @@ def test_a_read_cut_off_by_the_reset_after_a_hard_limit_is_read_again_after_it(q
     window.console.flush()
     assert "The work offsets could not be read (the machine was reset)" in window.console.log.toPlainText()
     assert dro.systems.rows[54] == [0.0, 0.0, 20.0] and window.grbl.unread is None
+
+
+def test_a_read_failing_again_and_again_is_tried_less_and_less_often(qtbot, window, monkeypatch):
+    from app.comm.driver import GRBL_CAPABILITIES
+    from app.comm.events import CommandResult, StatusEvent
+
+    monkeypatch.setattr(window.link.worker.session, "capabilities", GRBL_CAPABILITIES, raising=False)
+    grbl, reads = window.grbl, []
+    monkeypatch.setattr(window.dro, "read_all", lambda url="": reads.append(url))
+    idle = lambda t: StatusEvent("grbl-1", "IDLE", 0, 0, 0, -1, -1, -1, 0, "", time=t)  # noqa: E731
+    failed = CommandResult(1, "GET", ("WCS",), False, "a reason that passes", "error:8")
+    waits = []
+    for now in (0.0, 100.0, 200.0, 300.0):
+        window.binder.status = idle(now)
+        grbl.on_command(failed)
+        t = now
+        while not reads:
+            t += 1.0
+            grbl.on_status(idle(t))
+        waits.append(t - now)
+        reads.clear()
+    assert waits == [5.0, 10.0, 20.0, 40.0]
+    grbl.on_command(CommandResult(2, "GET", ("WCS",), True, "WCS 54"))
+    assert grbl.failed_reads == 0

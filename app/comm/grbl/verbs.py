@@ -158,8 +158,9 @@ class FrameVerbs:
         """``GET OFFSET_X|Y|Z``: answered once the machine has reported its travel ($$) and a
         WCO; ``GET WCS`` and ``GET G5x_A`` (see the module); anything else is not on GRBL."""
         name = args[0] if args else ""
-        if name == "WCS":
-            return self._chain(verb, args, ["$#", "$G"], lambda: f"WCS {self.active_system()}")
+        if name == "WCS":  # a firmware without $# (error 3) has no work systems to show
+            return self._chain(verb, args, ["$#", "$G"], lambda: f"WCS {self.active_system()}",
+                               unknown=("error:3",))
         row = _ROW.fullmatch(name)
         if row is not None:
             system, k = int(row[1]), "XYZ".index(row[2])
@@ -177,17 +178,19 @@ class FrameVerbs:
         self.answer_deferred()
         return cid
 
-    def _chain(self, verb: str, args, lines: list[str], answer) -> int:
+    def _chain(self, verb: str, args, lines: list[str], answer, unknown: tuple[str, ...] = ()) -> int:
         """Send ``lines`` one after the other (each once the one before is answered ok), then
         answer ``verb args`` with ``answer()`` once a report has come after the last: a
-        failed line ends it with that line's refusal."""
+        failed line ends it with that line's refusal (``UNSUPPORTED`` for a code of
+        ``unknown``: the machine has no such thing, rather than not now)."""
         cid = self._reserve_id()
         args = tuple(args)
 
         def send(index: int) -> None:
             def answered(result) -> None:
                 if not result.ok:
-                    self._command_done(CommandResult(cid, verb, args, False, result.info, result.code))
+                    code = "UNSUPPORTED" if result.code in unknown else result.code
+                    self._command_done(CommandResult(cid, verb, args, False, result.info, code))
                 elif index + 1 < len(lines):
                     send(index + 1)
                 else:
