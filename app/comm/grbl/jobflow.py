@@ -336,7 +336,8 @@ class GrblJobControl:
         """``G53 G00 Z..`` near the top of the Z travel (``dialect.tool_change_height``) and
         the work Z it reaches (the live WCO) once homed; None (the program's own highest Z)
         on a machine not homed, whose machine coordinates say nothing of the travel."""
-        height = tool_change_height(self.settings) if self.homed else None
+        options = self.info.options if self.info is not None else ""
+        height = tool_change_height(self.settings, options) if self.homed else None
         if height is None or self.grbl_status is None:
             return None
         return f"G53 G00 Z{height:.3f}", height - self.grbl_status.wco[2]

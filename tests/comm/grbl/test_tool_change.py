@@ -67,6 +67,9 @@ def test_the_height_is_the_top_of_the_travel_less_the_homing_pull_off():
     assert tool_change_height({132: "30.000", 27: "5.000"}) == -5.0
     assert tool_change_height({132: "30.000", 27: "0.2"}) == -1.0  # at least 1 mm off the switch
     assert tool_change_height({130: "150"}) is None
+    down = {132: "30.000", 27: "2", 23: "4"}  # Z homes down
+    assert tool_change_height(down) == -2.0  # the space is still [-max, 0]
+    assert tool_change_height(down, "VNMZ,15,128") == 28.0  # unless the origin is set where it homes
 
 
 def test_on_the_simulated_grbl_the_change_is_made_high_with_the_spindle_stopped_then_goes_on():
