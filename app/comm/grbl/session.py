@@ -228,12 +228,16 @@ class GrblSession(SessionCore, GrblJobControl, GrblOperations, FrameVerbs):
     def _rx_kind(self, item) -> str:
         """The console kind of a line (``p.STREAM_KINDS`` are hidden unless asked for): "<"
         a polled report, "report" one the operator asked for (``?``), "ok" the answer to a
-        streamed line, "rx" the rest (a command's ``ok``, messages, errors)."""
+        streamed line, "preamble" the rows of a job's own reads, "rx" the rest (a
+        command's ``ok`` and rows, messages, errors)."""
         if isinstance(item, p.Report):
             return "report" if self._asked_reports else "<"
+        oldest = self.counter.oldest()
+        streamed = oldest is not None and oldest.kind != "command"
         if isinstance(item, p.Ok):
-            oldest = self.counter.oldest()
-            return "rx" if oldest is None or oldest.kind == "command" else "ok"
+            return "ok" if streamed else "rx"
+        if isinstance(item, p.Feedback) and item.kind != "MSG" and streamed:
+            return "preamble"  # the [GC:..] and $# rows a job reads first
         return "rx"
 
     def _answered(self) -> Outgoing | None:

@@ -23,10 +23,12 @@ def test_a_commands_ok_is_shown_a_job_lines_ok_and_the_polls_are_not():
     h.session.send_command("$G")
     h.feed("[GC:G0 G54 G17 G21 G90 G94 M5 M9 T0 F0 S0]", "ok")
     h.session.start_job(["G01 X1 F100"])
-    h.feed("[GC:G0 G54 G17 G21 G90 G94 M5 M9 T0 F0 S0]", "ok", "ok", "ok", REPORT)
+    h.feed("[GC:G0 G54 G17 G21 G90 G94 M5 M9 T0 F0 S0]", "ok", "[G92:0.000,0.000,0.000]", "[MSG:Pgm End]",
+           "ok", "ok", REPORT)
     rx = _frames(h, "rx")
     assert rx[:2] == [("rx", "[GC:G0 G54 G17 G21 G90 G94 M5 M9 T0 F0 S0]"), ("rx", "ok")]  # the command's
-    assert [kind for kind, _ in rx[3:]] == ["ok", "ok", "ok", "<"]  # the job's preamble, line, report
+    kinds = [kind for kind, _ in rx[2:]]  # the job's $G, $#, preamble, then a report
+    assert kinds == ["preamble", "ok", "preamble", "rx", "ok", "ok", "<"]  # a message is always shown
     assert {kind for kind, _ in _frames(h, "tx")} == {"command", "preamble", "job", "sync"}
 
 
