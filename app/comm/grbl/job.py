@@ -10,27 +10,17 @@ stop or at the end, or None while it must wait) and reports back with ``sent``,
 a sync, or, while running, the answered motion line before the last ``used`` ones
 (``Bf:``'s blocks in use, else the planner's size: never more lines than blocks wait).
 
-``safe_tool_changes(lines, before, lift)``: GRBL leaves the spindle running and the tool
-where it is at a stop the host makes, so before an ``M6`` stop the spindle stops
-(``M05``, where it runs) and the tool is lifted (``lift``: ``G53 G00 Z..`` near the top of
-the travel once homed, or the program's highest Z so far if that is higher or the machine
-is not homed; never down); after it, the tool goes
-back where the change started, as a restart would (``modal.preamble_of``: the lift
-again, the spindle at its speed, the program's highest Z, its XY, a feed down to its Z),
-before the program goes on. The lines added carry the index of the line before the stop
-(before it) or the stop's own (after it), so progress and the line map stay the
-program's.
+The lines a tool change adds around its stop are ``toolchange.safe_tool_changes``'.
 """
 
 from __future__ import annotations
 
 import re
 from collections import deque
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 
 from app.comm.events import ProgressEvent
 from app.comm.grbl.dialect import SYNC, GrblLine
-from app.comm.modal import ModalState, preamble_of
 
 _MOTION = re.compile(r"(?:G53\s*)?G0*[0-3](?![0-9.])")  # a line that makes a planner block
 
@@ -44,46 +34,6 @@ class Outgoing:
     text: str
     index: int
     exclusive: bool = False
-
-
-def safe_tool_changes(lines: list[GrblLine], before: ModalState,
-                      lift: tuple[str, float] | None) -> list[GrblLine]:
-    """``lines`` with every tool change made safe (see the module); ``before``: the modal
-    state before the first line (it is not changed); ``lift``: the ``G53`` line and the
-    work Z it reaches (None: not homed)."""
-    if not any(line.stop is not None and line.stop.code == 6 for line in lines):
-        return lines  # a long program without tool changes is not read line by line
-    state = replace(before)
-    out = []
-    for line in lines:
-        if line.stop is None or line.stop.code != 6:
-            out.append(line)
-            if line.text:
-                state.apply(line.text)
-            continue
-        up, machine = _lift(state, lift)
-        ahead = (["M05"] if state.spindle_rpm else []) + ([up] if up else [])
-        back = ([up] if machine else []) + preamble_of(state)  # the operator may have jogged it down
-        out += [GrblLine(line.index - 1, text) for text in ahead]
-        out.append(line)
-        out += [GrblLine(line.index, text) for text in back]
-    return out
-
-
-def _lift(state: ModalState, lift: tuple[str, float] | None) -> tuple[str | None, bool]:
-    """The line that takes the tool up for a change, and whether it is the ``G53`` one: the
-    higher of ``lift`` and the program's highest Z so far (the only one on a machine not
-    homed, whose machine coordinates say nothing of the travel); None where the tool is
-    as high already."""
-    heights = [(lift[1], lift[0], True)] if lift is not None else []
-    if state.top_z is not None:
-        heights.append((state.top_z, f"G00 Z{state.top_z:.3f}", False))
-    if not heights:
-        return None, False
-    height, text, machine = max(heights, key=lambda h: h[0])
-    if state.z is not None and state.z >= height:
-        return None, False
-    return text, machine
 
 
 def _is_motion(text: str) -> bool:

@@ -23,7 +23,8 @@ from __future__ import annotations
 from app.comm.events import ProgramStopEvent, ResumeOffer
 from app.comm.grbl import protocol as p
 from app.comm.grbl.dialect import PREAMBLE, grbl_lines, line_problems, tool_change_height
-from app.comm.grbl.job import GrblJob, Outgoing, safe_tool_changes
+from app.comm.grbl.job import GrblJob, Outgoing
+from app.comm.grbl.toolchange import safe_tool_changes
 from app.comm.listener import SessionState
 from app.comm.modal import ModalState, modal_state, restart_preamble
 from app.i18n import joined, msg

@@ -6,9 +6,14 @@ the lines added carry the program's indices, so progress and the line map stay i
 
 from __future__ import annotations
 
+import random
+from dataclasses import replace
+
 import pytest
 
 from app.comm.grbl.dialect import tool_change_height
+from app.comm.grbl.toolchange import state_after
+from app.comm.modal import ModalState, modal_state
 from tests.comm.grbl.harness import Harness
 from tests.comm.grbl.simrig import SimRig
 
@@ -92,3 +97,31 @@ def test_on_the_simulated_grbl_the_change_is_made_high_with_the_spindle_stopped_
     back = ran.index("G53 G00 Z-1.000", ran.index("G53 G00 Z-1.000") + 1)  # after the prompt
     assert ran[back:back + 4] == ["G53 G00 Z-1.000", "M03 S1000", "G00 Z5.000", "G00 X30.000 Y20.000 F100"]
     assert ran[back + 4:] == PROGRAM[STOP + 1:]
+
+
+def _random_program(rng, n: int) -> list[str]:
+    lines = []
+    for _ in range(n):
+        kind = rng.random()
+        axes = " ".join(f"{a}{rng.uniform(-50, 50):.3f}" for a in "XYZ" if rng.random() < 0.5)
+        feed = f" F{rng.choice([100, 250, 600])}" if rng.random() < 0.2 else ""
+        if kind < 0.6:
+            lines.append(f"G0{rng.choice('0123')} {axes}{feed}".strip())
+        elif kind < 0.7:
+            lines.append(rng.choice(["M03 S1000", "M03 S2400", "M05", "M02"]))
+        elif kind < 0.8:
+            lines.append(f"G04 P{rng.uniform(0, 1):.2f}")
+        else:
+            lines.append(f"G01{feed}".strip() if feed else "G04 P0")
+    return lines
+
+
+def test_the_state_at_a_change_is_what_reading_every_line_gives():
+    rng = random.Random(23)
+    for trial in range(300):
+        lines = _random_program(rng, rng.randint(0, 60))
+        before = modal_state(["M03 S500", "G00 X1 Y2 Z3 F50"], 2) if trial % 2 else ModalState()
+        expected = replace(before)
+        for line in lines:
+            expected.apply(line)
+        assert state_after(before, lines) == expected, (trial, lines)
