@@ -24,9 +24,9 @@ from app.comm.events import ProgramStopEvent, ResumeOffer
 from app.comm.grbl import protocol as p
 from app.comm.grbl.dialect import PREAMBLE, grbl_lines, line_problems, tool_change_height
 from app.comm.grbl.job import GrblJob, Outgoing
-from app.comm.grbl.toolchange import safe_tool_changes
+from app.comm.grbl.toolchange import safe_tool_changes, state_after
 from app.comm.listener import SessionState
-from app.comm.modal import ModalState, modal_state, restart_preamble
+from app.comm.modal import ModalState, preamble_of
 from app.i18n import joined, msg
 
 S = SessionState
@@ -66,8 +66,8 @@ class GrblJobControl:
             first = reads + PREAMBLE
         else:
             first = PREAMBLE + modes + self._offset_lines(offsets, modes)
-        preamble = first + (tuple(restart_preamble(list(device_lines), start)) if start else ())
-        before = modal_state(list(device_lines), start) if start else ModalState()
+        before = state_after(ModalState(), device_lines[:start])  # modal_state's, read from the end
+        preamble = first + (tuple(preamble_of(before)) if start else ())  # modal.restart_preamble
         lines = safe_tool_changes(grbl_lines(device_lines, self.optional_stop, start), before,
                                   self._tool_change_lift())
         job = GrblJob(lines, len(device_lines), name, preamble, first=start)

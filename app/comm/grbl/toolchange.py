@@ -54,10 +54,10 @@ def safe_tool_changes(lines: list[GrblLine], before: ModalState,
 
 
 def state_after(state: ModalState, texts: list[str]) -> ModalState:
-    """A copy of ``state`` after ``texts`` (dialect lines, upper case), as
-    ``ModalState.apply`` on each would leave it (see the module). In the dialect only
-    moves carry X, Y and Z, so the last line with each word is found with ``rfind``."""
-    text = "\n" + "\n".join(texts)
+    """A copy of ``state`` after ``texts`` (dialect lines), as ``ModalState.apply`` on each
+    would leave it (see the module). In the dialect only moves carry X, Y and Z, so the
+    last line with each word is found with ``rfind``."""
+    text = ("\n" + "\n".join(texts)).upper()
     starts = {text.rfind("\n", 0, at) for at in (text.rfind(w) for w in "XYZF") if at >= 0}
     at = len(text)
     while (at := text.rfind("\nM", 0, at)) >= 0:  # the last spindle line
