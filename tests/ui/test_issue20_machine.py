@@ -118,7 +118,9 @@ def test_mdi_spindle_before_homing_follows_the_spindle_button(qtbot, connected):
     window.console.mdi.returnPressed.emit()
     assert window.operator.refused[-1] == ("mdi", "the spindle is changing speed")
     qtbot.waitUntil(lambda: _status(window).rpm > 1000, timeout=60_000)  # as the Spindle On button
-    qtbot.waitUntil(lambda: window.binder.pending_motion is None, timeout=60_000)
+    # The answer and the first status at rest may come in either order: wait for both.
+    qtbot.waitUntil(lambda: window.binder.pending_motion is None and _status(window).state == "IDLE",
+                    timeout=60_000)
     window.console.mdi.setText("G0 X5")
     window.console.mdi.returnPressed.emit()
     assert window.operator.refused[-1] == ("mdi", "home the machine first")
