@@ -75,7 +75,12 @@ def restart_preamble(lines: list[str], start: int) -> list[str]:
     """Dialect lines that restore the modal state before ``lines[start]`` (empty at 0)."""
     if start <= 0:
         return []
-    state = modal_state(lines, start)
+    return preamble_of(modal_state(lines, start))
+
+
+def preamble_of(state: ModalState) -> list[str]:
+    """Dialect lines that put back ``state`` from anywhere above the work: the spindle, a
+    retract to its highest Z, a rapid over its XY (carrying its feed), a feed down to its Z."""
     out = []
     if state.spindle_rpm is not None:
         out.append(f"M03 S{state.spindle_rpm:.0f}")

@@ -60,6 +60,7 @@ from PySide6.QtCore import QObject, Qt, QThread, QTimer, Signal, Slot
 
 from app.comm.driver import DRIVERS, FRAME_CAPABILITIES, kind_for_url, make_session, probe
 from app.comm.events import FrameEvent, LogEvent
+from app.comm.grbl.protocol import STREAM_KINDS
 from app.comm.listener import SessionListener
 from app.comm.session import Session
 from app.comm.transport import open_transport
@@ -77,7 +78,7 @@ GRBL_PUMP_MS = 2  # GRBL's only window is its 128-byte buffer (11 ms at 115200):
 #                  while a job streams; otherwise PUMP_MS (fewer wake-ups competing with the GUI)
 IDLE_PUMP_MS = 50  # with no port open: nothing arrives, the session's timers are coarse
 READ_CHUNK = 65536
-QUIET_KINDS = frozenset({*"DAFS", "job", "preamble", "sync", "<", "ok"})  # GRBL's stream kinds too
+QUIET_KINDS = frozenset({*"DAFS", *STREAM_KINDS})  # the mill's stream frames and GRBL's stream kinds
 
 
 class _Relay(SessionListener):

@@ -22,21 +22,24 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from app.comm.grbl.protocol import STREAM_KINDS
 from app.i18n import localize
 from app.ui.numbers import decimal, fill, integer
 
 MAX_LINES = 4000
-NOISY_KINDS = frozenset("SAFD")  # status and stream frames, hidden unless asked for
+NOISY_KINDS = frozenset({*"SAFD", *STREAM_KINDS})  # status and stream frames (the mill's, GRBL's)
 HEARTBEAT_VERBS = frozenset({"PING", "STATUS"})  # the heartbeat and its answers: hidden with them
 
 
 def is_noise(kind: str, text: str) -> bool:
-    """A status or stream frame, or the heartbeat's command (``C <id> PING``) and its
-    answer: what the "stream/status frames" box shows, hidden by default."""
+    """A status or stream frame (the mill's S/A/F/D, GRBL's job lines, their ``ok`` and the
+    polled reports), or the heartbeat's command (``C <id> PING``) and its answer: what the
+    "stream/status frames" box shows, hidden by default. An operator's own ``?`` is
+    answered by a GRBL "report", shown."""
     if kind in NOISY_KINDS:
         return True
     words = text.split()
-    return kind in "CO" and len(words) >= 3 and words[2] in HEARTBEAT_VERBS
+    return kind in ("C", "O") and len(words) >= 3 and words[2] in HEARTBEAT_VERBS
 
 
 class ConsoleView(QWidget):

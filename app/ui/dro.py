@@ -55,7 +55,7 @@ class Dro(QObject):
 
     def on_command(self, result) -> None:
         first_answer = self.systems.supported is None
-        if not self.systems.take(result.verb, tuple(result.args), result.info, result.ok):
+        if not self.systems.take(result.verb, tuple(result.args), result.info, result.ok, result.code):
             return
         name = result.args[0] if result.args else ""
         if first_answer and self.systems.supported:

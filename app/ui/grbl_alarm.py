@@ -4,6 +4,8 @@ risks (``codes.unlock_advice``: the ``ALARM:N`` in words, or the lock GRBL start
 until homed), then offering what gets out of it, as Candle, UGS and gSender do: *Reset*
 after a hard or soft limit (GRBL answers nothing else then), *Home* ($H) and *Unlock*
 ($X). The state table decides whether each may be sent (``home``, ``unlock``, ``stop``).
+A machine without homing (``$22=0``, ``homing`` False) gets no *Home*, and advice that
+says to check the position and work zero instead.
 """
 
 from __future__ import annotations
@@ -27,6 +29,7 @@ class GrblAlarmBar(QObject):
         self.w = window
         self.code: int | None = None  # the last ALARM:N since the machine's last reset
         self.reset_sent = False
+        self.homing = True  # the machine has a homing cycle ($22; set by GrblWindow)
         self.label = QLabel()
         self.label.setWordWrap(True)
         self.label.installEventFilter(self)  # LanguageChange reaches widgets, not this QObject
@@ -68,13 +71,19 @@ class GrblAlarmBar(QObject):
         return not self.bar.isHidden()
 
     def advice(self) -> str:
-        return localize(unlock_advice(self.code))
+        return localize(unlock_advice(self.code, self.homing))
 
     def _show_text(self) -> None:
         self.label.setText(self.tr("MACHINE LOCKED (alarm): %1").replace("%1", self.advice()))
         needs_reset = self.code in RESET_FIRST and not self.reset_sent
         for key, action in self.placed.items():  # a toolbar shows its widgets through their actions
-            action.setVisible(needs_reset == (key == "reset"))
+            action.setVisible(needs_reset == (key == "reset") and (key != "home" or self.homing))
+
+    def set_homing(self, homing: bool) -> None:
+        """Whether the machine has a homing cycle (its ``$22``)."""
+        if homing != self.homing:
+            self.homing = homing
+            self._show_text()
 
     def on_alarm(self, event) -> None:
         """An ``ALARM:N``: shown at once (after a hard or soft limit GRBL sends no report

@@ -4,6 +4,8 @@
 A G-code line that only switches the spindle (``M3 S3000``, ``M5``) is the Spindle
 button's command (``SPINDLE 3000`` / ``SPINDLE OFF``), so it follows the same rule as
 the button; any other G-code line runs as a one-line job (the table's ``mdi``).
+A GRBL system command (``$$``, ``$H``, ``$X``, ``$J=..``, ``$10=3``) and GRBL's status
+query ``?`` are commands too, each under the control of what it does.
 """
 
 from __future__ import annotations
@@ -16,6 +18,8 @@ VERBS = frozenset({"PING", "STATUS", "HOME", "PAUSE", "RESUME", "STOP", "RESET",
 _SPINDLE = re.compile(r"^\s*(?:N\d+\s*)?(M0*([345]))\s*(?:S\s*(\d+(?:\.\d*)?))?\s*$", re.IGNORECASE)
 _SPINDLE_REVERSED = re.compile(r"^\s*(?:N\d+\s*)?S\s*(\d+(?:\.\d*)?)\s*M0*([34])\s*$", re.IGNORECASE)
 _SD = {"LIST": "sd_list", "DEL": "sd_delete", "RUN": "sd_run", "PUT": "sd_save"}
+_GRBL_CONTROLS = {"$H": "home", "$X": "unlock", "$C": "check_mode", "$SLP": "machine_settings"}
+_GRBL_SETTING = re.compile(r"^\$(\d+|N\d+|RST)=", re.IGNORECASE)
 _VERB_CONTROLS = {"PING": "query", "STATUS": "query", "GET": "query", "SET": "query", "PAUSE": "pause",
                   "RESUME": "resume", "STOP": "stop", "RESET": "stop", "JOG": "jog", "ZERO": "zero"}
 
@@ -33,6 +37,8 @@ def classify(text: str) -> MdiLine:
     verb = words[0].upper() if words else ""
     if verb in VERBS:
         return MdiLine(_verb_control(verb, words), text, text)
+    if verb.startswith("$") or verb == "?":
+        return MdiLine(_grbl_control(text.strip()), text.strip(), text)
     spindle = _spindle_command(text)
     if spindle is not None:
         return MdiLine("spindle_off" if spindle == "SPINDLE OFF" else "spindle_on", spindle, text)
@@ -49,6 +55,16 @@ def _verb_control(verb: str, words: list[str]) -> str:
     if verb == "SET" and len(words) > 1 and words[1].upper() == "CHECK":
         return "check_mode"
     return _VERB_CONTROLS[verb]
+
+
+def _grbl_control(text: str) -> str:
+    """The control of a GRBL system command or ``?`` (reading ones are queries)."""
+    upper = text.upper()
+    if upper.startswith("$J="):
+        return "jog"
+    if _GRBL_SETTING.match(upper):
+        return "machine_settings"
+    return _GRBL_CONTROLS.get(upper, "query")
 
 
 def _spindle_command(text: str) -> str | None:

@@ -5,6 +5,8 @@ The offset is read from the machine (``GET OFFSET_X|Y|Z`` on connect) and follow
 ``ZERO`` answer; until the machine has answered, the profile's default offset stands.
 The travel is the profile's, or a GRBL machine's own ``$130``-``$132`` (from its ``$$``
 print-out and every ``$13x=`` written), as ``app.comm.grbl.dialect.grbl_travel`` reads them.
+A GRBL machine without homing (``$22=0``) is not checked: its machine coordinates start
+where it powered up, so its travel says nothing of where a program goes.
 The check runs again when a file is opened, the work zero changes or the settings
 change. A program that would leave the travel cannot start (``blocks_start``); only in
 check mode may the operator override it (the "Override travel check" switch).
@@ -17,6 +19,7 @@ from dataclasses import replace
 from PySide6.QtCore import QObject
 
 from app.comm.grbl.dialect import grbl_travel
+from app.comm.grbl.settings import homing_enabled
 from app.gcode.checks import preflight
 from app.i18n import localize
 
@@ -36,6 +39,7 @@ class Preflight(QObject):
         self.offset: list[float | None] = [None, None, None]
         self.travel = None  # a GRBL machine's own travel ($130-$132), else the profile's
         self._settings: dict[int, str] = {}
+        self._homing = True  # the machine homes: its travel is where its coordinates are
         self.errors: list = []
         worker = window.link.worker
         worker.connected.connect(self.ask_offset)
@@ -45,7 +49,7 @@ class Preflight(QObject):
         window.controls.override_travel.toggled.connect(lambda _on: self.w.binder.refresh_enabled())
 
     def ask_offset(self, url: str = "") -> None:
-        self.travel, self._settings = None, {}  # another machine: its own travel, if it says one
+        self.travel, self._settings, self._homing = None, {}, True  # another machine: its own travel
         for name in OFFSET_NAMES:
             self.w.link.call("send_command", f"GET {name}")
 
@@ -57,7 +61,7 @@ class Preflight(QObject):
             self.offset[OFFSET_NAMES.index(name)] = float(value)
             if None not in self.offset:
                 self.run()
-        elif result.verb == "$$" or result.verb.startswith("$13"):
+        elif result.verb == "$$" or result.verb.startswith(("$13", "$22=")):
             self._grbl_settings(result.rows if result.verb == "$$" else (result.verb,))
         elif result.verb == "ZERO":
             words = dict((w[0], float(w[1:])) for w in result.info.split() if w[:1] in "XYZ")
@@ -73,9 +77,9 @@ class Preflight(QObject):
         try:
             travel = grbl_travel(self._settings, (0.0, 0.0, 0.0), self.w.profile)[0].travel
         except ValueError:
-            return  # not all three reported yet (or not a travel): the profile's stands
-        if travel != self.travel:
-            self.travel = travel
+            travel = self.travel  # not all three reported yet (or not a travel): the profile's stands
+        if travel != self.travel or homing_enabled(self._settings) != self._homing:
+            self.travel, self._homing = travel, homing_enabled(self._settings)
             self.run()
 
     def on_loaded(self, loaded) -> None:
@@ -91,7 +95,7 @@ class Preflight(QObject):
         program = getattr(loaded, "program", None)
         old = [str(e) for e in self.errors]
         self.errors = []
-        if program is not None and not program.errors:
+        if program is not None and not program.errors and self._homing:
             profile = self.w.profile if self.travel is None else replace(self.w.profile, travel=self.travel)
             self.errors = preflight(program.ops, profile, program.lines, self.current_offset(),
                                     program.envelope)  # the lines unsplit; the load's check reused

@@ -19,6 +19,7 @@ SYSTEMS = tuple(range(54, 60))
 AXES = "XYZ"
 ROW_NAME = re.compile(r"G(5[4-9])_([XYZ])")
 OFFSET_NAMES = ("OFFSET_X", "OFFSET_Y", "OFFSET_Z")
+NO_SYSTEMS = frozenset({"", "BAD_PARAM", "UNSUPPORTED", "UNKNOWN_VERB"})  # GET WCS refused: not known
 
 
 class WorkSystems:
@@ -41,8 +42,11 @@ class WorkSystems:
     def select(system: int) -> str:
         return f"SET WCS {system}"
 
-    def take(self, verb: str, args: tuple, info: str, ok: bool) -> bool:
-        """Read one command's answer; whether it changed what is shown."""
+    def take(self, verb: str, args: tuple, info: str, ok: bool, code: str = "") -> bool:
+        """Read one command's answer; whether it changed what is shown. A ``GET WCS`` refused
+        as unknown (``NO_SYSTEMS``) means a machine with one offset only; one that failed
+        otherwise (a timeout, a lost link, GRBL's ``error:N`` or a reset) read nothing: the
+        systems stay unknown, never shown as that one offset."""
         if verb == "ZERO" and ok:
             words = {w[0]: float(w[1:]) for w in info.split() if w[:1] in AXES}
             return self._write_active(words)
@@ -50,7 +54,7 @@ class WorkSystems:
             return False
         name = args[0]
         if not ok:
-            if name == "WCS" and verb == "GET":
+            if name == "WCS" and verb == "GET" and code in NO_SYSTEMS:
                 self.supported = False
                 return True
             return False

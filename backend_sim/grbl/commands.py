@@ -114,9 +114,6 @@ class SystemCommands:
         self.write("ok")
 
     def _unlock(self) -> None:
-        if self.critical:
-            self.write("error:9")  # a hard or soft limit: reset first
-            return
         if self.locked:
             self.locked, self.alarm = False, None
             self.motion.clear_alarm()
@@ -128,8 +125,8 @@ class SystemCommands:
         if not self.settings[22]:
             self.write("error:5")
             return
-        if self.critical or self.motion.state not in ("IDLE", "ALARM") or self.check_mode:
-            self.write("error:9" if self.critical else "error:8")
+        if self.motion.state not in ("IDLE", "ALARM") or self.check_mode:
+            self.write("error:8")
             return
         try:
             self.motion.home()

@@ -10,8 +10,10 @@ of the buffer when the machine parses it; a motion line is answered ``ok`` once 
 the planner (``PLANNER_BLOCKS``), so a full planner stops the reading and the receive
 buffer fills: the host's character counting is what keeps it from overflowing. A dwell
 (``G4``) is answered when it has run, after everything before it (so ``G4 P0`` is a
-sync). Machine position (``MPos``) is the motion model's measured millimetres minus
-``origin`` (the travel's far corner), so the machine space is ``[-$13x, 0]``.
+sync). A reset clears the parser state, G92's offset with it (GRBL 1.1's ``gc_init``),
+and keeps the G54-G59 offsets (EEPROM). Machine position (``MPos``) is the motion
+model's measured millimetres minus ``origin`` (the travel's far corner), so the machine
+space is ``[-$13x, 0]``.
 A setting write (``$x=val``) stores to EEPROM for ``EEPROM_WRITE_MS``, with the serial
 interrupt off as on the real part: every byte that lands meanwhile, real-time bytes too,
 is lost (``lost_to_eeprom``), and the ``ok`` comes after the write.
@@ -78,8 +80,7 @@ class GrblMachine(SystemCommands):
         """What a reset leaves: empty buffers, default modes, the welcome line."""
         self.rx.clear()
         self.pending, self.waiting_seq = None, None
-        offsets, g92 = self.gcode.offsets, self.gcode.g92
-        self.gcode = GcodeState(offsets=offsets, g92=g92)
+        self.gcode = GcodeState(offsets=self.gcode.offsets)  # G54-G59 are in EEPROM; G92 is not
         self.sync_position()
         self.check_mode = False
         self.paused = False  # an M0 waiting for cycle start
@@ -167,8 +168,8 @@ class GrblMachine(SystemCommands):
         """Take and handle one line if the machine can; False when it must wait."""
         if self.pending is not None and not self._plan(*self.pending):
             return False
-        if self.waiting_seq is not None or self.paused:
-            return False
+        if self.waiting_seq is not None or self.paused or self.critical:
+            return False  # after a hard or soft limit GRBL reads nothing until it is reset
         end = self.rx.find(b"\n")
         if end < 0:
             return False

@@ -710,6 +710,13 @@
     </message>
 </context>
 <context>
+    <name>GrblWindow</name>
+    <message>
+        <source>The work offsets could not be read (%1): the DRO shows none until they are read again, once the machine is at rest.</source>
+        <translation>Không đọc được gốc phôi (%1): bảng tọa độ không hiện gốc phôi nào cho tới khi đọc lại được, lúc máy dừng yên.</translation>
+    </message>
+</context>
+<context>
     <name>JobStatusBar</name>
     <message>
         <source>machine position in work coordinates (mm)</source>

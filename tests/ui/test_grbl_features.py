@@ -24,6 +24,21 @@ def connect_grbl(qtbot, make_window):
     return window, window.link.sim.machine
 
 
+def systems_read(dro) -> bool:
+    """The DRO has the machine's six work systems."""
+    return bool(dro.systems.supported) and None not in dro.systems.rows[59]
+
+
+def with_systems_in_check_mode(qtbot, make_window):
+    """Connected, unlocked, the work systems read, then check mode on."""
+    window, machine = connect_grbl(qtbot, make_window)
+    unlocked(qtbot, window)
+    qtbot.waitUntil(lambda: systems_read(window.dro), timeout=WAIT)
+    window.controls.check_mode.setChecked(True)
+    qtbot.waitUntil(lambda: machine.check_mode, timeout=WAIT)
+    return window, machine
+
+
 def unlocked(qtbot, window):
     qtbot.waitUntil(lambda: window.grbl.alarm.shown, timeout=WAIT)
     window.grbl.alarm.buttons["unlock"].click()
@@ -258,12 +273,8 @@ def test_on_the_mill_the_grbl_controls_are_off_with_a_word_why(qtbot, window):
 
 
 def test_a_check_mode_line_keeps_the_work_systems_grbl_will_not_print_then(qtbot, make_window):
-    window, machine = connect_grbl(qtbot, make_window)
-    unlocked(qtbot, window)
+    window, _machine = with_systems_in_check_mode(qtbot, make_window)
     dro = window.dro
-    qtbot.waitUntil(lambda: bool(dro.systems.supported) and None not in dro.systems.rows[59], timeout=WAIT)
-    window.controls.check_mode.setChecked(True)
-    qtbot.waitUntil(lambda: machine.check_mode, timeout=WAIT)
     window.operator.mdi("G0 Z-1")
     qtbot.waitUntil(lambda: window.binder.last_job_event is not None, timeout=WAIT)
     assert window.binder.last_job_event.completed

@@ -1,6 +1,7 @@
 """A tool change and the check before Start on a GRBL machine, in the window (issue 23):
-GRBL refuses M6, so the stream waits until the machine is idle with the spindle stopped,
-then the tool-change prompt; Continue restarts the spindle and goes on, each line once.
+GRBL refuses M6, so the stream waits until the machine is idle with the spindle stopped
+and the tool lifted, then the tool-change prompt; Continue brings the tool back where the
+change began with the spindle running and goes on, each line once.
 The check before Start uses the machine's own travel ($130-$132) and its live WCO."""
 
 from __future__ import annotations
@@ -37,6 +38,8 @@ def test_a_tool_change_waits_for_the_idle_machine_with_the_spindle_stopped(qtbot
     window.operator.start()
     qtbot.waitUntil(prompt.isVisible, timeout=120_000)
     assert machine.motion.state == "IDLE" and machine.motion.spindle_target == 0  # idle, spindle off
+    lifted_z = lambda: abs(window.binder.status.z - 5.0) < 0.01  # noqa: E731 (the program's Z5, above the G53 one)
+    qtbot.waitUntil(lifted_z, timeout=10_000)
     assert "tool 2" in prompt.text() + " " + prompt.informativeText() and "line 6" in prompt.text()
     qtbot.waitUntil(lambda: "W" in window.binder.status.flags, timeout=10_000)
     assert window.binder.status.state == "IDLE"
@@ -46,7 +49,9 @@ def test_a_tool_change_waits_for_the_idle_machine_with_the_spindle_stopped(qtbot
     device = [g.text for g in grbl_lines(window.loaded.program.device_lines) if g.text]
     cut = device.index("G01 Y40.000") if "G01 Y40.000" in device else next(
         i for i, line in enumerate(device) if line.startswith("G01 Y40"))
-    assert lines_run(window) == device[:cut] + ["M05", "M03 S1000"] + device[cut:]  # never M06
+    lifted = ["M05", "G00 Z5.000"]  # the spindle stopped, the tool up for the change
+    back = ["M03 S1000", "G00 Z5.000", "G00 X120.000 Y20.000 F300", "G01 Z-1.000 F300"]  # where it began
+    assert lines_run(window) == device[:cut] + lifted + back + device[cut:]  # never M06
 
 
 def test_the_check_before_start_uses_the_machines_own_travel(qtbot, grbl_window):

@@ -104,8 +104,12 @@ def hold_text(state: str) -> Message | str:
     return ""
 
 
-def unlock_advice(code: int | None) -> Message:
-    """What to tell the operator before ``$X``: why the machine is locked and the risk."""
+def unlock_advice(code: int | None, homing: bool = True) -> Message:
+    """What to tell the operator before ``$X``: why the machine is locked and the risk.
+    ``homing``: the machine has a homing cycle (``$22``); without one there is nothing to
+    home, and the advice is to check the position and work zero instead."""
+    if not homing and (code is None or code in RESET_FIRST or code in POSITION_LOST):
+        return _unlock_advice_without_homing(code)
     if code in RESET_FIRST:
         return msg("Alarm {code}: {what}. The machine answers nothing until it is reset: reset it, "
                    "then home ($H) it, since the position may be lost.", code=code, what=alarm_text(code))
@@ -116,6 +120,20 @@ def unlock_advice(code: int | None) -> Message:
         return msg("Alarm {code}: {what}. Unlocking ($X) keeps the position the machine believes, "
                    "which may be wrong: home ($H) instead if you can.", code=code, what=alarm_text(code))
     return msg("Alarm {code}: {what}. Unlocking ($X) lets the machine move again.", code=code,
+               what=alarm_text(code))
+
+
+def _unlock_advice_without_homing(code: int | None) -> Message:
+    """``unlock_advice`` where the position may be wrong and there is no homing to fix it."""
+    if code in RESET_FIRST:
+        return msg("Alarm {code}: {what}. The machine answers nothing until it is reset: reset it, then "
+                   "unlock ($X) it; it has no homing, so check its position and work zero before cutting.",
+                   code=code, what=alarm_text(code))
+    if code is None:
+        return msg("The machine is in alarm (since before this connection). Unlocking ($X) lets it move "
+                   "again; it has no homing, so check its position and work zero before cutting.")
+    return msg("Alarm {code}: {what}. Unlocking ($X) keeps the position the machine believes, which "
+               "may be wrong; it has no homing: set the work zero again before cutting.", code=code,
                what=alarm_text(code))
 
 

@@ -2,7 +2,8 @@
 grbl ...``; ``sim://grbl`` and a machine that greets as GRBL choose it by themselves).
 
 Commands: ``status``, ``info`` (``$I``), ``home`` (``$H``), ``unlock`` (says why the
-machine is locked, then ``$X``), ``run FILE`` (home or refuse if locked, stream, answer
+machine is locked, then ``$X``), ``run FILE`` (home if locked, or refuse on a machine
+without homing, ``$22=0``; stream, answer
 program stops as ``--at-stops`` says, exit 0 only if every line completed), ``check
 FILE`` (the whole program through ``$C`` check mode; every refused line listed),
 ``hold``/``pause``, ``resume``, ``stop``, ``reset``, ``jog AXIS MM FEED``, ``cancel``
@@ -21,14 +22,13 @@ from app.comm.console_client import ConsoleClient, ConsoleError, load_program
 from app.comm.console_jobs import JobCommands
 from app.comm.console_printer import Printer
 from app.comm.grbl.events import GrblListener
+from app.comm.grbl.protocol import STREAM_KINDS
 from app.comm.grbl.session import GrblSession
 from app.comm.grbl.settings import read_backup, table, write_backup
 from app.comm.grbl.status import hold_event
 from app.comm.listener import SessionState
 from app.comm.modal import device_index_of
 from app.i18n import localize
-
-QUIET_KINDS = frozenset({"job", "preamble", "sync", "<", "ok"})
 
 
 class GrblPrinter(Printer, GrblListener):
@@ -40,7 +40,7 @@ class GrblPrinter(Printer, GrblListener):
         self.why = ""  # the hold last printed (a status's ``why``)
 
     def on_frame(self, event):
-        quiet = self.quiet and event.kind in QUIET_KINDS
+        quiet = self.quiet and event.kind in STREAM_KINDS
         if not quiet:
             print(("> " if event.direction == "tx" else "< ") + event.text, file=self.out)
 
@@ -80,7 +80,7 @@ class GrblConsole(ConsoleClient):
         handler(*words[1:])
 
     def command(self, text: str, *args, timeout: float | None = None):
-        cid = self.session.command(" ".join([text, *map(str, args)]))
+        cid = self.session.send_command(" ".join([text, *map(str, args)]))
         found = lambda: [r for r in self.printer.results if r.id == cid]  # noqa: E731
         self.wait(lambda: bool(found()), timeout, f"{text} to be answered")
         result = found()[0]
@@ -213,6 +213,8 @@ class GrblConsole(ConsoleClient):
         self._fresh_status()
         if self.session.status.state == "ALARM" and not self.session.check_mode:
             print(localize(self.session.unlock_advice()), file=self.out)
+            if not self.session.homing_enabled:  # nothing to home ($22=0): the operator unlocks
+                raise ConsoleError("the machine is in alarm and has no homing: unlock it first (unlock)")
             print("homing first ($H)", file=self.out)
             self.cmd_home()
             self._fresh_status()

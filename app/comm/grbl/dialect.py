@@ -72,6 +72,25 @@ def axis_range(settings: dict[int, str], k: int) -> tuple[float, float]:
     return (-travel, 0.0)
 
 
+def tool_change_height(settings: dict[int, str], options: str = "") -> float | None:
+    """The machine Z (``G53``) a tool change lifts to: the top of the Z travel less the
+    homing pull-off (``$27``, at least 1 mm: where homing leaves Z, off its switch), as
+    gSender's ``G53 G0 Z[safe height]``; None without ``$132``. The top is machine Z 0,
+    but on a build that sets the origin where it homes (``Z`` among ``$I``'s ``[OPT:]``
+    letters, ``options``) with Z homing down (``$23`` bit 2), where it is ``+$132``."""
+    if 132 not in settings:
+        return None
+    try:
+        pull_off = float(settings.get(27, "1") or 1)
+        homes_down = int(float(settings.get(23, "0") or 0)) & 4
+    except ValueError:
+        return None
+    top = axis_range(settings, 2)[1]
+    if homes_down and "Z" in options.split(",")[0]:
+        top = top - axis_range(settings, 2)[0]  # the space is [0, max]
+    return top - max(pull_off, 1.0)
+
+
 def grbl_travel(settings: dict[int, str], wco, profile: MachineProfile | None = None):
     """(profile with GRBL's travel, work offset) for ``checks.preflight``; ValueError if a
     ``$13x`` setting is missing or not a positive number."""

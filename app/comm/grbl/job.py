@@ -10,9 +10,7 @@ stop or at the end, or None while it must wait) and reports back with ``sent``,
 a sync, or, while running, the answered motion line before the last ``used`` ones
 (``Bf:``'s blocks in use, else the planner's size: never more lines than blocks wait).
 
-``spindle_off_at_tool_changes(lines, rpm)``: GRBL leaves the spindle running at a stop the
-host makes, so the tool is changed with it stopped: ``M05`` before an ``M6`` stop and the
-speed in force (``M03 S..``) after it, where the spindle runs.
+The lines a tool change adds around its stop are ``toolchange.safe_tool_changes``'.
 """
 
 from __future__ import annotations
@@ -23,9 +21,8 @@ from dataclasses import dataclass
 
 from app.comm.events import ProgressEvent
 from app.comm.grbl.dialect import SYNC, GrblLine
-from app.comm.modal import ModalState
 
-_MOTION = re.compile(r"G0*[0-3](?![0-9.])")
+_MOTION = re.compile(r"(?:G53\s*)?G0*[0-3](?![0-9.])")  # a line that makes a planner block
 
 
 @dataclass(frozen=True)
@@ -37,24 +34,6 @@ class Outgoing:
     text: str
     index: int
     exclusive: bool = False
-
-
-def spindle_off_at_tool_changes(lines: list[GrblLine], rpm: float | None) -> list[GrblLine]:
-    """``lines`` with the spindle stopped for each tool change (see the module); ``rpm``:
-    the speed in force before the first line (None: off). The ``M05`` carries the line
-    before the stop's index (nothing of the stop is done when it is answered), the
-    ``M03`` the stop's own."""
-    spindle = ModalState(spindle_rpm=rpm)
-    out = []
-    for line in lines:
-        running = spindle.spindle_rpm
-        if line.stop is not None and line.stop.code == 6 and running:
-            out += [GrblLine(line.index - 1, "M05"), line, GrblLine(line.index, f"M03 S{running:.0f}")]
-            continue
-        out.append(line)
-        if line.text and line.text[:1] == "M":
-            spindle.apply(line.text)
-    return out
 
 
 def _is_motion(text: str) -> bool:

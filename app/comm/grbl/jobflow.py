@@ -14,21 +14,24 @@ the line after the last one known finished (GRBL cannot resume exactly);
 ``confirm_restart()`` runs from there with the modal state restored: units, distance
 mode, feed mode and plane (``PREAMBLE``), the work system and coolant the job ran in
 (``$G``, read as the job's first line: a reset puts GRBL back in G54 with coolant off),
-then the spindle, feed and position the lines before it left (``modal.restart_preamble``).
+the G92 and tool length offsets (``$#``, read next: a reset clears both), then the
+spindle, feed and position the lines before it left (``modal.restart_preamble``).
 """
 
 from __future__ import annotations
 
 from app.comm.events import ProgramStopEvent, ResumeOffer
 from app.comm.grbl import protocol as p
-from app.comm.grbl.dialect import PREAMBLE, grbl_lines, line_problems
-from app.comm.grbl.job import GrblJob, Outgoing, spindle_off_at_tool_changes
+from app.comm.grbl.dialect import PREAMBLE, grbl_lines, line_problems, tool_change_height
+from app.comm.grbl.job import GrblJob, Outgoing
+from app.comm.grbl.toolchange import safe_tool_changes, state_after
 from app.comm.listener import SessionState
-from app.comm.modal import modal_state, restart_preamble
+from app.comm.modal import ModalState, preamble_of
 from app.i18n import joined, msg
 
 S = SessionState
 PARSER_STATE = "$G"  # the job's first line: the work system and coolant it runs in
+PARAMETERS = "$#"  # then its G92 and tool length offsets (a reset clears both)
 WORK_SYSTEMS = frozenset(f"G{n}" for n in range(54, 60))
 COOLANT = ("M7", "M8")
 PROGRESS_S = 0.1
@@ -42,12 +45,13 @@ class GrblJobControl:
     # ------------------------------------------------------------------ calls
 
     def start_job(self, device_lines, start: int = 0, name: str = "", line_map=None,
-                  modes: tuple[str, ...] | None = None) -> bool:
+                  modes: tuple[str, ...] | None = None, offsets=None) -> bool:
         """Stream ``device_lines`` (or a ``Program``: its device lines and line map) from
         index ``start``; False (with an error event) if the machine cannot take a job now.
         ``line_map`` (device index -> source line) lets messages name the source line.
-        ``modes`` (a restart: ``held_modes`` of the job cut off) are set before the lines;
-        None reads them from the machine (``$G``) for a later restart."""
+        ``modes`` (a restart: ``held_modes`` of the job cut off) are set before the lines,
+        and ``offsets`` (its ``held_offsets``: G92 and the tool length offset) after them;
+        None reads both from the machine (``$G``, ``$#``) for a later restart."""
         if hasattr(device_lines, "device_lines"):
             program = device_lines
             device_lines = list(program.device_lines)
@@ -57,13 +61,19 @@ class GrblJobControl:
         if why:
             self._error("REFUSED", why)
             return False
-        first = (PARSER_STATE,) + PREAMBLE if modes is None else PREAMBLE + modes
-        preamble = first + (tuple(restart_preamble(list(device_lines), start)) if start else ())
-        rpm = modal_state(list(device_lines), start).spindle_rpm if start else None
-        lines = spindle_off_at_tool_changes(grbl_lines(device_lines, self.optional_stop, start), rpm)
+        if modes is None:
+            reads = (PARSER_STATE,) if self.check_mode else (PARSER_STATE, PARAMETERS)  # $C refuses $#
+            first = reads + PREAMBLE
+        else:
+            first = PREAMBLE + modes + self._offset_lines(offsets, modes)
+        before = state_after(ModalState(), device_lines[:start])  # modal_state's, read from the end
+        preamble = first + (tuple(preamble_of(before)) if start else ())  # modal.restart_preamble
+        lines = safe_tool_changes(grbl_lines(device_lines, self.optional_stop, start), before,
+                                  self._tool_change_lift())
         job = GrblJob(lines, len(device_lines), name, preamble, first=start)
         job.device_lines, job.line_map, job.errors = device_lines, line_map, []
         job.modes = held_modes(self.parser_state) if modes is None else modes
+        job.offsets = offsets
         job.boot = self.boots
         job.end_reason, job.reset_sent, job.cut_off = "", False, False
         self.job, self.last_job, self._last_progress = job, None, float("-inf")
@@ -81,6 +91,8 @@ class GrblJobControl:
         if self.state not in (S.READY, S.RESTART_REQUIRED) and not restarting:
             return msg("the machine is not ready ({state})", state=self.state.name)
         if self.alarm is not None and not self.check_mode:
+            if not self.homing_enabled:
+                return msg("the machine is in alarm: unlock ($X) first")
             return msg("the machine is in alarm: home ($H) or unlock ($X) first")
         if not 0 <= start < len(device_lines):
             return msg("no line {start} to start from", start=start)
@@ -137,7 +149,7 @@ class GrblJobControl:
         return self._restart(job)
 
     def _restart(self, job) -> bool:
-        return self.start_job(job.device_lines, job.done + 1, job.name, job.line_map, job.modes)
+        return self.start_job(job.device_lines, job.done + 1, job.name, job.line_map, job.modes, job.offsets)
 
     def abandon_restart(self) -> None:
         if self.state is S.RESTART_REQUIRED:
@@ -157,6 +169,8 @@ class GrblJobControl:
         job.acked_line(out)
         if out.kind == "preamble" and out.text == PARSER_STATE:
             job.modes = held_modes(self.parser_state)  # its [GC:..] came just before the ok
+        elif out.kind == "preamble" and out.text == PARAMETERS:
+            job.offsets = self.held_offsets()
         elif out.kind == "sync":
             stop = job.synced()
             if stop is not None and not job.stopping:
@@ -283,12 +297,17 @@ class GrblJobControl:
             reason = msg("the link was lost during the job; GRBL cannot resume exactly: start again at "
                          "line {line}, the line after the last one known finished (lines after it may "
                          "have run)", line=self._source_line(job.done + 1))
-        else:
+        elif self.homing_enabled:
             reason = msg("the machine was reset during the job; home it, then start again at line {line}, "
                          "the line after the last one known finished", line=self._source_line(job.done + 1))
+        else:
+            reason = msg("the machine was reset during the job; start again at line {line}, the line after "
+                         "the last one known finished (it has no homing: check its position and work zero "
+                         "first)", line=self._source_line(job.done + 1))
         self._log("warning", reason)
         self.listener.on_progress(job.progress())
-        self.listener.on_resume_offer(ResumeOffer(False, job.done + 1, job.done, job.total, not same_boot,
+        needs_home = not same_boot and self.homing_enabled
+        self.listener.on_resume_offer(ResumeOffer(False, job.done + 1, job.done, job.total, needs_home,
                                                   reason))
 
     def _follow_cut_off_job(self, status) -> None:
@@ -313,6 +332,47 @@ class GrblJobControl:
             self.listener.on_progress(job.progress())
             self._log("info", msg("the machine finished more lines meanwhile: the job starts again at line "
                                   "{line}", line=self._source_line(job.done + 1)))
+
+    def _tool_change_lift(self) -> tuple[str, float] | None:
+        """``G53 G00 Z..`` near the top of the Z travel (``dialect.tool_change_height``) and
+        the work Z it reaches (the live WCO) once homed; None (the program's own highest Z)
+        on a machine not homed, whose machine coordinates say nothing of the travel."""
+        options = self.info.options if self.info is not None else ""
+        height = tool_change_height(self.settings, options) if self.homed else None
+        if height is None or self.grbl_status is None:
+            return None
+        return f"G53 G00 Z{height:.3f}", height - self.grbl_status.wco[2]
+
+    # ------------------------------------------------------------------ offsets a reset clears
+
+    def held_offsets(self):
+        """``(g92, tlo)`` in millimetres from the last ``$#`` (None before one): what a reset
+        clears (GRBL 1.1 keeps neither G92 nor G43.1 across one) and a restart sets again."""
+        g92, tlo = self.parameter_mm("G92"), self.parameter_mm("TLO")
+        if g92 is None or len(g92) < 3:
+            return None
+        return tuple(g92[:3]), (tlo[2] if tlo and len(tlo) >= 3 else tlo[0] if tlo else 0.0)  # Z's
+
+    def _offset_lines(self, offsets, modes: tuple[str, ...]) -> tuple[str, ...]:
+        """``G43.1 Z..`` and ``G92 X.. Y.. Z..`` that put back ``offsets`` (``held_offsets``)
+        in the work system of ``modes``: G92 sets the offset from where the machine stands,
+        ``value = MPos - G5x - G92 (- TLO in Z)``, so the last report's MPos is used (a
+        restart starts at rest)."""
+        if offsets is None:
+            return ()
+        g92, tlo = offsets
+        lines = [f"G43.1 Z{tlo:.3f}"] if tlo else []
+        if any(g92):
+            system = next((m for m in modes if m in WORK_SYSTEMS), "G54")
+            zero = self.parameter_mm(system)
+            if zero is None or self.grbl_status is None:
+                self._log("warning", msg("the G92 offset in force before the reset could not be set again: "
+                                         "{system} is not known", system=system))
+                return tuple(lines)
+            here = self.grbl_status.mpos
+            values = [here[k] - zero[k] - g92[k] - (tlo if k == 2 else 0.0) for k in range(3)]
+            lines.append("G92 " + " ".join(f"{a}{v:.3f}" for a, v in zip("XYZ", values, strict=True)))
+        return tuple(lines)
 
     # ------------------------------------------------------------------ helpers
 

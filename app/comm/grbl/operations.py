@@ -7,7 +7,9 @@ check mode, settings and the ``$#``/``$G`` reads. A mixin of ``GrblSession``.
   hold-to-jog (needs ``$13x`` and homing, else ``JOG_SPAN_MM``), ``jog_cancel()`` sends
   0x85 (on key release).
 - ``set_feed_override(percent)`` / ``set_spindle_override`` send the fewest
-  0x90-0x94 / 0x99-0x9D bytes from the value of the last report;
+  0x90-0x94 / 0x99-0x9D bytes from the value of the last report, within the ranges of
+  the session's ``capabilities`` (``driver.Capabilities.override_range``, what the
+  window's sliders take);
   ``set_rapid_override(100|50|25)``.
 - ``home()`` ``$H`` (answered as ``HOME``); ``unlock_advice()`` says why the machine is locked (say it before
   ``unlock()``, ``$X``); ``set_check_mode(on)`` toggles ``$C``.
@@ -23,7 +25,7 @@ import math
 from app.comm.grbl import protocol as p
 from app.comm.grbl.codes import unlock_advice
 from app.comm.grbl.dialect import axis_range
-from app.comm.grbl.settings import SettingChange, diff_settings, format_value
+from app.comm.grbl.settings import SettingChange, diff_settings, format_value, homing_enabled
 from app.i18n import msg
 
 JOG_SPAN_MM = 1000.0  # hold-to-jog distance when the travel is unknown
@@ -31,8 +33,9 @@ JOG_SPAN_MM = 1000.0  # hold-to-jog distance when the travel is unknown
 
 def _override_bytes(current: int, target: int, reset: bytes, tens: tuple[bytes, bytes],
                     ones: tuple[bytes, bytes]) -> bytes:
-    """The bytes that take an override from ``current`` % to ``target`` % (10 %..200 %)."""
-    target = max(10, min(200, int(target)))
+    """The bytes that take an override from ``current`` % to ``target`` % (the caller keeps
+    ``target`` within what the machine takes)."""
+    target = int(target)
     if target == current:
         return b""
     start, out = current, b""
@@ -76,17 +79,19 @@ class GrblOperations:
     # ------------------------------------------------------------------ overrides
 
     def set_feed_override(self, percent: int) -> None:
-        self._step_override(0, percent, p.FEED_100, (p.FEED_PLUS_10, p.FEED_MINUS_10),
+        self._step_override(0, "FEED", percent, p.FEED_100, (p.FEED_PLUS_10, p.FEED_MINUS_10),
                             (p.FEED_PLUS_1, p.FEED_MINUS_1))
 
     def set_spindle_override(self, percent: int) -> None:
-        self._step_override(2, percent, p.SPINDLE_100, (p.SPINDLE_PLUS_10, p.SPINDLE_MINUS_10),
+        self._step_override(2, "SPINDLE", percent, p.SPINDLE_100, (p.SPINDLE_PLUS_10, p.SPINDLE_MINUS_10),
                             (p.SPINDLE_PLUS_1, p.SPINDLE_MINUS_1))
 
-    def _step_override(self, index: int, percent: int, reset: bytes, tens, ones) -> None:
+    def _step_override(self, index: int, verb: str, percent: int, reset: bytes, tens, ones) -> None:
         """The fewest bytes from what the machine has (or will have, once it reads what was
-        sent before: ``ReportMerger.overrides_now``) to ``percent``."""
-        target = max(10, min(200, int(percent)))
+        sent before: ``ReportMerger.overrides_now``) to ``percent``, kept within the range
+        the session's ``capabilities`` give (the one the window's sliders take)."""
+        allowed = self.capabilities.override_range(verb)
+        target = max(allowed[0], min(allowed[-1], int(percent)))
         data = _override_bytes(self.merger.overrides_now()[index], target, reset, tens, ones)
         if data and self.attached:
             self.merger.expect(index, target)
@@ -95,8 +100,10 @@ class GrblOperations:
 
     def set_rapid_override(self, percent: int) -> None:
         byte = {100: p.RAPID_100, 50: p.RAPID_50, 25: p.RAPID_25}.get(int(percent))
-        if byte is None:
-            raise ValueError(msg("GRBL's rapid override is 100, 50 or 25 %, not {percent}", percent=percent))
+        rates = sorted(self.capabilities.override_range("RAPID"), reverse=True)
+        if byte is None or int(percent) not in rates:
+            raise ValueError(msg("the machine's rapid override is {allowed} %, not {percent}",
+                                 allowed=", ".join(map(str, rates)), percent=percent))
         self._realtime(byte)
 
     # ------------------------------------------------------------------ machine commands
@@ -106,9 +113,21 @@ class GrblOperations:
         frame protocol's and changes nothing)."""
         return self.as_verb("HOME", (mode,), "$H", then)
 
+    @property
+    def homing_enabled(self) -> bool:
+        """The machine has a homing cycle (``$22``); without one it starts unlocked, ``$H``
+        is refused (error 5) and nothing waits for a homing."""
+        return homing_enabled(self.settings)
+
+    @property
+    def position_trusted(self) -> bool:
+        """Homed since the last reset, or a machine without homing (nothing to home): the
+        status's ``H`` flag, what Start and Start here ask for."""
+        return self.homed or not self.homing_enabled
+
     def unlock_advice(self):
         """Why the machine is locked, to show before ``unlock``."""
-        return unlock_advice(self.alarm or None)
+        return unlock_advice(self.alarm or None, self.homing_enabled)
 
     def unlock(self, then=None) -> int:
         return self.command("$X", then=then)

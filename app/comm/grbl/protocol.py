@@ -31,6 +31,12 @@ RAPID_100, RAPID_50, RAPID_25 = b"\x95", b"\x96", b"\x97"
 SPINDLE_100, SPINDLE_PLUS_10, SPINDLE_MINUS_10, SPINDLE_PLUS_1, SPINDLE_MINUS_1 = (
     bytes([b]) for b in range(0x99, 0x9E))
 SPINDLE_STOP = b"\x9e"
+# The console kinds (``FrameEvent.kind``) of GRBL's streaming and polling traffic, hidden
+# unless the operator asks for them: job lines, the job's preamble and syncs, the ``ok``
+# answering them and the polled status reports (an operator's own ``?`` is answered by a
+# "report", shown; a command's ``ok``, messages and errors are "rx", shown).
+STREAM_KINDS = frozenset({"job", "preamble", "sync", "<", "ok"})
+
 REALTIME_NAMES = {STATUS_QUERY: "status", CYCLE_START: "cycle start", FEED_HOLD: "feed hold",
                   SOFT_RESET: "soft reset", SAFETY_DOOR: "safety door", JOG_CANCEL: "jog cancel"}
 

@@ -27,6 +27,7 @@ from __future__ import annotations
 import time
 from collections.abc import Callable
 
+from app.comm.driver import GRBL_CAPABILITIES
 from app.comm.events import (
     AlarmEvent,
     CommandResult,
@@ -58,6 +59,8 @@ MAX_LINE_BYTES = 1024  # a line from the machine longer than this is noise
 
 class GrblSession(SessionCore, GrblJobControl, GrblOperations, FrameVerbs):
     """One connection to a GRBL machine; see the module docstring for the contract."""
+
+    capabilities = GRBL_CAPABILITIES  # what the window offers; the overrides' ranges come from it
 
     def __init__(self, write: Callable[[bytes], object] | None = None,
                  listener: GrblListener | None = None, clock: Callable[[], float] = time.monotonic,
@@ -97,6 +100,7 @@ class GrblSession(SessionCore, GrblJobControl, GrblOperations, FrameVerbs):
         self._contact = False
         self._settings_rows: list[tuple[int, str]] = []
         self._deferred: list[tuple] = []  # local answers waiting for a report (verbs.py)
+        self._asked_reports: list[int] = []  # the operator's own ``?`` waiting for a report
         self.reports = 0  # status reports received
         self._handlers = {p.Ok: self._on_ok, p.Error: self._on_error, p.Alarm: self._on_alarm,
                           p.Welcome: self._on_welcome, p.Report: self._on_report,
@@ -215,9 +219,26 @@ class GrblSession(SessionCore, GrblJobControl, GrblOperations, FrameVerbs):
         item = p.parse_line(text)
         if not isinstance(item, p.Unknown):
             self._heard(self.clock())
-        kind = "<" if isinstance(item, p.Report) else "ok" if isinstance(item, p.Ok) else "rx"
+        kind = self._rx_kind(item)
         self.listener.on_frame(FrameEvent("rx", kind, text, ok=not isinstance(item, p.Unknown)))
         self._handlers[type(item)](item)
+        if kind == "report":
+            self.answer_asked_reports(text)
+
+    def _rx_kind(self, item) -> str:
+        """The console kind of a line (``p.STREAM_KINDS`` are hidden unless asked for): "<"
+        a polled report, "report" one the operator asked for (``?``), "ok" the answer to a
+        streamed line, "preamble" the rows of a job's own reads, "rx" the rest (a
+        command's ``ok`` and rows, messages, errors)."""
+        if isinstance(item, p.Report):
+            return "report" if self._asked_reports else "<"
+        oldest = self.counter.oldest()
+        streamed = oldest is not None and oldest.kind != "command"
+        if isinstance(item, p.Ok):
+            return "ok" if streamed else "rx"
+        if isinstance(item, p.Feedback) and item.kind != "MSG" and streamed:
+            return "preamble"  # the [GC:..] and $# rows a job reads first
+        return "rx"
 
     def _answered(self) -> Outgoing | None:
         out = self.counter.answered()
@@ -313,7 +334,8 @@ class GrblSession(SessionCore, GrblJobControl, GrblOperations, FrameVerbs):
         waiting = job is not None and job.stop_at is not None
         acc = job.acked if job else -1
         done = job.done if job else -1
-        self.status = to_status_event(status, f"grbl-{self.boots}", acc, done, self.homed, waiting)
+        self.status = to_status_event(status, f"grbl-{self.boots}", acc, done, self.position_trusted,
+                                      waiting)
         self._notify("on_grbl_status", status)
         self.listener.on_status(self.status)
         self.reports += 1
@@ -412,6 +434,9 @@ class GrblSession(SessionCore, GrblJobControl, GrblOperations, FrameVerbs):
         for cid, verb, args, _answer in self._deferred:
             self._command_done(CommandResult(cid, verb, args, ok=False, info=reason, code="LINK_LOST"))
         self._deferred.clear()
+        for cid in self._asked_reports:
+            self._command_done(CommandResult(cid, "?", (), ok=False, info=reason, code="LINK_LOST"))
+        self._asked_reports.clear()
         self._queue.clear()
         self._job_link_lost(reason)
 

@@ -6,7 +6,8 @@ A backup file is GRBL's own ``$$`` print-out: one ``$n=value`` per line (comment
 a bad line, of a setting given twice, or a file with no setting at all;
 ``write_backup(settings)`` -> text; ``diff_settings(current, wanted)`` ->
 ``SettingChange`` rows (``old``/``new`` None for a setting only one side has), values
-compared as numbers; ``table(settings)`` -> rows of number, value, name, unit, meaning.
+compared as numbers; ``table(settings)`` -> rows of number, value, name, unit, meaning;
+``homing_enabled(settings)``: whether the machine homes (``$22`` bit 0).
 """
 
 from __future__ import annotations
@@ -19,6 +20,16 @@ from app.comm.grbl.codes import setting_info
 from app.i18n import msg
 
 _LINE = re.compile(r"^\$(\d+)\s*=\s*([-+]?(?:\d+\.?\d*|\.\d+))\s*$")
+
+
+def homing_enabled(settings: dict[int, str]) -> bool:
+    """Whether the machine has a homing cycle: ``$22`` bit 0 (GRBL's 0/1, grblHAL's mask).
+    A machine without one starts unlocked and has nothing to home: its position is the
+    one it powered up at. Unknown before ``$$`` is read: assumed to home."""
+    try:
+        return int(float(settings.get(22, "1"))) & 1 == 1
+    except ValueError:
+        return True
 
 
 @dataclass(frozen=True)

@@ -16,20 +16,25 @@ from the near end of GRBL's travel (the frame protocol's machine frame), once ``
 report have come; ``HOME``
 ``$H``; ``JOG X 10 300`` a ``$J=`` jog; ``STATUS``/``PING`` answered by the next report;
 other ``SET``/``GET`` and the SD verbs are refused with ``UNSUPPORTED`` (no such thing on
-GRBL). Any other line goes to the machine as it is (``G0 X10``, ``$$``, ``$H``).
+GRBL). Any other line goes to the machine as it is (``G0 X10``, ``$$``, ``$H``; a write
+of GRBL's EEPROM, ``$n=``, ``$Nn=``, ``$RST=``, alone and waited for), but
+``?``: the operator's own status query goes as the real-time byte it is, and the next
+report answers it (shown in the console as kind "report", where the polls' "<" are not).
 """
 
 from __future__ import annotations
 
 import re
 
-from app.comm.events import CommandResult, JobEvent
+from app.comm.events import CommandResult, FrameEvent, JobEvent
+from app.comm.grbl import protocol as p
 from app.comm.grbl.dialect import axis_range
 from app.i18n import msg
 
 _AXES = ("X", "Y", "Z")
 _ROW = re.compile(r"G(5[4-9])_([XYZ])")
 _SYSTEMS = tuple(f"G{n}" for n in range(54, 60))
+_EEPROM_WRITE = re.compile(r"\$(\d+|N\d+|RST)=", re.IGNORECASE)  # sent alone, waited for
 
 
 class FrameVerbs:
@@ -40,10 +45,28 @@ class FrameVerbs:
         words = text.strip().split()
         if not words:
             return None
+        if words == ["?"]:
+            return self.ask_report()
         handler = getattr(self, f"_verb_{words[0].lower()}", None)
         if handler is None or not (words[0].isalpha() and words[0].isupper()):
-            return self.command(text)
+            return self.command(text, exclusive=_EEPROM_WRITE.match(text.strip()) is not None)
         return handler(words[0].upper(), [w.upper() for w in words[1:]])
+
+    def ask_report(self) -> int:
+        """The operator's ``?``: answered (``info`` and ``rows``: the report's text) by the next
+        status report, which the console shows (kind "report")."""
+        if not self.attached:
+            return self._local("?", (), False, msg("the machine is not connected"), "LINK_LOST")
+        cid = self._reserve_id()
+        self._asked_reports.append(cid)
+        self.listener.on_frame(FrameEvent("tx", "command", "?"))
+        self._realtime(p.STATUS_QUERY, quiet=True)
+        return cid
+
+    def answer_asked_reports(self, text: str) -> None:
+        asked, self._asked_reports = self._asked_reports, []
+        for cid in asked:
+            self._command_done(CommandResult(cid, "?", (), True, text, rows=(text,)))
 
     def _local(self, verb: str, args, ok: bool = True, info: str = "", code: str = "") -> int:
         cid = self._reserve_id()
@@ -135,8 +158,9 @@ class FrameVerbs:
         """``GET OFFSET_X|Y|Z``: answered once the machine has reported its travel ($$) and a
         WCO; ``GET WCS`` and ``GET G5x_A`` (see the module); anything else is not on GRBL."""
         name = args[0] if args else ""
-        if name == "WCS":
-            return self._chain(verb, args, ["$#", "$G"], lambda: f"WCS {self.active_system()}")
+        if name == "WCS":  # a firmware without $# (error 3) has no work systems to show
+            return self._chain(verb, args, ["$#", "$G"], lambda: f"WCS {self.active_system()}",
+                               unknown=("error:3",))
         row = _ROW.fullmatch(name)
         if row is not None:
             system, k = int(row[1]), "XYZ".index(row[2])
@@ -154,17 +178,19 @@ class FrameVerbs:
         self.answer_deferred()
         return cid
 
-    def _chain(self, verb: str, args, lines: list[str], answer) -> int:
+    def _chain(self, verb: str, args, lines: list[str], answer, unknown: tuple[str, ...] = ()) -> int:
         """Send ``lines`` one after the other (each once the one before is answered ok), then
         answer ``verb args`` with ``answer()`` once a report has come after the last: a
-        failed line ends it with that line's refusal."""
+        failed line ends it with that line's refusal (``UNSUPPORTED`` for a code of
+        ``unknown``: the machine has no such thing, rather than not now)."""
         cid = self._reserve_id()
         args = tuple(args)
 
         def send(index: int) -> None:
             def answered(result) -> None:
                 if not result.ok:
-                    self._command_done(CommandResult(cid, verb, args, False, result.info, result.code))
+                    code = "UNSUPPORTED" if result.code in unknown else result.code
+                    self._command_done(CommandResult(cid, verb, args, False, result.info, code))
                 elif index + 1 < len(lines):
                     send(index + 1)
                 else:
@@ -186,15 +212,23 @@ class FrameVerbs:
     def system_offset(self, system: int):
         """The zero of ``G<system>`` from the last ``$#``, in millimetres from the near end of
         GRBL's travel (as ``_work_zero``), or None before ``$#`` and ``$$``."""
-        text = self.parameters.get(f"G{system}")
-        if text is None or any(130 + k not in self.settings for k in range(3)):
+        values = self.parameter_mm(f"G{system}")
+        if values is None or len(values) < 3 or any(130 + k not in self.settings for k in range(3)):
+            return None
+        return tuple(v - axis_range(self.settings, k)[0] for k, v in enumerate(values[:3]))
+
+    def parameter_mm(self, name: str) -> tuple[float, ...] | None:
+        """The values of ``$#``'s ``[name:x,y,z]`` (``G54``..``G59``, ``G92``, ``TLO``) in
+        millimetres (``$13=1`` prints inches), or None before ``$#`` or if unreadable."""
+        text = self.parameters.get(name)
+        if text is None:
             return None
         try:
-            values = [float(v) for v in text.split(":")[0].split(",")[:3]]
+            values = [float(v) for v in text.split(":")[0].split(",")]
         except ValueError:
             return None
         scale = 25.4 if self.settings.get(13) == "1" else 1.0
-        return tuple(v * scale - axis_range(self.settings, k)[0] for k, v in enumerate(values))
+        return tuple(v * scale for v in values)
 
     def _row_text(self, name: str, system: int, k: int):
         offset = self.system_offset(system)

@@ -90,6 +90,15 @@ def test_soft_limit_jog_is_refused_and_a_move_alarms(grbl):
     assert "ALARM:2" in out and "[MSG:Reset to continue]" in out
 
 
+def test_after_a_hard_limit_nothing_is_read_until_the_reset(grbl):
+    grbl.say(b"$X\n")
+    grbl.trip_limit("X")
+    assert "ALARM:1" in grbl.say(b"", 0.5)
+    assert grbl.say(b"$#\n$X\n", 1.0) == ""  # GRBL 1.1 blocks everything but a reset
+    out = grbl.say(b"\x18", 0.5)
+    assert "Grbl 1.1h" in out and "[G54:" not in out  # the reset emptied its buffer
+
+
 def test_reset_while_moving_is_alarm_3(grbl):
     grbl.say(b"$X\n")
     grbl.say(b"G1 X20 F300\n", 1.0)

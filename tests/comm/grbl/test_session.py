@@ -73,7 +73,8 @@ def test_character_counting_never_overfills_the_buffer():
             break
         in_flight.pop(0)
         h.feed("ok")
-    assert sent_all[:2] == ["$G", "G21 G90 G94 G17"] and sent_all[2:-1] == lines and sent_all[-1] == "G4 P0"
+    assert sent_all[:3] == ["$G", "$#", "G21 G90 G94 G17"] and sent_all[3:-1] == lines
+    assert sent_all[-1] == "G4 P0"
     job = h.rec.of("on_job_finished")[-1]
     assert job.completed and job.done == 199
 
@@ -84,7 +85,7 @@ def test_error_mid_job_stops_at_once_naming_the_line_then_resets_when_held():
     lines = ["G01 X1 F100", "G01 X2", "G99 X3", "G01 X4", "G01 X5"]
     h.session.start_job(lines, line_map=[10, 11, 12, 13, 14])
     h.take()
-    h.feed("ok", "ok", "ok", "ok", "error:20")  # $G, preamble, X1, X2, then the G99 line
+    h.feed("ok", "ok", "ok", "ok", "ok", "error:20")  # $G, $#, preamble, X1, X2, then the G99 line
     data = h.take()
     assert b"!" in data and b"\x18" not in data
     err = h.rec.of("on_error")[-1]
@@ -118,8 +119,8 @@ def test_program_stop_waits_for_the_machine_then_prompts():
     h = Harness()
     h.answer_refresh()
     h.session.start_job(["G01 X1 F100", "M06 T2", "G01 X2"])
-    assert h.lines() == ["$G", "G21 G90 G94 G17", "G01 X1 F100", "G4 P0"]
-    h.feed("ok", "ok", "ok")
+    assert h.lines() == ["$G", "$#", "G21 G90 G94 G17", "G01 X1 F100", "G4 P0"]
+    h.feed("ok", "ok", "ok", "ok")
     assert not h.rec.of("on_program_stop")
     h.feed("ok")  # the sync: everything before has finished
     stop = h.rec.of("on_program_stop")[-1]
@@ -127,21 +128,21 @@ def test_program_stop_waits_for_the_machine_then_prompts():
     h.advance(0.5)
     assert h.lines() == []
     h.session.resume()
-    assert h.lines() == ["G01 X2", "G4 P0"]
+    assert h.lines() == ["G01 F100", "G01 X2", "G4 P0"]  # back as it was (no Y, no Z known: the feed)
 
 
 def test_a_tool_change_stops_the_spindle_for_the_prompt_and_restarts_it():
     h = Harness()
     h.answer_refresh()
     h.session.start_job(["M03 S1000", "G01 X1 F100", "M06 T2", "G01 X2", "M01", "G01 X3"])
-    assert h.lines() == ["$G", "G21 G90 G94 G17", "M03 S1000", "G01 X1 F100", "M05", "G4 P0"]
-    h.feed("ok", "ok", "ok", "ok", "ok")
+    assert h.lines() == ["$G", "$#", "G21 G90 G94 G17", "M03 S1000", "G01 X1 F100", "M05", "G4 P0"]
+    h.feed("ok", "ok", "ok", "ok", "ok", "ok")
     assert not h.rec.of("on_program_stop") and h.session.job.done == -1
     h.feed("ok")  # the sync: the spindle has stopped, everything before has finished
     assert h.rec.of("on_program_stop")[-1].tool == 2 and h.session.job.done == 1
     h.session.resume()
-    assert h.lines() == ["M03 S1000", "G01 X2", "G4 P0"]  # M01 keeps the spindle as GRBL's M0 does
-    h.feed("ok", "ok", "ok")
+    assert h.lines() == ["M03 S1000", "G01 F100", "G01 X2", "G4 P0"]  # M01 keeps the spindle as GRBL's M0
+    h.feed("ok", "ok", "ok", "ok")
     assert h.rec.of("on_program_stop")[-1].code == 1 and h.session.job.done == 3
 
 
@@ -171,14 +172,14 @@ def test_silence_degrades_then_loses_the_link_but_not_while_homing():
 
 
 def cut_off(h) -> None:
-    """Ten moves; five answers (the $G, the preamble, lines 0-2), a report with two
+    """Ten moves; six answers (the $G, the $#, the preamble, lines 0-2), a report with two
     planner blocks in use (line 0 finished), then the link lost."""
     h.answer_refresh()
     h.session.command("$H")
     h.feed("ok")
     h.session.start_job([f"G01 X{i} F100" for i in range(10)])
     h.take()
-    h.feed("ok", "ok", "ok", "ok", "ok", "<Run|MPos:0,0,0|FS:100,0|Bf:13,100>")
+    h.feed("ok", "ok", "ok", "ok", "ok", "ok", "<Run|MPos:0,0,0|FS:100,0|Bf:13,100>")
     h.advance(3.5)
     assert h.session.state is SessionState.INTERRUPTED
 
@@ -243,8 +244,8 @@ def test_a_restart_after_a_reset_restores_the_work_system_and_coolant_the_job_ra
     h.answer_refresh()
     lines = ["M03 S1000", "G00 Z5", "G00 X1 Y1", "G01 Z-1 F100", "G01 X5", "G01 Y5", "G01 X1"]
     h.session.start_job(lines)
-    assert h.lines()[:2] == ["$G", "G21 G90 G94 G17"]  # the work system and coolant read first
-    h.feed("[GC:G0 G55 G17 G21 G90 G94 M5 M8 T0 F0 S0]", "ok", "ok", "ok", "ok", "ok", "ok", "ok")
+    assert h.lines()[:3] == ["$G", "$#", "G21 G90 G94 G17"]  # the modes and offsets read first
+    h.feed("[GC:G0 G55 G17 G21 G90 G94 M5 M8 T0 F0 S0]", "ok", "ok", "ok", "ok", "ok", "ok", "ok", "ok")
     h.feed("<Run|MPos:0,0,0|FS:100,0|Bf:14,100>")  # lines 0-4 answered, 4 may still be planned
     h.feed(WELCOME.decode().strip())  # reset by someone else: GRBL is back in G54, coolant off
     offer = h.rec.of("on_resume_offer")[-1]
@@ -401,7 +402,7 @@ def test_done_follows_the_planner_size_without_buffer_reports():
     h.answer_refresh()  # [OPT:V,15,128]; $10=1: no Bf in the reports
     lines = [f"G01 X{i % 10} F100" for i in range(40)]
     h.session.start_job(lines)
-    for _ in range(32):  # $G, the preamble and 30 lines answered
+    for _ in range(33):  # $G, $#, the preamble and 30 lines answered
         h.take()
         h.feed("ok")
     h.feed("<Run|MPos:0,0,0|FS:100,0>")

@@ -9,7 +9,7 @@ import pytest
 from app.comm.grbl import protocol as p
 from app.comm.grbl.codes import HOLDS, hold_text, unlock_advice
 from app.i18n import localize, set_language
-from tests.comm.grbl.harness import Harness
+from tests.comm.grbl.harness import WELCOME, Harness
 
 PARAMETERS = ("[G54:-150.000,-150.000,-10.000]", "[G55:-100.000,-50.000,-12.500]",
               "[G56:0.000,0.000,0.000]", "[G57:0.000,0.000,0.000]", "[G58:0.000,0.000,0.000]",
@@ -135,3 +135,19 @@ def test_holds_and_alarm_advice_read_in_vietnamese():
     finally:
         set_language(None)
     assert "reset" in unlock_advice(1) and "home" in unlock_advice(9).lower()
+
+
+def test_get_wcs_failing_for_now_is_not_a_machine_without_work_systems():
+    h = Harness()
+    h.answer_refresh()
+    h.session.send_command("GET WCS")
+    h.feed("error:8")  # $# refused while not idle (check mode, a cycle)
+    assert [(r.ok, r.code) for r in results(h, "GET")] == [(False, "error:8")]
+    h.session.send_command("GET WCS")
+    h.take()
+    h.feed(WELCOME.decode().strip())  # a reset cut it off
+    assert [(r.ok, r.code) for r in results(h, "GET")][-1] == (False, "RESET")
+    h.answer_refresh()
+    h.session.send_command("GET WCS")
+    h.feed("error:3")  # a firmware that has no $#: no work systems at all
+    assert [(r.ok, r.code) for r in results(h, "GET")][-1] == (False, "UNSUPPORTED")
