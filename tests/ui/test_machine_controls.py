@@ -8,6 +8,7 @@ from PySide6.QtCore import Qt
 
 from app.ui.keep_awake import KeepAwake
 from app.ui.state_table import decide
+from tests.ui.conftest import home_when_allowed
 
 SPEED = 20
 
@@ -16,9 +17,7 @@ SPEED = 20
 def connected(qtbot, window, tmp_path):
     window.operator.connect_to(f"sim://?speed={SPEED}&sd={tmp_path}")
     qtbot.waitUntil(lambda: window.binder.connected and window.binder.status is not None, timeout=60_000)
-    window.operator.home("NORMAL")
-    homed = lambda: window.binder.status.homed and window.binder.status.state == "IDLE"  # noqa: E731
-    qtbot.waitUntil(homed, timeout=60_000)
+    home_when_allowed(qtbot, window)
     return window
 
 
