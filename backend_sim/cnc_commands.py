@@ -174,9 +174,11 @@ def _home(mcu, cmd: Command) -> None:
 
 
 def _job(mcu, cmd: Command) -> str:
-    (count,) = _args(cmd, 1, 1)
+    count, *kind = _args(cmd, 1, 2)
     if not count.isdigit() or int(count) < 1:
         raise Refused("BAD_ARGS", f"JOB {count}: a line count >= 1")
+    if kind not in ([], ["MDI"]):
+        raise Refused("BAD_ARGS", f"JOB {count} {kind[0]}: the only second word is MDI")
     if not mcu.check_mode:
         _cover_closed(mcu)
     _not_running(mcu)
@@ -186,6 +188,7 @@ def _job(mcu, cmd: Command) -> str:
     mcu.reset_parser()
     mcu.why = ""
     mcu.job.start(int(count))
+    mcu.job_mdi = bool(kind)
     mcu.lines.clear()
     mcu.send_status()  # before the O: no status of the last job may follow it
     return count

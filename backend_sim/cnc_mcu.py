@@ -93,6 +93,7 @@ class CncMcu:
         self.jogging = ContinuousJog(self)
         self.why = ""
         self.job = JobStream()
+        self.job_mdi = False  # JOB <n> MDI: no after-job action at its end
         self.parser = DialectParser(self.offset, tuple(self.mc.commanded_mm))
         self.check_mode = False
         self.pending: list[Pending] = []
@@ -347,7 +348,7 @@ class CncMcu:
             self.why = ""
             self.job.close()
             self.send(Log(f"job done, {self.job.total} lines"))
-            if not self.check_mode:
+            if not (self.check_mode or self.job_mdi):
                 program_stops.after_job(self.mc, self.stops, self.offset, self.profile)
             self.send_status()
 

@@ -54,7 +54,9 @@ class JobControl(StreamFrames, Recovery):
 
     # ------------------------------------------------------------------ operator calls
 
-    def start_job(self, program, start: int = 0) -> bool:
+    def start_job(self, program, start: int = 0, mdi: bool = False) -> bool:
+        """Stream ``program`` from device line ``start``; ``mdi``: lines the operator typed
+        (``JOB <n> MDI``: the machine does no after-job action at their end)."""
         lines = device_lines(program)
         if not self._can_start(lines, "job"):
             return False
@@ -62,14 +64,14 @@ class JobControl(StreamFrames, Recovery):
             return self._refuse("BAD_START", msg("line {start} is not in the program (0..{last})",
                                                  start=start,
                                                  last=len(lines) - 1))
-        self.lines = lines
+        self.lines, self.mdi = lines, mdi
         self.asked_hold = False
         free = self.status.free if self.status else 1
         pre = restart_preamble(lines, start)
         self.stream = Stream.job(lines, self.rtt, free, start, pre, boot=self.boot or "",
                                  max_window=self.max_window)
         self._set_state(S.STARTING)
-        self.submit("JOB", self.stream.window.total, then=self._job_opened)  # the lines this stream sends
+        self._submit_job()
         return True
 
     def upload_to_sd(self, name: str, lines) -> bool:
@@ -150,7 +152,7 @@ class JobControl(StreamFrames, Recovery):
         status = self.status
         if status is None or status.acc < 0 or status.acc >= len(lines) - 1:
             return self._refuse("NO_RESUME", "the machine has no open job of these lines to resume")
-        self.lines = lines
+        self.lines, self.mdi = lines, False
         self.stream = Stream.job(lines, self.rtt, status.free, boot=self.boot or "",
                                  max_window=self.max_window)
         self.stream.done = status.done
@@ -171,8 +173,12 @@ class JobControl(StreamFrames, Recovery):
         self.stream = Stream.job(self.lines, self.rtt, self.status.free, start, pre, self.boot or "",
                                  self.max_window)
         self._set_state(S.STARTING)
-        self.submit("JOB", self.stream.window.total, then=self._job_opened)
+        self._submit_job()
         return True
+
+    def _submit_job(self) -> None:
+        """``JOB`` with the lines this stream sends (``MDI`` for typed lines)."""
+        self.submit("JOB", self.stream.window.total, *(("MDI",) if self.mdi else ()), then=self._job_opened)
 
     # ------------------------------------------------------------------ checks
 

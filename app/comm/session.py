@@ -86,6 +86,7 @@ class Session(SessionCore, JobControl):
         self.boot: str | None = None
         self.homed_boot: str | None = None
         self.lines: list[str] = []
+        self.mdi = False  # the job's lines were typed: JOB <n> MDI
         self.program_stops = StopWatch()
         self.max_window = MAX_WINDOW
         self._write = write

@@ -255,10 +255,10 @@ class SerialWorker(QObject):
         self.session.send_command(text)
 
     @Slot(object)
-    def start_job(self, program, start: int = 0) -> None:
+    def start_job(self, program, start: int = 0, mdi: bool = False) -> None:
         """The job from device line ``start`` (0: the whole program; else the modal state
-        before ``start`` is restored first)."""
-        self.session.start_job(program, start)
+        before ``start`` is restored first); ``mdi``: lines the operator typed."""
+        self.session.start_job(program, start, mdi=mdi)
 
     @Slot()
     def pause(self) -> None:

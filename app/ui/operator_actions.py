@@ -260,8 +260,9 @@ class OperatorActions(QObject):
         self.run_lines(text, "MDI")
 
     def run_lines(self, text: str, name: str) -> bool:
-        """G-code ``text`` run as a job of its own (the caller has asked the table);
-        a line the loader refuses is logged and nothing is sent."""
+        """G-code ``text`` run as a job of its own (the caller has asked the table) that
+        ends where its last line ends (``mdi``: no after-job lift); a line the loader
+        refuses is logged and nothing is sent."""
         from app.gcode import load_text
 
         program = self.from_machine(load_text(text, name=name))
@@ -270,7 +271,7 @@ class OperatorActions(QObject):
             self.w.console.add_log("error", f"{name}: {localize(errors[0].message)}")
             return False
         self.w.binder.begin_job(None)
-        self.link.call("start_job", list(program.device_lines))
+        self.link.call("start_job", list(program.device_lines), 0, True)
         return True
 
     # -- files and settings ---------------------------------------------------------

@@ -74,3 +74,18 @@ def open_and_wait(qtbot, window, path, timeout=20_000):
     with qtbot.waitSignal(window.loader.loaded, timeout=timeout) as blocker:
         window.open_file(path)
     return blocker.args[0]
+
+
+def home_when_allowed(qtbot, window, timeout=60_000):
+    """Home once the state table allows it (a first status alone is not enough on a busy
+    machine: the session may not be ready yet, and a refused click would never home), then
+    wait until homed and at rest."""
+    from app.ui.state_table import decide
+
+    qtbot.waitUntil(lambda: decide("home", window.binder.inputs()).allowed, timeout=timeout)
+    refused = len(window.operator.refused)
+    window.operator.home("NORMAL")
+    assert window.operator.refused[refused:] == []
+    binder = window.binder
+    at_rest = lambda: binder.status.state == "IDLE" and binder.pending_motion is None  # noqa: E731
+    qtbot.waitUntil(lambda: binder.status.homed and at_rest(), timeout=timeout)

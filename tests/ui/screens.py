@@ -42,7 +42,7 @@ def start_on_simulator(window, wait, speed: float) -> None:
     """Connect to the built-in simulator at ``speed``, home, and start the open program."""
     sd = Path(tempfile.mkdtemp(prefix="cnc-sd-"))
     window.operator.connect_to(f"sim://?speed={speed:g}&sd={sd}")
-    wait(lambda: window.binder.status is not None, 30)
+    wait(lambda: window.binder.status is not None and window.controls.buttons["home"].isEnabled(), 60)
     window.operator.home("NORMAL")
     wait(lambda: window.binder.status.homed and window.binder.status.state == "IDLE", 120)
     window.operator.start()

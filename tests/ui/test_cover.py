@@ -4,7 +4,7 @@ nothing restarts until Resume, then the job completes."""
 
 from __future__ import annotations
 
-from tests.ui.conftest import open_and_wait
+from tests.ui.conftest import home_when_allowed, open_and_wait
 
 SPEED = 20
 SOURCE = "G21 G90\nM3 S3000\nG0 Z5\nG0 X10 Y10\nG1 Z-1 F300\nG1 X120 F200\nG1 Y60\nG0 Z5\nM5\nM2\n"
@@ -14,8 +14,7 @@ def test_cover_open_mid_job_banner_refusals_and_resume(qtbot, window, tmp_path):
     status = lambda: window.binder.status  # noqa: E731
     window.operator.connect_to(f"sim://?speed={SPEED}&sd={tmp_path}")
     qtbot.waitUntil(lambda: window.binder.connected and window.binder.status is not None, timeout=60_000)
-    window.operator.home("NORMAL")
-    qtbot.waitUntil(lambda: status().homed and status().state == "IDLE", timeout=60_000)
+    home_when_allowed(qtbot, window)
     path = tmp_path / "cover.ngc"
     path.write_text(SOURCE)
     open_and_wait(qtbot, window, path)

@@ -6,6 +6,7 @@ from __future__ import annotations
 from PySide6.QtCore import Qt
 
 from app.ui.settings.commands import CustomCommand, load_commands, save_commands
+from tests.ui.conftest import home_when_allowed
 
 SPEED = 20
 
@@ -13,7 +14,7 @@ SPEED = 20
 def _connect_and_home(qtbot, window, tmp_path) -> None:
     window.operator.connect_to(f"sim://?speed={SPEED}&sd={tmp_path}")
     qtbot.waitUntil(lambda: window.binder.connected and window.binder.status is not None, timeout=60_000)
-    window.operator.home("NORMAL")
+    home_when_allowed(qtbot, window)
     qtbot.waitUntil(lambda: window.binder.status.homed and window.binder.status.state == "IDLE"
                     and window.binder.state == "READY", timeout=60_000)
 

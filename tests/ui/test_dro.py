@@ -7,7 +7,7 @@ from __future__ import annotations
 from PySide6.QtCore import Qt
 
 from app.ui.work_offsets import SYSTEMS
-from tests.ui.conftest import open_and_wait
+from tests.ui.conftest import home_when_allowed, open_and_wait
 
 SPEED = 20
 SOURCE = "G21 G90\nG0 Z5\nG0 X0 Y0\nG1 Z-1 F600\nG1 X120\nG1 Y20\nG0 Z5\n"
@@ -21,7 +21,7 @@ def _idle(window) -> bool:
 def _connect_and_home(qtbot, window, tmp_path) -> None:
     window.operator.connect_to(f"sim://?speed={SPEED}&sd={tmp_path}")
     qtbot.waitUntil(lambda: window.binder.connected and window.binder.status is not None, timeout=60_000)
-    window.operator.home("NORMAL")
+    home_when_allowed(qtbot, window)
     qtbot.waitUntil(lambda: window.binder.status.homed and _idle(window), timeout=60_000)
 
 

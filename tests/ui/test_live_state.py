@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from tests.ui.conftest import open_and_wait
+from tests.ui.conftest import home_when_allowed, open_and_wait
 
 SOURCE = """G21 G90 G17
 G0 Z5
@@ -38,9 +38,7 @@ def test_the_panel_follows_the_job_line_by_line(qtbot, window, tmp_path):
     window.dro_panel.show_state = dro_spy
     window.operator.connect_to(f"sim://?speed=20&sd={tmp_path}")
     qtbot.waitUntil(lambda: window.binder.connected and window.binder.status is not None, timeout=60_000)
-    window.operator.home("NORMAL")
-    qtbot.waitUntil(lambda: window.binder.status.homed and window.binder.status.state == "IDLE",
-                    timeout=60_000)
+    home_when_allowed(qtbot, window)
     path = tmp_path / "loop.ngc"
     path.write_text(SOURCE)
     open_and_wait(qtbot, window, path)

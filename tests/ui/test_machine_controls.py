@@ -7,6 +7,8 @@ import pytest
 from PySide6.QtCore import Qt
 
 from app.ui.keep_awake import KeepAwake
+from app.ui.state_table import decide
+from tests.ui.conftest import home_when_allowed
 
 SPEED = 20
 
@@ -15,9 +17,7 @@ SPEED = 20
 def connected(qtbot, window, tmp_path):
     window.operator.connect_to(f"sim://?speed={SPEED}&sd={tmp_path}")
     qtbot.waitUntil(lambda: window.binder.connected and window.binder.status is not None, timeout=60_000)
-    window.operator.home("NORMAL")
-    homed = lambda: window.binder.status.homed and window.binder.status.state == "IDLE"  # noqa: E731
-    qtbot.waitUntil(homed, timeout=60_000)
+    home_when_allowed(qtbot, window)
     return window
 
 
@@ -55,9 +55,34 @@ def test_settings_are_pushed_and_mdi_answers(qtbot, connected):
     window.console.mdi.setText("G0 X5 Y5")  # a G-code line runs as a one-line job
     window.console.mdi.returnPressed.emit()
     qtbot.waitUntil(lambda: _at(window, 0, 5.0, 0.01) and _at(window, 1, 5.0, 0.01), timeout=60_000)
+    _typed_lines_end_where_they_end(qtbot, window)
     window.console.mdi.setText("G1 X5 Q3")  # not a valid line: said in the console, nothing sent
     window.console.mdi.returnPressed.emit()
     qtbot.waitUntil(lambda: "MDI:" in window.console.log.toPlainText(), timeout=10_000)
+
+
+def _typed_lines_end_where_they_end(qtbot, window):
+    """An MDI line is a job without the after-job lift (the machine's default lifts Z at
+    the end of a job): every status after the job's end shows the tool where the line left it."""
+    assert window.profile.job.after_job == 1
+    # the last job ended: MDI allowed again
+    qtbot.waitUntil(lambda: decide("mdi", window.binder.inputs()).allowed, timeout=60_000)
+    ended, after = window.binder.last_job_event, []
+    window.console.mdi.setText("G1 Z-2 F600")
+    window.console.mdi.returnPressed.emit()
+    event = lambda: window.binder.last_job_event  # noqa: E731 (the same figures as the last: not ==)
+    qtbot.waitUntil(lambda: event() is not None and event() is not ended, timeout=60_000)
+    assert window.binder.last_job_event.completed
+
+    last = window.binder.status  # received before the job's end
+
+    def seen() -> bool:  # each status received after the end, read once
+        if window.binder.status is not (after[-1] if after else last):
+            after.append(window.binder.status)
+        return len(after) >= 5
+
+    qtbot.waitUntil(seen, timeout=60_000)
+    assert all(s.state == "IDLE" and abs(s.z + 2) < 0.01 for s in after), [(s.state, s.z) for s in after]
 
 
 def test_keep_awake_is_best_effort(monkeypatch):

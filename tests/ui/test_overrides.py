@@ -7,7 +7,7 @@ from __future__ import annotations
 from PySide6.QtCore import Qt
 
 from app.ui.state_table import Inputs, Link, Machine, decide
-from tests.ui.conftest import open_and_wait
+from tests.ui.conftest import home_when_allowed, open_and_wait
 
 SPEED = 10
 SOURCE = "G21 G90\nM3 S3000\nG0 Z5\nG1 X120 F300\nG1 Y60\nG0 Z5\nM5\nM2\n"
@@ -44,8 +44,7 @@ def test_overrides_reach_the_machine_and_show_in_the_panel(qtbot, window, tmp_pa
     window.operator.connect_to(f"sim://?speed={SPEED}&sd={tmp_path}")
     qtbot.waitUntil(lambda: window.binder.connected and status() is not None, timeout=60_000)
     assert status().overrides == (100, 100, 100)
-    window.operator.home("NORMAL")
-    qtbot.waitUntil(lambda: status().homed and status().state == "IDLE", timeout=60_000)
+    home_when_allowed(qtbot, window)
     path = tmp_path / "overrides.ngc"
     path.write_text(SOURCE)
     open_and_wait(qtbot, window, path)

@@ -4,7 +4,7 @@ by how much; moving the work zero back lets it start; check mode may override.""
 
 from __future__ import annotations
 
-from tests.ui.conftest import open_and_wait
+from tests.ui.conftest import home_when_allowed, open_and_wait
 
 SPEED = 20
 SOURCE = "G21 G90\nG0 Z5\nG0 X0 Y0\nG1 Z-1 F600\nG1 X120\nG1 Y20\nG0 Z5\n"
@@ -18,7 +18,7 @@ def _idle_at_x(window, x: float) -> bool:
 def test_work_zero_at_x50_blocks_start_until_moved_back(qtbot, window, tmp_path):
     window.operator.connect_to(f"sim://?speed={SPEED}&sd={tmp_path}")
     qtbot.waitUntil(lambda: window.binder.connected and window.binder.status is not None, timeout=60_000)
-    window.operator.home("NORMAL")
+    home_when_allowed(qtbot, window)
     qtbot.waitUntil(lambda: window.binder.status.homed and _idle_at_x(window, 0.0), timeout=60_000)
     path = tmp_path / "wide.ngc"
     path.write_text(SOURCE)

@@ -7,7 +7,7 @@ from __future__ import annotations
 import pytest
 from PySide6.QtCore import Qt
 
-from tests.ui.conftest import open_and_wait
+from tests.ui.conftest import home_when_allowed, open_and_wait
 
 SPEED = 20
 SOURCE = """G21 G90
@@ -32,9 +32,7 @@ M2
 def ready(qtbot, window, tmp_path):
     window.operator.connect_to(f"sim://?speed={SPEED}&sd={tmp_path}")
     qtbot.waitUntil(lambda: window.binder.connected and window.binder.status is not None, timeout=60_000)
-    window.operator.home("NORMAL")
-    homed = lambda: window.binder.status.homed and window.binder.status.state == "IDLE"  # noqa: E731
-    qtbot.waitUntil(homed, timeout=60_000)
+    home_when_allowed(qtbot, window)
     path = tmp_path / "stops.ngc"
     path.write_text(SOURCE)
     open_and_wait(qtbot, window, path)

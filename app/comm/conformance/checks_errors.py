@@ -20,6 +20,7 @@ REFUSED = [  # (check, command, code, rule)
         "`HOME [NORMAL|RECOVER]`: anything else `BAD_ARGS`",
     ),
     ("errors.bad-args-job-count", "JOB x", "BAD_ARGS", "`JOB <lines>`: counts are plain digits"),
+    ("errors.bad-args-job-kind", "JOB 1 FOO", "BAD_ARGS", "`JOB <lines> [MDI]`: any other second word"),
     (
         "errors.set-choice-minus-zero",
         "SET OPTSTOP -0",

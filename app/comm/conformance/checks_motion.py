@@ -1,7 +1,8 @@
 """Checks that need homing and real motion (left out by ``--quick``): HOME, JOG,
 SPINDLE, ZERO (the work offset is put back), statuses while moving, `SPINDLE OFF`
 during a jog, program stops, the credit window with a full queue, a host lost during
-a streamed job and its `RESUME FROM`, `SD PUT`/`SD DEL` of the running file."""
+a streamed job and its `RESUME FROM`, `SD PUT`/`SD DEL` of the running file, the
+after-job lift (not after `JOB <n> MDI`)."""
 
 from __future__ import annotations
 
@@ -235,6 +236,35 @@ def program_stop(kit: Kit) -> None:
     link.command("SET AFTERJOB 1")
 
 
+def after_job(kit: Kit) -> None:
+    """`AFTERJOB 1` lifts Z once a job ends (first a job 3 mm down, which ends at the top),
+    not once a `JOB <n> MDI` ends (then 3 mm down from there, where it must stay)."""
+    link = kit.link
+    kit.ensure_idle()
+    link.command("SET AFTERJOB 1")
+    start = ends = link.status()
+    top = None
+    for kind in ("", "MDI"):
+        if ends is None:
+            break
+        lines = [f"G01 Z{float(ends.z) - 3.0:.3f} F300"]
+        link.command(f"JOB {len(lines)} {kind}".rstrip())
+        out = Streamer(link, lines, int(ends.free)).run(30.0)
+        top, ends = ends, kit.status_until(lambda st: st.state == "IDLE", 20.0) if out.complete else None
+    rose = start is not None and top is not None and float(top.z) > float(start.z) - 3.0 + 0.5
+    stayed = ends is not None and top is not None and abs(float(ends.z) - (float(top.z) - 3.0)) < 0.05
+    kit.check(
+        "motion.after-job",
+        "After the job",
+        "`AFTERJOB 1`: Z rises to the top once a job's last line has finished; a job opened "
+        "with `JOB <lines> MDI` ends where its last line ends",
+        rose and stayed,
+        "SET AFTERJOB 1; JOB 1: G01 Z<z-3>; JOB 1 MDI: G01 Z<top-3>",
+        f"z {start.z if start else '?'}; after the job {top.z if top else '?'}; "
+        f"after the MDI job {ends.z if ends else '?'}",
+    )
+
+
 def credit_window(kit: Kit) -> None:
     """A queue with no free slot answers `N expected` instead of `A`."""
     link = kit.link
@@ -361,6 +391,7 @@ CHECKS = [
     spindle,
     pause_moving,
     program_stop,
+    after_job,
     credit_window,
     host_lost_job,
     sd_running_file,

@@ -45,13 +45,14 @@ class GrblJobControl:
     # ------------------------------------------------------------------ calls
 
     def start_job(self, device_lines, start: int = 0, name: str = "", line_map=None,
-                  modes: tuple[str, ...] | None = None, offsets=None) -> bool:
+                  modes: tuple[str, ...] | None = None, offsets=None, mdi: bool = False) -> bool:
         """Stream ``device_lines`` (or a ``Program``: its device lines and line map) from
         index ``start``; False (with an error event) if the machine cannot take a job now.
         ``line_map`` (device index -> source line) lets messages name the source line.
         ``modes`` (a restart: ``held_modes`` of the job cut off) are set before the lines,
         and ``offsets`` (its ``held_offsets``: G92 and the tool length offset) after them;
-        None reads both from the machine (``$G``, ``$#``) for a later restart."""
+        None reads both from the machine (``$G``, ``$#``) for a later restart. ``mdi``
+        (typed lines) changes nothing: GRBL has no after-job action."""
         if hasattr(device_lines, "device_lines"):
             program = device_lines
             device_lines = list(program.device_lines)
