@@ -225,6 +225,7 @@ class PreviewWidget(QWidget):
         return (x0, x1, y0, y1), max(px, py)
 
     def _refill_now(self) -> None:
+        self._refill.stop()  # a refill asked for before this one (by a fit, say) is this one
         view, pixel = self._view_and_pixel()
         if self.model is None or self.model.empty:
             self.group_data = [(np.zeros(0), np.zeros(0)) for _ in self.group_pens]
