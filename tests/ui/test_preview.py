@@ -184,3 +184,30 @@ def test_a_finer_model_keeps_the_view_and_the_finished_part(preview):
     preview.replace_model(PreviewModel(program.toolpath, tolerance=0.01))
     assert preview.view.viewRange() == view
     assert preview.done_layer.segments > coarse  # the same finished part, in finer chords
+
+
+@pytest.mark.parametrize("path", SAMPLE_FILES, ids=lambda p: p.name)
+def test_the_screen_tolerance_is_never_coarser_than_half_a_pixel(path):
+    from app.ui.preview.model import FIT_MARGIN, screen_tolerance
+
+    toolpath = load(path).toolpath
+    (xmin, ymin, _), (xmax, ymax, _) = bounds_array(toolpath.bounds)  # exact, arcs' bulges too
+    for size in ((900, 700), (300, 200), (4000, 3000)):
+        pixel = max(xmax - xmin, ymax - ymin, 1.0) * (1 + 2 * FIT_MARGIN) / min(size)
+        assert 0.01 <= screen_tolerance(toolpath, size, 0.01) <= max(pixel / 2, 0.01)
+    circle = load_text("G0 X10 Y0\nG2 X10 Y0 I-10 J0 F300\n").toolpath  # its ends are one point
+    assert screen_tolerance(circle, (900, 700), 0.01) == 0.01
+
+
+def test_each_group_holds_its_segments_in_program_order():
+    from app.ui.preview.lod import group_segments
+
+    program = load(next(p for p in SAMPLE_FILES if "star_passes" in p.name))
+    g = PreviewModel(program.toolpath).geometry
+    parts = group_segments(g.points, g.move, g.group, g.group_count)
+    assert len(parts) == g.group_count and sum(len(m) for _, m in parts) == len(g.points) - 1
+    for which, (seg, move) in enumerate(parts):
+        ends = [i for i in range(1, len(g.points)) if g.group[i] == which]
+        expected = [[*g.points[i - 1, :2], *g.points[i, :2]] for i in ends]
+        np.testing.assert_allclose(seg, np.reshape(expected, (-1, 4)), rtol=1e-6)
+        np.testing.assert_array_equal(move, g.move[ends])

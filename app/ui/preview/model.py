@@ -28,8 +28,7 @@ class PreviewModel:
         self.threads = threads
         self.geometry = PathGeometry.from_toolpath(toolpath, tolerance, threads)
         g = self.geometry
-        self.groups = self._each(lambda i: LodSegments(*group_segments(g.points, g.move, g.group, i)),
-                                 range(g.group_count))
+        self.groups = [LodSegments(*part) for part in group_segments(g.points, g.move, g.group, g.group_count)]
         self.device_index = _device_index(toolpath)
         self._bounds = _bounds(self.geometry.points)
         self.levels_built = False  # every level of every group (build_all)
@@ -110,9 +109,12 @@ class PreviewModel:
 
 def screen_tolerance(toolpath, size: tuple[float, float], tolerance: float) -> float:
     """The chord tolerance a view of ``size`` pixels fitted to the program can show:
-    half a pixel, never finer than ``tolerance``."""
-    low, high = toolpath.bounds
-    extent = max(float(high[0] - low[0]), float(high[1] - low[1]), 1.0) * (1 + 2 * FIT_MARGIN)
+    half a pixel, never finer than ``tolerance``. The program's extent is that of its
+    moves' ends (arcs may bulge past them: the real pixel is then a little larger, and
+    the tolerance finer than half of it, never coarser), with no pass over the arcs."""
+    ends = toolpath.end
+    spans = [float(np.ptp(ends[:, axis])) for axis in (0, 1)] if len(ends) else []
+    extent = max([*spans, 1.0]) * (1 + 2 * FIT_MARGIN)
     pixel = extent / max(min(size), 1.0)
     return max(tolerance, pixel / 2)
 
