@@ -211,3 +211,11 @@ def test_each_group_holds_its_segments_in_program_order():
         expected = [[*g.points[i - 1, :2], *g.points[i, :2]] for i in ends]
         np.testing.assert_allclose(seg, np.reshape(expected, (-1, 4)), rtol=1e-6)
         np.testing.assert_array_equal(move, g.move[ends])
+
+
+def test_a_program_is_on_the_screen_when_show_model_returns(preview):
+    program = load(next(p for p in SAMPLE_FILES if "star_passes" in p.name))
+    painted = []
+    preview.path_layer.painted.connect(lambda: painted.append(preview.path_layer.segments))
+    preview.show_program(program.toolpath)
+    assert painted and painted[-1] == sum(len(x) // 2 for x, _ in preview.group_data) > 0

@@ -149,6 +149,7 @@ class PreviewWidget(QWidget):
         self.bounds_item.setData(*rectangle_pairs(xmin, ymin, xmax, ymax))
         self.fit()
         self._refill_now()
+        self.plot.viewport().repaint()  # on the screen now, not after whatever else the caller does
 
     def retranslate_ui(self) -> None:
         self.plot.setToolTip(self.tr("wheel: zoom · drag: pan · Ctrl+F: fit · Ctrl+G: grid"))
