@@ -192,8 +192,9 @@ def test_the_screen_tolerance_is_never_coarser_than_half_a_pixel(path):
 
     toolpath = load(path).toolpath
     (xmin, ymin, _), (xmax, ymax, _) = bounds_array(toolpath.bounds)  # exact, arcs' bulges too
-    for size in ((900, 700), (300, 200), (4000, 3000)):
-        pixel = max(xmax - xmin, ymax - ymin, 1.0) * (1 + 2 * FIT_MARGIN) / min(size)
+    pad = 2 * max(xmax - xmin, ymax - ymin, 1.0) * FIT_MARGIN  # a view fitted to the exact bounds
+    for size in ((900, 700), (300, 200), (200, 300), (4000, 3000)):
+        pixel = max((xmax - xmin + pad) / size[0], (ymax - ymin + pad) / size[1])
         assert 0.01 <= screen_tolerance(toolpath, size, 0.01) <= max(pixel / 2, 0.01)
     circle = load_text("G0 X10 Y0\nG2 X10 Y0 I-10 J0 F300\n").toolpath  # its ends are one point
     assert screen_tolerance(circle, (900, 700), 0.01) == 0.01

@@ -113,9 +113,9 @@ def screen_tolerance(toolpath, size: tuple[float, float], tolerance: float) -> f
     moves' ends (arcs may bulge past them: the real pixel is then a little larger, and
     the tolerance finer than half of it, never coarser), with no pass over the arcs."""
     ends = toolpath.end
-    spans = [float(np.ptp(ends[:, axis])) for axis in (0, 1)] if len(ends) else []
-    extent = max([*spans, 1.0]) * (1 + 2 * FIT_MARGIN)
-    pixel = extent / max(min(size), 1.0)
+    spans = [float(np.ptp(ends[:, axis])) if len(ends) else 0.0 for axis in (0, 1)]
+    pad = 2 * max(*spans, 1.0) * FIT_MARGIN  # as fitted_range pads
+    pixel = max((span + pad) / max(side, 1.0) for span, side in zip(spans, size, strict=True))
     return max(tolerance, pixel / 2)
 
 
