@@ -220,3 +220,17 @@ def test_a_program_is_on_the_screen_when_show_model_returns(preview):
     preview.path_layer.painted.connect(lambda: painted.append(preview.path_layer.segments))
     preview.show_program(program.toolpath)
     assert painted and painted[-1] == sum(len(x) // 2 for x, _ in preview.group_data) > 0
+
+
+def test_a_level_sorted_on_two_threads_equals_one_sorted_on_one():
+    from app.ui.preview.lod import PARALLEL_SEGMENTS
+
+    rng = np.random.default_rng(24)
+    walk = np.cumsum(rng.normal(0, 0.3, size=(PARALLEL_SEGMENTS + 5_001, 2)), axis=0)  # crosses itself
+    seg = np.column_stack([walk[:-1], walk[1:]])
+    one, two = LodSegments(seg, np.arange(len(seg))), LodSegments(seg, np.arange(len(seg)), threads=2)
+    for index in (1, 4, 8):
+        a, b = one.level(index), two.level(index)
+        assert 0 < len(a.move) < len(seg)
+        np.testing.assert_array_equal(a.move, b.move)
+        np.testing.assert_array_equal(a.seg, b.seg)

@@ -14,11 +14,13 @@ one already built when there is one, so the coarser levels cost little.
 from __future__ import annotations
 
 import threading
+from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 
 import numpy as np
 
 CHUNK = 512
+PARALLEL_SEGMENTS = 200_000  # a level built from more segments sorts them on two threads
 LEVEL_STEPS = range(13, 5, -1)  # cells of extent / 2**k, finest first
 _EMPTY = np.zeros(0)
 
@@ -32,7 +34,9 @@ class Level:
 
 
 class LodSegments:
-    def __init__(self, seg: np.ndarray, move: np.ndarray):
+    def __init__(self, seg: np.ndarray, move: np.ndarray, threads: int = 1):
+        """``threads``: 2 to sort many segments on two threads (a first picture)."""
+        self.threads = threads
         self._raw = (np.asarray(seg, np.float32), np.asarray(move, np.int32))  # not copied when so
         extent = 1e-6
         if len(seg):
@@ -48,7 +52,7 @@ class LodSegments:
     def level(self, index: int) -> Level:
         with self._locks[index]:
             if index not in self._levels:
-                self._levels[index] = _build_level(*self._source(index), self.cells[index])
+                self._levels[index] = _build_level(*self._source(index), self.cells[index], self.threads)
             return self._levels[index]
 
     def _source(self, index: int):
@@ -94,24 +98,43 @@ class LodSegments:
         return min(built, key=lambda i: (abs(i - index), i < index))
 
 
-def _build_level(seg, move, cell) -> Level:
+def _build_level(seg, move, cell, threads: int = 1) -> Level:
     if cell > 0 and len(seg):
-        keep = _representatives(seg, cell)
+        keep = _representatives(seg, cell, threads)
         seg, move = seg[keep], move[keep]
     return Level(cell, seg, move, _chunk_boxes(seg))
 
 
-def _representatives(seg, cell):
+def _representatives(seg, cell, threads: int = 1):
     """Indices (in program order) of the first segment of every (start cell, end cell)
     pair, and of the segments that reach the extremes (a level spans what the path does)."""
     key = _pair_keys(seg, cell)
-    order = np.argsort(key, kind="stable")  # equal keys in program order: the first leads its run
-    ordered = key[order]
     keep = np.zeros(len(seg), bool)
-    keep[order[np.concatenate([[True], ordered[1:] != ordered[:-1]])]] = True
+    if threads < 2 or len(key) < PARALLEL_SEGMENTS:
+        keep[_firsts(key)] = True
+    else:  # two halves by key (no key in both), each sorted on a thread of its own
+        sample = np.sort(key[:: len(key) // 1024])
+        low = key < sample[len(sample) // 2]
+        for rows, firsts in on_two_threads(lambda rows: (rows, _firsts(key[rows])),
+                                           (np.flatnonzero(low), np.flatnonzero(~low))):
+            keep[rows[firsts]] = True
     for column in range(4):
         keep[np.argmin(seg[:, column])] = keep[np.argmax(seg[:, column])] = True
     return np.flatnonzero(keep)  # program order, with no sort
+
+
+def _firsts(key):
+    """Indices of the first occurrence of every value of ``key``."""
+    order = np.argsort(key, kind="stable")  # equal keys in program order: the first leads its run
+    ordered = key[order]
+    return order[np.concatenate([[True], ordered[1:] != ordered[:-1]])]
+
+
+def on_two_threads(fn, items) -> list:
+    """``[fn(item) for item in items]`` on two threads (numpy sorts and sums without the
+    GIL, so both run at once)."""
+    with ThreadPoolExecutor(max_workers=2, thread_name_prefix="preview") as pool:
+        return list(pool.map(fn, items))
 
 
 def _pair_keys(seg, cell):

@@ -7,12 +7,10 @@ segments cut at a move. ``frame(view, pixel)`` gives the arrays to draw for a vi
 
 from __future__ import annotations
 
-from concurrent.futures import ThreadPoolExecutor
-
 import numpy as np
 
 from app.ui.preview.geometry import RAPID_GROUP, PathGeometry
-from app.ui.preview.lod import LodSegments, group_segments
+from app.ui.preview.lod import LodSegments, group_segments, on_two_threads
 
 FIT_MARGIN = 0.03
 FRAME_BUDGET = 50_000  # segments drawn per frame, shared by the groups
@@ -28,7 +26,8 @@ class PreviewModel:
         self.threads = threads
         self.geometry = PathGeometry.from_toolpath(toolpath, tolerance, threads)
         g = self.geometry
-        self.groups = [LodSegments(*part) for part in group_segments(g.points, g.move, g.group, g.group_count)]
+        parts = group_segments(g.points, g.move, g.group, g.group_count)
+        self.groups = [LodSegments(seg, move, threads) for seg, move in parts]
         self.device_index = _device_index(toolpath)
         self._bounds = _bounds(self.geometry.points)
         self.levels_built = False  # every level of every group (build_all)
@@ -98,7 +97,7 @@ class PreviewModel:
 
     def _each(self, fn, items) -> list:
         """``[fn(item) for item in items]``, on two threads unless ``threads`` is 1."""
-        return _each(fn, items) if self.threads > 1 else [fn(item) for item in items]
+        return on_two_threads(fn, items) if self.threads > 1 else [fn(item) for item in items]
 
     def build_all(self) -> None:
         """Build every level of detail of every group (zooming then never waits)."""
@@ -117,12 +116,6 @@ def screen_tolerance(toolpath, size: tuple[float, float], tolerance: float) -> f
     pad = 2 * max(*spans, 1.0) * FIT_MARGIN  # as fitted_range pads
     pixel = max((span + pad) / max(side, 1.0) for span, side in zip(spans, size, strict=True))
     return max(tolerance, pixel / 2)
-
-
-def _each(fn, items) -> list:
-    """``[fn(item) for item in items]`` on two threads: numpy lets them run at once."""
-    with ThreadPoolExecutor(max_workers=2, thread_name_prefix="preview") as pool:
-        return list(pool.map(fn, items))
 
 
 def _bounds(points: np.ndarray) -> tuple[float, float, float, float]:
