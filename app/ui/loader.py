@@ -180,7 +180,10 @@ def load_program(path: Path, tolerance: float = 0.01, view_size=None, tools=None
     size = view_size or DEFAULT_VIEW
     facts = threading.Thread(target=_summary_facts, args=(program,), name="gcode-facts", daemon=True)
     facts.start()  # on the other core, while this one builds the first picture's model
-    preview = PreviewModel(program.toolpath, screen_tolerance(program.toolpath, size, tolerance))
+    coarse = screen_tolerance(program.toolpath, size, tolerance)
+    program.toolpath.polyline(coarse, threads=1)  # (cached) at this tolerance nearly every arc is one
+    # chord: allocation more than arithmetic, which a second thread would only contend for
+    preview = PreviewModel(program.toolpath, coarse)
     preview.warm(size)
     facts.join()
     return LoadedProgram(path, program, preview, loaded - started, time.perf_counter() - loaded)
