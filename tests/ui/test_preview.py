@@ -234,3 +234,7 @@ def test_a_level_sorted_on_two_threads_equals_one_sorted_on_one():
         assert 0 < len(a.move) < len(seg)
         np.testing.assert_array_equal(a.move, b.move)
         np.testing.assert_array_equal(a.seg, b.seg)
+    same = np.tile([[0.0, 0.0, 1.0, 1.0]], (PARALLEL_SEGMENTS + 1, 1))  # one spot, drilled over and over
+    same[-1] = [5.0, 5.0, 6.0, 6.0]
+    level = LodSegments(same, np.arange(len(same)), threads=2).level(3)
+    np.testing.assert_array_equal(level.move, [0, len(same) - 1])

@@ -125,6 +125,8 @@ def _representatives(seg, cell, threads: int = 1):
 
 def _firsts(key):
     """Indices of the first occurrence of every value of ``key``."""
+    if not len(key):  # (a half with no keys: most of them equal the others' least)
+        return np.zeros(0, np.intp)
     order = np.argsort(key, kind="stable")  # equal keys in program order: the first leads its run
     ordered = key[order]
     return order[np.concatenate([[True], ordered[1:] != ordered[:-1]])]
