@@ -3,14 +3,16 @@ preview's drawing model, then hands the result back with a queued signal.
 
 What the first picture needs comes first: the toolpath and a preview model drawn with
 the tolerance of the screen (half a pixel of the view the preview will fit; arcs need
-far fewer chords than at 0.01 mm) with its level of detail for that view; ``loaded``
-is emitted then. The rest waits until the window says it has shown the program
-(``shown()``, or SHOW_WAIT_S), so it does not compete with the first picture for the
-interpreter: the model at the real tolerance with every level of detail, for zooming
-in (``refined``, when the first one was coarser), then the device lines, for Start
-and Save to SD (``prepared``). The rest runs niced, on this thread alone, and in
-pieces (chords 65,536 arcs at a time, device-line texts in slices), so a redraw never
-waits long for the GIL behind one numpy call.
+far fewer chords than at 0.01 mm) with its level of detail for that view, while a
+second thread works out what the window's summary reads (the exact bounds); ``loaded``
+is emitted then, and the window paints the picture before it does anything else. The
+rest waits until the window says it has shown the program (``shown()``, or
+SHOW_WAIT_S), so it does not compete with the first picture for the interpreter: the
+model at the real tolerance with every level of detail, for zooming in (``refined``,
+when the first one was coarser), then the device lines, for Start and Save to SD
+(``prepared``). The rest runs niced, on this thread alone, and in pieces (chords
+65,536 arcs at a time, device-line texts in slices), so a redraw never waits long for
+the GIL behind one numpy call.
 
 Anything that is not G-code ends in ``failed`` with a sentence for the operator: a
 missing or unreadable file, a binary file, or text in which nothing could be run.
