@@ -3,14 +3,16 @@ preview's drawing model, then hands the result back with a queued signal.
 
 What the first picture needs comes first: the toolpath and a preview model drawn with
 the tolerance of the screen (half a pixel of the view the preview will fit; arcs need
-far fewer chords than at 0.01 mm) with its level of detail for that view; ``loaded``
-is emitted then. The rest waits until the window says it has shown the program
-(``shown()``, or SHOW_WAIT_S), so it does not compete with the first picture for the
-interpreter: the model at the real tolerance with every level of detail, for zooming
-in (``refined``, when the first one was coarser), then the device lines, for Start
-and Save to SD (``prepared``). The rest runs niced, on this thread alone, and in
-pieces (chords 65,536 arcs at a time, device-line texts in slices), so a redraw never
-waits long for the GIL behind one numpy call.
+far fewer chords than at 0.01 mm) with its level of detail for that view, while a
+second thread works out what the window's summary reads (the exact bounds); ``loaded``
+is emitted then, and the window paints the picture before it does anything else. The
+rest waits until the window says it has shown the program (``shown()``, or
+SHOW_WAIT_S), so it does not compete with the first picture for the interpreter: the
+model at the real tolerance with every level of detail, for zooming in (``refined``,
+when the first one was coarser), then the device lines, for Start and Save to SD
+(``prepared``). The rest runs niced, on this thread alone, and in pieces (chords
+65,536 arcs at a time, device-line texts in slices), so a redraw never waits long for
+the GIL behind one numpy call.
 
 Anything that is not G-code ends in ``failed`` with a sentence for the operator: a
 missing or unreadable file, a binary file, or text in which nothing could be run.
@@ -178,9 +180,24 @@ def load_program(path: Path, tolerance: float = 0.01, view_size=None, tools=None
     loaded = time.perf_counter()
     _check_runnable(path, program)
     size = view_size or DEFAULT_VIEW
-    preview = PreviewModel(program.toolpath, screen_tolerance(program.toolpath, size, tolerance))
+    facts = threading.Thread(target=_summary_facts, args=(program,), name="gcode-facts", daemon=True)
+    facts.start()  # on the other core, while this one builds the first picture's model
+    coarse = screen_tolerance(program.toolpath, size, tolerance)
+    program.toolpath.polyline(coarse, threads=1)  # (cached) at this tolerance nearly every arc is one
+    # chord: allocation more than arithmetic, which a second thread would only contend for
+    preview = PreviewModel(program.toolpath, coarse)
     preview.warm(size)
+    facts.join()
     return LoadedProgram(path, program, preview, loaded - started, time.perf_counter() - loaded)
+
+
+def _summary_facts(program) -> None:
+    """What the window's summary reads when the program arrives (both cached), worked
+    out here rather than on the GUI thread: the exact bounds (arcs' bulges: 30-100 ms
+    for a million moves) and the device lines' source lines."""
+    with contextlib.suppress(Exception):  # the window meets any problem when it reads them
+        program.toolpath.bounds  # noqa: B018 (a cached property)
+        program.line_map  # noqa: B018
 
 
 def _sniff(path: Path) -> None:

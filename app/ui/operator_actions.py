@@ -278,8 +278,8 @@ class OperatorActions(QObject):
 
     def program_loaded(self, loaded) -> None:
         self.w.loaded = loaded
+        self.w.preview.show_model(loaded.preview)  # first: the picture is painted before the rest
         self.w.program_panel.show_program(loaded.program, loaded.path.name)
-        self.w.preview.show_model(loaded.preview)
         self.w.sd_panel.suggest_for(loaded.path)
         self.w.retranslate_ui()  # the title names the file
         add_recent(self.w, loaded.path)

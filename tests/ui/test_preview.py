@@ -184,3 +184,57 @@ def test_a_finer_model_keeps_the_view_and_the_finished_part(preview):
     preview.replace_model(PreviewModel(program.toolpath, tolerance=0.01))
     assert preview.view.viewRange() == view
     assert preview.done_layer.segments > coarse  # the same finished part, in finer chords
+
+
+@pytest.mark.parametrize("path", SAMPLE_FILES, ids=lambda p: p.name)
+def test_the_screen_tolerance_is_never_coarser_than_half_a_pixel(path):
+    from app.ui.preview.model import FIT_MARGIN, screen_tolerance
+
+    toolpath = load(path).toolpath
+    (xmin, ymin, _), (xmax, ymax, _) = bounds_array(toolpath.bounds)  # exact, arcs' bulges too
+    pad = 2 * max(xmax - xmin, ymax - ymin, 1.0) * FIT_MARGIN  # a view fitted to the exact bounds
+    for size in ((900, 700), (300, 200), (200, 300), (4000, 3000)):
+        pixel = max((xmax - xmin + pad) / size[0], (ymax - ymin + pad) / size[1])
+        assert 0.01 <= screen_tolerance(toolpath, size, 0.01) <= max(pixel / 2, 0.01)
+    circle = load_text("G0 X10 Y0\nG2 X10 Y0 I-10 J0 F300\n").toolpath  # its ends are one point
+    assert screen_tolerance(circle, (900, 700), 0.01) == 0.01
+
+
+def test_each_group_holds_its_segments_in_program_order():
+    from app.ui.preview.lod import group_segments
+
+    program = load(next(p for p in SAMPLE_FILES if "star_passes" in p.name))
+    g = PreviewModel(program.toolpath).geometry
+    parts = group_segments(g.points, g.move, g.group, g.group_count)
+    assert len(parts) == g.group_count and sum(len(m) for _, m in parts) == len(g.points) - 1
+    for which, (seg, move) in enumerate(parts):
+        ends = [i for i in range(1, len(g.points)) if g.group[i] == which]
+        expected = [[*g.points[i - 1, :2], *g.points[i, :2]] for i in ends]
+        np.testing.assert_allclose(seg, np.reshape(expected, (-1, 4)), rtol=1e-6)
+        np.testing.assert_array_equal(move, g.move[ends])
+
+
+def test_a_program_is_on_the_screen_when_show_model_returns(preview):
+    program = load(next(p for p in SAMPLE_FILES if "star_passes" in p.name))
+    painted = []
+    preview.path_layer.painted.connect(lambda: painted.append(preview.path_layer.segments))
+    preview.show_program(program.toolpath)
+    assert painted and painted[-1] == sum(len(x) // 2 for x, _ in preview.group_data) > 0
+
+
+def test_a_level_sorted_on_two_threads_equals_one_sorted_on_one():
+    from app.ui.preview.lod import PARALLEL_SEGMENTS
+
+    rng = np.random.default_rng(24)
+    walk = np.cumsum(rng.normal(0, 0.3, size=(PARALLEL_SEGMENTS + 5_001, 2)), axis=0)  # crosses itself
+    seg = np.column_stack([walk[:-1], walk[1:]])
+    one, two = LodSegments(seg, np.arange(len(seg))), LodSegments(seg, np.arange(len(seg)), threads=2)
+    for index in (1, 4, 8):
+        a, b = one.level(index), two.level(index)
+        assert 0 < len(a.move) < len(seg)
+        np.testing.assert_array_equal(a.move, b.move)
+        np.testing.assert_array_equal(a.seg, b.seg)
+    same = np.tile([[0.0, 0.0, 1.0, 1.0]], (PARALLEL_SEGMENTS + 1, 1))  # one spot, drilled over and over
+    same[-1] = [5.0, 5.0, 6.0, 6.0]
+    level = LodSegments(same, np.arange(len(same)), threads=2).level(3)
+    np.testing.assert_array_equal(level.move, [0, len(same) - 1])

@@ -236,6 +236,17 @@ def test_program_tool_and_its_diameter():
     assert scene.tool_diameter({}, 7) == (scene.DEFAULT_DIAMETER, None)
 
 
+def test_the_program_tool_is_found_without_splitting_the_whole_file():
+    from app.gcode.source import Lines
+
+    body = b"G1 X1 Y1 F100\n" * (3 * scene.SCAN_LINES)
+    lines = Lines(data=b"G21\n(T9 in a comment)\nM6 T7\n" + body)
+    assert scene.program_tool(lines) == 7
+    late = Lines(data=body + b"M6 T4\n")
+    assert scene.program_tool(late) is None  # past the lines looked at
+    assert lines._list is None and late._list is None  # the file was not split into a list
+
+
 def test_visible_runs_keep_every_segment_on_screen_and_leave_out_the_rest():
     from app.ui.preview3d.chunks import visible_runs
 

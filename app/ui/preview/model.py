@@ -7,12 +7,10 @@ segments cut at a move. ``frame(view, pixel)`` gives the arrays to draw for a vi
 
 from __future__ import annotations
 
-from concurrent.futures import ThreadPoolExecutor
-
 import numpy as np
 
 from app.ui.preview.geometry import RAPID_GROUP, PathGeometry
-from app.ui.preview.lod import LodSegments, group_segments
+from app.ui.preview.lod import LodSegments, group_segments, on_two_threads
 
 FIT_MARGIN = 0.03
 FRAME_BUDGET = 50_000  # segments drawn per frame, shared by the groups
@@ -28,8 +26,11 @@ class PreviewModel:
         self.threads = threads
         self.geometry = PathGeometry.from_toolpath(toolpath, tolerance, threads)
         g = self.geometry
-        self.groups = self._each(lambda i: LodSegments(*group_segments(g.points, g.move, g.group, i)),
-                                 range(g.group_count))
+        parts = group_segments(g.points, g.move, g.group, g.group_count)
+        # A group of most of the segments sorts them on two threads (the groups are built
+        # two at a time, and it is the one the others wait for); the rest on one each.
+        self.groups = [LodSegments(seg, move, threads if 2 * len(move) > len(g.move) else 1)
+                       for seg, move in parts]
         self.device_index = _device_index(toolpath)
         self._bounds = _bounds(self.geometry.points)
         self.levels_built = False  # every level of every group (build_all)
@@ -99,7 +100,7 @@ class PreviewModel:
 
     def _each(self, fn, items) -> list:
         """``[fn(item) for item in items]``, on two threads unless ``threads`` is 1."""
-        return _each(fn, items) if self.threads > 1 else [fn(item) for item in items]
+        return on_two_threads(fn, items) if self.threads > 1 else [fn(item) for item in items]
 
     def build_all(self) -> None:
         """Build every level of detail of every group (zooming then never waits)."""
@@ -110,17 +111,14 @@ class PreviewModel:
 
 def screen_tolerance(toolpath, size: tuple[float, float], tolerance: float) -> float:
     """The chord tolerance a view of ``size`` pixels fitted to the program can show:
-    half a pixel, never finer than ``tolerance``."""
-    low, high = toolpath.bounds
-    extent = max(float(high[0] - low[0]), float(high[1] - low[1]), 1.0) * (1 + 2 * FIT_MARGIN)
-    pixel = extent / max(min(size), 1.0)
+    half a pixel, never finer than ``tolerance``. The program's extent is that of its
+    moves' ends (arcs may bulge past them: the real pixel is then a little larger, and
+    the tolerance finer than half of it, never coarser), with no pass over the arcs."""
+    ends = toolpath.end
+    spans = [float(np.ptp(ends[:, axis])) if len(ends) else 0.0 for axis in (0, 1)]
+    pad = 2 * max(*spans, 1.0) * FIT_MARGIN  # as fitted_range pads
+    pixel = max((span + pad) / max(side, 1.0) for span, side in zip(spans, size, strict=True))
     return max(tolerance, pixel / 2)
-
-
-def _each(fn, items) -> list:
-    """``[fn(item) for item in items]`` on two threads: numpy lets them run at once."""
-    with ThreadPoolExecutor(max_workers=2, thread_name_prefix="preview") as pool:
-        return list(pool.map(fn, items))
 
 
 def _bounds(points: np.ndarray) -> tuple[float, float, float, float]:

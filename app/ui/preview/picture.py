@@ -16,13 +16,15 @@ from __future__ import annotations
 
 import numpy as np
 import pyqtgraph as pg
-from PySide6.QtCore import QPointF, QRectF, Qt
+from PySide6.QtCore import QPointF, QRectF, Qt, Signal
 from PySide6.QtGui import QImage, QPainter, QPen, QTransform
 from PySide6.QtWidgets import QGraphicsObject
 
 
 class PictureLayer(QGraphicsObject):
     """An item in the view's data coordinates that shows an image of its segments."""
+
+    painted = Signal()  # the image was put on the screen (for the benchmark and tests)
 
     def __init__(self, view: pg.ViewBox):
         super().__init__()
@@ -50,6 +52,7 @@ class PictureLayer(QGraphicsObject):
         else:
             painter.drawImage(to_device.mapRect(exposed), self.image, source)
         painter.restore()
+        self.painted.emit()
 
     def reset(self, parts: list[tuple[QPen, np.ndarray, np.ndarray]]) -> None:
         """Paint the image again for the current view with these (pen, x, y) parts alone."""

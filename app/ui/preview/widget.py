@@ -149,6 +149,7 @@ class PreviewWidget(QWidget):
         self.bounds_item.setData(*rectangle_pairs(xmin, ymin, xmax, ymax))
         self.fit()
         self._refill_now()
+        self.plot.viewport().repaint()  # on the screen now, not after whatever else the caller does
 
     def retranslate_ui(self) -> None:
         self.plot.setToolTip(self.tr("wheel: zoom · drag: pan · Ctrl+F: fit · Ctrl+G: grid"))
@@ -225,6 +226,7 @@ class PreviewWidget(QWidget):
         return (x0, x1, y0, y1), max(px, py)
 
     def _refill_now(self) -> None:
+        self._refill.stop()  # a refill asked for before this one (by a fit, say) is this one
         view, pixel = self._view_and_pixel()
         if self.model is None or self.model.empty:
             self.group_data = [(np.zeros(0), np.zeros(0)) for _ in self.group_pens]

@@ -9,6 +9,7 @@ cross that marks a place. ``program_tool(lines)`` finds the tool a program asks 
 
 from __future__ import annotations
 
+import itertools
 import re
 
 import numpy as np
@@ -63,8 +64,10 @@ def mark_lines(point, size: float) -> np.ndarray:
 
 
 def program_tool(lines, limit: int = SCAN_LINES) -> int | None:
-    """The number of the first T word in the first ``limit`` lines (comments skipped)."""
-    for line in lines[:limit]:
+    """The number of the first T word in the first ``limit`` lines (comments skipped).
+    ``lines``: any sequence; only those lines are read (a program's ``Lines`` then
+    decodes those alone rather than split the whole file)."""
+    for line in itertools.islice(lines, limit):
         found = _T_WORD.search(_COMMENT.sub("", line).upper())
         if found:
             return int(found.group(1))

@@ -101,6 +101,7 @@ class Preview3D(QWidget):
         self.measured = MeasuredPath()
         self.tools: dict = {}
         self.tool_number = None
+        self._tool_lines = None  # the program's lines, until its tool is looked up
         self.tool_at = None
         self.mark_at = None
         self._fit_next = True
@@ -213,8 +214,7 @@ class Preview3D(QWidget):
             self.measured.clear()
             self.mark_at = None
             self.deviation_label.clear()
-            lines = getattr(program, "source_lines", None) or getattr(program, "lines", None) or []
-            self.tool_number = scene.program_tool(lines)
+            self.tool_number, self._tool_lines = None, getattr(program, "lines", None) or []
         self._update_legend()
         self._update_lines()
         self._build_mesh()
@@ -256,12 +256,20 @@ class Preview3D(QWidget):
         high = low + np.asarray(travel, float)
         rows = [scene.box_lines(low, high), scene.axes_lines(max(travel) * AXIS_FRACTION)]
         if self.tool_at is not None:
-            diameter, _ = scene.tool_diameter(self.tools, self.tool_number)
+            diameter, _ = scene.tool_diameter(self.tools, self._program_tool())
             rows.append(scene.tool_lines(self.tool_at, diameter))
         if self.mark_at is not None:
             rows.append(scene.mark_lines(self.mark_at, JUMP_HALF_HEIGHT))
         if self.gl is not None:
             self.gl.set_lines(np.concatenate(rows))
+
+    def _program_tool(self) -> int | None:
+        """The tool the program asks for, looked up when the tool is first drawn rather
+        than while a file opens (the first SCAN_LINES lines; a file's ``Lines`` decodes
+        those alone)."""
+        if self._tool_lines is not None:
+            self.tool_number, self._tool_lines = scene.program_tool(self._tool_lines), None
+        return self.tool_number
 
     def _update_legend(self) -> None:
         colours = group_colours()
