@@ -326,16 +326,14 @@ def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfi
             _give_back_free_memory()  # the scan's many chunk-sized temporaries
     report_tail(lines, percent, ended, report)
     ops.origin = tuple(float(v) for v in origin)
-    ops.starts()  # computed once, before two threads read it
-    checking = _in_thread(checks.run, ops, profile, lines, report)  # numpy lets both run at once
     the_plan = normalize.plan(ops, profile.motion.arc_tolerance_mm)
     toolpath = build(ops, the_plan.first, profile)
+    ops.hand_over(toolpath)  # the moves' positions kept once, by the Toolpath
+    checking = _in_thread(checks.run, ops, profile, lines, report, toolpath)  # numpy lets both run at once
     planning = _in_thread(_estimate, toolpath, ops, the_plan, profile, name="gcode-plan") if plan_ahead \
-        else None  # beside the last checks
+        else None  # beside the checks
     envelope = checking.join()
     program_checks(toolpath, profile, report)
-    ops.forget_starts()  # the Toolpath has its own copy of the moves' starts
-
 
     def again(position) -> Program:
         return _interpret(lines, [lines.encoded()], name, profile, tools, folder, *settings, position)
