@@ -60,3 +60,22 @@ def test_a_toolpath_of_views_keeps_the_rows_as_they_are():
     program = load_text("M3 S1000\nG0 X10 Y5\nG1 X20 F300\nG2 X30 Y5 I5 J0\nM5\nM2\n")
     assert "_handed" not in program.ops.__dict__ and "end" in program.ops.__dict__
     assert np.shares_memory(program.toolpath.center, program.ops.center)
+
+
+def test_the_command_line_puts_its_threads_on_one_heap_before_loading(monkeypatch, tmp_path, capsys):
+    from app.gcode import cli, program
+
+    calls = []
+
+    def glibc(name):
+        return None if name != "mallopt" else (lambda param, value: calls.append((param, value, len(loads))))
+
+    loads = []
+    real_load = cli.load
+    monkeypatch.setattr(program, "_glibc", glibc)
+    monkeypatch.setattr(cli, "load", lambda *a, **k: loads.append(1) or real_load(*a, **k))
+    path = tmp_path / "a.ngc"
+    path.write_text(PROGRAMS[0])
+    assert cli.main(["check", str(path)]) == 0
+    assert calls == [(program.M_ARENA_MAX, 1, 0)]  # set before the load (and its threads) began
+    assert "moves: " in capsys.readouterr().out
