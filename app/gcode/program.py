@@ -326,8 +326,10 @@ def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfi
             _give_back_free_memory()  # the scan's many chunk-sized temporaries
     report_tail(lines, percent, ended, report)
     ops.origin = tuple(float(v) for v in origin)
-    the_plan = normalize.plan(ops, profile.motion.arc_tolerance_mm)
-    toolpath = build(ops, the_plan.first, profile)
+    ops.starts()  # computed once, before two threads read it
+    normalizing = _in_thread(normalize.plan, ops, profile.motion.arc_tolerance_mm, name="gcode-normalize")
+    toolpath = build(ops, lambda: normalizing.join().first, profile)  # numpy lets both run at once
+    the_plan = normalizing.join()
     ops.hand_over(toolpath)  # the moves' positions kept once, by the Toolpath
     checking = _in_thread(checks.run, ops, profile, lines, report, toolpath)  # numpy lets both run at once
     planning = _in_thread(_estimate, toolpath, ops, the_plan, profile, name="gcode-plan") if plan_ahead \
