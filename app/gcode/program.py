@@ -157,6 +157,16 @@ def _estimate(toolpath: Toolpath, ops: Ops, the_plan: normalize.Plan, profile: M
     return estimate(toolpath, EventLines(ops, the_plan), profile)
 
 
+def _checked(ops: Ops, profile: MachineProfile, lines: Lines, report: Report, toolpath: Toolpath,
+             bounds: bool) -> checks.Envelope:
+    """``checks.run``; then, with ``bounds``, the toolpath's bounds (for a caller that reads
+    them at once, worked out beside the planner's estimate, which takes longer)."""
+    envelope = checks.run(ops, profile, lines, report, toolpath)
+    if bounds:
+        toolpath.bounds  # noqa: B018 (a cached property)
+    return envelope
+
+
 def _split(text: str) -> list[str]:
     lines = text.split("\n")
     if lines and lines[-1] == "":
@@ -331,9 +341,9 @@ def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfi
     toolpath = build(ops, lambda: normalizing.join().first, profile)  # numpy lets both run at once
     the_plan = normalizing.join()
     ops.hand_over(toolpath)  # the moves' positions kept once, by the Toolpath
-    checking = _in_thread(checks.run, ops, profile, lines, report, toolpath)  # numpy lets both run at once
+    checking = _in_thread(_checked, ops, profile, lines, report, toolpath, plan_ahead)  # numpy lets both
     planning = _in_thread(_estimate, toolpath, ops, the_plan, profile, name="gcode-plan") if plan_ahead \
-        else None  # beside the checks
+        else None  # beside the checks (run at once)
     envelope = checking.join()
     program_checks(toolpath, profile, report)
 
