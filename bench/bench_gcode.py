@@ -188,7 +188,7 @@ def _stages(path: Path) -> tuple[str, str]:
     plan = step("plan", lambda: normalize.plan(ops, profile.motion.arc_tolerance_mm))
     toolpath = step("toolpath", lambda: build(ops, plan.first, profile))
     ops.hand_over(toolpath)  # as load does: the checks read the moves from the toolpath
-    step("checks", lambda: checks.run(ops, profile, lines, report, toolpath))
+    step("checks", lambda: checks.run(ops, profile, lines, report))
     program = Program(str(path), lines, report.finish(), ops, toolpath, profile, plan)
     step("estimate", lambda: program.planned)  # the machine planner's time (estimate.py)
     step("summary", lambda: _summary(program))  # bounds (arcs' quadrants), lengths, time

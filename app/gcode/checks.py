@@ -186,13 +186,22 @@ class _MoveRows:
         return self._tp.source_line
 
 
-def _envelope(ops, profile: MachineProfile, lines: list[str], report: Report) -> Envelope:
-    """The envelope warnings of ``ops`` (an ``Ops`` or ``_MoveRows``); rows found are
-    rows of the ``Ops``."""
-    limits, found, seen = _limits(profile), [], {}
+def _rows(ops: Ops):
+    """What the envelope check reads: the ``Toolpath`` that holds the moves (``_MoveRows``)
+    once ``ops`` has handed them over, else ``ops``."""
+    return ops if ops.handed_to is None else _MoveRows(ops.handed_to, ops)
+
+
+def _first_row(rows, out: np.ndarray) -> int:
+    """The row of ``Ops`` of the first of ``out`` (rows of ``rows``, see ``_rows``)."""
+    return int(out[0]) if isinstance(rows, Ops) else rows.row_of(int(out[0]))
+
+
+def _envelope(ops: Ops, profile: MachineProfile, lines: list[str], report: Report) -> Envelope:
+    """The envelope warnings of ``ops``; the rows found are rows of ``ops``."""
+    limits, found, seen, ops = _limits(profile), [], {}, _rows(ops)
     for name, sign, limit, out, vals, count in _violations(ops, limits, report.limit):
-        first = int(out[0]) if isinstance(ops, Ops) else ops.row_of(int(out[0]))
-        found.append((name, sign, limit, first, float(vals[0]), count))
+        found.append((name, sign, limit, _first_row(ops, out), float(vals[0]), count))
         rel = ">" if sign == "+" else "<"
         for row, value in zip(out[: report.limit].tolist(), vals[: report.limit].tolist(), strict=True):
             line = int(ops.main_lines()[row])  # a subprogram's row: its calling line
@@ -230,8 +239,9 @@ def preflight(ops: Ops, profile: MachineProfile, lines: list[str], offset,
     if known is not None and np.array_equal(known.limits, limits):
         found = known.found  # the load checked these limits already: no second pass
     else:
-        found = [(name, sign, limit, int(rows[0]), float(values[0]), count)
-                 for name, sign, limit, rows, values, count in _violations(ops, limits)]
+        moves = _rows(ops)
+        found = [(name, sign, limit, _first_row(moves, rows), float(values[0]), count)
+                 for name, sign, limit, rows, values, count in _violations(moves, limits)]
     out = []
     for name, sign, limit, row, value, count in found:
         line = int(ops.main_lines()[row])
@@ -266,12 +276,11 @@ def _spindle_speed(ops: Ops, profile: MachineProfile, lines: list[str], report: 
     report.overflow("warning", key, len(rows) - report.limit)
 
 
-def run(ops: Ops, profile: MachineProfile, lines: list[str], report: Report, toolpath=None) -> Envelope:
+def run(ops: Ops, profile: MachineProfile, lines: list[str], report: Report) -> Envelope:
     """Add the envelope, feed and spindle speed warnings of ``ops`` to ``report``; return
-    what the envelope check found (for ``preflight``). ``toolpath``, when given, is the
-    ``Toolpath`` built from ``ops``: the envelope check reads the moves' positions from it
-    (``Ops.hand_over`` may have given them away)."""
-    envelope = _envelope(ops if toolpath is None else _MoveRows(toolpath, ops), profile, lines, report)
+    what the envelope check found (for ``preflight``). Once ``ops`` has handed the moves'
+    positions to the Toolpath (``Ops.hand_over``) the envelope check reads them there."""
+    envelope = _envelope(ops, profile, lines, report)
     _feed_zero(ops, lines, report)
     _spindle_speed(ops, profile, lines, report)
     return envelope

@@ -111,6 +111,12 @@ class Ops:
             column.flags.writeable = False  # the rows' own now: nobody changes them
         self.__dict__["_handed"] = (moves, events, own)
 
+    @property
+    def handed_to(self):
+        """The ``Toolpath`` that holds the moves' positions (``hand_over``), or None."""
+        handed = self.__dict__.get("_handed")
+        return None if handed is None else handed[0]
+
     def __getattr__(self, name: str):
         handed = self.__dict__.get("_handed")
         if handed is None or name not in HANDED:

@@ -161,7 +161,7 @@ def _checked(ops: Ops, profile: MachineProfile, lines: Lines, report: Report, to
              bounds: bool) -> checks.Envelope:
     """``checks.run``; then, with ``bounds``, the toolpath's bounds (for a caller that reads
     them at once, worked out beside the planner's estimate, which takes longer)."""
-    envelope = checks.run(ops, profile, lines, report, toolpath)
+    envelope = checks.run(ops, profile, lines, report)
     if bounds:
         toolpath.bounds  # noqa: B018 (a cached property)
     return envelope

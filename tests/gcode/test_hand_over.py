@@ -79,3 +79,14 @@ def test_the_command_line_puts_its_threads_on_one_heap_before_loading(monkeypatc
     assert cli.main(["check", str(path)]) == 0
     assert calls == [(program.M_ARENA_MAX, 1, 0)]  # set before the load (and its threads) began
     assert "moves: " in capsys.readouterr().out
+
+
+def test_the_preflight_reads_the_moves_from_the_toolpath(monkeypatch):
+    from app.gcode.checks import preflight
+
+    kept, program = _kept(monkeypatch, PROGRAMS[1]), load_text(PROGRAMS[1])
+    for offset in (program.profile.travel.work_offset(), (5.0, -7.0, -40.0)):
+        got = preflight(program.ops, program.profile, program.lines, offset, program.envelope)
+        assert got and got == preflight(kept.ops, kept.profile, kept.lines, offset, kept.envelope)
+        assert [d.line for d in got] == [d.line for d in preflight(kept.ops, kept.profile, kept.lines, offset)]
+    assert "end" not in program.ops.__dict__ and "center" not in program.ops.__dict__  # nothing put back
