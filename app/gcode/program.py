@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import threading
 from dataclasses import dataclass, field
-from functools import cached_property
+from functools import cached_property, partial
 from pathlib import Path
 
 import numpy as np
@@ -311,12 +311,13 @@ def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfi
     report = Report()
     settings = (block_delete, systems)
     start = _start_state(profile, tools, *settings, origin)
-    percent = percent_lines(data[0])
+    line_of = partial(lines.line_of, data[0])  # from the chunk table: no count of every newline
+    percent = percent_lines(data[0], line_of)
     closing = percent[1]
     stop = closing - 1 if closing else len(lines)  # nothing after the closing % runs
     expand = sniff.needs_expander(data[0])
     if not expand:  # the expander stops at an ABORT when its flow reaches it
-        aborted, text = abort_line(data[0])
+        aborted, text = abort_line(data[0], line_of)
         if aborted and aborted <= stop:
             stop = aborted - 1
             report.error(aborted, 0, abort_message(text))
