@@ -347,6 +347,7 @@ def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfi
         else None  # beside the checks (run at once)
     envelope = checking.join()
     program_checks(toolpath, profile, report)
+    ops.forget_starts()  # the Toolpath has the moves' starts
 
     def again(position) -> Program:
         return _interpret(lines, [lines.encoded()], name, profile, tools, folder, *settings, position)
