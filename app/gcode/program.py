@@ -157,13 +157,12 @@ def _estimate(toolpath: Toolpath, ops: Ops, the_plan: normalize.Plan, profile: M
     return estimate(toolpath, EventLines(ops, the_plan), profile)
 
 
-def _checked(ops: Ops, profile: MachineProfile, lines: Lines, report: Report, toolpath: Toolpath,
-             bounds: bool) -> checks.Envelope:
-    """``checks.run``; then, with ``bounds``, the toolpath's bounds (for a caller that reads
-    them at once, worked out beside the planner's estimate, which takes longer)."""
+def _checked(ops: Ops, profile: MachineProfile, lines: Lines, report: Report,
+             toolpath: Toolpath) -> checks.Envelope:
+    """``checks.run``, then the toolpath's bounds (for a caller that reads them at once:
+    worked out beside the planner's estimate, which takes longer)."""
     envelope = checks.run(ops, profile, lines, report)
-    if bounds:
-        toolpath.bounds  # noqa: B018 (a cached property)
+    toolpath.bounds  # noqa: B018 (a cached property)
     return envelope
 
 
@@ -307,7 +306,9 @@ def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfi
                systems=None, origin=ORIGIN, plan_ahead: bool = False) -> Program:
     """Interpret ``lines`` from ``origin`` (work mm): the expander when the bytes in
     ``data`` need it, else the fast path; ``plan_ahead``: the planner's estimate starts on
-    a thread as soon as the toolpath is there (``Program.planned`` then waits for it)."""
+    a thread as soon as the toolpath is there (``Program.planned`` then waits for it), and
+    the checks wait for the toolpath and run beside it (less memory at the peak; without
+    it they run beside the plan and the toolpath: the window's load returns sooner)."""
     report = Report()
     settings = (block_delete, systems)
     start = _start_state(profile, tools, *settings, origin)
@@ -337,15 +338,19 @@ def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfi
             _give_back_free_memory()  # the scan's many chunk-sized temporaries
     report_tail(lines, percent, ended, report)
     ops.origin = tuple(float(v) for v in origin)
-    ops.starts()  # computed once, before two threads read it
+    ops.starts()  # computed once, before the threads read it
+    early = None if plan_ahead else _in_thread(checks.run, ops, profile, lines, report)  # the window's:
+    # beside the plan and the toolpath (numpy lets them run at once), as soon as can be
     normalizing = _in_thread(normalize.plan, ops, profile.motion.arc_tolerance_mm, name="gcode-normalize")
-    toolpath = build(ops, lambda: normalizing.join().first, profile)  # numpy lets both run at once
+    toolpath = build(ops, lambda: normalizing.join().first, profile)
     the_plan = normalizing.join()
+    envelope = early.join() if early is not None else None
     ops.hand_over(toolpath)  # the moves' positions kept once, by the Toolpath
-    checking = _in_thread(_checked, ops, profile, lines, report, toolpath, plan_ahead)  # numpy lets both
-    planning = _in_thread(_estimate, toolpath, ops, the_plan, profile, name="gcode-plan") if plan_ahead \
-        else None  # beside the checks (run at once)
-    envelope = checking.join()
+    planning = None
+    if plan_ahead:  # cnc-gcode check: the checks, on the toolpath, beside the planner's estimate
+        checking = _in_thread(_checked, ops, profile, lines, report, toolpath)
+        planning = _in_thread(_estimate, toolpath, ops, the_plan, profile, name="gcode-plan")
+        envelope = checking.join()
     program_checks(toolpath, profile, report)
     ops.forget_starts()  # the Toolpath has the moves' starts
 

@@ -91,3 +91,17 @@ def test_the_preflight_reads_the_moves_from_the_toolpath(monkeypatch):
         fresh = preflight(kept.ops, kept.profile, kept.lines, offset)  # not the load's envelope
         assert [d.line for d in got] == [d.line for d in fresh]
     assert "end" not in program.ops.__dict__ and "center" not in program.ops.__dict__  # nothing put back
+
+
+@pytest.mark.parametrize("text", PROGRAMS)
+def test_checks_on_the_toolpath_beside_the_estimate_find_the_same(monkeypatch, tmp_path, text):
+    from app.gcode import load
+
+    path = tmp_path / "p.ngc"
+    path.write_text(text)
+    kept, program = _kept(monkeypatch, text), load(path, plan_ahead=True)  # cnc-gcode check's load
+    assert "_handed" in program.ops.__dict__
+    assert [str(d) for d in program.diagnostics] == [str(d) for d in kept.diagnostics]
+    assert program.envelope.found == kept.envelope.found
+    np.testing.assert_array_equal(np.array(program.toolpath.bounds), np.array(kept.toolpath.bounds))
+    assert program.planned.total == kept.planned.total
