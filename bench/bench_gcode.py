@@ -159,8 +159,8 @@ def _stages(path: Path) -> tuple[str, str]:
     lines; interpret checks their radii; plan rounds them as sent and counts chords;
     toolpath their lengths; estimate their tangents and speed limits; summary their
     quadrant points for the bounds); and where the time goes, largest share first.
-    One process on one core: ``cnc-gcode check`` runs the checks beside plan and
-    toolpath, the estimate beside the last checks, and shares a big scan with a
+    One process on one core: ``cnc-gcode check`` runs the plan beside the toolpath, the
+    checks (and the summary's bounds) beside the estimate, and shares a big scan with a
     forked child on a quiet machine."""
     from app.gcode import bulk, checks, normalize, runner
     from app.gcode.cli import _summary
@@ -185,9 +185,10 @@ def _stages(path: Path) -> tuple[str, str]:
     step("interpret", partial(runner.run, lines, scan, buffer, report))
     del scan  # as load does: the scan table is freed before the rest
     ops = step("ops", buffer.finish)
-    step("checks", lambda: checks.run(ops, profile, lines, report))
     plan = step("plan", lambda: normalize.plan(ops, profile.motion.arc_tolerance_mm))
     toolpath = step("toolpath", lambda: build(ops, plan.first, profile))
+    ops.hand_over(toolpath)  # as load does: the checks read the moves from the toolpath
+    step("checks", lambda: checks.run(ops, profile, lines, report))
     program = Program(str(path), lines, report.finish(), ops, toolpath, profile, plan)
     step("estimate", lambda: program.planned)  # the machine planner's time (estimate.py)
     step("summary", lambda: _summary(program))  # bounds (arcs' quadrants), lengths, time

@@ -22,7 +22,7 @@ from app.profile import MachineProfile
 from .arcs import arc_box, in_plane
 from .diagnostics import ERROR, Diagnostic, Report
 from .lexer import lex_line
-from .ops import ARC_CCW, ARC_CW, FEED, PLANE_AXES, SPINDLE, Ops
+from .ops import ARC_CCW, ARC_CW, DWELL, FEED, PLANE_AXES, SPINDLE, Ops
 
 BLOCK = 1 << 16  # rows the envelope check takes at a time
 
@@ -112,8 +112,8 @@ def _violations(ops: Ops, limits: np.ndarray, shown: int = 1):
         for axis, sign, limit, rows, values in _block(ops, limits, shown, first, first + BLOCK):
             entry = found.setdefault((axis, sign), [limit, [], [], 0])
             room = max(shown - sum(len(r) for r in entry[1]), 0)
-            entry[1].append(rows[:room])
-            entry[2].append(values[:room])
+            entry[1].append(rows[:room].copy())  # a copy: a view would keep the block's rows
+            entry[2].append(values[:room].copy())
             entry[3] += len(rows)
     for axis in range(3):
         for sign in "+-":
@@ -164,10 +164,44 @@ def _exact_arcs(ops: Ops, moves: np.ndarray, rows: np.ndarray, low, high, exact)
         exact[rows] = True
 
 
+class _MoveRows:
+    """A ``Toolpath`` under the names the envelope check reads from ``Ops``: its rows are
+    the moves, the events left out."""
+
+    def __init__(self, toolpath, ops: Ops):
+        self.kind, self.end, self.center = toolpath.kind, toolpath.end, toolpath.center
+        self.plane, self.turn, self._tp, self._ops = toolpath.plane, toolpath.turn, toolpath, ops
+
+    def row_of(self, move: int) -> int:
+        """The row of ``Ops`` that move ``move`` comes from."""
+        return int(np.flatnonzero(self._ops.kind <= DWELL)[move])
+
+    def __len__(self) -> int:
+        return len(self.kind)
+
+    def starts(self) -> np.ndarray:
+        return self._tp.start
+
+    def main_lines(self) -> np.ndarray:
+        return self._tp.source_line
+
+
+def _rows(ops: Ops):
+    """What the envelope check reads: the ``Toolpath`` that holds the moves (``_MoveRows``)
+    once ``ops`` has handed them over, else ``ops``."""
+    return ops if ops.handed_to is None else _MoveRows(ops.handed_to, ops)
+
+
+def _first_row(rows, out: np.ndarray) -> int:
+    """The row of ``Ops`` of the first of ``out`` (rows of ``rows``, see ``_rows``)."""
+    return int(out[0]) if isinstance(rows, Ops) else rows.row_of(int(out[0]))
+
+
 def _envelope(ops: Ops, profile: MachineProfile, lines: list[str], report: Report) -> Envelope:
-    limits, found, seen = _limits(profile), [], {}
+    """The envelope warnings of ``ops``; the rows found are rows of ``ops``."""
+    limits, found, seen, ops = _limits(profile), [], {}, _rows(ops)
     for name, sign, limit, out, vals, count in _violations(ops, limits, report.limit):
-        found.append((name, sign, limit, int(out[0]), float(vals[0]), count))
+        found.append((name, sign, limit, _first_row(ops, out), float(vals[0]), count))
         rel = ">" if sign == "+" else "<"
         for row, value in zip(out[: report.limit].tolist(), vals[: report.limit].tolist(), strict=True):
             line = int(ops.main_lines()[row])  # a subprogram's row: its calling line
@@ -205,8 +239,9 @@ def preflight(ops: Ops, profile: MachineProfile, lines: list[str], offset,
     if known is not None and np.array_equal(known.limits, limits):
         found = known.found  # the load checked these limits already: no second pass
     else:
-        found = [(name, sign, limit, int(rows[0]), float(values[0]), count)
-                 for name, sign, limit, rows, values, count in _violations(ops, limits)]
+        moves = _rows(ops)
+        found = [(name, sign, limit, _first_row(moves, rows), float(values[0]), count)
+                 for name, sign, limit, rows, values, count in _violations(moves, limits)]
     out = []
     for name, sign, limit, row, value, count in found:
         line = int(ops.main_lines()[row])
@@ -243,7 +278,8 @@ def _spindle_speed(ops: Ops, profile: MachineProfile, lines: list[str], report: 
 
 def run(ops: Ops, profile: MachineProfile, lines: list[str], report: Report) -> Envelope:
     """Add the envelope, feed and spindle speed warnings of ``ops`` to ``report``; return
-    what the envelope check found (for ``preflight``)."""
+    what the envelope check found (for ``preflight``). Once ``ops`` has handed the moves'
+    positions to the Toolpath (``Ops.hand_over``) the envelope check reads them there."""
     envelope = _envelope(ops, profile, lines, report)
     _feed_zero(ops, lines, report)
     _spindle_speed(ops, profile, lines, report)

@@ -35,7 +35,7 @@ from app.i18n import N_, localize, msg  # noqa: E402
 
 from . import forked, workers  # noqa: E402
 from .moves import to_jsonl  # noqa: E402
-from .program import Program, load  # noqa: E402
+from .program import Program, load, one_heap  # noqa: E402
 
 
 def _summary(p: Program) -> str:
@@ -117,10 +117,12 @@ SEVERITIES = (N_("error"), N_("warning"))
 
 def _load(path: str, block_delete: bool = False, plan_ahead: bool = False) -> Program:
     """``load`` without the helper process: for a one-shot run its start-up costs more
-    than the part of the scan it would take over (the setting is restored after);
+    than the part of the scan it would take over (the setting is restored after), its
+    threads on one heap (``one_heap``);
     ``plan_ahead`` for ``check``, which prints the planner's estimate."""
     was = workers.enabled()
     workers.set_enabled(False)
+    one_heap()
     try:
         with forked.allowed():  # a big file's scan shared with a forked child (forked.py)
             return load(path, block_delete=block_delete, plan_ahead=plan_ahead)

@@ -224,7 +224,7 @@ def _geometry(tp, moves: np.ndarray, at: np.ndarray, is_move: np.ndarray, accel:
         end_dir, v = np.concatenate((last_dir, end_dir)), np.concatenate((last_v, v_nom))
         last_dir, last_v = end_dir[-1:], v[-1:]
         follows = np.flatnonzero((place > 0) & is_move[np.maximum(place - 1, 0)])
-        vj = junction_speeds(end_dir[follows], start_dir[follows], accel, deviation)
+        vj = junction_speeds(end_dir.take(follows, axis=0), start_dir.take(follows, axis=0), accel, deviation)
         vj = np.minimum(np.minimum(vj, v[follows + 1]), v[follows])
         junction_sq[place[follows]] = vj * vj
     return chain_len, junction_sq
@@ -262,12 +262,14 @@ def _block_geometry(tp, rows: np.ndarray, accel: float, length: np.ndarray, firs
     start_dir = line_tangents(start, end)
     end_dir = start_dir.copy()
     if len(arc):
-        sweep = np.sqrt(np.maximum(length[arc] ** 2 - (end[arc, 2] - start[arc, 2]) ** 2, 0.0))
+        arc_start, arc_end, arc_len = start.take(arc, axis=0), end.take(arc, axis=0), length[arc]
+        dz = arc_end[:, 2] - arc_start[:, 2]
+        sweep = np.sqrt(np.maximum(arc_len ** 2 - dz ** 2, 0.0))
         sweep = np.where(kind[arc] == ARC_CW, -1.0, 1.0) * sweep / np.where(radius > 0, radius, 1.0)
-        per_mm = sweep / np.where(length[arc] > 0, length[arc], 1.0)
-        dz_per_mm = (end[arc, 2] - start[arc, 2]) / np.where(length[arc] > 0, length[arc], 1.0)
-        start_dir[arc] = helix_tangents(start[arc], center, per_mm, dz_per_mm)
-        end_dir[arc] = helix_tangents(end[arc], center, per_mm, dz_per_mm)
+        arc_len = np.where(arc_len > 0, arc_len, 1.0)
+        per_mm, dz_per_mm = sweep / arc_len, dz / arc_len
+        start_dir[arc] = helix_tangents(arc_start, center, per_mm, dz_per_mm)
+        end_dir[arc] = helix_tangents(arc_end, center, per_mm, dz_per_mm)
     return length, v_nom, start_dir, end_dir
 
 

@@ -22,23 +22,40 @@ STRAIGHT = 0.999999  # the planner's cosine beyond which a corner is straight on
 def line_tangents(start: np.ndarray, end: np.ndarray) -> np.ndarray:
     """Unit directions (n, 3) of straight moves (zero vectors for zero lengths)."""
     d = end - start
-    n = np.sqrt((d * d).sum(axis=1))
+    n = np.sqrt(_dot(d, d))
     return d / np.where(n > 0, n, 1.0)[:, None]
+
+
+def _dot(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """Row-wise dot products of (n, 3) arrays: the bits of ``(a * b).sum(axis=1)`` (the same
+    sums in the same order), a tenth of its time (a reduction over rows of three numbers
+    costs numpy a loop per row; columns are one loop each)."""
+    out = a[:, 0] * b[:, 0]
+    out += a[:, 1] * b[:, 1]
+    out += a[:, 2] * b[:, 2]
+    return out
 
 
 def helix_tangents(point, center, sweep_per_mm, dz_per_mm) -> np.ndarray:
     """Unit tangents (n, 3) of XY arcs/helices at ``point``: the angle grows by
     ``sweep_per_mm`` (signed, rad/mm) and z by ``dz_per_mm`` along the path."""
     rx, ry = point[:, 0] - center[:, 0], point[:, 1] - center[:, 1]
-    t = np.stack([-ry * sweep_per_mm, rx * sweep_per_mm, dz_per_mm], axis=1)
-    n = np.sqrt((t * t).sum(axis=1))
-    return t / np.where(n > 0, n, 1.0)[:, None]
+    tx, ty = -ry * sweep_per_mm, rx * sweep_per_mm
+    n = tx * tx  # the squared norm, summed in ``_dot``'s order
+    n += ty * ty
+    n += dz_per_mm * dz_per_mm
+    np.sqrt(n, out=n)
+    n[~(n > 0)] = 1.0
+    out = np.empty((len(n), 3))
+    for k, column in enumerate((tx, ty, dz_per_mm)):  # column by column: no (n, 3) temporaries
+        np.divide(column, n, out=out[:, k])
+    return out
 
 
 def junction_speeds(end_dir: np.ndarray, start_dir: np.ndarray, accel: float, deviation: float) -> np.ndarray:
     """Largest speed through each corner from ``end_dir[i]`` into ``start_dir[i]`` (grbl's
     junction deviation, as the planner's ``junction_speed``); inf straight on, 0 reversed."""
-    cos_theta = -(end_dir * start_dir).sum(axis=1)
+    cos_theta = -_dot(end_dir, start_dir)
     sin_half = np.sqrt(np.clip(0.5 * (1.0 - cos_theta), 0.0, 1.0))
     with np.errstate(divide="ignore", invalid="ignore"):
         v = np.sqrt(accel * deviation * sin_half / (1.0 - sin_half))

@@ -30,6 +30,8 @@ PLANE_NAMES = ("XY", "XZ", "YZ")
 PLANE_AXES = ((0, 1, 2), (2, 0, 1), (1, 2, 0))
 
 _NAN3 = (float("nan"),) * 3
+HANDED = ("line", "end", "center")  # the columns ``Ops.hand_over`` gives to the Toolpath
+HANDED_KINDS = DWELL  # rows of these kinds and below are the Toolpath's
 
 
 @dataclass
@@ -90,6 +92,46 @@ class Ops:
     def forget_starts(self) -> None:
         """Free the cached starts (a later ``starts()`` computes them again)."""
         self._starts = None
+
+    def hand_over(self, moves) -> None:
+        """Let ``moves`` (a ``Toolpath`` built from these rows, with its own copies) hold
+        the positions of the move rows: this object drops its ``end`` and ``center``
+        (and ``line``, when every row is from the main program) and keeps only the event
+        rows' own; on first use they are put back together (``__getattr__``). A program
+        whose events stand between its moves thus holds its positions once, not twice."""
+        if np.may_share_memory(moves.center, self.center):  # its columns are views of these
+            return
+        events = np.flatnonzero(self.kind > HANDED_KINDS)
+        names = HANDED if self.source is None else HANDED[1:]
+        own = {name: getattr(self, name)[events] for name in names}
+        self._starts = None
+        for name in names:
+            delattr(self, name)
+        for column in (moves.end, moves.center, moves.source_line):
+            column.flags.writeable = False  # the rows' own now: nobody changes them
+        self.__dict__["_handed"] = (moves, events, own)
+
+    @property
+    def handed_to(self):
+        """The ``Toolpath`` that holds the moves' positions (``hand_over``), or None."""
+        handed = self.__dict__.get("_handed")
+        return None if handed is None else handed[0]
+
+    def __getattr__(self, name: str):
+        handed = self.__dict__.get("_handed")
+        if handed is None or name not in HANDED:
+            raise AttributeError(name)
+        moves, events, own = handed
+        rows = np.flatnonzero(self.kind <= HANDED_KINDS)
+        of_moves = {"line": moves.source_line, "end": moves.end, "center": moves.center}[name]
+        if name == "end":  # the tail of an array of points, as ``OpBuffer.finish`` makes it
+            column = np.empty((len(self.kind) + 1, 3))[1:]
+        else:
+            column = np.empty((len(self.kind), *of_moves.shape[1:]), of_moves.dtype)
+        column[rows] = of_moves
+        column[events] = own[name]
+        self.__dict__[name] = column
+        return column
 
 
 @dataclass

@@ -28,13 +28,19 @@ def abort_message(text: str) -> str:
     return msg("(ABORT) the program stops here: {text}", text=text.strip())
 
 
-def abort_line(raw: bytes) -> tuple[int, str]:
+def _counted(raw: bytes):
+    """``line_of`` for ``raw``: the 1-based line of a byte offset, newlines counted."""
+    return lambda offset: raw.count(b"\n", 0, offset) + 1
+
+
+def abort_line(raw: bytes, line_of=None) -> tuple[int, str]:
     """(1-based line, text) of the first ``(ABORT, text)`` comment of a plain program (it
-    stops there, as LinuxCNC stops with the text), or (0, "")."""
-    found = _ABORT.search(raw)
+    stops there, as LinuxCNC stops with the text), or (0, ""). ``line_of(offset)``: the
+    1-based line of a byte offset of ``raw``, if the caller knows a quicker way."""
+    found = _ABORT.search(raw) if b"," in raw else None  # no comma, no (ABORT, ...): a memchr, not a regex
     if found is None:
         return 0, ""
-    return raw.count(b"\n", 0, found.start()) + 1, found.group(1).decode("utf-8", "replace")
+    return (line_of or _counted(raw))(found.start()), found.group(1).decode("utf-8", "replace")
 
 
 def _line_start(raw: bytes, pos: int) -> int:
@@ -51,9 +57,10 @@ def _percent_lines(raw: bytes):
         pos = raw.find(b"%", pos + 1)
 
 
-def percent_lines(raw: bytes) -> tuple[int, int, int]:
+def percent_lines(raw: bytes, line_of=None) -> tuple[int, int, int]:
     """1-based lines of the opening ``%``, of the closing one, and of the first ``%`` line
-    that is neither (a program that does not open with ``%``); 0 where there is none."""
+    that is neither (a program that does not open with ``%``); 0 where there is none.
+    ``line_of`` as for ``abort_line``."""
     found = _percent_lines(raw)
     first = next(found, -1)
     if first < 0:
@@ -62,7 +69,9 @@ def percent_lines(raw: bytes) -> tuple[int, int, int]:
     if raw[:first].strip(_BLANK):
         return 0, 0, line
     second = next(found, -1)
-    return line, (raw.count(b"\n", first, second) + line if second >= 0 else 0), 0
+    if second < 0:
+        return line, 0, 0
+    return line, (line_of(second) if line_of else raw.count(b"\n", first, second) + line), 0
 
 
 def report_tail(lines, found: tuple[int, int, int], ended: int, report: Report) -> None:

@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import threading
 from dataclasses import dataclass, field
-from functools import cached_property
+from functools import cached_property, partial
 from pathlib import Path
 
 import numpy as np
@@ -157,6 +157,15 @@ def _estimate(toolpath: Toolpath, ops: Ops, the_plan: normalize.Plan, profile: M
     return estimate(toolpath, EventLines(ops, the_plan), profile)
 
 
+def _checked(ops: Ops, profile: MachineProfile, lines: Lines, report: Report,
+             toolpath: Toolpath) -> checks.Envelope:
+    """``checks.run``, then the toolpath's bounds (for a caller that reads them at once:
+    worked out beside the planner's estimate, which takes longer)."""
+    envelope = checks.run(ops, profile, lines, report)
+    toolpath.bounds  # noqa: B018 (a cached property)
+    return envelope
+
+
 def _split(text: str) -> list[str]:
     lines = text.split("\n")
     if lines and lines[-1] == "":
@@ -297,16 +306,19 @@ def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfi
                systems=None, origin=ORIGIN, plan_ahead: bool = False) -> Program:
     """Interpret ``lines`` from ``origin`` (work mm): the expander when the bytes in
     ``data`` need it, else the fast path; ``plan_ahead``: the planner's estimate starts on
-    a thread as soon as the toolpath is there (``Program.planned`` then waits for it)."""
+    a thread as soon as the toolpath is there (``Program.planned`` then waits for it), and
+    the checks wait for the toolpath and run beside it (less memory at the peak; without
+    it they run beside the plan and the toolpath: the window's load returns sooner)."""
     report = Report()
     settings = (block_delete, systems)
     start = _start_state(profile, tools, *settings, origin)
-    percent = percent_lines(data[0])
+    line_of = partial(lines.line_of, data[0])  # from the chunk table: no count of every newline
+    percent = percent_lines(data[0], line_of)
     closing = percent[1]
     stop = closing - 1 if closing else len(lines)  # nothing after the closing % runs
     expand = sniff.needs_expander(data[0])
     if not expand:  # the expander stops at an ABORT when its flow reaches it
-        aborted, text = abort_line(data[0])
+        aborted, text = abort_line(data[0], line_of)
         if aborted and aborted <= stop:
             stop = aborted - 1
             report.error(aborted, 0, abort_message(text))
@@ -326,16 +338,21 @@ def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfi
             _give_back_free_memory()  # the scan's many chunk-sized temporaries
     report_tail(lines, percent, ended, report)
     ops.origin = tuple(float(v) for v in origin)
-    ops.starts()  # computed once, before two threads read it
-    checking = _in_thread(checks.run, ops, profile, lines, report)  # numpy lets both run at once
-    the_plan = normalize.plan(ops, profile.motion.arc_tolerance_mm)
-    toolpath = build(ops, the_plan.first, profile)
-    planning = _in_thread(_estimate, toolpath, ops, the_plan, profile, name="gcode-plan") if plan_ahead \
-        else None  # beside the last checks
-    envelope = checking.join()
+    ops.starts()  # computed once, before the threads read it
+    early = None if plan_ahead else _in_thread(checks.run, ops, profile, lines, report)  # the window's:
+    # beside the plan and the toolpath (numpy lets them run at once), as soon as can be
+    normalizing = _in_thread(normalize.plan, ops, profile.motion.arc_tolerance_mm, name="gcode-normalize")
+    toolpath = build(ops, lambda: normalizing.join().first, profile)
+    the_plan = normalizing.join()
+    envelope = early.join() if early is not None else None
+    ops.hand_over(toolpath)  # the moves' positions kept once, by the Toolpath
+    planning = None
+    if plan_ahead:  # cnc-gcode check: the checks, on the toolpath, beside the planner's estimate
+        checking = _in_thread(_checked, ops, profile, lines, report, toolpath)
+        planning = _in_thread(_estimate, toolpath, ops, the_plan, profile, name="gcode-plan")
+        envelope = checking.join()
     program_checks(toolpath, profile, report)
-    ops.forget_starts()  # the Toolpath has its own copy of the moves' starts
-
+    ops.forget_starts()  # the Toolpath has the moves' starts
 
     def again(position) -> Program:
         return _interpret(lines, [lines.encoded()], name, profile, tools, folder, *settings, position)
@@ -344,17 +361,37 @@ def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfi
                    start=where, _again=again, _planning=planning)
 
 
+def _glibc(name: str):
+    """The C library's function ``name`` (glibc's malloc tuning), or None where there is none."""
+    import ctypes
+
+    try:
+        return getattr(ctypes.CDLL(None), name)
+    except (AttributeError, OSError):
+        return None
+
+
 def _give_back_free_memory() -> None:
     """Return the heap's free pages to the system (glibc's ``malloc_trim``; elsewhere
     nothing): freed chunks in the middle of the heap otherwise stay resident, and the
     rest of a big load would add its peak on top of them."""
-    import ctypes
+    trim = _glibc("malloc_trim")
+    if trim is not None:
+        trim(0)
 
-    try:
-        trim = ctypes.CDLL(None).malloc_trim
-    except (AttributeError, OSError):
-        return
-    trim(0)
+
+M_ARENA_MAX = -8  # glibc's mallopt parameter
+
+
+def one_heap() -> None:
+    """Let every thread allocate from the main heap (glibc's ``M_ARENA_MAX`` 1; elsewhere
+    nothing), for a process that loads one program, before it starts a thread. A load's
+    threads (the checks beside the estimate) would each get a heap of its own, where freed
+    temporaries stay resident: 25-30 MB more at the peak of a 1 M-line file, for no gain
+    in time (they do numpy's work between a few allocations)."""
+    mallopt = _glibc("mallopt")
+    if mallopt is not None:
+        mallopt(M_ARENA_MAX, 1)
 
 
 class _in_thread(threading.Thread):

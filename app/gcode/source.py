@@ -40,6 +40,7 @@ class Lines(Sequence):
         self.chunks = chunks(data) if lines is None else []  # also the fast path's chunks
         self._firsts = np.cumsum([0] + [c[2] for c in self.chunks])  # first line of each chunk
         self._ends: dict[int, np.ndarray] = {}  # chunk -> offsets of its newlines (as read)
+        self._chunk_starts: np.ndarray | None = None
         if lines is None:
             self._count = int(self._firsts[-1]) + (0 if data.endswith(b"\n") or not data else 1)
         else:
@@ -65,6 +66,20 @@ class Lines(Sequence):
             start, end = (int(ends[j - 1]) + 1 if j else begin), int(ends[j])
         line = self._data[start:end].decode("utf-8")
         return line[:-1] if line.endswith("\r") else line
+
+    def line_of(self, data: bytes, offset: int) -> int:
+        """The 1-based line of byte ``offset`` of ``data``: from the chunk table when ``data``
+        is the bytes these lines hold (newlines counted in one chunk), else counted."""
+        if data is not self._data or not self.chunks:
+            return data.count(b"\n", 0, offset) + 1
+        k = int(np.searchsorted(self._starts(), offset, "right")) - 1
+        return int(self._firsts[k]) + data.count(b"\n", self.chunks[k][0], offset) + 1
+
+    def _starts(self) -> np.ndarray:
+        """Offsets of the chunks' first bytes (found once)."""
+        if self._chunk_starts is None:
+            self._chunk_starts = np.array([start for start, _, _ in self.chunks], np.int64)
+        return self._chunk_starts
 
     def _chunk_ends(self, k: int) -> np.ndarray:
         """Offsets of chunk ``k``'s newlines, found once (a listing reads nearby lines)."""

@@ -182,8 +182,9 @@ def _picker(rows: np.ndarray):
     return (lambda column: column.take(rows, axis=0)), False
 
 
-def build(ops: Ops, device_first: np.ndarray, profile: MachineProfile) -> Toolpath:
-    """The Toolpath of interpreted rows; ``device_first`` from the normaliser's plan. Its
+def build(ops: Ops, device_first, profile: MachineProfile) -> Toolpath:
+    """The Toolpath of interpreted rows; ``device_first`` from the normaliser's plan, or a
+    function that gives it (called last: the plan may be worked out meanwhile). Its
     position, kind and line columns may be read-only views of ``ops``'s and ``device_first``."""
     rows = np.flatnonzero(ops.kind <= DWELL)
     pick, views = _picker(rows)
@@ -197,7 +198,8 @@ def build(ops: Ops, device_first: np.ndarray, profile: MachineProfile) -> Toolpa
         value = ops.value.take(rows[part])
         feed[part], length[part], time[part] = _timing(start[part], end[part], center[part], kind[part],
                                                        plane[part], turn[part], value, motion)
-    source, device = pick(ops.main_lines()), pick(device_first)
+    source = pick(ops.main_lines())
+    device = pick(device_first() if callable(device_first) else device_first)
     return Toolpath(start, end, kind, center, plane, turn, source, device, feed, length, time)
 
 

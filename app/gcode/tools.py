@@ -20,7 +20,6 @@ import math
 from dataclasses import asdict, dataclass
 from pathlib import Path
 
-from app.atomic import aside_note, write_atomic
 from app.i18n import Message, msg
 
 from .reading import SourceError, load_json
@@ -111,6 +110,8 @@ def load_tools(path: Path) -> LoadedTools:
     except FileNotFoundError:
         return LoadedTools({})
     except SourceError as exc:
+        from app.atomic import aside_note  # here: loading a program never needs it (nor tempfile)
+
         damaged = msg("{path}: the tool table is damaged ({error})", path=str(path), error=_reason(exc))
         return LoadedTools({}, aside_note(path, damaged))
     except OSError as exc:
@@ -130,4 +131,6 @@ def _reason(exc: Exception):
 
 def save_tools(path: Path, tools: dict[int, Tool]) -> None:
     """Write the table atomically (``app.atomic.write_atomic``); OSError if it cannot."""
+    from app.atomic import write_atomic  # here: loading a program never needs it (nor tempfile)
+
     write_atomic(path, json.dumps(to_data(tools), indent=2))

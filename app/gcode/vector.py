@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .arcs import RADIUS_TOL, spiral_refused
+from .arcs import RADIUS_TOL, SPIRAL_ABS, spiral_refused
 from .bulk import Scan
 from .limits import bad_rows
 from .motion import LIMIT_MM
@@ -85,13 +85,18 @@ def _arc_bad(sx, sy, ex, ey, cx, cy, inch) -> np.ndarray:
     """LinuxCNC's refusals of centre-format arcs; coordinates (columns) in program units."""
     r1 = np.hypot(cx - sx, cy - sy)
     r2 = np.hypot(cx - ex, cy - ey)
-    tol = np.where(inch, RADIUS_TOL[True], RADIUS_TOL[False])
-    zero = (r1 < tol) | (r2 < tol)
-    err, r = np.abs(r1 - r2), np.maximum(r1, r2)
-    refused = spiral_refused(err, r, False)
-    if inch.any():
-        refused = np.where(inch, spiral_refused(err, r, True), refused)
-    return zero | refused
+    some_inch = inch.any()
+    tol = np.where(inch, RADIUS_TOL[True], RADIUS_TOL[False]) if some_inch else RADIUS_TOL[False]
+    bad = (r1 < tol) | (r2 < tol)
+    err = np.abs(r1 - r2)
+    odd = np.flatnonzero(err > min(SPIRAL_ABS.values()))  # no other arc can be refused as a spiral
+    if len(odd):
+        err, r, inch = err[odd], np.maximum(r1[odd], r2[odd]), inch[odd]
+        refused = spiral_refused(err, r, False)
+        if some_inch:
+            refused = np.where(inch, spiral_refused(err, r, True), refused)
+        bad[odd] |= refused
+    return bad
 
 
 def _geometry(run: _Run, stop: int, rows: np.ndarray, state: State):
@@ -136,7 +141,8 @@ def run(scan: Scan, a: int, b: int, state: State, ops: OpBuffer) -> tuple[State,
     moving = (r.has_axis[:stop] | r.arc[:stop]) & (r.to_be[:stop] >= 0)
     rows = np.flatnonzero(moving | event)
     end, ends, center, arc_bad = _geometry(r, stop, rows, state)
-    arc_bad |= (np.abs(ends) > LIMIT_MM).any(axis=1)  # G91 steps adding up: motion.py refuses them
+    for axis in range(3):  # G91 steps adding up: motion.py refuses them (a column at a time:
+        arc_bad |= np.abs(ends[:, axis]) > LIMIT_MM  # numpy's any(axis=1) loops per row)
     if arc_bad.any():
         cut = _first(arc_bad)
         stop, rows, ends, center = int(rows[cut]), rows[:cut], ends[:cut], center[:cut]
