@@ -5,7 +5,9 @@ e.g. ``/dev/pts/5``, what pyserial opens); ``TcpServer(sim, port)`` listens on
 127.0.0.1 (for ``socket://127.0.0.1:PORT``), one client at a time, a new client
 replacing the old. ``start()`` runs two daemon threads: bytes from the far end go to
 ``sim.host_port.write``; bytes the host port receives go to the far end as soon as
-they land. ``close()`` stops both. Bytes nobody reads are dropped, as USB CDC would.
+they land. ``close()`` stops both. A slow reader gets every byte (the sender waits for
+room, as a USB device's endpoint waits for the host to poll it: a frame is never cut
+short); bytes nobody reads for ``DROP_AFTER_S`` are dropped, as USB CDC would.
 """
 
 from __future__ import annotations
@@ -16,11 +18,13 @@ import os
 import select
 import socket
 import threading
+import time
 import tty
 
 import serial
 
 _POLL_S = 0.1
+DROP_AFTER_S = 2.0  # a far end that reads nothing for this long is gone: its bytes are dropped
 
 
 class _Bridge:
@@ -63,7 +67,23 @@ class _Bridge:
         raise NotImplementedError
 
     def _send(self, data: bytes) -> None:
+        """``data`` whole to the far end, waiting for room while it reads (see above)."""
+        view, deadline = memoryview(data), time.monotonic() + DROP_AFTER_S
+        while view and not self._stop.is_set():
+            try:
+                view = view[self._write_some(view):]
+            except (BlockingIOError, InterruptedError, TimeoutError):
+                if time.monotonic() > deadline:
+                    return
+                self._wait_for_room()
+            except OSError:
+                return
+
+    def _write_some(self, data: memoryview) -> int:
         raise NotImplementedError
+
+    def _wait_for_room(self) -> None:
+        """Until the far end may take more bytes (or ``_POLL_S``)."""
 
     def _to_host_port(self, data: bytes) -> None:
         with contextlib.suppress(serial.SerialException):
@@ -94,9 +114,11 @@ class PtyServer(_Bridge):
             if data:
                 self._to_host_port(data)
 
-    def _send(self, data: bytes) -> None:
-        with contextlib.suppress(BlockingIOError, OSError):
-            os.write(self.master, data)
+    def _write_some(self, data: memoryview) -> int:
+        return os.write(self.master, data)
+
+    def _wait_for_room(self) -> None:
+        select.select([], [self.master], [], _POLL_S)
 
     def close(self) -> None:
         super().close()
@@ -142,11 +164,9 @@ class TcpServer(_Bridge):
         if self.client is client:
             self.client = None
 
-    def _send(self, data: bytes) -> None:
+    def _write_some(self, data: memoryview) -> int:
         client = self.client
-        if client is not None:
-            with contextlib.suppress(OSError):
-                client.sendall(data)
+        return client.send(data) if client is not None else len(data)  # (no client: nobody reads)
 
     def close(self) -> None:
         super().close()
