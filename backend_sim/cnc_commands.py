@@ -216,6 +216,8 @@ def _resume(mcu, cmd: Command) -> str:
         return _resume_from(mcu, cmd)
     _cover_closed(mcu)
     _alarm_free(mcu)
+    if mcu.mc.parked is not None:
+        raise Refused("BUSY", "a jog runs at the program stop: resume once it has ended")
     mcu.mc.resume()
     mcu.why = ""
     return ""

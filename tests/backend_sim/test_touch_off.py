@@ -99,6 +99,9 @@ def test_what_stays_busy_at_a_stop_soft_limits_and_stop_ends_the_job(rig):
     host.command("JOG Z -10 60")  # slow: still running when ZERO and STOP come
     _status(host, lambda s: s.state == "JOG" and "W" in s.flags)
     assert host.refused("ZERO Z").code == "BUSY"
+    assert host.refused("RESUME").code == "BUSY"
+    cid = host.realtime("RESUME")
+    assert _answer(host, cid).code == "BUSY"
     host.ok("STOP")
     idle = _status(host, lambda s: s.state == "IDLE")
     assert "W" not in idle.flags

@@ -8,7 +8,7 @@ from __future__ import annotations
 import pytest
 from PySide6.QtCore import Qt
 
-from app.ui.state_table import Machine
+from app.ui.state_table import Machine, decide
 from tests.ui.conftest import home_when_allowed, open_and_wait
 from tests.ui.grbl_rig import homed_window
 
@@ -62,6 +62,9 @@ def _touch_off_and_continue(qtbot, window) -> list:
     zero_buttons = [b for k, b in window.controls.buttons.items() if k.startswith("zero_")]
     assert zero_buttons and all(b.isEnabled() for b in zero_buttons)
     assert binder.inputs().machine is Machine.PROGRAM_STOP
+    keys = [a for name, a in window.actions_by_name.items() if name.startswith("jog_")]
+    assert keys and all(a.isEnabled() for a in keys)  # the keyboard jog
+    assert decide("jog_hold", binder.inputs()).allowed and decide("resume", binder.inputs()).allowed
     window.operator.jog("Z", LONGER_MM - binder.status.z, 600.0)  # down to the stock (old work Z 0.5)
     qtbot.waitUntil(lambda: _held(window) and abs(binder.status.z - LONGER_MM) < 0.01, timeout=30_000)
     qtbot.waitUntil(lambda: window.controls.buttons["zero_Z"].isEnabled(), timeout=10_000)
