@@ -3,9 +3,9 @@
 Not modal: while the machine holds the operator may touch off in the window (jog,
 hold to jog, set a work zero; docs/protocol.md, "Program stops and tool changes"), and
 the prompt says so. It names the line (source line and device line) and, for ``M06``,
-the tool with its diameter from the tool table when the table knows it. "Continue" emits ``continue_requested``,
-"Stop job" ``stop_requested``; ``dismiss()`` closes it when the job went on or ended
-by other means (the machine panel's OK or EXIT, the STOP button).
+the tool with its diameter from the tool table when the table knows it. "Continue"
+emits ``continue_requested``, "Stop job" ``stop_requested``; ``dismiss()`` closes it
+when the job went on or ended by other means (the machine panel's OK or EXIT, the STOP button).
 """
 
 from __future__ import annotations

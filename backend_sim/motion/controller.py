@@ -22,8 +22,8 @@ from backend_sim.motion.homing import switch_positions
 from backend_sim.motion.motor import MotorModel
 from backend_sim.motion.planner import Planner
 from backend_sim.motion.simple import SimpleInterpolator
-from backend_sim.motion.touch_off import TouchOff
 from backend_sim.motion.spindle import SpindleModel
+from backend_sim.motion.touch_off import TouchOff
 
 AXES = "XYZ"
 _S = {name: n for n, name in enumerate(servo.STATE)}

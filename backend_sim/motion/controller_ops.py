@@ -283,7 +283,7 @@ class ControllerOps:
         was, self._cover = self._cover, bool(value)
         if self._cover and not was:
             self._events.append(Alarm("COVER_OPEN", "cover opened"))
-            if self.state in ("RUN", "HOLD") or self.parked is not None:  # a job: its spindle comes back on RESUME
+            if self.state in ("RUN", "HOLD") or self.parked is not None:  # a job's spindle: back on RESUME
                 self.cover_rpm = self.spin_up[0] if self.spin_up else self.spindle_target
                 self.spin_up = None
             self._spindle_off()

@@ -73,7 +73,8 @@ def test_at_a_program_stop_the_operator_may_jog_and_set_zero_then_resume():
     at_stop = Inputs(Link.UP, Machine.PROGRAM_STOP, homed=True, has_program=True)
     for control in ("jog", "jog_hold", "zero", "resume", "stop"):
         assert decide(control, at_stop).allowed, control
-    assert decide("zero", Inputs(Link.UP, Machine.PROGRAM_STOP, homed=False)).reason == "home the machine first"
+    unhomed = Inputs(Link.UP, Machine.PROGRAM_STOP, homed=False)
+    assert decide("zero", unhomed).reason == "home the machine first"
     jogging = Inputs(Link.UP, Machine.JOG, homed=True, has_program=True)  # a touch-off jog under way
     assert not decide("resume", jogging).allowed and decide("stop", jogging).allowed
 

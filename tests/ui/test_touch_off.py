@@ -9,8 +9,8 @@ import pytest
 from PySide6.QtCore import Qt
 
 from app.ui.state_table import Machine, decide
-from tests.ui.conftest import home_when_allowed, open_and_wait
-from tests.ui.grbl_rig import homed_window
+from tests.ui.grbl_rig import homed_window_with
+from tests.ui.test_program_stops import sim_window_with
 
 SOURCE = """G21 G90
 M3 S3000
@@ -29,20 +29,12 @@ CUT_Z, LONGER_MM = -1.0, 0.5  # the new tool touches the stock 0.5 mm higher
 
 @pytest.fixture
 def frame_window(qtbot, window, tmp_path):
-    window.operator.connect_to(f"sim://?speed=20&sd={tmp_path}")
-    qtbot.waitUntil(lambda: window.binder.connected and window.binder.status is not None, timeout=60_000)
-    home_when_allowed(qtbot, window)
-    path = tmp_path / "touch_off.ngc"
-    path.write_text(SOURCE)
-    open_and_wait(qtbot, window, path)
-    return window
+    return sim_window_with(qtbot, window, tmp_path, SOURCE)
 
 
 @pytest.fixture
 def grbl_window(qtbot, make_window, tmp_path):
-    path = tmp_path / "touch_off.ngc"
-    path.write_text(SOURCE)
-    return homed_window(qtbot, make_window, path)
+    return homed_window_with(qtbot, make_window, tmp_path, SOURCE)
 
 
 def _held(window) -> bool:

@@ -26,7 +26,8 @@ def touch_off(kit: Kit) -> None:
     streamer.run(20.0, to_stop=True)
     held = kit.status_until(lambda st: st.has("W"), 20.0)
     if held is None or not held.has("W") or old_z is None:
-        kit.check("motion.touch-off", STOPS, "a tool change holds (flag `W`)", False, "JOB ... M06 T2", str(held))
+        kit.check("motion.touch-off", STOPS, "a tool change holds (flag `W`)", False, "JOB ... M06 T2",
+                  str(held))
         link.command("STOP", 30.0)
         return
     hx, hy, hz = float(held.x), float(held.y), float(held.z)
