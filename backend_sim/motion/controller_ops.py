@@ -289,7 +289,9 @@ class ControllerOps:
             self._spindle_off()
             if self.state == "RUN":
                 self.feed_hold()
-            elif self.state in ("JOG", "HOMING"):
+            elif self.state == "JOG":
+                self.end_jog()  # a touch-off jog gives the job back, held
+            elif self.state == "HOMING":
                 self.stop()
             self._update_watch()
 

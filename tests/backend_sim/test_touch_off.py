@@ -38,8 +38,8 @@ def _status(host, match, start=None) -> Status:
     return host.wait(lambda f: isinstance(f, Status) and match(f), 30, start)
 
 
-def _answer(host, cid, timeout=30.0):
-    return host.wait(lambda f: isinstance(f, Ok | Error) and f.id == cid, timeout)
+def _answer(host, cid, timeout=30.0, start=None):
+    return host.wait(lambda f: isinstance(f, Ok | Error) and f.id == cid, timeout, start)
 
 
 def test_jog_and_zero_at_a_tool_change_and_resume_returns_under_the_new_offset(rig):
@@ -125,3 +125,27 @@ def test_continuous_jog_at_a_stop_ends_back_at_the_stop(rig):
     host.ok("RESUME")
     host.wait(lambda f: isinstance(f, Finished) and f.seq == len(PROGRAM) - 1, 60)
     assert [seq for seq, _ in sim.exec_log] == list(range(len(PROGRAM)))
+
+
+def test_a_pause_or_the_cover_ends_a_touch_off_jog_and_the_job_still_goes_on(rig):
+    sim, host = rig
+    _at_stop(sim, host)
+    start = len(host.frames)
+    jog = host.command("JOG Z -10 60")
+    _status(host, lambda s: s.state == "JOG" and "W" in s.flags)
+    host.ok("PAUSE")  # answered once the jog has stopped
+    assert isinstance(_answer(host, jog, start=start), Ok)
+    _status(host, lambda s: s.state == "HOLD" and "W" in s.flags)
+    start = len(host.frames)
+    jog = host.command("JOG Z -5 60")
+    _status(host, lambda s: s.state == "JOG" and "W" in s.flags)
+    sim.faults.open_cover()
+    assert _answer(host, jog, start=start).code == "COVER_OPEN"
+    _status(host, lambda s: s.state == "HOLD" and "W" in s.flags and "C" in s.flags)
+    assert host.refused("RESUME").code == "COVER_OPEN"
+    sim.faults.close_cover()
+    host.ok("RESUME")
+    host.wait(lambda f: isinstance(f, Finished) and f.seq == len(PROGRAM) - 1, 60)
+    assert [seq for seq, _ in sim.exec_log] == list(range(len(PROGRAM)))
+    cut = [f for f in host.of(Status) if f.done >= STOP_SEQ and f.x > 20.5]
+    assert cut and all(f.z == pytest.approx(-2.0, abs=0.05) for f in cut)
