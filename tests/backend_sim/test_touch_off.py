@@ -149,3 +149,18 @@ def test_a_pause_or_the_cover_ends_a_touch_off_jog_and_the_job_still_goes_on(rig
     assert [seq for seq, _ in sim.exec_log] == list(range(len(PROGRAM)))
     cut = [f for f in host.of(Status) if f.done >= STOP_SEQ and f.x > 20.5]
     assert cut and all(f.z == pytest.approx(-2.0, abs=0.05) for f in cut)
+
+
+def test_touch_off_in_a_job_run_from_the_sd_card(rig, tmp_path):
+    sim, host = rig
+    (tmp_path / "sd" / "tool.nc").write_text("\n".join(PROGRAM) + "\n")
+    host.ok("SD RUN tool.nc")
+    host.wait(lambda f: isinstance(f, Log) and f.text.startswith(f"STOP {STOP_SEQ} "), 60)
+    _status(host, lambda s: s.state == "HOLD" and "W" in s.flags and "S" in s.flags)
+    host.ok("JOG Z -12 600")
+    host.ok("ZERO Z")
+    host.ok("RESUME")
+    assert sim.run_until(lambda: sim.main.sd_job is None, 60)
+    assert [seq for seq, _ in sim.exec_log] == list(range(len(PROGRAM)))
+    cut = [f for f in host.of(Status) if f.done >= STOP_SEQ and f.x > 20.5 and "S" in f.flags]
+    assert cut and all(f.z == pytest.approx(-2.0, abs=0.05) for f in cut)  # under the new zero
