@@ -180,8 +180,8 @@ class ControllerOps:
         if self._cover:
             raise MotionError("COVER_OPEN", "close the cover first")
         ok = ("IDLE", "ALARM") if not allow_jog else ("IDLE", "JOG")
-        if self.at_stop():
-            return
+        if self.at_stop() and (allow_jog or self.state != "JOG"):
+            return  # a touch-off at a program stop (a new jog only once the last one ended)
         if self.state not in ok or self.stopping:
             raise MotionError("BUSY", f"machine is {self.state}")
 

@@ -164,3 +164,12 @@ def test_touch_off_in_a_job_run_from_the_sd_card(rig, tmp_path):
     assert [seq for seq, _ in sim.exec_log] == list(range(len(PROGRAM)))
     cut = [f for f in host.of(Status) if f.done >= STOP_SEQ and f.x > 20.5 and "S" in f.flags]
     assert cut and all(f.z == pytest.approx(-2.0, abs=0.05) for f in cut)  # under the new zero
+
+
+def test_a_continuous_jog_is_busy_while_a_step_jog_runs_at_the_stop(rig):
+    sim, host = rig
+    _at_stop(sim, host)
+    host.command("JOG Z -10 60")
+    _status(host, lambda s: s.state == "JOG" and "W" in s.flags)
+    cid = host.realtime("JOG X+ 300")
+    assert _answer(host, cid).code == "BUSY"
