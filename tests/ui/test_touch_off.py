@@ -96,3 +96,26 @@ def test_touch_off_at_a_tool_change_on_grbl(qtbot, grbl_window):
     window = grbl_window
     seen = _touch_off_and_continue(qtbot, window)
     _cut_at_new_zero(seen)
+
+
+def test_hold_to_jog_at_a_tool_change_on_grbl(qtbot, grbl_window):
+    """GRBL's hold-to-jog (``$J=`` towards the travel's end, 0x85 on release) at the stop."""
+    window = grbl_window
+    prompt, binder = window.program_stops.prompt, window.binder
+    window.operator.start()
+    qtbot.waitUntil(lambda: prompt.isVisible() and _held(window), timeout=120_000)
+    top = binder.status.z
+    window.operator.jog_hold(("Z-",), 300.0)
+    qtbot.waitUntil(lambda: binder.status.z < top - 1.0, timeout=30_000)
+    window.operator.jog_hold((), 300.0)
+    qtbot.waitUntil(lambda: _held(window), timeout=30_000)
+    assert binder.status.z < top - 1.0 and binder.status.state == "IDLE"  # released: at rest, still W
+    window.operator.zero("Z")
+    qtbot.waitUntil(lambda: _held(window) and abs(binder.status.z) < 0.01, timeout=30_000)
+    assert window.operator.refused == []
+    seen: list = []
+    window.link.worker.status_changed.connect(seen.append)
+    qtbot.mouseClick(prompt.continue_button, Qt.MouseButton.LeftButton)
+    qtbot.waitUntil(lambda: binder.last_job_event is not None, timeout=120_000)
+    assert binder.last_job_event.completed, binder.last_job_event
+    _cut_at_new_zero(seen)
