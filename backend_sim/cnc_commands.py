@@ -59,7 +59,7 @@ def _source(cmd: Command) -> str:
 
 
 def _hold_now(mcu, cmd: Command, why: str) -> None:
-    if mcu.mc.state in ("RUN", "JOG", "HOMING"):
+    if mcu.mc.state in ("RUN", "JOG", "HOMING") and mcu.mc.waiting is None:
         mcu.why = why
     _homing_stopped(mcu, cmd.verb)
     mcu.mc.feed_hold()
@@ -202,7 +202,8 @@ def _alarm_free(mcu) -> None:
 def _pause(mcu, cmd: Command) -> str | None:
     if mcu.mc.state not in ("RUN", "JOG", "HOMING"):
         return mcu.mc.state
-    mcu.why = _source(cmd)
+    if mcu.mc.waiting is None:  # at a program stop the hold stays the program's
+        mcu.why = _source(cmd)
     moving_job = mcu.mc.state == "RUN"
     _homing_stopped(mcu, "PAUSE")
     mcu.mc.feed_hold()  # a jog is cancelled, homing stops: answered once stopped
@@ -215,6 +216,8 @@ def _resume(mcu, cmd: Command) -> str:
         return _resume_from(mcu, cmd)
     _cover_closed(mcu)
     _alarm_free(mcu)
+    if mcu.mc.parked is not None:
+        raise Refused("BUSY", "a jog runs at the program stop: resume once it has ended")
     mcu.mc.resume()
     mcu.why = ""
     return ""
@@ -259,7 +262,7 @@ def _jog(mcu, cmd: Command) -> None:
     distance = _in_range(_number(dist, "distance"), value_ranges.distance_problem)
     rate = _in_range(_number(feed, "feed"), value_ranges.feed_problem)
     _cover_closed(mcu)
-    if mcu.job.open:
+    if mcu.job.open and not mcu.mc.at_stop():
         raise Refused("BUSY", "a job is open")
     _alarm_free(mcu)
     mcu.mc.jog(axis, distance, rate)
@@ -330,10 +333,26 @@ def _zero(mcu, cmd: Command) -> str:
     if not axes or any(a not in AXES for a in axes):
         raise Refused("BAD_ARGS", f"ZERO {axes}: axes among X Y Z")
     _homed(mcu)
-    _not_running(mcu)
     position = mcu.mc.commanded_mm
-    work_systems.write_active(mcu, (position[k] if AXES[k] in axes else mcu.offset[k] for k in range(3)))
+    offset = tuple(position[k] if AXES[k] in axes else mcu.offset[k] for k in range(3))
+    if mcu.job.open and mcu.mc.at_stop() and mcu.mc.state != "JOG":
+        _zero_at_stop(mcu, offset)
+    else:
+        _not_running(mcu)
+        work_systems.write_active(mcu, offset)
     return " ".join(f"{a}{o:.3f}" for a, o in zip(AXES, mcu.offset, strict=True))
+
+
+def _zero_at_stop(mcu, offset) -> None:
+    """``ZERO`` at a program stop: the rest of the job keeps its work coordinates
+    (the parser and the queued moves shift with the offset; the parser keeps its modes)."""
+    parser, old = mcu.parser, mcu.offset
+    work_systems.write_active(mcu, offset)
+    delta = tuple(n - o for n, o in zip(mcu.offset, old, strict=True))
+    parser.offset = tuple(mcu.offset)
+    parser.position = tuple(p + d for p, d in zip(parser.position, delta, strict=True))
+    mcu.parser = parser
+    mcu.mc.shift_stop(delta)
 
 
 HANDLERS = {

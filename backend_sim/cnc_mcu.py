@@ -378,8 +378,8 @@ class CncMcu:
 
     def _on_state(self, event: ev.StateChanged) -> None:
         self.state = event.state
-        if event.state == "IDLE":
-            self._on_done_event(event)
+        if event.state == "IDLE" or self.mc.waiting is not None and event.state in ("RUN", "HOLD"):
+            self._on_done_event(event)  # a jog's answer (also a touch-off jog's at a stop)
         self.send_status()
 
     def _on_done_event(self, event) -> None:
@@ -417,7 +417,7 @@ class CncMcu:
     def status(self) -> Status:
         pos = self.mc.measured_mm
         x, y, z = (pos[k] - self.offset[k] for k in range(3))
-        state = "HOLD" if self.mc.waiting is not None else self.mc.state
+        state = "HOLD" if self.mc.waiting is not None and self.mc.state != "JOG" else self.mc.state
         return Status(self.boot_id, state, x, y, z, self.job.acc, self.job.done,
                       self.free_slots(), int(round(self.mc.spindle_rpm)), self.flags(), self.why,
                       self.mc.overrides.as_tuple())

@@ -73,7 +73,7 @@ class ContinuousJog:
 
     def _start(self, dirs: str, feed: float, now: int) -> None:
         mcu = self.mcu
-        if mcu.job.open:
+        if mcu.job.open and not mcu.mc.at_stop():
             raise MotionError("BUSY", "a job is open")
         if mcu.mc.state == "ALARM":
             raise MotionError("ALARM", "clear the alarm first")
@@ -95,7 +95,7 @@ class ContinuousJog:
     def end(self) -> None:
         """``R JOGEND`` (or a new direction): decelerate and stop the continuous jog."""
         if self.running is not None and self.mcu.mc.state == "JOG":
-            self.mcu.mc.stop()
+            self.mcu.mc.end_jog()
         self.running = None
 
     def tick(self) -> None:

@@ -191,8 +191,9 @@ class Session(SessionCore, JobControl):
         """Hold-to-jog: the jog keys held now (``("X+", "Y+")``; ``()`` on release) at
         ``feed`` mm/min. Keep-alives go out from the next tick, ``R JOGEND`` on release
         (docs/protocol.md, "Continuous jog"); False (nothing sent) without a link or
-        during a job."""
-        if keys and (not self.attached or self.busy):
+        during a job, except while it holds at a program stop (flag ``W``: the touch-off)."""
+        at_stop = self.status is not None and "W" in self.status.flags
+        if keys and (not self.attached or self.busy and not at_stop):
             return False
         if self.hold_jog.hold(keys, feed):
             self.request_urgent("JOGEND")

@@ -12,6 +12,13 @@ queued. ``machine_of`` turns what the session and the status say into a ``Machin
 The table reads row by row: a row per machine state, a column per control; ``Y`` the
 control may be used, ``h`` once the machine is homed, ``.`` not in this state. The link,
 a waiting dialog, the program and the capabilities then narrow it (``decide``).
+
+At a program stop (``program_stop``: ``M00``/``M01``/``M06``, flag ``W``) the operator
+touches off, as every sender allows at a tool change: the jog (buttons, keys, hold to
+jog) and the work zero are allowed beside Resume and Stop (docs/protocol.md, "Program
+stops and tool changes"; for GRBL the host holds the stream with the machine idle).
+While such a jog runs (status ``JOG`` with ``W``, or a jog sent and not yet answered)
+the machine is in the ``jog`` row: no Resume until the jog has ended.
 """
 
 from __future__ import annotations
@@ -92,7 +99,7 @@ run_host     .    .     .     .    Y     .     Y    .   .    .     .    .     . 
 run_sd       .    .     .     .    Y     .     Y    .   .    .     .    .     .    .     .    .     .     .   .   .    .    .    .
 upload       .    .     .     .    .     .     Y    .   .    .     .    .     .    .     .    .     .     .   .   .    .    .    .
 hold         .    .     .     .    .     Y     Y    .   .    .     .    .     .    .     .    .     .     .   .   .    .    .    .
-program_stop .    .     .     .    .     Y     Y    .   .    .     .    .     .    .     .    .     .     .   .   .    .    .    .
+program_stop .    .     .     .    .     Y     Y    Y   .    .     h    .     .    .     .    .     .     .   .   .    .    Y    .
 alarm        Y    Y     .     .    .     .     Y    .   .    Y     .    .     .    .     Y    .     .     .   Y   .    .    .    .
 cover_open   .    .     .     .    Y     .     Y    .   .    Y     .    .     .    .     .    .     .     .   Y   .    .    .    .
 """
@@ -285,8 +292,8 @@ def machine_of(session_state: str, status_state: str | None, flags: str, check_m
         return Machine.ALARM
     if session_state == "UPLOADING":
         return Machine.UPLOAD
-    if "W" in flags:
-        return Machine.PROGRAM_STOP
+    if "W" in flags:  # a touch-off jog at the stop is a jog (no Resume under it)
+        return Machine.JOG if status_state == "JOG" or pending == "JOG" else Machine.PROGRAM_STOP
     if status_state == "HOLD" or session_state == "PAUSED":
         return Machine.HOLD
     if "S" in flags and status_state == "RUN":

@@ -1,10 +1,11 @@
 """The prompt shown while the machine holds at a program stop or a tool change.
 
-Window-modal (the rest of the window waits, the event loop does not): it names the
-line (source line and device line) and, for ``M06``, the tool with its diameter from
-the tool table when the table knows it. "Continue" emits ``continue_requested``,
-"Stop job" ``stop_requested``; ``dismiss()`` closes it when the job went on or ended
-by other means (the machine panel's OK or EXIT, the STOP button).
+Not modal: while the machine holds the operator may touch off in the window (jog,
+hold to jog, set a work zero; docs/protocol.md, "Program stops and tool changes"), and
+the prompt says so. It names the line (source line and device line) and, for ``M06``,
+the tool with its diameter from the tool table when the table knows it. "Continue"
+emits ``continue_requested``, "Stop job" ``stop_requested``; ``dismiss()`` closes it
+when the job went on or ended by other means (the machine panel's OK or EXIT, the STOP button).
 """
 
 from __future__ import annotations
@@ -37,6 +38,7 @@ class StopPrompt(QMessageBox):
         self.continue_button = self.addButton("", QMessageBox.ButtonRole.AcceptRole)
         self.stop_button = self.addButton("", QMessageBox.ButtonRole.RejectRole)
         self.setDefaultButton(self.continue_button)
+        self.setWindowModality(Qt.WindowModality.NonModal)  # the jog and zero stay usable
         self.buttonClicked.connect(self._clicked)
         self.index: int | None = None
         self.retranslate_ui()
@@ -56,8 +58,10 @@ class StopPrompt(QMessageBox):
         self.index = event.index
         self.setWindowTitle(self.tr("Tool change") if event.code == 6 else self.tr("Program stop"))
         self.setText(self._headline(event, source_line))
-        self.setInformativeText(self._detail(event, diameter))
-        self.open()
+        self.setInformativeText(self._detail(event, diameter) + " " + self.tr(
+            "Before continuing you may jog and set a work zero (touch off); Continue first "
+            "brings the tool back above where it stopped."))
+        self.show()
 
     def _headline(self, event, source_line: int) -> str:
         if event.code == 6:

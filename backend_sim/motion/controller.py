@@ -23,6 +23,7 @@ from backend_sim.motion.motor import MotorModel
 from backend_sim.motion.planner import Planner
 from backend_sim.motion.simple import SimpleInterpolator
 from backend_sim.motion.spindle import SpindleModel
+from backend_sim.motion.touch_off import TouchOff
 
 AXES = "XYZ"
 _S = {name: n for n, name in enumerate(servo.STATE)}
@@ -32,7 +33,7 @@ FAR_END_MM = 5.0  # hard stop beyond the far end of travel
 _IDLE_CHUNK = 20
 
 
-class MotionController(ControllerOps):
+class MotionController(ControllerOps, TouchOff):
     """See the module docstring; commands live in ``ControllerOps``."""
 
     def __init__(self, profile: MachineProfile | None = None, mode: str = "planner",
@@ -63,6 +64,7 @@ class MotionController(ControllerOps):
         self.spin_up: tuple[float, int] | None = None  # (rpm, since ms): RESUME waits for the spindle
         self.cover_rpm = 0.0  # the job's spindle speed the cover stopped
         self.waiting = None  # the program stop the job waits at
+        self.parked = None  # the job's queue while a touch-off jog runs at a stop
         self.reset()
 
     # -- construction -------------------------------------------------------------
@@ -126,7 +128,7 @@ class MotionController(ControllerOps):
         return self.job.tail if self.state in ("RUN", "HOLD") else self.commanded_mm
 
     def free_slots(self) -> int:
-        return max(0, self.capacity - len(self.job))
+        return max(0, self.capacity - len(self.job) - len(self.parked or ()))
 
     def idle(self) -> bool:
         """State IDLE or ALARM, nothing queued or stopping, every axis at rest and the
@@ -209,6 +211,9 @@ class MotionController(ControllerOps):
         elif self.state == "HOMING":
             if self.homing is not None and self.homing.poll() and self.state == "HOMING":
                 self._homed()
+        elif self.state == "JOG" and self.parked is not None:
+            if self.planner.idle() or self.planner.holding and self.planner.at_rest():
+                self._unpark()
         elif self.state == "JOG" and self.planner.idle():
             self._set_state("IDLE")
 
@@ -256,7 +261,7 @@ class MotionController(ControllerOps):
         self.homed = False
         self.stopping = False
         self.homing = None
-        self.waiting = None
+        self.waiting = self.parked = None
         self.spin_up, self.cover_rpm = None, 0.0
         self._spindle_off()
         self._set_state("ALARM")

@@ -27,12 +27,15 @@ class ControllerOps:
         """Queue a parsed move; raises MotionError when full, in ALARM or while homing/jogging."""
         if self.state == "ALARM":
             raise MotionError("ALARM", "clear the alarm first")
-        if self.state in ("HOMING", "JOG") or self.stopping:
+        if self.state == "HOMING" or self.state == "JOG" and self.parked is None or self.stopping:
             raise MotionError("BUSY", f"machine is {'stopping' if self.stopping else self.state}")
         if self.free_slots() <= 0:
             raise MotionError("QUEUE_FULL", f"all {self.capacity} slots in use")
         if move.seq == 0:
             self.done_seq = -1  # a new stream
+        if self.parked is not None:  # a touch-off jog runs: the move waits with the job
+            self.parked.append(move)
+            return
         self.job.add(move)
         if self.state == "IDLE":
             if self._cover:
@@ -48,7 +51,9 @@ class ControllerOps:
         if self.state == "RUN":
             self.job.hold()
             self._set_state("HOLD")
-        elif self.state in ("JOG", "HOMING"):
+        elif self.state == "JOG":
+            self.end_jog()
+        elif self.state == "HOMING":
             self.stop()
 
     def resume(self, release_stop: bool = True) -> None:
@@ -59,7 +64,10 @@ class ControllerOps:
         if self._cover:
             raise MotionError("COVER_OPEN", "close the cover to resume")
         if release_stop:
+            self.return_moves()
             self.waiting = None
+            if self.state == "HOLD":
+                self.job.hold()  # the way back waits for the resume below
         if self.state != "HOLD":
             return
         if self.cover_rpm > 0:  # the cover stopped the spindle: back to speed first
@@ -99,7 +107,7 @@ class ControllerOps:
 
     def _finish_stop(self) -> None:
         self.stopping = False
-        self.waiting = None
+        self.waiting = self.parked = None
         self.spin_up, self.cover_rpm = None, 0.0
         self.job.flush()
         self.planner.flush()
@@ -148,7 +156,7 @@ class ControllerOps:
         if not (math.isfinite(distance_mm) and math.isfinite(feed_mm_min) and feed_mm_min > 0):
             raise ValueError("jog needs a finite distance and a feed > 0")
         self._ready_to_move(allow_jog=True)
-        start = self.planner.tail if self.state == "JOG" else self.commanded_mm
+        start = self.planner.tail if self.state == "JOG" and not self.planner.holding else self.commanded_mm
         target = list(start)
         target[k] += distance_mm
         self.jog_to(start, tuple(target), feed_mm_min, f"jog {axis}")
@@ -159,6 +167,8 @@ class ControllerOps:
         move = Move(-1, "line", tuple(target), feed=feed_mm_min, source=source)
         if self.homed and (why := soft_limit_violation(start, move, self.profile.travel)):
             raise MotionError("SOFT_LIMIT", why)
+        if self.waiting is not None:
+            self._park()
         self.planner.add(move)
         self._set_state("JOG")
 
@@ -170,6 +180,8 @@ class ControllerOps:
         if self._cover:
             raise MotionError("COVER_OPEN", "close the cover first")
         ok = ("IDLE", "ALARM") if not allow_jog else ("IDLE", "JOG")
+        if self.at_stop() and (allow_jog or self.state != "JOG"):
+            return  # a touch-off at a program stop (a new jog only once the last one ended)
         if self.state not in ok or self.stopping:
             raise MotionError("BUSY", f"machine is {self.state}")
 
@@ -234,7 +246,7 @@ class ControllerOps:
         old, self.state = self.state, "IDLE"
         self.homed, self.stopping, self.homing, self.servo_on = False, False, None, True
         self.done_seq = -1
-        self.waiting = None
+        self.waiting = self.parked = None
         self.spin_up, self.cover_rpm = None, 0.0
         self.brk = 0
         self.spindle.reset(self.now_ms)
@@ -271,13 +283,15 @@ class ControllerOps:
         was, self._cover = self._cover, bool(value)
         if self._cover and not was:
             self._events.append(Alarm("COVER_OPEN", "cover opened"))
-            if self.state in ("RUN", "HOLD"):  # a job: its spindle comes back on RESUME
+            if self.state in ("RUN", "HOLD") or self.parked is not None:  # a job's spindle: back on RESUME
                 self.cover_rpm = self.spin_up[0] if self.spin_up else self.spindle_target
                 self.spin_up = None
             self._spindle_off()
             if self.state == "RUN":
                 self.feed_hold()
-            elif self.state in ("JOG", "HOMING"):
+            elif self.state == "JOG":
+                self.end_jog()  # a touch-off jog gives the job back, held
+            elif self.state == "HOMING":
                 self.stop()
             self._update_watch()
 
@@ -311,7 +325,7 @@ class ControllerOps:
 
     def program_wait(self, move: Move, ms: int) -> bool:
         """A program stop's wait (``stop_of``): reported once, done when ``resume`` releases it."""
-        if ms == 1:
+        if ms == 1 and self.waiting is None:  # not again when re-queued after a touch-off
             self.waiting = move
             self._events.append(ProgramStop(move.stop_of, move.source))
         return self.waiting is None

@@ -82,6 +82,10 @@ class Planner(FeedHold):
     def __len__(self) -> int:
         return len(self.blocks)
 
+    def queued_moves(self) -> list[Move]:
+        """The moves not yet finished, the one under way first."""
+        return [b.move for b in self.blocks]
+
     def add(self, move: Move) -> None:
         seg = Segment.from_move(self.tail, move) if move.moves_axes else None
         block = Block(move, seg, self.s_tail)

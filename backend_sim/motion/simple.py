@@ -49,6 +49,10 @@ class SimpleInterpolator(FeedHold):
     def __len__(self) -> int:
         return len(self.moves) + (self.current is not None)
 
+    def queued_moves(self) -> list[Move]:
+        """The moves not yet finished, the one under way first."""
+        return ([self.current] if self.current is not None else []) + list(self.moves)
+
     def add(self, move: Move) -> None:
         self.moves.append(move)
         if move.moves_axes:

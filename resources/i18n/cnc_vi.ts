@@ -2977,6 +2977,10 @@ Hình 2-D hiển thị chương trình.</translation>
         <translation>Dừng chương trình</translation>
     </message>
     <message>
+        <source>Before continuing you may jog and set a work zero (touch off); Continue first brings the tool back above where it stopped.</source>
+        <translation>Trước khi tiếp tục, bạn có thể chạy tay (jog) và đặt gốc phôi (so dao); Tiếp tục sẽ đưa dao về lại phía trên chỗ đã dừng trước.</translation>
+    </message>
+    <message>
         <source>Tool change at line %1 (%2): the spindle is off and Z is up.</source>
         <translation>Thay dao ở dòng %1 (%2): trục chính đã tắt và Z đã nâng lên.</translation>
     </message>

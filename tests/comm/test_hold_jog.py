@@ -129,3 +129,24 @@ def test_a_lost_link_stops_the_keep_alives_and_the_machine_stops_by_its_dead_man
 def test_no_jog_during_a_job_or_without_a_link(link):
     link.session.detach("test")
     assert not link.session.jog_hold(("X+",), 600)
+
+
+def test_hold_to_jog_at_a_program_stop_then_resume_finishes_the_job(link):
+    """Touch-off (docs/protocol.md, "Program stops and tool changes"): during a job the
+    keys jog only while the machine holds at a stop (flag ``W``); the job then goes on."""
+    lines = ["G00 X10 Y10 Z5", "G01 Z-1 F300", "M06 T2", "G01 X20 F300"]
+    assert link.session.start_job(lines)
+    status = lambda: link.session.status  # noqa: E731
+    assert link.run_until(lambda: status() is not None and status().state == "RUN", 10.0)
+    assert not link.session.jog_hold(("Z-",), 300)  # running: no jog
+    assert link.run_until(lambda: status() is not None and "W" in status().flags, 60.0)
+    z = link.sim.cnc.mc.commanded_mm[2]
+    assert link.session.jog_hold(("Z-",), 300)
+    link.run_for(0.5)
+    assert link.sim.cnc.mc.state == "JOG" and link.sim.cnc.mc.commanded_mm[2] < z - 1
+    assert link.session.jog_hold((), 300)
+    assert link.run_until(lambda: status().state == "HOLD" and "W" in status().flags, 5.0)
+    assert link.session.resume()
+    ended = lambda: link.rec.of("on_job_finished")  # noqa: E731
+    assert link.run_until(ended, 60.0) and link.rec.last("on_job_finished").completed
+    assert [seq for seq, _ in link.executed()] == list(range(len(lines)))

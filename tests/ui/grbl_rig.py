@@ -21,6 +21,13 @@ def homed_window(qtbot, make_window, path, speed: int = 30):
     return window
 
 
+def homed_window_with(qtbot, make_window, tmp_path, source: str):
+    """``homed_window`` with ``source`` written to a file and open."""
+    path = tmp_path / "program.ngc"
+    path.write_text(source)
+    return homed_window(qtbot, make_window, path)
+
+
 def lines_run(window) -> list[str]:
     """The lines the simulated machine executed, without each job's preamble and syncs."""
     return [line for line in window.link.sim.machine.executed if line not in ("G21 G90 G94 G17", "G4 P0")]

@@ -10,7 +10,7 @@ import pytest
 from PySide6.QtCore import Qt
 
 from app.comm.grbl.dialect import grbl_lines
-from tests.ui.grbl_rig import homed_window, lines_run
+from tests.ui.grbl_rig import homed_window_with, lines_run
 
 SOURCE = """G21 G90
 M3 S1000
@@ -27,9 +27,7 @@ M2
 
 @pytest.fixture
 def grbl_window(qtbot, make_window, tmp_path):
-    path = tmp_path / "tool_change.ngc"
-    path.write_text(SOURCE)
-    return homed_window(qtbot, make_window, path)
+    return homed_window_with(qtbot, make_window, tmp_path, SOURCE)
 
 
 def test_a_tool_change_waits_for_the_idle_machine_with_the_spindle_stopped(qtbot, grbl_window):

@@ -28,15 +28,20 @@ M2
 """
 
 
-@pytest.fixture
-def ready(qtbot, window, tmp_path):
-    window.operator.connect_to(f"sim://?speed={SPEED}&sd={tmp_path}")
+def sim_window_with(qtbot, window, tmp_path, source: str, speed: int = SPEED):
+    """``window`` on ``sim://`` at ``speed``, homed, with ``source`` open."""
+    window.operator.connect_to(f"sim://?speed={speed}&sd={tmp_path}")
     qtbot.waitUntil(lambda: window.binder.connected and window.binder.status is not None, timeout=60_000)
     home_when_allowed(qtbot, window)
     path = tmp_path / "stops.ngc"
-    path.write_text(SOURCE)
+    path.write_text(source)
     open_and_wait(qtbot, window, path)
     return window
+
+
+@pytest.fixture
+def ready(qtbot, window, tmp_path):
+    return sim_window_with(qtbot, window, tmp_path, SOURCE)
 
 
 def _answer_stops(qtbot, window) -> list[tuple]:

@@ -63,9 +63,20 @@ def test_stop_is_always_there_while_the_link_is_up_and_a_dialog_leaves_only_what
 def test_nothing_that_moves_starts_while_the_machine_is_busy(machine):
     inputs = Inputs(Link.UP, machine, homed=True, has_program=True)
     moving = ("home", "home_recover", "start", "start_here", "jog", "spindle_on", "zero", "sd_run", "mdi")
-    for control in moving:
+    touch_off = ("jog", "zero") if machine is Machine.PROGRAM_STOP else ()
+    for control in (c for c in moving if c not in touch_off):
         verdict = decide(control, inputs)
         assert not verdict.allowed and verdict.reason, (control, machine)
+
+
+def test_at_a_program_stop_the_operator_may_jog_and_set_zero_then_resume():
+    at_stop = Inputs(Link.UP, Machine.PROGRAM_STOP, homed=True, has_program=True)
+    for control in ("jog", "jog_hold", "zero", "resume", "stop"):
+        assert decide(control, at_stop).allowed, control
+    unhomed = Inputs(Link.UP, Machine.PROGRAM_STOP, homed=False)
+    assert decide("zero", unhomed).reason == "home the machine first"
+    jogging = Inputs(Link.UP, Machine.JOG, homed=True, has_program=True)  # a touch-off jog under way
+    assert not decide("resume", jogging).allowed and decide("stop", jogging).allowed
 
 
 def test_run_from_sd_can_be_paused_resumed_and_stopped():
@@ -108,6 +119,9 @@ def test_a_missing_capability_disables_its_controls_with_a_word_why():
     ("READY", "RUN", "HS", False, None, Machine.RUN_SD),
     ("READY", "HOLD", "HS", False, None, Machine.HOLD),
     ("READY", "HOLD", "HSW", False, None, Machine.PROGRAM_STOP),
+    ("STREAMING", "JOG", "HW", False, None, Machine.JOG),  # a touch-off jog at the stop
+    ("STREAMING", "HOLD", "HW", False, "JOG", Machine.JOG),  # sent, its status not yet in
+    ("STREAMING", "IDLE", "W", False, None, Machine.PROGRAM_STOP),  # GRBL: idle at the host-held M6
     ("UPLOADING", "IDLE", "H", False, None, Machine.UPLOAD),
     ("STREAMING", "HOLD", "HC", False, None, Machine.COVER_OPEN),
     ("READY", "ALARM", "-", False, None, Machine.ALARM),

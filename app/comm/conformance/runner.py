@@ -26,6 +26,7 @@ from app.comm.conformance import (
     checks_resume,
     checks_sd,
     checks_stream,
+    checks_touch_off,
 )
 from app.comm.conformance.kit import Kit
 from app.comm.conformance.link import Link, LinkDead
@@ -40,7 +41,7 @@ SECTIONS = {
     "sd": checks_sd.CHECKS,
     "link": checks_link.CHECKS,
     "cover": checks_cover.CHECKS,
-    "motion": checks_motion.CHECKS,
+    "motion": checks_motion.CHECKS + checks_touch_off.CHECKS,
     "realtime": checks_realtime.CHECKS,
     "overrides": checks_overrides.OVERRIDES,
     "systems": checks_overrides.SYSTEMS,

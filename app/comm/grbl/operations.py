@@ -5,7 +5,8 @@ check mode, settings and the ``$#``/``$G`` reads. A mixin of ``GrblSession``.
   changes the parser's modes), answered as ``JOG`` as the frame protocol does;
   ``jog_to_limit(axis, direction, feed)`` jogs towards the end of the travel for
   hold-to-jog (needs ``$13x`` and homing, else ``JOG_SPAN_MM``), ``jog_cancel()`` sends
-  0x85 (on key release).
+  0x85 (on key release); ``jog_hold(keys, feed)`` is the window's hold-to-jog on both
+  (one or two keys; also while the stream waits at a program stop: the touch-off).
 - ``set_feed_override(percent)`` / ``set_spindle_override`` send the fewest
   0x90-0x94 / 0x99-0x9D bytes from the value of the last report, within the ranges of
   the session's ``capabilities`` (``driver.Capabilities.override_range``, what the
@@ -26,6 +27,7 @@ from app.comm.grbl import protocol as p
 from app.comm.grbl.codes import unlock_advice
 from app.comm.grbl.dialect import axis_range
 from app.comm.grbl.settings import SettingChange, diff_settings, format_value, homing_enabled
+from app.comm.hold_jog import directions
 from app.i18n import msg
 
 JOG_SPAN_MM = 1000.0  # hold-to-jog distance when the travel is unknown
@@ -50,6 +52,8 @@ def _override_bytes(current: int, target: int, reset: bytes, tens: tuple[bytes, 
 class GrblOperations:
     """See the module docstring."""
 
+    _held_jog = ""  # the directions of the hold-to-jog under way ("" none)
+
     # ------------------------------------------------------------------ jog
 
     def jog(self, axis: str, distance_mm: float, feed_mm_min: float) -> int:
@@ -66,12 +70,38 @@ class GrblOperations:
     def jog_to_limit(self, axis: str, direction: int, feed_mm_min: float) -> int:
         """Hold-to-jog: jog towards the end of the travel (``jog_cancel`` on release)."""
         k = "XYZ".index(axis.upper())
-        distance = JOG_SPAN_MM
+        return self.jog(axis, math.copysign(self._room(k, direction), direction), feed_mm_min)
+
+    def _room(self, k: int, direction: int) -> float:
+        """How far axis ``k`` may jog in ``direction`` (see ``jog_to_limit``)."""
         if self.homed and 130 + k in self.settings and self.grbl_status is not None:
             lo, hi = axis_range(self.settings, k)
             here = self.grbl_status.mpos[k]
-            distance = max(0.0, (hi - here) if direction > 0 else (here - lo)) - 0.01
-        return self.jog(axis, math.copysign(max(distance, 0.0), direction), feed_mm_min)
+            return max(0.0, max(0.0, (hi - here) if direction > 0 else (here - lo)) - 0.01)
+        return JOG_SPAN_MM
+
+    def jog_hold(self, keys: tuple[str, ...], feed_mm_min: float) -> bool:
+        """The keys held now (``()`` on release): a press jogs towards the end of the travel
+        along them (``$J=``; two keys the diagonal), a change or release cancels it (0x85).
+        False (nothing sent) without a link or during a job, except while its stream waits
+        at a program stop (the touch-off, docs/protocol.md "Program stops")."""
+        dirs = directions(keys)
+        if dirs == self._held_jog:
+            return True
+        if self._held_jog:
+            self._held_jog = ""
+            self.jog_cancel()
+        at_stop = self.job is not None and self.job.stop_at is not None
+        if not dirs or not self.attached or self.busy and not at_stop:
+            return not dirs
+        signs = {dirs[i]: 1 if dirs[i + 1] == "+" else -1 for i in range(0, len(dirs), 2)}
+        room = min(self._room("XYZ".index(axis), sign) for axis, sign in signs.items())
+        if room <= 0.0:
+            return False
+        self._held_jog = dirs
+        words = " ".join(f"{axis}{sign * room:.3f}" for axis, sign in signs.items())
+        self.as_verb("JOG", (dirs, f"{feed_mm_min:g}"), f"$J=G91 G21 {words} F{feed_mm_min:.0f}")
+        return True
 
     def jog_cancel(self) -> None:
         self._realtime(p.JOG_CANCEL)
