@@ -5,6 +5,10 @@ outside comments, ``M98``/``M99``/``G65``. It lives apart from ``macro`` so that
 a plain program never imports the expander. A nested comment ``(a (b) c)`` counts as a
 comment here: no control reads it, but the line's error is the plain path's to report
 (the expander would cost a plain file its speed and far more memory).
+
+``chunk_plain`` and ``letters_plain`` give the same answer a chunk at a time, for the
+fast path's scan to find it on the way (no pass of its own over a big file; see
+``program._interpret``).
 """
 
 from __future__ import annotations
@@ -29,6 +33,36 @@ def _without_comments(rest: bytes, parens: re.Pattern) -> bytes:
         if not count or b"(" not in rest:
             break
     return _SEMI.sub(b"", rest) if b";" in rest else rest
+
+
+_SUSPECT_LETTERS = b"OoWwEePpLl"  # letters that may make a program the expander's (O, WHILE, M98 P, L)
+_OTHER_LETTERS = bytes(c for c in range(256) if c not in _SUSPECT_LETTERS)
+
+
+def letters_plain(letters: bytes) -> bool:
+    """Part of ``chunk_plain`` for a chunk the fast path read whole (every line well-formed
+    words and single-level comments, so nothing but letters can call for the expander):
+    its word ``letters`` hold none that may."""
+    return not letters.translate(None, _OTHER_LETTERS)
+
+
+def chunk_plain(chunk: bytes) -> bool:
+    """True when ``chunk`` (whole lines of a program) shows nothing that needs the expander
+    and every comment in it ends on its own line: if every chunk of a file is so, then
+    ``needs_expander`` of the file is False (its comments cannot reach across lines or
+    chunks). False means "not known": ask ``needs_expander`` of the whole file."""
+    rest = chunk.translate(None, _PLAIN)
+    if b"(" in rest or b")" in rest:
+        rest = _LINE_PARENS.sub(b"", rest)
+        if b"(" in rest or b")" in rest:
+            return False
+    if b";" in rest:
+        rest = _SEMI.sub(b"", rest)
+    return not any(rest.find(c) >= 0 for c in (bytes([b]) for b in _MACRO_BYTES + b"PpLl"))
+
+
+class NeedsExpander(Exception):
+    """Raised by a load that read a program on the fast path and found it needs the expander."""
 
 
 def needs_expander(raw: bytes) -> bool:
