@@ -23,6 +23,7 @@ _MACRO_BYTES = b"#[oOwWeE"  # parameters, expressions, o-words, O numbers, GOTO,
 _UPPER = bytes.maketrans(b"abcdefghijklmnopqrstuvwxyz", b"ABCDEFGHIJKLMNOPQRSTUVWXYZ")
 NESTING = 8  # levels of nested comments looked through (each costs a pass over the comments)
 _CALLS = (b"M98", b"M99", b"G65", b"M098", b"M099", b"G065")
+_CALL_WORDS = b"PpLl"  # M98 P, G65 P, L counts: a call is looked for where one of these stands
 
 
 def _without_comments(rest: bytes, parens: re.Pattern) -> bytes:
@@ -58,7 +59,11 @@ def chunk_plain(chunk: bytes) -> bool:
             return False
     if b";" in rest:
         rest = _SEMI.sub(b"", rest)
-    return not any(rest.find(c) >= 0 for c in (bytes([b]) for b in _MACRO_BYTES + b"PpLl"))
+    return not _holds_any(rest, _MACRO_BYTES + _CALL_WORDS)
+
+
+def _holds_any(rest: bytes, chars: bytes) -> bool:
+    return any(rest.find(c) >= 0 for c in (bytes([b]) for b in chars))
 
 
 class NeedsExpander(Exception):
@@ -75,9 +80,9 @@ def needs_expander(raw: bytes) -> bool:
         rest = _without_comments(rest, _LINE_PARENS)
     elif b"(" in rest:  # lines need not be told apart: drop the newlines before the comments
         rest = _without_comments(rest.translate(None, b"\n"), _PARENS)
-    if any(rest.find(c) >= 0 for c in (bytes([b]) for b in _MACRO_BYTES)):
+    if _holds_any(rest, _MACRO_BYTES):
         return True
-    if any(c in rest for c in (b"P", b"p", b"L", b"l")):  # M98 P, G65 P, L counts
+    if _holds_any(rest, _CALL_WORDS):
         squeezed = raw.translate(_UPPER, b" \t\r")
         return any(call in squeezed for call in _CALLS)
     return False
