@@ -238,31 +238,32 @@ def _starts(tp, rows: np.ndarray, first) -> np.ndarray:
     return start
 
 
-def _nominal_speeds(tp, rows: np.ndarray, accel: float, first):
+def _nominal_speeds(tp, rows: np.ndarray, accel: float, start: np.ndarray):
     """(mm/s each of these moves runs at most: its feed, arcs at most sqrt(a r); their
-    kinds; the arcs among them; the arcs' centres and radii)."""
+    kinds; the arcs among them; the arcs' starts, centres and radii); ``start``: where
+    they start."""
     kind, feed = tp.kind.take(rows), tp.feed.take(rows)
     v_nom = feed / 60.0
     arc = np.flatnonzero((kind == ARC_CW) | (kind == ARC_CCW))
     center = radius = None
     if len(arc):
-        start = _starts(tp, rows[arc], first)
+        start = start.take(arc, axis=0)
         center = tp.center.take(rows[arc], axis=0)
         radius = np.hypot(start[:, 0] - center[:, 0], start[:, 1] - center[:, 1])
         v_nom[arc] = np.minimum(v_nom[arc], np.sqrt(accel * radius))
     rapid = kind == RAPID
     v_nom[rapid] = feed[rapid] / 60.0
-    return v_nom, kind, arc, center, radius
+    return v_nom, kind, arc, start, center, radius
 
 
 def _block_geometry(tp, rows: np.ndarray, accel: float, length: np.ndarray, first):
     """``_geometry`` of some moves, and their nominal speeds."""
     start, end = _starts(tp, rows, first), tp.end.take(rows, axis=0)
-    v_nom, kind, arc, center, radius = _nominal_speeds(tp, rows, accel, first)
+    v_nom, kind, arc, arc_start, center, radius = _nominal_speeds(tp, rows, accel, start)
     start_dir = line_tangents(start, end)
     end_dir = start_dir.copy()
     if len(arc):
-        arc_start, arc_end, arc_len = start.take(arc, axis=0), end.take(arc, axis=0), length[arc]
+        arc_end, arc_len = end.take(arc, axis=0), length[arc]
         dz = arc_end[:, 2] - arc_start[:, 2]
         sweep = np.sqrt(np.maximum(arc_len ** 2 - dz ** 2, 0.0))
         sweep = np.where(kind[arc] == ARC_CW, -1.0, 1.0) * sweep / np.where(radius > 0, radius, 1.0)
