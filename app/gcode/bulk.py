@@ -181,9 +181,11 @@ def scan_stream(data: bytes, n_lines: int, chunks: list | None = None, share_byt
             del words_of
             _classify(window, table, 0, len(window.simple))
             yield window, min(base, n_lines)
-    finally:
+    finally:  # (also when the caller stops early: a program that needs the expander)
         if tail:
             tail.close()
+        for future in futures.values():  # the helper's groups not begun yet are dropped
+            future.cancel()
     if base < n_lines:  # lines the chunks did not count: none is simple
         yield _table(base, n_lines - base)[0], n_lines
 
