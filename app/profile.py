@@ -13,7 +13,6 @@ from __future__ import annotations
 import json
 import math
 import re
-import tomllib
 from dataclasses import dataclass, field, fields, replace
 from pathlib import Path
 from typing import Any
@@ -267,6 +266,8 @@ def read_overrides(base: MachineProfile, data: Any, where: str = "") -> ProfileR
 def parse_file(path: Path, text: str) -> Any:
     """The JSON (``.json``) or TOML data of ``text``; ProfileError if it cannot be read
     (nested deeper than ``reading.MAX_JSON_DEPTH`` included: never the parser's recursion)."""
+    import tomllib  # here: a load that reads no profile file (``cnc-gcode check``) never needs it
+
     from app.gcode.reading import nesting_problem
 
     kind = "JSON" if path.suffix == ".json" else "TOML"

@@ -24,6 +24,7 @@ import numpy as np
 
 from . import forked, workers
 from .clean import quick
+from .sniff import chunk_plain, letters_plain
 from .source import chunks as chunk_table
 from .tokens import numbers, tokenize
 
@@ -45,6 +46,7 @@ class Scan:
     units: np.ndarray  # int8 (n,), 1 for G20, 0 for G21, -1 when none
     values: dict[str, np.ndarray]  # letter X Y Z I J F M S -> float64 (n,), NaN when absent
     first: int = 0
+    plain: bool = True  # every chunk read shows the program needs no expander (``sniff.chunk_plain``)
 
 
 def _table(first: int, n: int) -> tuple[Scan, np.ndarray]:
@@ -56,9 +58,10 @@ def _table(first: int, n: int) -> tuple[Scan, np.ndarray]:
 
 
 def _scan_chunk(raw: bytes, n_lines: int):
-    """Words of the good lines of one chunk: (odd mask, line, letter, value)."""
+    """Words of the good lines of one chunk: (odd mask, line, letter, value, plain), with
+    ``plain`` as ``sniff.chunk_plain`` (from the words' letters when every line is clean)."""
     if b"\x01" in raw:  # the comment mark below must not occur in the source
-        return np.ones(n_lines, bool), *(np.empty(0, t) for t in (np.int64, np.uint8, np.float64))
+        return np.ones(n_lines, bool), *(np.empty(0, t) for t in (np.int64, np.uint8, np.float64)), False
     text = raw.translate(None, b" \t\r")  # rs274ngc ignores spaces: "X 1 0" is X10
     text = _COMMENT.sub(COMMENT_MARK, text) if b"(" in text else text  # (spaces inside are gone too)
     text = _SEMI.sub(b"", text) if b";" in text else text
@@ -66,7 +69,9 @@ def _scan_chunk(raw: bytes, n_lines: int):
     clean = quick(text)
     if clean is not None:  # nearly every chunk: no line needs the general lexer
         tk, line = clean
-        return np.zeros(n_lines, bool), line, b[tk.letters], numbers(text, b, tk)
+        letters = b[tk.letters]
+        return np.zeros(n_lines, bool), line, letters, numbers(text, b, tk), letters_plain(letters.tobytes())
+    plain = chunk_plain(raw)
     tk = tokenize(b)
     odd = np.zeros(n_lines, bool)
     if len(tk.bad):
@@ -75,9 +80,9 @@ def _scan_chunk(raw: bytes, n_lines: int):
         b = np.frombuffer(text, np.uint8)
         tk = tokenize(b)
     if len(tk.bad) or len(tk.letters) != len(tk.starts):  # cannot happen once blanked; be safe
-        return np.ones(n_lines, bool), *(np.empty(0, t) for t in (np.int64, np.uint8, np.float64))
+        return np.ones(n_lines, bool), *(np.empty(0, t) for t in (np.int64, np.uint8, np.float64)), plain
     line = np.searchsorted(tk.newlines, tk.letters)
-    return odd, line, b[tk.letters], numbers(text, b, tk)
+    return odd, line, b[tk.letters], numbers(text, b, tk), plain
 
 
 def _blank_lines(text: bytes, newlines: np.ndarray, odd: np.ndarray) -> bytes:
@@ -169,15 +174,18 @@ def scan_stream(data: bytes, n_lines: int, chunks: list | None = None, share_byt
             words_of = (tail.take(k) if tail and k else _collect(futures.get(k))) or scan_chunks(data, group)
             first = base
             window, table = _table(first, min(sum(count for *_, count in group), n_lines - first))
-            for words, (_, _, count) in zip(words_of, group, strict=True):
+            for (*words, plain), (_, _, count) in zip(words_of, group, strict=True):
                 _fill(table, window.simple, base - first, *words)
+                window.plain &= plain
                 base += count
             del words_of
             _classify(window, table, 0, len(window.simple))
             yield window, min(base, n_lines)
-    finally:
+    finally:  # (also when the caller stops early: a program that needs the expander)
         if tail:
             tail.close()
+        for future in futures.values():  # the helper's groups not begun yet are dropped
+            future.cancel()
     if base < n_lines:  # lines the chunks did not count: none is simple
         yield _table(base, n_lines - base)[0], n_lines
 

@@ -100,13 +100,13 @@ def estimate(toolpath, device_lines, profile, start=None) -> Estimate:
     is_move = _chain(toolpath.device_index, moves, [b.line for b in barriers])
     at = _index(np.flatnonzero(is_move))  # each move's place in the queue
     first = None if first is None else (first, start)
-    chain_len, junction_sq = _geometry(toolpath, moves, at, is_move, accel, row_length,
-                                      mo.junction_deviation_mm, first)
+    chain_len, junction_sq, nominal = _geometry(toolpath, moves, at, is_move, accel, row_length,
+                                               mo.junction_deviation_mm, first)
     del at  # the passes need a few numbers per block only
     reached = _planned_speeds(chain_len, junction_sq, accel, window_s)
     del junction_sq
-    times = _move_times(toolpath, moves, is_move, chain_len, reached, accel, first)
-    del reached, chain_len
+    times = _move_times(moves, is_move, chain_len, reached, nominal, accel)
+    del reached, chain_len, nominal
     # the S-curve settles for its window where the path stops before a barrier
     barrier_at = np.flatnonzero(~is_move)
     settles = (barrier_at > 0) & is_move[np.maximum(barrier_at - 1, 0)]
@@ -138,17 +138,17 @@ def estimate(toolpath, device_lines, profile, start=None) -> Estimate:
         stop_seconds=stop_settle + sum(b.stop_ms for b in stops) / 1000.0)
 
 
-def _move_times(tp, moves, is_move, chain_len, reached, accel: float, first) -> np.ndarray:
+def _move_times(moves, is_move, chain_len, reached, nominal, accel: float) -> np.ndarray:
     """Seconds of each move, a block at a time: from the speed reached at its entry to the
-    next block's (0 after the last), never above its nominal speed (worked out again: not
-    kept through the passes)."""
+    next block's (0 after the last), never above its nominal speed (``nominal``, per move,
+    kept from ``_geometry``: 8 bytes a move, against working them out twice)."""
     times = np.empty(len(moves))
     at = _index(np.flatnonzero(is_move))
     for a in range(0, len(at), BLOCK):
         place = at[a : a + BLOCK]
         after = place + 1
         v_out = np.where(after < len(reached), reached[np.minimum(after, len(reached) - 1)], 0.0)
-        v_in, v = reached[place], _nominal_speeds(tp, moves[a : a + BLOCK], accel, first)[0]
+        v_in, v = reached[place], nominal[a : a + BLOCK]
         times[a : a + BLOCK] = trapezoid_times(chain_len[place], v_in, v_out, v, accel)
     return times
 
@@ -210,9 +210,9 @@ def _geometry(tp, moves: np.ndarray, at: np.ndarray, is_move: np.ndarray, accel:
     barriers and after them: from rest); ``first``:
     (row, start) that row starts from instead. Worked out ``BLOCK`` moves at a time, each
     block's first tangent meeting the last end tangent of the block before (the same
-    numbers as whole arrays, a few MB at a time)."""
+    numbers as whole arrays, a few MB at a time); and each move's nominal speed."""
     n = len(moves)
-    chain_len, junction_sq = np.zeros(len(is_move)), np.zeros(len(is_move))
+    chain_len, junction_sq, nominal = np.zeros(len(is_move)), np.zeros(len(is_move)), np.empty(n)
     last_dir, last_v = np.zeros((1, 3)), np.zeros(1)
     for a in range(0, n, BLOCK):
         part = slice(a, a + BLOCK)
@@ -220,14 +220,14 @@ def _geometry(tp, moves: np.ndarray, at: np.ndarray, is_move: np.ndarray, accel:
         row_len = row_length.take(rows).astype(float)
         length, v_nom, start_dir, end_dir = _block_geometry(tp, rows, accel, row_len, first)
         place = at[part]
-        chain_len[place] = length
+        chain_len[place], nominal[part] = length, v_nom
         end_dir, v = np.concatenate((last_dir, end_dir)), np.concatenate((last_v, v_nom))
         last_dir, last_v = end_dir[-1:], v[-1:]
         follows = np.flatnonzero((place > 0) & is_move[np.maximum(place - 1, 0)])
         vj = junction_speeds(end_dir.take(follows, axis=0), start_dir.take(follows, axis=0), accel, deviation)
         vj = np.minimum(np.minimum(vj, v[follows + 1]), v[follows])
         junction_sq[place[follows]] = vj * vj
-    return chain_len, junction_sq
+    return chain_len, junction_sq, nominal
 
 
 def _starts(tp, rows: np.ndarray, first) -> np.ndarray:
@@ -238,31 +238,32 @@ def _starts(tp, rows: np.ndarray, first) -> np.ndarray:
     return start
 
 
-def _nominal_speeds(tp, rows: np.ndarray, accel: float, first):
+def _nominal_speeds(tp, rows: np.ndarray, accel: float, start: np.ndarray):
     """(mm/s each of these moves runs at most: its feed, arcs at most sqrt(a r); their
-    kinds; the arcs among them; the arcs' centres and radii)."""
+    kinds; the arcs among them; the arcs' starts, centres and radii); ``start``: where
+    they start."""
     kind, feed = tp.kind.take(rows), tp.feed.take(rows)
     v_nom = feed / 60.0
     arc = np.flatnonzero((kind == ARC_CW) | (kind == ARC_CCW))
     center = radius = None
     if len(arc):
-        start = _starts(tp, rows[arc], first)
+        start = start.take(arc, axis=0)
         center = tp.center.take(rows[arc], axis=0)
         radius = np.hypot(start[:, 0] - center[:, 0], start[:, 1] - center[:, 1])
         v_nom[arc] = np.minimum(v_nom[arc], np.sqrt(accel * radius))
     rapid = kind == RAPID
     v_nom[rapid] = feed[rapid] / 60.0
-    return v_nom, kind, arc, center, radius
+    return v_nom, kind, arc, start, center, radius
 
 
 def _block_geometry(tp, rows: np.ndarray, accel: float, length: np.ndarray, first):
     """``_geometry`` of some moves, and their nominal speeds."""
     start, end = _starts(tp, rows, first), tp.end.take(rows, axis=0)
-    v_nom, kind, arc, center, radius = _nominal_speeds(tp, rows, accel, first)
+    v_nom, kind, arc, arc_start, center, radius = _nominal_speeds(tp, rows, accel, start)
     start_dir = line_tangents(start, end)
     end_dir = start_dir.copy()
     if len(arc):
-        arc_start, arc_end, arc_len = start.take(arc, axis=0), end.take(arc, axis=0), length[arc]
+        arc_end, arc_len = end.take(arc, axis=0), length[arc]
         dz = arc_end[:, 2] - arc_start[:, 2]
         sweep = np.sqrt(np.maximum(arc_len ** 2 - dz ** 2, 0.0))
         sweep = np.where(kind[arc] == ARC_CW, -1.0, 1.0) * sweep / np.where(radius > 0, radius, 1.0)

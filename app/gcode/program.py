@@ -12,6 +12,7 @@ move (``toolpath.device_index``) are known at once.
 
 from __future__ import annotations
 
+import contextlib
 import threading
 from dataclasses import dataclass, field
 from functools import cached_property, partial
@@ -40,6 +41,7 @@ from .state import State
 from .toolpath import Toolpath, build
 
 TRIM_BYTES = 8 << 20  # after the scan of a file this big, free heap pages go back to the system
+FOLD_BYTES = 1 << 20  # a program this big is read on the fast path before it is known to be plain
 ORIGIN = (0.0, 0.0, 0.0)  # where rs274 reads a program from; ``from_start`` gives the machine's
 
 
@@ -205,15 +207,23 @@ def _start_state(profile: MachineProfile, tools: dict | None, block_delete: bool
 
 
 def _plain(lines: Lines, data: list[bytes], start: State, report: Report, stop: int,
-           buffer: OpBuffer | None = None) -> tuple[Ops, int]:
+           buffer: OpBuffer | None = None, unsure: bool = False) -> tuple[Ops, int]:
     """The fast path over the lines before index ``stop``; ``data`` holds the bytes,
-    handed over (emptied) to free them early. (ops, line of M2/M30 or 0)"""
+    handed over (emptied) to free them early. (ops, line of M2/M30 or 0). ``unsure``: the
+    program may need the expander: each window of the scan says whether it shows it does
+    not (``Scan.plain``), else ``sniff.needs_expander`` of the whole file decides, once,
+    before a line of that window is interpreted; ``sniff.NeedsExpander`` when it does."""
     raw = data.pop()
     n = len(lines)  # reuse the chunks Lines already counted; otherwise scan makes its own
     buffer = OpBuffer() if buffer is None else buffer
     interpreter = runner.Runner(lines, buffer, report, start)
-    for scan, ready in bulk.scan_stream(raw, n, lines.chunks or None):  # interpret as lines come
-        interpreter.advance(scan, min(ready, stop))
+    with contextlib.closing(bulk.scan_stream(raw, n, lines.chunks or None)) as stream:  # (a forked
+        for scan, ready in stream:  # child stops at once); interpret as lines come
+            if unsure and not scan.plain:
+                if sniff.needs_expander(raw):
+                    raise sniff.NeedsExpander
+                unsure = False
+            interpreter.advance(scan, min(ready, stop))
     del raw, scan
     ended = interpreter.finish().ended
     return buffer.finish(), ended
@@ -232,6 +242,31 @@ def _expanded(lines: Lines, name: str, folder: Path | None, start: State, report
                         trace.context.array(np.int32), trace.iteration.array(np.int32),
                         trace.files, trace.names)
     return ops, trace.state.ended
+
+
+def _fast(lines: Lines, data: list[bytes], name: str, profile: MachineProfile, tools, folder, settings,
+          origin, stop: int, unsure: bool) -> tuple[Ops, int, StartInfo, Report]:
+    """``_interpret``'s fast path: (ops, line of M2/M30 or 0, where the job starts, report);
+    ``unsure`` as for ``_plain`` (``sniff.NeedsExpander`` then leaves ``data`` as it was)."""
+    report, start = Report(), _start_state(profile, tools, *settings, origin)
+    aborted, text = abort_line(data[0], partial(lines.line_of, data[0]))  # the expander stops at an
+    if aborted and aborted <= stop:  # ABORT when its flow reaches it; here it ends the program
+        stop = aborted - 1
+        report.error(aborted, 0, abort_message(text))
+    reader = _prefix_reader(data[0], lines, name, profile, tools, folder, False, stop, settings)
+    where = job_start.probe(reader, origin)  # before the bytes are handed over
+    del reader
+    big = len(data[0]) >= TRIM_BYTES
+    raw = data[0]
+    try:
+        ops, ended = _plain(lines, data, start, report, stop, unsure=unsure)
+    except sniff.NeedsExpander:
+        data[:] = [raw]
+        raise
+    del raw
+    if big:
+        _give_back_free_memory()  # the scan's many chunk-sized temporaries
+    return ops, ended, where, report
 
 
 class _Enough(BaseException):
@@ -273,7 +308,7 @@ def _line_end(raw: bytes, count: int) -> int:
     return pos + 1
 
 
-def _prefix_reader(raw: bytes, lines: Lines, name: str, profile: MachineProfile, tools, folder,
+def _prefix_reader(raw: bytes | None, lines: Lines, name: str, profile: MachineProfile, tools, folder,
                    expand: bool, stop: int, settings: tuple):
     """``start.Reader`` of this program: its first rows read from a given origin (a plain
     program's first lines; an expanded program until it has made the rows asked for);
@@ -308,34 +343,30 @@ def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfi
     ``data`` need it, else the fast path; ``plan_ahead``: the planner's estimate starts on
     a thread as soon as the toolpath is there (``Program.planned`` then waits for it), and
     the checks wait for the toolpath and run beside it (less memory at the peak; without
-    it they run beside the plan and the toolpath: the window's load returns sooner)."""
-    report = Report()
+    it they run beside the plan and the toolpath: the window's load returns sooner).
+    A program of ``FOLD_BYTES`` or more is not sniffed first: its scan tells on the way
+    (``_plain``), and it starts again on the expander's path if it needs it."""
     settings = (block_delete, systems)
-    start = _start_state(profile, tools, *settings, origin)
     line_of = partial(lines.line_of, data[0])  # from the chunk table: no count of every newline
     percent = percent_lines(data[0], line_of)
     closing = percent[1]
-    stop = closing - 1 if closing else len(lines)  # nothing after the closing % runs
-    expand = sniff.needs_expander(data[0])
-    if not expand:  # the expander stops at an ABORT when its flow reaches it
-        aborted, text = abort_line(data[0], line_of)
-        if aborted and aborted <= stop:
-            stop = aborted - 1
-            report.error(aborted, 0, abort_message(text))
-    reader = _prefix_reader(data[0], lines, name, profile, tools, folder, expand, stop, settings)
+    whole = closing - 1 if closing else len(lines)  # nothing after the closing % runs
+    unsure = len(data[0]) >= FOLD_BYTES
+    expand = not unsure and sniff.needs_expander(data[0])
+    if not expand:
+        try:
+            ops, ended, where, report = _fast(lines, data, name, profile, tools, folder, settings, origin,
+                                              whole, unsure)
+        except sniff.NeedsExpander:
+            expand = True
     if expand:
+        report, start = Report(), _start_state(profile, tools, *settings, origin)
+        reader = _prefix_reader(None, lines, name, profile, tools, folder, True, whole, settings)
         data.clear()
-        ops, ended = _expanded(lines, name, folder, start, report, stop)
+        ops, ended = _expanded(lines, name, folder, start, report, whole)
         shifted = reader  # the rows read from the origin are the program's own: one reading less
         reader = lambda at, limit: (ops, True) if np.array_equal(at, origin) else shifted(at, limit)  # noqa: E731
         where = job_start.probe(reader, origin)
-    else:
-        where = job_start.probe(reader, origin)  # before the bytes are handed over
-        del reader
-        big = len(data[0]) >= TRIM_BYTES
-        ops, ended = _plain(lines, data, start, report, stop)
-        if big:
-            _give_back_free_memory()  # the scan's many chunk-sized temporaries
     report_tail(lines, percent, ended, report)
     ops.origin = tuple(float(v) for v in origin)
     ops.starts()  # computed once, before the threads read it

@@ -117,3 +117,22 @@ def test_the_command_line_load_with_a_child_gives_the_same_program(big, one_shot
     assert shared.errors  # the repeated X at least
     np.testing.assert_array_equal(shared.toolpath.end, alone.toolpath.end)
     np.testing.assert_array_equal(shared.toolpath.source_line, alone.toolpath.source_line)
+
+
+def test_a_big_file_found_to_need_the_expander_mid_scan_stops_its_child(big, one_shot, tmp_path, monkeypatch):
+    from app.gcode import program
+
+    path = tmp_path / "big.ngc"
+    path.write_bytes(big)  # its unclosed comment near the end: the expander's, found mid-scan
+    closed, close = [], forked.Tail.close
+    monkeypatch.setattr(forked.Tail, "close", lambda self: closed.append(close(self)))
+    monkeypatch.setattr(bulk, "SHARE_BYTES", 0)
+    folded = load(path)
+    assert one_shot and closed  # a child was forked, asked, and stopped
+    monkeypatch.setattr(forked, "_allowed", False)
+    monkeypatch.setattr(program, "FOLD_BYTES", 1 << 40)
+    sniffed = load(path)
+    assert folded.ops.source is not None and sniffed.ops.source is not None
+    assert [str(d) for d in folded.diagnostics] == [str(d) for d in sniffed.diagnostics]
+    np.testing.assert_array_equal(folded.toolpath.end, sniffed.toolpath.end)
+    np.testing.assert_array_equal(folded.toolpath.source_line, sniffed.toolpath.source_line)
