@@ -43,6 +43,12 @@ class LinkMonitor:
     def heard(self, now: float) -> None:
         self.last_heard = now
 
+    def excuse(self, seconds: float) -> None:
+        """The host read nothing for ``seconds`` (busy preparing a job): that time is not
+        the machine's silence. A link already lost stays lost."""
+        if self.state is not LinkState.LOST:
+            self.last_heard += max(0.0, seconds)
+
     def silent_for(self, now: float) -> float:
         return max(0.0, now - self.last_heard)
 

@@ -20,7 +20,8 @@ coordinates are negative; builds that force the origin at home differ).
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass, replace
+from dataclasses import replace
+from typing import NamedTuple
 
 from app.comm.events import ProgramStopEvent
 from app.i18n import msg
@@ -32,9 +33,10 @@ SYNC = "G4 P0"
 _STOP = re.compile(r"^M0*([016])(?:\s+T(\d+))?\s*$")
 
 
-@dataclass(frozen=True)
-class GrblLine:
-    """One line of a job: ``text`` to send (None at a program stop), its program index."""
+class GrblLine(NamedTuple):
+    """One line of a job: ``text`` to send (None at a program stop), its program index
+    (a named tuple: a million of them are made at Start, three times faster than a
+    frozen dataclass)."""
 
     index: int
     text: str | None
@@ -46,7 +48,7 @@ def grbl_lines(device_lines, optional_stop: bool = True, first_index: int = 0) -
     out = []
     for index, line in enumerate(device_lines[first_index:], first_index):
         text = line.strip().upper()
-        stop = _STOP.match(text)
+        stop = _STOP.match(text) if "M" in text else None  # (most lines name no M code)
         if stop is None:
             out.append(GrblLine(index, text))
             continue

@@ -58,6 +58,7 @@ class GrblJobControl:
             device_lines = list(program.device_lines)
             line_map = line_map if line_map is not None else program.line_map.tolist()
             name = name or getattr(program, "name", "")
+        began = self.clock()
         why = self._job_refusal(device_lines, start)
         if why:
             self._error("REFUSED", why)
@@ -80,6 +81,7 @@ class GrblJobControl:
         self.job, self.last_job, self._last_progress = job, None, float("-inf")
         self._set_state(S.STARTING)
         self._set_state(S.STREAMING)
+        self.link.excuse(self.clock() - began)  # (a million lines take a second or two to prepare)
         self.tick()
         return True
 

@@ -424,3 +424,26 @@ def test_frame_protocol_get_and_zero_wait_for_what_grbl_reports():
     h.feed("<Idle|MPos:-100.000,-100.000,-5.000|FS:0,0|WCO:-100.000,-150.000,-10.000>")
     zero = [r for r in h.rec.of("on_command_done") if r.verb == "ZERO"]
     assert len(zero) == 1 and zero[0].info == "X50.000 Y0.000 Z20.000"
+
+
+def test_the_time_spent_preparing_a_big_job_is_not_the_machine_s_silence(monkeypatch):
+    """Start reads nothing while it prepares the lines (a million take a second or two):
+    the link stays up, and a real silence after it is still seen."""
+    from app.comm.grbl import jobflow
+
+    h = Harness()
+    h.answer_refresh()
+    h.advance(0.5)
+    h.feed("<Idle|MPos:-100.000,-100.000,-5.000|FS:0,0>")
+    prepare = jobflow.grbl_lines
+
+    def slow_prepare(*args, **kwargs):
+        h.now += 3.5  # the host busy for longer than the lost limit
+        return prepare(*args, **kwargs)
+
+    monkeypatch.setattr(jobflow, "grbl_lines", slow_prepare)
+    changes = len(h.rec.of("on_link_changed"))
+    assert h.session.start_job(["G00 X1", "G01 X2 F600"])
+    assert h.rec.of("on_link_changed")[changes:] == []  # neither degraded nor lost
+    h.advance(3.1)  # then the machine says nothing: lost as always
+    assert h.rec.of("on_link_changed")[-1].state == "LOST"
