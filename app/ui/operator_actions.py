@@ -201,6 +201,7 @@ class OperatorActions(QObject):
             box.blockSignals(False)
 
     def resume_after_reconnect(self) -> None:
+        self.w.binder.offer_answered = True
         self.w.alert.hide()
         self.link.call("resume_after_reconnect")
 
@@ -210,10 +211,12 @@ class OperatorActions(QObject):
             self.w.alert.say(self.tr("Homing first; press “Home and restart” again once homed."))
             self.home("NORMAL")
             return
+        self.w.binder.offer_answered = True
         self.w.alert.hide()
         self.link.call("confirm_restart")
 
     def abandon(self) -> None:
+        self.w.binder.offer_answered = True
         self.w.alert.hide()
         self.link.call("stop")
 

@@ -44,6 +44,7 @@ class SessionBinder(QObject):
         self.last_job_event = None  # JobEvent of the last job (not upload)
         self.last_upload_event = None
         self.alert_clock: float | None = None  # link clock when the alert last appeared
+        self.offer_answered = False  # the operator answered the alert's offer (until a new cut-off)
         self._dirty = False  # a status arrived since the last refresh
         self._progress_dirty = False  # progress arrived since the last slow refresh
         self._ticks = 0
@@ -197,6 +198,7 @@ class SessionBinder(QObject):
             self.w.notifier.warning(self.tr("Machine alarm"), alarm_text(event.code, event.text))
 
     def _alert(self, what: str, detail: str) -> None:
+        self.offer_answered = False
         if not self.w.alert.isVisible():
             self.alert_clock = self.w.link.clock()
         from_sd = self.status is not None and "S" in self.status.flags
@@ -208,6 +210,8 @@ class SessionBinder(QObject):
         self.refresh_enabled(force=False)
 
     def on_resume_offer(self, offer) -> None:
+        if self.offer_answered:  # an offer already on its way when the operator answered
+            return
         line, lines = self.source_line(offer.from_seq), self.source_total()
         if not self.w.link.capabilities.exact_resume:  # GRBL: Start here, whatever happened
             self.w.alert.show_restart_offer(line, lines, offer.needs_home)
@@ -229,6 +233,8 @@ class SessionBinder(QObject):
     # -- state, status, progress ----------------------------------------------------
 
     def on_state(self, event) -> None:
+        if event.new in RECOVERY and self.state not in RECOVERY:
+            self.offer_answered = False  # a new cut-off: its offers are shown
         self.state = event.new
         self.w.connection.set_machine_state(self._machine_state(), self.status.flags if self.status else "")
         if event.new in JOB:

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import pytest
 
+from app.comm.events import ResumeOffer
 from app.comm.grbl.dialect import grbl_lines
 from tests.ui.grbl_rig import homed_window, lines_run
 
@@ -108,6 +109,8 @@ def test_a_failed_port_then_reconnect_offers_start_here(qtbot, grbl_job):
     qtbot.waitUntil(lambda: window.alert.restart.isVisible(), timeout=30_000)
     assert "GRBL cannot resume a job exactly" in window.alert.body.text()
     window.alert.abandon.click()  # the operator abandons it instead
+    binder.on_resume_offer(ResumeOffer(False, 3, 2, 10, False))  # already on its way: not shown again
+    assert not window.alert.isVisible()
     qtbot.waitUntil(lambda: binder.state == "READY", timeout=10_000)
     assert not window.alert.isVisible()
     qtbot.waitUntil(lambda: binder.last_job_event is not None, timeout=10_000)
