@@ -43,9 +43,16 @@ def _read(fd: int, count: int, seconds: float = 30.0) -> bytes:
 def test_a_slow_reader_gets_every_byte_of_what_is_sent_while_it_is_full(server):
     filler = _fill(server.master)
     frames = b"".join(b"S 1234ABCD IDLE %07d*0000\n" % k for k in range(400))  # 10 kB
+    full, wait_for_room = threading.Event(), server._wait_for_room
+
+    def waits() -> None:  # the sender met the full pty (the reader is busy elsewhere)
+        full.set()
+        wait_for_room()
+
+    server._wait_for_room = waits
     sender = threading.Thread(target=server._send, args=(frames,))
     sender.start()
-    time.sleep(0.3)  # the reader is busy elsewhere: the sender must wait, not drop
+    assert full.wait(5), "the sender never found the pty full"
     got = _read(server.slave, filler + len(frames))
     sender.join(5)
     assert not sender.is_alive()
