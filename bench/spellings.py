@@ -1,7 +1,7 @@
 """The same program in other legal spellings, for the load benchmarks (issue 24).
 
 ``variants(path)`` writes beside a compact file (as Gcodetools writes it) the same moves
-spelled four ways and returns their paths (made once, then reused):
+spelled five ways and returns their paths (made once, then reused):
 
 * ``padded``: numbers right-aligned in wide fields after a space (``X  40.710000``), as
   many post-processors (and this project's importer, once) write;
@@ -9,10 +9,13 @@ spelled four ways and returns their paths (made once, then reused):
 * ``numbered``: a block number ``N10``, ``N20``, ... before every line but ``%``;
 * ``mixed``: all of those at once, plus ``G1`` for ``G01``, ``+`` on positive numbers,
   no leading zero (``X.5``), spaces inside words (``g 1``, ``x+ 40.7``) and a ``;``
-  comment on every tenth line.
+  comment on every tenth line;
+* ``marked``: what else hosts and editors write: CRLF line ends, tabs between words,
+  a checksum ``*71`` on every fifth line (RepRap hosts send them; the lexer ignores
+  them) and block delete ``/`` on every seventh (the switch off: they run).
 
-rs274 reads every one of them as the compact file (spaces anywhere, either case,
-block numbers, signs, leading zeros).
+rs274 reads the first four as the compact file (spaces anywhere, either case, block
+numbers, signs, leading zeros; it knows no checksums).
 """
 
 from __future__ import annotations
@@ -25,7 +28,7 @@ _LEADING_ZERO = re.compile(rb"(?<=[XYZIJF+-])0\.")
 _POSITIVE = re.compile(rb"([XYZIJF])(?=[\d.])")
 _TWO_DIGIT_G = re.compile(rb"G0(\d)\b")
 _WORD_GAP = re.compile(rb"([GXYZIJF])")
-NAMES = ("padded", "lower", "numbered", "mixed")
+NAMES = ("padded", "lower", "numbered", "mixed", "marked")
 
 
 def _padded(data: bytes) -> bytes:
@@ -51,7 +54,18 @@ def _mixed(data: bytes) -> bytes:
     return _numbered(b"\n".join(lines) + b"\n").lower()
 
 
-SPELL = {"padded": _padded, "lower": bytes.lower, "numbered": _numbered, "mixed": _mixed}
+def _marked(data: bytes) -> bytes:
+    lines = data.replace(b" ", b"\t").split(b"\n")[:-1]
+    for k in range(4, len(lines), 5):
+        if not lines[k].startswith((b"%", b"(")):
+            lines[k] += b"*%d" % (sum(lines[k]) & 255)
+    for k in range(6, len(lines), 7):
+        if not lines[k].startswith(b"%"):
+            lines[k] = b"/" + lines[k]
+    return b"\r\n".join(lines) + b"\r\n"
+
+
+SPELL = {"padded": _padded, "lower": bytes.lower, "numbered": _numbered, "mixed": _mixed, "marked": _marked}
 
 
 def variants(path: Path) -> dict[str, Path]:

@@ -4,8 +4,9 @@
 physical line with the motion code ``g`` (G0-G3), the ``units`` code (G20 = 1,
 G21 = 0), the values of X, Y, Z, I, J, F, M (3 or 5 only) and S (NaN when absent) and
 a ``simple`` flag. A line is simple when it holds only those words (and N), each at
-most once, well formed, with nothing but spaces and well-closed comments around them,
-and M or S only on a line with no motion word: the shape of nearly every line
+most once, well formed, with nothing but spaces and well-closed comments around them
+(and perhaps a leading ``/``, block delete, flagged in ``deleted``, or a ``*checksum``
+at its end), and M or S only on a line with no motion word: the shape of nearly every line
 Inkscape's Gcodetools writes (``tokens.py`` gives the byte-level rules). Every other
 line is left to the general lexer and interpreter, which are the reference; the tests
 check that both paths agree. ``scan_stream`` yields the table a window of lines at a
@@ -31,7 +32,8 @@ from .tokens import numbers, tokenize
 COLUMNS = "GXYZIJFMS"  # the words of a simple line (and N, read and dropped)
 _COMMENT = re.compile(rb"\([^()\n]*\)")
 COMMENT_MARK = b"\x01"  # a comment separates words: "X1(c)0" is not X10
-_SEMI = re.compile(rb";[^\n]*")
+_SEMI = re.compile(rb";[^\n]*")  # a ";" comment or a "*checksum" ends the words of a line
+_CHECKSUM = re.compile(rb"\*[^\n]*")  # (two patterns: a literal first byte is searched far faster than [;*])
 SHARE_BYTES = 8 << 20  # a file this big has its tail scanned by the helper process (workers.py)
 WINDOW_BYTES = 4 << 20  # source bytes of one window of the table (about 85,000 lines, 6 MB of table)
 HELPER_GROUPS = 32  # a shared file is scanned in this many runs of chunks (see scan_stream)
@@ -47,30 +49,39 @@ class Scan:
     values: dict[str, np.ndarray]  # letter X Y Z I J F M S -> float64 (n,), NaN when absent
     first: int = 0
     plain: bool = True  # every chunk read shows the program needs no expander (``sniff.chunk_plain``)
+    deleted: np.ndarray | None = None  # bool (n,): the line starts with "/" (block delete); None: none does
 
 
 def _table(first: int, n: int) -> tuple[Scan, np.ndarray]:
     """An empty window of ``n`` lines from line ``first`` and its (9, n) table of values."""
     table = np.full((len(COLUMNS), n), np.nan)  # one contiguous row per letter
     window = Scan(np.zeros(n, bool), np.full(n, -1, np.int8), np.full(n, -1, np.int8),
-                  {c: table[i] for i, c in enumerate(COLUMNS) if c != "G"}, first)
+                  {c: table[i] for i, c in enumerate(COLUMNS) if c != "G"}, first, deleted=np.zeros(n, bool))
     return window, table
 
 
+_NO_LINES = np.empty(0, np.int64)
+
+
 def _scan_chunk(raw: bytes, n_lines: int):
-    """Words of the good lines of one chunk: (odd mask, line, letter, value, plain), with
-    ``plain`` as ``sniff.chunk_plain`` (from the words' letters when every line is clean)."""
+    """Words of the good lines of one chunk: (odd mask, line, letter, value, lines that
+    start with "/", plain), with ``plain`` as ``sniff.chunk_plain`` (from the words'
+    letters when every line is clean)."""
     if b"\x01" in raw:  # the comment mark below must not occur in the source
-        return np.ones(n_lines, bool), *(np.empty(0, t) for t in (np.int64, np.uint8, np.float64)), False
+        return np.ones(n_lines, bool), *(np.empty(0, t) for t in (np.int64, np.uint8, np.float64)), \
+            _NO_LINES, False
     text = raw.translate(None, b" \t\r")  # rs274ngc ignores spaces: "X 1 0" is X10
     text = _COMMENT.sub(COMMENT_MARK, text) if b"(" in text else text  # (spaces inside are gone too)
     text = _SEMI.sub(b"", text) if b";" in text else text
+    text = _CHECKSUM.sub(b"", text) if b"*" in text else text
+    text, deleted = _block_delete(text) if b"/" in text else (text, _NO_LINES)
     b = np.frombuffer(text, np.uint8)
     clean = quick(text)
     if clean is not None:  # nearly every chunk: no line needs the general lexer
         tk, line = clean
         letters = b[tk.letters]
-        return np.zeros(n_lines, bool), line, letters, numbers(text, b, tk), letters_plain(letters.tobytes())
+        return np.zeros(n_lines, bool), line, letters, numbers(text, b, tk), deleted, \
+            letters_plain(letters.tobytes())
     plain = chunk_plain(raw)
     tk = tokenize(b)
     odd = np.zeros(n_lines, bool)
@@ -80,9 +91,19 @@ def _scan_chunk(raw: bytes, n_lines: int):
         b = np.frombuffer(text, np.uint8)
         tk = tokenize(b)
     if len(tk.bad) or len(tk.letters) != len(tk.starts):  # cannot happen once blanked; be safe
-        return np.ones(n_lines, bool), *(np.empty(0, t) for t in (np.int64, np.uint8, np.float64)), plain
+        return np.ones(n_lines, bool), *(np.empty(0, t) for t in (np.int64, np.uint8, np.float64)), \
+            deleted, plain
     line = np.searchsorted(tk.newlines, tk.letters)
-    return odd, line, b[tk.letters], numbers(text, b, tk), plain
+    return odd, line, b[tk.letters], numbers(text, b, tk), deleted, plain
+
+
+def _block_delete(text: bytes) -> tuple[bytes, np.ndarray]:
+    """``text`` without the "/" that starts a line (block delete; the lexer's ``skip``),
+    and the lines that had one. A "/" anywhere else stays: the general lexer refuses it."""
+    b = np.frombuffer(text, np.uint8)
+    slash = np.flatnonzero(b == ord("/"))
+    lead = slash[b[slash - 1] == ord("\n")]  # (index -1 is the chunk's last newline)
+    return np.delete(b, lead).tobytes(), np.searchsorted(np.flatnonzero(b == ord("\n")), lead)
 
 
 def _blank_lines(text: bytes, newlines: np.ndarray, odd: np.ndarray) -> bytes:
@@ -100,9 +121,10 @@ _COLUMN[[ord("N"), ord("n")]] = -2
 _COLUMN_TABLE = _COLUMN.tobytes()
 
 
-def _fill(table: np.ndarray, simple: np.ndarray, base: int, odd, line, letters, values) -> None:
+def _fill(window: Scan, table: np.ndarray, base: int, odd, line, letters, values, deleted) -> None:
     """Write one chunk's words into the table (one scatter); flag other letters and repeats."""
-    n = len(odd)
+    n, simple = len(odd), window.simple
+    window.deleted[base + deleted] = True
     ok = ~odd
     col = np.frombuffer(letters.tobytes().translate(_COLUMN_TABLE), np.int8)
     if (col < 0).any():  # N words (dropped) or letters a simple line never holds
@@ -142,6 +164,7 @@ def scan(data: bytes, n_lines: int, chunks: list | None = None, share_bytes: int
     for window, _ in scan_stream(data, n_lines, chunks, share_bytes):
         rows = slice(window.first, window.first + len(window.simple))
         result.simple[rows], result.g[rows], result.units[rows] = window.simple, window.g, window.units
+        result.deleted[rows] = window.deleted
         for letter, column in window.values.items():
             result.values[letter][rows] = column
     return result
@@ -175,7 +198,7 @@ def scan_stream(data: bytes, n_lines: int, chunks: list | None = None, share_byt
             first = base
             window, table = _table(first, min(sum(count for *_, count in group), n_lines - first))
             for (*words, plain), (_, _, count) in zip(words_of, group, strict=True):
-                _fill(table, window.simple, base - first, *words)
+                _fill(window, table, base - first, *words)
                 window.plain &= plain
                 base += count
             del words_of

@@ -61,6 +61,14 @@ class Report:
             return
         self.items.append(Diagnostic(line, column, severity, message, file))
 
+    def add_many(self, lines: range, column: int, severity: str, message: str, key: str = "") -> None:
+        """``add`` for every line of ``lines``, at the cost of the ones kept only."""
+        key = key or message
+        kept = lines[: max(self.limit - self._seen[severity, key], 0)]
+        for line in kept:
+            self.add(line, column, severity, message, key)
+        self.overflow(severity, key, len(lines) - len(kept))
+
     def overflow(self, severity: str, key: str, count: int) -> None:
         """Count ``count`` more diagnostics of ``key`` that were not listed one by one."""
         if count > 0:

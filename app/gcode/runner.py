@@ -1,7 +1,9 @@
 """Drive the two interpreters over a whole program, line by line or run by run.
 
 Simple lines (``bulk.Scan``) in a state the fast path handles go to ``vector.run``
-in runs; every other line is lexed and interpreted by the general path. After a
+in runs (a block-deleted "/" line too, unless the operator's switch is on: the general
+path then skips it with its warning); every other line is lexed and interpreted by the
+general path. After a
 line the general path refused, the next ``SLOW_AFTER_ERROR`` lines also take the
 general path so a file full of errors costs linear time; the general path's rows
 become arrays every ``FLUSH_ROWS`` rows (a file read line by line costs no more
@@ -17,7 +19,7 @@ from app.i18n import msg
 
 from . import vector
 from .bulk import Scan
-from .diagnostics import Report
+from .diagnostics import WARNING, Report
 from .interp import finish_program, interpret_line
 from .lexer import lex_line
 from .ops import OpBuffer
@@ -26,6 +28,7 @@ from .state import State
 SLOW_AFTER_ERROR = 64
 RUN_MAX = 1 << 16
 RUN_AFTER_ERROR = 256
+BLOCK_DELETED = msg("block delete '/': line skipped")
 FLUSH_ROWS = 1 << 14  # rows of the general path kept as tuples (~200 bytes each) before they become arrays
 
 
@@ -36,7 +39,7 @@ def _general(state: State, text: str, line_no: int, ops: OpBuffer, report: Repor
         report.add(lexed.error.line, lexed.error.column, lexed.error.severity, lexed.error.message)
         return state, True
     if lexed.skip == "block delete" and state.block_delete:
-        report.warning(line_no, 0, msg("block delete '/': line skipped"), "block delete")
+        report.warning(line_no, 0, BLOCK_DELETED, "block delete")
         return state, False
     if lexed.skip == "%" or not lexed.words:
         return state, False
@@ -67,6 +70,10 @@ class Runner:
         state, i, simple, first = self.state, self.i, scan.simple, scan.first
         if i >= ready:
             return
+        skipped = None
+        if state.block_delete and scan.deleted is not None and scan.deleted[i - first : ready - first].any():
+            skipped = simple & scan.deleted  # the switch is on: these are skipped a run at a time
+            simple = simple & ~scan.deleted
         complex_lines = np.flatnonzero(~simple[i - first : ready - first]) + i
         while i < ready and not state.ended:
             if simple[i - first] and i >= self.slow_until and state.fast_path_ok():
@@ -77,6 +84,9 @@ class Runner:
                 if stop > i or stop == end:
                     i = stop
                     continue
+            if skipped is not None and skipped[i - first]:
+                i = self._skip_deleted(skipped[i - first : ready - first], i)
+                continue
             state, refused = _general(state, self.lines[i], i + 1, self.ops, self.report)
             if refused:
                 self.slow_until = i + 1 + SLOW_AFTER_ERROR
@@ -84,6 +94,13 @@ class Runner:
                 self.ops.flush()
             i += 1
         self.state, self.i = state, i
+
+    def _skip_deleted(self, skipped: np.ndarray, i: int) -> int:
+        """Skip the run of well-formed "/" lines that starts at line ``i`` (``skipped``
+        from there on), one warning each as the general path gives; the line after it."""
+        end = i + (len(skipped) if skipped.all() else int(np.argmin(skipped)))
+        self.report.add_many(range(i + 1, end + 1), 0, WARNING, BLOCK_DELETED, "block delete")
+        return end
 
     def finish(self) -> State:
         finish_program(self.state, self.ops)

@@ -27,12 +27,13 @@ def assert_same_scan(a: bulk.Scan, b: bulk.Scan) -> None:
     np.testing.assert_array_equal(a.simple, b.simple)
     np.testing.assert_array_equal(a.g, b.g)
     np.testing.assert_array_equal(a.units, b.units)
+    np.testing.assert_array_equal(a.deleted, b.deleted)
     for letter in a.values:
         np.testing.assert_array_equal(a.values[letter], b.values[letter])
 
 
-def reference_load(text: str):
-    """``load_text(text)`` through the reference path only: every line lexed and
+def reference_load(text: str, **options):
+    """``load_text(text, **options)`` through the reference path only: every line lexed and
     interpreted by ``lexer`` + ``interp`` (the scan is run, then no line is left to it)."""
     from unittest import mock
 
@@ -46,4 +47,4 @@ def reference_load(text: str):
     with mock.patch.object(bulk, "scan_stream", nothing_simple):
         from app.gcode import load_text
 
-        return load_text(text)
+        return load_text(text, **options)

@@ -7,8 +7,9 @@ in a word (between the letter and its number, inside the number), either case, l
 zeros, ``+`` signs, no leading zero (``X.5``), trailing zeros and dots (``X1.``),
 ``G1``/``G01``/``G001``, the motion code left out when modal, block numbers ``N10``,
 comments in both forms (``( )`` between words, ``;`` to the end, comment-only lines),
-``%`` lines, blank lines and CRLF line ends. The same moves spelled compactly are the
-expectation.
+a leading ``/`` (block delete), a ``*checksum`` at the end, ``%`` lines, blank lines
+and CRLF line ends. The same moves spelled compactly are the expectation (block delete
+off); with the switch on, the fast path skips what the reference skips.
 """
 
 import math
@@ -116,10 +117,14 @@ def spelled_line(draw, words, motion_before) -> str:
     if draw(st.booleans()):
         parts.insert(0, draw(spelled_word("N", float(draw(st.integers(0, 99999))))))
     out = draw(spaces())
+    if draw(st.integers(0, 5)) == 0:  # block delete: the line runs unless the switch is on
+        out += "/" + draw(spaces())
     for part in parts:
         out += part + draw(spaces())
         if draw(st.integers(0, 5)) == 0:
             out += f"({draw(COMMENT_TEXT)})" + draw(spaces())
+    if draw(st.integers(0, 5)) == 0:  # a checksum, as RepRap hosts send (ignored)
+        out += "*" + str(draw(st.integers(0, 255))) + draw(spaces())
     if draw(st.integers(0, 4)) == 0:
         out += ";" + draw(COMMENT_TEXT) + draw(st.sampled_from(["", "(", ")", "(x)"]))
     return out
@@ -169,3 +174,6 @@ def test_every_spelling_takes_the_fast_path_and_reads_as_the_reference(data):
     assert [(d.line and source[d.line - 1], d.message) for d in fast.diagnostics] == \
         [(d.line, d.message) for d in expected.diagnostics], text
     assert np.isfinite(fast.toolpath.end).all()
+    skipping, reference_skipping = load_text(text, block_delete=True), reference_load(text, block_delete=True)
+    assert skipping.moves == reference_skipping.moves, text
+    assert skipping.diagnostics == reference_skipping.diagnostics, text
