@@ -177,3 +177,13 @@ def test_every_spelling_takes_the_fast_path_and_reads_as_the_reference(data):
     skipping, reference_skipping = load_text(text, block_delete=True), reference_load(text, block_delete=True)
     assert skipping.moves == reference_skipping.moves, text
     assert skipping.diagnostics == reference_skipping.diagnostics, text
+
+
+def test_a_long_run_of_block_deleted_lines_is_skipped_as_the_reference_skips_it():
+    text = "G21 G1 F100\n" + "".join(f"/G1 X{k % 90 + 1} Y2\n" for k in range(500)) + "G1 X5 Y5\n/M5\n"
+    for switch in (False, True):
+        fast, reference = load_text(text, block_delete=switch), reference_load(text, block_delete=switch)
+        assert fast.moves == reference.moves
+        assert fast.diagnostics == reference.diagnostics
+    assert len(load_text(text, block_delete=True).moves) == 1
+    assert str(load_text(text, block_delete=True).diagnostics[-1]).endswith("301 more like: block delete")
