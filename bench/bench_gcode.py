@@ -285,7 +285,8 @@ def main() -> None:
     from app.gcode import load, workers
 
     print(f"machine load average: {_loadavg()} on {os.cpu_count()} cores (cnc-gcode shares a big "
-          f"file's scan with a forked child only at a load average of cores - 1 or less)")
+          f"file's scan with a forked child when half a core stood idle while it started and read "
+          f"the file, by /proc/stat; where that cannot be told, at a load average of cores - 1 or less)")
     compiled = compileall.compile_dir(ROOT / "app", quiet=1)  # as pip compiles an installed package
     note = " (this environment writes none itself)" if sys.flags.dont_write_bytecode else ""
     print(f"python bytecode: app/ compiled{note}{'' if compiled else ', with errors'}")

@@ -29,11 +29,13 @@ from pathlib import Path
 # ``__init__``; a value already in the environment is kept.)
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
+from . import forked  # noqa: E402, I001 (first: it watches the machine's idle time from here on)
+
 import numpy as np  # noqa: E402
 
 from app.i18n import N_, localize, msg  # noqa: E402
 
-from . import forked, workers  # noqa: E402
+from . import workers  # noqa: E402
 from .moves import to_jsonl  # noqa: E402
 from .program import Program, load, one_heap  # noqa: E402
 

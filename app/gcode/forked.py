@@ -14,7 +14,9 @@ Only on Linux (macOS's system libraries are not fork-safe, Windows has no fork),
 when allowed (``allowed()``: the command line turns it on for its own load), only while
 the process runs a single thread (forking a process with threads can leave the child
 holding a lock no one will release), and only when the machine has a core to spare
-(``usable``).
+(``usable``): at least half a core stood idle since this module was imported (the
+machine's idle time in ``/proc/stat``, over the ~0.1 s of start-up and reading), else,
+where that cannot be told, by the last minute's load average.
 """
 
 from __future__ import annotations
@@ -27,8 +29,35 @@ import signal
 import struct
 import sys
 import threading
+import time
 
 _allowed = False
+MIN_WATCH_S = 0.03  # the idle time of a shorter span is too coarse (it counts in 10 ms ticks)
+
+
+def _idle_now() -> tuple[float, float] | None:
+    """(monotonic seconds, seconds every core has stood idle since boot), or None where
+    ``/proc/stat`` cannot tell."""
+    try:
+        with open("/proc/stat", "rb") as stat:
+            fields = stat.readline().split()
+        ticks = os.sysconf("SC_CLK_TCK")
+        return time.monotonic(), (int(fields[4]) + int(fields[5])) / ticks  # idle, iowait
+    except (OSError, ValueError, IndexError):
+        return None
+
+
+_WATCHED_FROM = _idle_now()  # (this module is imported early in a load: see cli.py)
+
+
+def spare_core() -> bool | None:
+    """True when at least half a core stood idle since this module was imported (a
+    forked child then runs beside this process instead of taking turns with it); None
+    when that cannot be told (no ``/proc/stat``, or too short a time to tell)."""
+    now = _idle_now()
+    if now is None or _WATCHED_FROM is None or now[0] - _WATCHED_FROM[0] < MIN_WATCH_S:
+        return None
+    return now[1] - _WATCHED_FROM[1] >= 0.5 * (now[0] - _WATCHED_FROM[0])
 
 
 @contextlib.contextmanager
@@ -43,13 +72,17 @@ def allowed():
 
 
 def usable() -> bool:
-    """True when a load may fork now: allowed, one thread, and a core to spare (the last
-    minute's load average at most the cores less one; a command run just before counts
-    about 1 while it lasts). Measured on 2 cores: quiet, the load took 0.67-0.73 s with
-    the child against 0.72-0.78 s alone (far.ngc, 8 runs each); at load 2-3 the child
-    only took turns with its parent and the load took longer (0.95 s against 0.82 s)."""
+    """True when a load may fork now: allowed, one thread, and a core to spare
+    (``spare_core``; where it cannot tell, the last minute's load average at most the
+    cores less one, which a command run just before raises by about 1 for a minute).
+    Measured on 2 cores: quiet, the load took 0.67-0.73 s with the child against
+    0.72-0.78 s alone (far.ngc, 8 runs each); at load 2-3 the child only took turns with
+    its parent and the load took longer (0.95 s against 0.82 s)."""
     if not (_allowed and sys.platform.startswith("linux") and threading.active_count() == 1):
         return False  # (macOS's system libraries are not fork-safe; Windows has no fork)
+    spare = spare_core()
+    if spare is not None:
+        return spare
     try:
         busy = os.getloadavg()[0]
     except OSError:  # not known: as if idle

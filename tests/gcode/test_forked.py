@@ -25,6 +25,7 @@ def one_shot(monkeypatch):
     may have threads of its own; the child only scans and writes to its pipe)."""
     monkeypatch.setattr(forked, "_allowed", True)
     monkeypatch.setattr(forked.threading, "active_count", lambda: 1)
+    monkeypatch.setattr(forked, "spare_core", lambda: None)  # not known: the load average decides
     monkeypatch.setattr(forked.os, "getloadavg", lambda: (0.0, 0.0, 0.0))  # a quiet machine
     workers.set_enabled(False)
     taken = []
@@ -75,6 +76,7 @@ def test_a_child_that_fails_costs_time_not_the_result(big, one_shot, monkeypatch
 
 
 def test_a_busy_machine_or_a_second_thread_keeps_the_load_in_one_process(monkeypatch):
+    monkeypatch.setattr(forked, "spare_core", lambda: None)
     monkeypatch.setattr(forked, "_allowed", True)
     monkeypatch.setattr(forked.threading, "active_count", lambda: 1)
     monkeypatch.setattr(forked.os, "cpu_count", lambda: 2)
@@ -88,6 +90,33 @@ def test_a_busy_machine_or_a_second_thread_keeps_the_load_in_one_process(monkeyp
     monkeypatch.setattr(forked, "_allowed", False)
     monkeypatch.setattr(forked.threading, "active_count", lambda: 1)
     assert not forked.usable()
+
+
+def test_the_idle_time_since_start_up_decides_before_the_load_average(monkeypatch):
+    """Half a core idle since the module was imported: a core to spare, whatever the last
+    minute's load average says (a command that ended a moment ago still weighs on it)."""
+    monkeypatch.setattr(forked, "_allowed", True)
+    monkeypatch.setattr(forked.threading, "active_count", lambda: 1)
+    monkeypatch.setattr(forked.os, "getloadavg", lambda: (1.6, 1.0, 0.5))
+    monkeypatch.setattr(forked, "_WATCHED_FROM", (100.0, 5000.0))
+    for elapsed, idle, spare in [(0.1, 0.09, True), (0.1, 0.06, True), (0.1, 0.02, False), (0.1, 0.0, False)]:
+        monkeypatch.setattr(forked, "_idle_now", lambda e=elapsed, i=idle: (100.0 + e, 5000.0 + i))
+        assert forked.spare_core() is spare
+        assert forked.usable() is spare
+    monkeypatch.setattr(forked, "_idle_now", lambda: (100.01, 5000.01))  # too short a time to tell
+    assert forked.spare_core() is None
+    assert not forked.usable()  # the load average decides: 1.6 on 2 cores
+    monkeypatch.setattr(forked, "_idle_now", lambda: None)  # no /proc/stat
+    assert forked.spare_core() is None
+
+
+def test_the_idle_time_is_read_from_the_machine():
+    reading = forked._idle_now()
+    if not os.path.exists("/proc/stat"):
+        assert reading is None
+        return
+    assert reading is not None and reading[1] > 0
+    assert forked._WATCHED_FROM is not None and forked._WATCHED_FROM[1] <= reading[1]
 
 
 def test_a_tail_gives_the_groups_from_the_last_one_back():
