@@ -125,8 +125,9 @@ def test_malformed_files_are_refused_with_the_line_and_what_was_expected(raw, me
 
 
 def test_points_above_the_clearance_are_refused_without_a_cut_z():
-    with pytest.raises(PointListError, match="reach Z 810.*give a cut Z"):
-        to_gcode(read_points(FAB), ImportOptions())
+    with pytest.raises(PointListError, match="reach Z 810.*give a cut Z") as caught:
+        to_gcode(read_points(FAB, "f.txt"), ImportOptions())
+    assert str(caught.value).startswith("f.txt: points reach Z")  # the whole list: no "line 0"
 
 
 def test_cli_import_prints_gcode_and_the_summary(tmp_path, capsys):

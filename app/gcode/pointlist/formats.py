@@ -28,10 +28,13 @@ SCAN_SECTION = "== Scan Path Information =="
 
 class PointListError(ValueError):
     """A malformed point list: ``name``, 1-based ``line`` and ``column``, ``message``
-    (a core message); ``localized()`` says it in the operator's language."""
+    (a core message); ``localized()`` says it in the operator's language. Line 0: the
+    whole list (its points reach too far, say), named by the file alone."""
 
     def __init__(self, name: str, line: int, column: int, message: str) -> None:
-        if column:
+        if not line:
+            said = msg("{name}: {what}", name=name, what=message)
+        elif column:
             said = msg("{name}, line {line}, column {column}: {what}", name=name, line=line, column=column,
                        what=message)
         else:
