@@ -15,7 +15,7 @@
 # The <name>.svg kept here is the drawing as step 6 read it (layer, orientation points,
 # tool definition); <name>.ngc is what Gcodetools wrote.
 #
-# Usage: bash resources/samples/make_samples.sh      (rewrites *.svg, *.ngc, logo.png here)
+# Usage: bash resources/samples/make_samples.sh      (rewrites *.svg, *.ngc, logo.png, traced_drawing.png here)
 set -euo pipefail
 
 HERE=$(cd "$(dirname "$0")" && pwd)
@@ -78,6 +78,31 @@ second = points[1]
 x0 = float(second.find("{*}path").get("d").split()[1])
 second.set("transform", f"translate({x - x0:g},0)")
 tree.write(path, xml_declaration=True, encoding="UTF-8")
+EOF
+}
+
+# Put potrace's group on the "Cut" layer of a 150 mm page, scaled to WIDTH mm wide at (X, Y).
+# usage: on_layer TRACED.svg WIDTH X Y > DESIGN.svg
+on_layer() {
+    "$PY" - "$@" <<'EOF'
+import sys
+from lxml import etree
+src = etree.parse(sys.argv[1]).getroot()
+width = float(src.get("viewBox").split()[2])
+scale = float(sys.argv[2]) / width
+traced = src.find("{http://www.w3.org/2000/svg}g")
+print('''<?xml version="1.0" encoding="UTF-8"?>
+<svg xmlns="http://www.w3.org/2000/svg"
+     xmlns:inkscape="http://www.inkscape.org/namespaces/inkscape"
+     xmlns:sodipodi="http://sodipodi.sourceforge.net/DTD/sodipodi-0.dtd"
+     width="150mm" height="150mm" viewBox="0 0 150 150" version="1.1">
+  <sodipodi:namedview id="namedview1" inkscape:current-layer="layer1" inkscape:document-units="mm"/>
+  <g inkscape:groupmode="layer" id="layer1" inkscape:label="Cut">''')
+print(f'    <g id="traced" transform="translate({sys.argv[3]},{sys.argv[4]}) scale({scale:.6f})">')
+for i, path in enumerate(traced.iter("{http://www.w3.org/2000/svg}path")):
+    print(f'      <path id="trace{i}" transform="{traced.get("transform")}" d="{path.get("d")}" '
+          'style="fill:#000000;stroke:none"/>')
+print('    </g>\n  </g>\n</svg>')
 EOF
 }
 
@@ -182,27 +207,7 @@ convert -size 580x240 xc:white -fill black -font DejaVu-Sans-Bold -pointsize 150
     -define png:exclude-chunks=date,time -strip "$WORK/logo.png"
 convert "$WORK/logo.png" -threshold 50% "$WORK/logo.pbm"
 potrace -s --alphamax 1.0 --opttolerance 0.2 -o "$WORK/logo.traced.svg" "$WORK/logo.pbm"
-"$PY" - "$WORK/logo.traced.svg" > "$WORK/potrace_logo.design.svg" <<'EOF'
-# Put potrace's group on the "Cut" layer of a 150 mm page, scaled to 120 mm wide at (15, 40).
-import sys
-from lxml import etree
-src = etree.parse(sys.argv[1]).getroot()
-width = float(src.get("viewBox").split()[2])
-scale = 120.0 / width
-traced = src.find("{http://www.w3.org/2000/svg}g")
-print('''<?xml version="1.0" encoding="UTF-8"?>
-<svg xmlns="http://www.w3.org/2000/svg"
-     xmlns:inkscape="http://www.inkscape.org/namespaces/inkscape"
-     xmlns:sodipodi="http://sodipodi.sourceforge.net/DTD/sodipodi-0.dtd"
-     width="150mm" height="150mm" viewBox="0 0 150 150" version="1.1">
-  <sodipodi:namedview id="namedview1" inkscape:current-layer="layer1" inkscape:document-units="mm"/>
-  <g inkscape:groupmode="layer" id="layer1" inkscape:label="Cut">''')
-print(f'    <g id="traced" transform="translate(15,40) scale({scale:.6f})">')
-for i, path in enumerate(traced.iter("{http://www.w3.org/2000/svg}path")):
-    print(f'      <path id="trace{i}" transform="{traced.get("transform")}" d="{path.get("d")}" '
-          'style="fill:#000000;stroke:none"/>')
-print('    </g>\n  </g>\n</svg>')
-EOF
+on_layer "$WORK/logo.traced.svg" 120 15 40 > "$WORK/potrace_logo.design.svg"
 cp "$WORK/logo.png" "$HERE/"
 sample potrace_logo mm 0 -0.8 5 "subpath by subpath" 0.05 \
     "feed=350" "penetration feed=80" "depth step=1" "diameter=1"
@@ -219,3 +224,47 @@ EOF
 } > "$WORK/text_round4.design.svg"
 POST="round(4);" sample text_round4 mm 0 -1 3 "pass by pass" 0.02 \
     "feed=250" "penetration feed=50" "depth step=0.5" "diameter=0.8"
+
+# 6. traced_drawing: the "picture -> G-code" workflow on a big drawing (the real traced file
+#    the load benchmark copies, bench/tracedfile.py). ImageMagick draws a 2400 x 2400 px
+#    bitmap from a fixed recipe: text in three fonts (URW Z003 script, DejaVu Serif Bold
+#    Italic, DejaVu Sans and Serif Italic), a spiral ribbon, rings, a disc, an ellipse,
+#    and a field of blobs (seeded random noise, blurred, thresholded); potrace traces it,
+#    its paths go on the layer 140 mm wide at (5, 5); one pass 0.6 mm deep.
+cd "$WORK"
+convert -size 2400x1260 xc:gray50 -seed 24 +noise Random -channel G -separate +channel \
+    -blur 0x9 -normalize -threshold 53% -negate -gravity center -crop 2240x1100+0+0 +repage \
+    "$WORK/blobs.png"
+"$PY" - > "$WORK/spiral.txt" <<'EOF'
+# A spiral ribbon 26 px wide, 3.5 turns, as one polygon (out along the outer edge, back along the inner).
+import math
+n, turns, w = 1200, 3.5, 26
+out, back = [], []
+for k in range(n + 1):
+    t = k / n * turns * 2 * math.pi
+    r = 40 + 70 * t / (2 * math.pi)
+    c, s = math.cos(t), math.sin(t)
+    out.append(f"{400 + (r + w / 2) * c:.1f},{880 + (r + w / 2) * s:.1f}")
+    back.append(f"{400 + (r - w / 2) * c:.1f},{880 + (r - w / 2) * s:.1f}")
+print("polygon " + " ".join(out + back[::-1]))
+EOF
+convert -size 2400x2400 xc:white \
+    -fill black -font Z003-Medium-Italic -pointsize 330 -annotate +90+300 'Gcodetools' \
+    -font DejaVu-Serif-Bold-Italic -pointsize 120 -annotate +1650+230 'picture' \
+    -annotate +1650+380 'to G-code' \
+    -font DejaVu-Sans -pointsize 44 \
+    -annotate +80+480 'potrace traces the bitmap, Gcodetools fits biarcs: G02 G03 with I J, six decimals.' \
+    -font DejaVu-Serif-Italic \
+    -annotate +80+545 'One pass 0.6 mm deep along every outline: the drawing of the load benchmark.' \
+    -draw "$(cat "$WORK/spiral.txt")" \
+    -fill none -stroke black -strokewidth 36 -draw 'circle 1800,880 1800,640' \
+    -strokewidth 20 -draw 'circle 1800,880 1800,760' \
+    -strokewidth 0 -fill black -draw 'circle 1800,880 1800,830' -draw 'ellipse 1230,880 110,200 0,360' \
+    "$WORK/blobs.png" -geometry +80+1230 -compose multiply -composite \
+    -threshold 50% -type bilevel -define png:exclude-chunks=date,time -strip "$WORK/traced_drawing.png"
+convert "$WORK/traced_drawing.png" -threshold 50% "$WORK/traced_drawing.pbm"
+potrace -s --alphamax 1.0 --opttolerance 0.2 -o "$WORK/traced_drawing.traced.svg" "$WORK/traced_drawing.pbm"
+on_layer "$WORK/traced_drawing.traced.svg" 140 5 5 > "$WORK/traced_drawing.design.svg"
+cp "$WORK/traced_drawing.png" "$HERE/"
+sample traced_drawing mm 0 -0.6 5 "subpath by subpath" 0.05 \
+    "feed=350" "penetration feed=80" "depth step=1" "diameter=1"
