@@ -5,7 +5,8 @@ samples in ``resources/samples/*.ngc`` (their ``%`` and ``M2``/``M30`` lines dro
 one ``M2`` at the end): ``far.ngc``, nine copies in ten moved 200-680 mm, far outside
 the 150 mm travel, and ``big.ngc``, copies moved by up to 4.5 mm, inside it; and
 ``arcs.ngc`` (``bench/arcfile.py``), arc-heavy, as Gcodetools writes a traced drawing,
-9 copies in 10 outside the travel. For each:
+9 copies in 10 outside the travel; and ``traced.ngc`` (``bench/tracedfile.py``), copies of
+a real one (``resources/samples/traced_drawing.ngc``, left out of the other two). For each:
 ``cnc-gcode check`` as a whole fresh process (median of 5: wall, CPU and peak RSS by
 ``wait4``), paired with CNCjs's ``gcode-toolpath`` (npm, when ``node`` is there) on the
 same file, then ``gcode-parser`` and PyPI ``gcodeparser`` once, the ratios, the CPU
@@ -30,7 +31,7 @@ import time
 from functools import partial
 from pathlib import Path
 
-from bench import arcfile, peers, spellings
+from bench import arcfile, peers, spellings, tracedfile
 
 ROOT = Path(__file__).resolve().parents[1]
 DATA = ROOT / "bench" / "data"
@@ -52,7 +53,7 @@ def _shift(text: str, dx: float, dy: float) -> str:
 
 
 def _sources() -> tuple[list[str], str]:
-    samples = sorted((ROOT / "resources" / "samples").glob("*.ngc"))
+    samples = sorted(p for p in (ROOT / "resources" / "samples").glob("*.ngc") if p != tracedfile.SAMPLE)
     texts = []
     for path in samples:
         lines = [line for line in path.read_text().splitlines() if not _DROP.match(line)]
@@ -291,6 +292,7 @@ def main() -> None:
     note = " (this environment writes none itself)" if sys.flags.dont_write_bytecode else ""
     print(f"python bytecode: app/ compiled{note}{'' if compiled else ', with errors'}")
     files = [build(far=True), build(far=False), (arcfile.build(), ARCS_ORIGIN)]
+    files.append((tracedfile.build(), tracedfile.describe()))
     for path, origin in files:
         size = path.stat().st_size
         print(f"file: {path.relative_to(ROOT)}: {_count(path):,} lines, {size / 1e6:.1f} MB, from {origin}")
