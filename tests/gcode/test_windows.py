@@ -15,7 +15,7 @@ def big() -> bytes:
     expander), a few lines for the general path in every part of it."""
     text = big_program().replace(b"(unclosed\n", b"G18 G2 X1 Z1 I1 K0\nG17\n")
     lines = text.split(b"\n")
-    for at in range(len(lines) // 7, len(lines), len(lines) // 7):
+    for at in range(len(lines) // 7, len(lines) - 2, len(lines) // 7):  # (the last line, M2, kept)
         lines[at] = b"G20 G1 X1 Y2 X3"  # refused: two X words (the units stay as they were)
     return b"\n".join(lines)
 
