@@ -39,7 +39,8 @@ BIG = DATA / "big.ngc"
 FAR = DATA / "far.ngc"
 TARGET_LINES = 1_000_000
 ARCS_ORIGIN = ("bench/arcfile.py: a traced drawing as Gcodetools writes it (biarcs, G02/G03 with I J, "
-               "six decimals, comments), 25 copies, 9 in 10 outside the travel")
+               "six decimals, comments): one drawing of 80 paths, 203 copies at 26 places, 9 in 10 outside "
+               "the travel")
 _AXIS = re.compile(r"([XY])(-?\d*\.?\d+)")
 _DROP = re.compile(r"^\s*(%|M0?2\b|M30\b)", re.IGNORECASE)
 

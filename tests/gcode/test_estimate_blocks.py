@@ -24,6 +24,7 @@ WHOLE_ARRAY_DIGESTS = {
     'potrace_logo': '1c7bd3c64f248af0',
     'star_passes': '0bb94fe33d2f0944',
     'text_round4': '05cae5ba90d2b57a',
+    'traced_drawing': '436fa0b28a900ac9',  # recorded with the whole-array estimate before 30ad8cb
     'arcs and stops': 'fd5d6e1ed6b7a793',
     'arcs and stops from a start': '545ca2e710ca56cc',
     'short segments': 'eb8c23e485df045f',
