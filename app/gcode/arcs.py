@@ -114,8 +114,7 @@ def segments(radius, angle, tolerance: float):
 def _frame(start3, end3, center3, plane_axes, turn):
     """Arcs in their planes: (start, end, centre (n, 2), (normal at start, at end),
     sweep, radius at the start, radius at the end)."""
-    *flat, normals = in_plane(plane_axes, start3, end3, center3)
-    s, e, c = flat
+    s, c, e, normals = in_plane(plane_axes, start3, center3, end3)  # normals: at the start, at the end
     ang = sweep(s, e, c, turn)
     r = np.hypot(s[:, 0] - c[:, 0], s[:, 1] - c[:, 1])
     r_end = np.hypot(e[:, 0] - c[:, 0], e[:, 1] - c[:, 1])
