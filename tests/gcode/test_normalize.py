@@ -1,7 +1,9 @@
 """The normaliser: the machine's dialect, modal omissions, chords, the line map."""
 
+import math
 import re
 
+import numpy as np
 import pytest
 
 from app.gcode import load_text
@@ -95,6 +97,25 @@ def test_tiny_arc_whose_ends_round_together_becomes_chords():
     # sent as G02 with end == start, the device would cut a full circle
     lines = device("G0 X1 Y1\nG2 X1.0004 Y1 I0.0002 J0.002 F100")
     assert not any(line.startswith("G02") for line in lines)
+
+
+def test_a_helix_sent_as_chords_descends_along_it_and_never_plunges_at_the_end():
+    """Each chord end of a two-turn helix (sent as chords) lies on the helix: Z falls
+    with the angle travelled (it stayed at the start's Z and plunged 5 mm on the last
+    chord, the normal axis read from the centre instead of the end); the preview's
+    polyline is the same path."""
+    program = load_text("G0 X10 Y0 Z0\nG3 X10 Y0 Z-5 I-10 J0 P2 F100")
+    chords = load_text("\n".join(program.device_lines)).moves[1:]
+    assert len(chords) > 20
+    travelled = 0.0
+    before = (10.0, 0.0)
+    for m in chords:
+        x, y, z = m["end"]
+        step = math.atan2(before[0] * y - before[1] * x, before[0] * x + before[1] * y)
+        travelled, before = travelled + step, (x, y)
+        assert abs(z - (-5 * travelled / (4 * math.pi))) < 0.002, (travelled, z)
+    points, _ = program.toolpath.polyline(0.01)
+    assert np.all(np.diff(points[1:, 2]) <= 1e-12) and points[-1, 2] == -5
 
 
 def test_multi_turn_arc_becomes_chords():
