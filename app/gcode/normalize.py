@@ -10,9 +10,11 @@ Output lines, each at most 80 characters:
 - ``G02``/``G03 X Y I J [Z] [F]`` for arcs in the XY plane. **I and J are relative to
   the start point of the arc** (the device's current position, rounded as sent), the
   device's convention; X and Y are always given. Z appears when it changes (a helix);
-- arcs in the XZ or YZ plane, arcs of more than one turn, and arcs whose rounded
-  numbers would no longer pass LinuxCNC's circle check become ``G01`` chords that
-  stay within ``arc_tolerance_mm`` of the true arc (rounding included);
+- arcs in the XZ or YZ plane, arcs of more than one turn, arcs whose rounded
+  numbers would no longer pass LinuxCNC's circle check and arcs of a radius over
+  ``MAX_ARC_RADIUS`` (docs/protocol.md: nearly straight, and a single-precision firmware
+  would place their points millimetres off) become ``G01`` chords that stay within
+  ``arc_tolerance_mm`` of the true arc (rounding included);
 - ``G04 P<seconds>``, ``M03 S<rpm>`` (``M4`` was already turned into M3; a spindle
   started with no S runs at the profile's no-load rpm), ``M05``, ``M02`` (also for M30).
 
@@ -34,6 +36,8 @@ from .numbers import rounded
 from .ops import ARC_CCW, ARC_CW, PLANE_AXES, XY, Ops
 
 ROUNDING = 0.001
+MAX_ARC_RADIUS = 1000.0  # mm: R * 2**-24 (float32) times the few operations of a point stays
+# well below ROUNDING; Gcodetools writes nearly straight biarcs of radius up to 59 km
 BLOCK = 1 << 16  # arcs checked at a time (the check is per arc: the same result in any blocks)
 
 
@@ -61,13 +65,14 @@ def _rounded(values: np.ndarray) -> np.ndarray:
 
 
 def _arc_ok_rounded(start, end, center) -> np.ndarray:
-    """True where the arc, with its numbers rounded as sent, passes the circle check."""
+    """True where the arc can be sent as an arc: with its numbers rounded as sent, it
+    passes the circle check, and its radius is at most ``MAX_ARC_RADIUS``."""
     start, end, center = start[:, :2], end[:, :2], center[:, :2]  # XY arcs only
     rs, re_ = _rounded(start), _rounded(end)
     c = rs + _rounded(center - rs)
     r1 = np.hypot(c[:, 0] - rs[:, 0], c[:, 1] - rs[:, 1])
     r2 = np.hypot(c[:, 0] - re_[:, 0], c[:, 1] - re_[:, 1])
-    ok = (r1 >= RADIUS_TOL[False]) & (r2 >= RADIUS_TOL[False])
+    ok = (r1 >= RADIUS_TOL[False]) & (r2 >= RADIUS_TOL[False]) & (r1 <= MAX_ARC_RADIUS)
     ok &= ~spiral_refused(np.abs(r1 - r2), np.maximum(r1, r2), False)
     # a short arc whose ends round together would become a full circle on the device
     same = (rs[:, 0] == re_[:, 0]) & (rs[:, 1] == re_[:, 1])  # equal thousandths

@@ -99,6 +99,20 @@ def test_tiny_arc_whose_ends_round_together_becomes_chords():
     assert not any(line.startswith("G02") for line in lines)
 
 
+def test_an_arc_wider_than_the_firmware_can_place_becomes_chords_within_tolerance():
+    """docs/protocol.md: no arc of radius over 1000 mm goes to the machine (Gcodetools
+    writes nearly straight biarcs of tens of km); one just inside stays an arc."""
+    flat = device("G0 X91.417 Y71.484\nG2 X91.945 Y71.279 I20955.51 J55147.675 F100")  # r 59 km
+    assert flat[-1] == "G01 X91.945 Y71.279"
+    wide = load_text("G0 X0 Y0\nG2 X100 Y0 I50 J-4993.746 F100")  # r 4994 mm: sagitta 0.25 mm
+    lines = wide.device_lines
+    assert len(lines) > 3 and not any(line.startswith(("G02", "G03")) for line in lines)
+    for m in load_text("\n".join(lines)).moves[1:]:
+        x, y, _ = m["end"]
+        assert abs(((x - 50) ** 2 + (y + 4993.746) ** 2) ** 0.5 - 4993.996) < 0.01
+    assert device("G0 X0 Y0\nG3 X10 Y0 I5 J999.9 F100")[-1].startswith("G03")  # r 999.91 mm
+
+
 def test_a_helix_sent_as_chords_descends_along_it_and_never_plunges_at_the_end():
     """Each chord end of a two-turn helix (sent as chords) lies on the helix: Z falls
     with the angle travelled (it stayed at the start's Z and plunged 5 mm on the last
