@@ -77,7 +77,8 @@ def test_the_command_line_puts_its_threads_on_one_heap_before_loading(monkeypatc
     path = tmp_path / "a.ngc"
     path.write_text(PROGRAMS[0])
     assert cli.main(["check", str(path)]) == 0
-    assert calls == [(program.M_ARENA_MAX, 1, 0)]  # set before the load (and its threads) began
+    assert calls == [(param, value, 0) for param, value in program.ONE_SHOT_HEAP]  # before the load began
+    assert (program.M_ARENA_MAX, 1, 0) in calls  # its threads on the main heap
     assert "moves: " in capsys.readouterr().out
 
 
