@@ -128,12 +128,12 @@ def _compare(ops: Ops, shifted: Ops, origin: np.ndarray, complete: bool, last: b
         rows_a = np.flatnonzero(moved[:, a])
         in_plane = np.array([a in PLANE_AXES[p][:2] for p in ops.plane[arcs].tolist()], bool)
         arcs_a = arcs[in_plane & (arcs <= known[a])] if len(arcs) else arcs
-        hits = np.union1d(rows_a, arcs_a)
-        if undecided[a] and n:
-            hits = np.union1d(hits, [n - 1])
-        relative.append(bool(len(hits)))
-        free.append(int(min(known[a], hits[0])) if len(hits) else int(known[a]))
-        first.append(int(lines[hits[0]]) if len(hits) else 0)
+        hits = [int(rows[0]) for rows in (rows_a, arcs_a) if len(rows)]  # (sorted: their firsts are
+        hits += [n - 1] if undecided[a] and n else []  # enough; a set operation imports numpy.ma, 6 ms)
+        hit = min(hits, default=None)  # the first row that moves relative to the start
+        relative.append(hit is not None)
+        free.append(int(min(known[a], hit)) if hit is not None else int(known[a]))
+        first.append(int(lines[hit]) if hit is not None else 0)
     known_line = tuple(int(lines[k]) if k < n else 0 for k in known.tolist())
     return StartInfo(tuple(float(v) for v in origin), tuple(int(k) for k in known),
                      tuple(relative), tuple(first), known_line, tuple(free))
