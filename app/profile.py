@@ -10,7 +10,6 @@ value is named and its default used (the window and the simulator start anyway).
 
 from __future__ import annotations
 
-import json
 import math
 import re
 from dataclasses import dataclass, field, fields, replace
@@ -266,7 +265,8 @@ def read_overrides(base: MachineProfile, data: Any, where: str = "") -> ProfileR
 def parse_file(path: Path, text: str) -> Any:
     """The JSON (``.json``) or TOML data of ``text``; ProfileError if it cannot be read
     (nested deeper than ``reading.MAX_JSON_DEPTH`` included: never the parser's recursion)."""
-    import tomllib  # here: a load that reads no profile file (``cnc-gcode check``) never needs it
+    import json  # here: a load that reads no profile file (``cnc-gcode check``) never needs them
+    import tomllib
 
     from app.gcode.reading import nesting_problem
 

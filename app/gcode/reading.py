@@ -15,7 +15,6 @@ byte-order mark and turn CR-only line ends (old Mac files) into LF. Errors are
 
 from __future__ import annotations
 
-import json
 import os
 import re
 import stat
@@ -134,6 +133,8 @@ def load_json(path: str | Path, max_bytes: int = CONFIG_MAX_BYTES, max_depth: in
     problem = nesting_problem(text, max_depth)
     if problem is None:
         try:
+            import json  # here: a program's load never needs it
+
             return json.loads(text)
         except (ValueError, RecursionError) as exc:
             problem = str(exc) or type(exc).__name__

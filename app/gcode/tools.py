@@ -15,7 +15,6 @@ and ``M61`` pick a tool, ``G43 H`` applies its length, ``G41 D``/``G42 D`` its r
 
 from __future__ import annotations
 
-import json
 import math
 from dataclasses import asdict, dataclass
 from pathlib import Path
@@ -131,6 +130,8 @@ def _reason(exc: Exception):
 
 def save_tools(path: Path, tools: dict[int, Tool]) -> None:
     """Write the table atomically (``app.atomic.write_atomic``); OSError if it cannot."""
+    import json  # here: loading a program never writes the table
+
     from app.atomic import write_atomic  # here: loading a program never needs it (nor tempfile)
 
     write_atomic(path, json.dumps(to_data(tools), indent=2))
