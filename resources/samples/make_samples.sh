@@ -198,6 +198,19 @@ EOF
 sample inch_plate in 0 -0.04 0.2 "path by path" 0.002 \
     "feed=16" "penetration feed=4" "depth step=0.02" "diameter=0.0625"
 
+# A bitmap $WORK/BITMAP.png traced by potrace, its paths put on the layer WIDTH mm wide at
+# (X, Y), then cut by Gcodetools in one pass DEPTH deep (F350, plunge F80), kept as NAME.
+# usage: traced BITMAP NAME WIDTH X Y DEPTH
+traced() {
+    local bitmap=$1 name=$2
+    convert "$WORK/$bitmap.png" -threshold 50% "$WORK/$bitmap.pbm"
+    potrace -s --alphamax 1.0 --opttolerance 0.2 -o "$WORK/$bitmap.traced.svg" "$WORK/$bitmap.pbm"
+    on_layer "$WORK/$bitmap.traced.svg" "$3" "$4" "$5" > "$WORK/$name.design.svg"
+    cp "$WORK/$bitmap.png" "$HERE/"
+    sample "$name" mm 0 "$6" 5 "subpath by subpath" 0.05 \
+        "feed=350" "penetration feed=80" "depth step=1" "diameter=1"
+}
+
 # 4. potrace_logo: the "picture -> G-code" workflow. ImageMagick draws a bitmap, potrace
 #    traces it to an SVG, its paths go on a layer 120 mm wide; one pass 0.8 mm deep.
 cd "$WORK"
@@ -205,12 +218,7 @@ convert -size 580x240 xc:white -fill black -font DejaVu-Sans-Bold -pointsize 150
     -annotate +20+185 'CNC' -fill none -stroke black -strokewidth 18 \
     -draw 'circle 490,120 490,40' -strokewidth 0 -fill black -draw 'polygon 490,75 530,145 450,145' \
     -define png:exclude-chunks=date,time -strip "$WORK/logo.png"
-convert "$WORK/logo.png" -threshold 50% "$WORK/logo.pbm"
-potrace -s --alphamax 1.0 --opttolerance 0.2 -o "$WORK/logo.traced.svg" "$WORK/logo.pbm"
-on_layer "$WORK/logo.traced.svg" 120 15 40 > "$WORK/potrace_logo.design.svg"
-cp "$WORK/logo.png" "$HERE/"
-sample potrace_logo mm 0 -0.8 5 "subpath by subpath" 0.05 \
-    "feed=350" "penetration feed=80" "depth step=1" "diameter=1"
+traced logo potrace_logo 120 15 40 -0.8
 
 # 5. text_round4: the word "Mill" (DejaVu Serif Italic, text -> path) engraved 1 mm deep
 #    in two 0.5 mm passes cut "pass by pass" (every path at one depth, then the next),
@@ -262,9 +270,4 @@ convert -size 2400x2400 xc:white \
     -strokewidth 0 -fill black -draw 'circle 1800,880 1800,830' -draw 'ellipse 1230,880 110,200 0,360' \
     "$WORK/blobs.png" -geometry +80+1230 -compose multiply -composite \
     -threshold 50% -type bilevel -define png:exclude-chunks=date,time -strip "$WORK/traced_drawing.png"
-convert "$WORK/traced_drawing.png" -threshold 50% "$WORK/traced_drawing.pbm"
-potrace -s --alphamax 1.0 --opttolerance 0.2 -o "$WORK/traced_drawing.traced.svg" "$WORK/traced_drawing.pbm"
-on_layer "$WORK/traced_drawing.traced.svg" 140 5 5 > "$WORK/traced_drawing.design.svg"
-cp "$WORK/traced_drawing.png" "$HERE/"
-sample traced_drawing mm 0 -0.6 5 "subpath by subpath" 0.05 \
-    "feed=350" "penetration feed=80" "depth step=1" "diameter=1"
+traced traced_drawing traced_drawing 140 5 5 -0.6
