@@ -116,6 +116,27 @@ def test_the_kit_names_the_broken_rule(tmp_path, patch, sections, rule):
     assert result.rule and result.section and (result.got or result.note)
 
 
+def test_a_repeated_override_is_judged_once_the_first_id_s_copies_are_answered(tmp_path, monkeypatch):
+    """Copies of the first id still on their way when its answer came (a slow host or
+    wire) kept the main MCU forwarding that id, so it dropped the repeat: the kit passed a
+    machine that takes repeats (1 run in 3 of the suite under load). Now it waits for them;
+    the honest machine still passes."""
+    from app.comm.conformance.link import Link
+
+    realtime = Link.realtime
+
+    def with_late_copies(self, verb, timeout=5.0, cid=None):
+        sent = realtime(self, verb, timeout, cid)
+        if verb == "FEED 120":
+            for _ in range(3):
+                self.send(f"R {sent[0]} FEED 120")
+        return sent
+
+    monkeypatch.setattr(Link, "realtime", with_late_copies)
+    assert "overrides.repeat-not-taken" in failures(tmp_path / "broken", ["overrides"], forgets_realtime_ids)
+    assert failures(tmp_path / "honest", ["overrides"]) == {}
+
+
 def test_the_kit_names_a_lenient_set_grammar(tmp_path, monkeypatch):
     failed = failures(tmp_path, ["errors"], lenient_set_choices(monkeypatch))
     assert {"errors.set-choice-minus-zero", "errors.set-choice-point",

@@ -53,23 +53,42 @@ def answered_and_reported(kit: Kit) -> None:
 
 
 def repeat_not_taken(kit: Kit) -> None:
-    """A repeat (same id) with another value is answered again and changes nothing."""
+    """A repeat (same id) with another value is answered again and changes nothing.
+
+    Sent once the first id's copies have all been answered (one the main MCU still
+    forwarded made it drop the repeat: a machine that takes repeats passed, 1 run in 3 of
+    the suite), and judged on a status known to be newer than the repeat: a fresh id's
+    `RAPID 50` follows it, and the first status that shows rapid 50 shows the feed after
+    the repeat (no wait for a change that may never come)."""
     kit.ensure_idle()
     cid, _ = kit.link.realtime("FEED 120")
+    _settle(kit, cid)
     start = len(kit.link.replies)
     _, again = kit.link.realtime("FEED 180", cid=cid)
-    taken = _ovr_when(kit, lambda ovr: ovr == "120/100/100")
-    ovr = _ovr_when(kit, lambda ovr: ovr != taken)
+    later, _ = kit.link.realtime("RAPID 50")
+    ovr = _ovr_when(kit, lambda ovr: ovr is not None and ovr.endswith("/50"))
     kit.check(
         "overrides.repeat-not-taken",
         OVR,
         "absolute, so idempotent: an `R` frame whose id the machine remembers is a repeat, "
         "answered again and not taken",
-        again is not None and again.kind == "O" and ovr is not None and ovr.startswith("120/"),
-        f"R {cid} FEED 120, then R {cid} FEED 180 (same id)",
+        again is not None and again.kind == "O" and ovr is not None and ovr.startswith("120/")
+        and ovr.endswith("/50"),
+        f"R {cid} FEED 120, then R {cid} FEED 180 (same id), then R {later} RAPID 50",
         f"{kit.got(start)} | ovr {ovr}",
     )
     _put_back(kit)
+
+
+def _settle(kit: Kit, cid: int, quiet: float = 0.2, most: float = 2.0) -> None:
+    """Wait until the answers to copies of ``cid`` still on their way have come (none for
+    ``quiet`` s, at most ``most``): a repeat sent while the main MCU still forwards one of
+    them is dropped there ("Real-time commands") and never reaches the rule it tests."""
+    deadline = kit.link.clock() + most
+    while kit.link.clock() < deadline:
+        start = len(kit.link.replies)
+        if kit.link.wait(lambda r: r.kind in "OE" and r.id == cid, quiet, start) is None:
+            return
 
 
 BAD_FRAMES = (
