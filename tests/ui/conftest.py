@@ -76,16 +76,23 @@ def open_and_wait(qtbot, window, path, timeout=20_000):
     return blocker.args[0]
 
 
+def when_allowed(qtbot, window, control: str, act, timeout=60_000) -> None:
+    """``act()`` once the state table allows ``control`` (right after a job ends the last
+    status may still show it running: a click then is refused and never acts), asserting
+    the operator's action was not refused."""
+    from app.ui.state_table import decide
+
+    qtbot.waitUntil(lambda: decide(control, window.binder.inputs()).allowed, timeout=timeout)
+    refused = len(window.operator.refused)
+    act()
+    assert window.operator.refused[refused:] == []
+
+
 def home_when_allowed(qtbot, window, timeout=60_000):
     """Home once the state table allows it (a first status alone is not enough on a busy
     machine: the session may not be ready yet, and a refused click would never home), then
     wait until homed and at rest."""
-    from app.ui.state_table import decide
-
-    qtbot.waitUntil(lambda: decide("home", window.binder.inputs()).allowed, timeout=timeout)
-    refused = len(window.operator.refused)
-    window.operator.home("NORMAL")
-    assert window.operator.refused[refused:] == []
+    when_allowed(qtbot, window, "home", lambda: window.operator.home("NORMAL"), timeout)
     binder = window.binder
     at_rest = lambda: binder.status.state == "IDLE" and binder.pending_motion is None  # noqa: E731
     qtbot.waitUntil(lambda: binder.status.homed and at_rest(), timeout=timeout)

@@ -4,7 +4,7 @@ by how much; moving the work zero back lets it start; check mode may override.""
 
 from __future__ import annotations
 
-from tests.ui.conftest import home_when_allowed, open_and_wait
+from tests.ui.conftest import home_when_allowed, open_and_wait, when_allowed
 
 SPEED = 20
 SOURCE = "G21 G90\nG0 Z5\nG0 X0 Y0\nG1 Z-1 F600\nG1 X120\nG1 Y20\nG0 Z5\n"
@@ -26,9 +26,9 @@ def test_work_zero_at_x50_blocks_start_until_moved_back(qtbot, window, tmp_path)
     start = window.controls.buttons["start"]
     qtbot.waitUntil(lambda: None not in window.preflight.offset, timeout=10_000)
     assert start.isEnabled() and not window.preflight.errors
-    window.operator.jog("X", 50.0, 600.0)
+    when_allowed(qtbot, window, "jog", lambda: window.operator.jog("X", 50.0, 600.0))
     qtbot.waitUntil(lambda: _idle_at_x(window, 50.0), timeout=60_000)
-    window.operator.zero("X")  # work zero at machine X50
+    when_allowed(qtbot, window, "zero", lambda: window.operator.zero("X"))  # work zero at machine X50
     qtbot.waitUntil(lambda: bool(window.preflight.errors), timeout=10_000)
     message = window.preflight.message()
     assert "line 5" in message and "X+" in message and "by 20.000 mm" in message, message
@@ -47,9 +47,9 @@ def test_work_zero_at_x50_blocks_start_until_moved_back(qtbot, window, tmp_path)
     assert "line 5 was refused" in ended and "axis X in the + direction" in ended, ended  # source line
     window.controls.override_travel.setChecked(False)
     window.controls.check_mode.setChecked(False)
-    window.operator.jog("X", -50.0, 600.0)
-    qtbot.waitUntil(lambda: _idle_at_x(window, -50.0), timeout=60_000)
-    window.operator.zero("X")  # back to machine X0
+    when_allowed(qtbot, window, "jog", lambda: window.operator.jog("X", -50.0, 600.0))  # (the job's
+    qtbot.waitUntil(lambda: _idle_at_x(window, -50.0), timeout=60_000)  # end may not show yet)
+    when_allowed(qtbot, window, "zero", lambda: window.operator.zero("X"))  # back to machine X0
     qtbot.waitUntil(lambda: not window.preflight.errors, timeout=10_000)
     assert start.isEnabled()
 
