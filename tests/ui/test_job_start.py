@@ -6,7 +6,7 @@ from __future__ import annotations
 from PySide6.QtCore import Qt
 
 from app.comm.modal import restart_preamble
-from tests.ui.conftest import open_and_wait
+from tests.ui.conftest import open_and_wait, when_allowed
 
 
 def _jogged(qtbot, window, tmp_path):
@@ -15,7 +15,8 @@ def _jogged(qtbot, window, tmp_path):
     window.controls.check_mode.setChecked(True)
     for axis, distance in (("X", 14.5), ("Z", 10)):
         before = getattr(window.binder.status, axis.lower())
-        window.operator.jog(axis, distance, 900)
+        when_allowed(qtbot, window, "jog", lambda a=axis, d=distance: window.operator.jog(a, d, 900))
+
         def arrived(a=axis, b=before, d=distance):
             status = window.binder.status
             return abs(getattr(status, a.lower()) - b - d) < 0.01 and status.state == "IDLE"

@@ -9,6 +9,7 @@ import pytest
 from PySide6.QtCore import Qt
 
 from app.ui.state_table import Machine, decide
+from tests.ui.conftest import when_allowed
 from tests.ui.grbl_rig import homed_window_with
 from tests.ui.test_program_stops import sim_window_with
 
@@ -62,7 +63,7 @@ def _touch_off_and_continue(qtbot, window) -> list:
     qtbot.waitUntil(lambda: window.controls.buttons["zero_Z"].isEnabled(), timeout=10_000)
     window.operator.zero("Z")
     qtbot.waitUntil(lambda: _held(window) and abs(binder.status.z) < 0.01, timeout=30_000)
-    window.operator.jog("X", 4.0, 600.0)
+    when_allowed(qtbot, window, "jog", lambda: window.operator.jog("X", 4.0, 600.0))  # (the zero answered)
     qtbot.waitUntil(lambda: _held(window) and binder.status.x > 33.99, timeout=30_000)
     assert window.operator.refused == []
     seen: list = []
