@@ -32,8 +32,9 @@ from .tokens import numbers, tokenize
 COLUMNS = "GXYZIJFMS"  # the words of a simple line (and N, read and dropped)
 _COMMENT = re.compile(rb"\([^()\n]*\)")
 COMMENT_MARK = b"\x01"  # a comment separates words: "X1(c)0" is not X10
-_SEMI = re.compile(rb";[^\n]*")  # a ";" comment or a "*checksum" ends the words of a line
-_CHECKSUM = re.compile(rb"\*[^\n]*")  # (two patterns: a literal first byte is searched far faster than [;*])
+_SEMI = re.compile(rb";[^\n]*")  # a ";" comment ends the words of a line,
+_CHECKSUM = re.compile(rb"\*[^\n]*")  # and so does a "*checksum" (not one [;*] pattern: a literal
+# first byte is searched far faster than a class)
 SHARE_BYTES = 8 << 20  # a file this big has its tail scanned by the helper process (workers.py)
 WINDOW_BYTES = 4 << 20  # source bytes of one window of the table (about 85,000 lines, 6 MB of table)
 HELPER_GROUPS = 32  # a shared file is scanned in this many runs of chunks (see scan_stream)

@@ -1,11 +1,11 @@
 """Drive the two interpreters over a whole program, line by line or run by run.
 
 Simple lines (``bulk.Scan``) in a state the fast path handles go to ``vector.run``
-in runs (a block-deleted "/" line too, unless the operator's switch is on: the general
-path then skips it with its warning); every other line is lexed and interpreted by the
-general path. After a
-line the general path refused, the next ``SLOW_AFTER_ERROR`` lines also take the
-general path so a file full of errors costs linear time; the general path's rows
+in runs (a block-deleted "/" line too, unless the operator's switch is on: then a run
+of them is skipped at once, with the general path's warning for each); every other line
+is lexed and interpreted by the general path. After a line the general path refused,
+the next ``SLOW_AFTER_ERROR`` lines also take the general path so a file full of errors
+costs linear time; the general path's rows
 become arrays every ``FLUSH_ROWS`` rows (a file read line by line costs no more
 memory per move than the fast path). After M2/M30 nothing more
 is interpreted; words after it earn one warning.
