@@ -19,6 +19,8 @@ from pathlib import Path
 
 import numpy as np
 
+from bench.copies import count_lines, far_offset
+
 ROOT = Path(__file__).resolve().parents[1]
 ARCS = ROOT / "bench" / "data" / "arcs.ngc"
 TARGET_LINES = 1_000_000
@@ -116,13 +118,13 @@ def _path(rng: np.random.Generator, number: int, dx: float, dy: float, depth: fl
 
 def build(path: Path = ARCS, lines: int = TARGET_LINES) -> Path:
     """The arc-heavy file of at least ``lines`` lines (made once, then reused)."""
-    if path.exists() and path.stat().st_size > 0 and _count(path) >= lines:
+    if path.exists() and path.stat().st_size > 0 and count_lines(path) >= lines:
         return path
     path.parent.mkdir(parents=True, exist_ok=True)
     copies, rows, copy = [], 0, 0
     while rows < lines:
         rng = np.random.default_rng(20241)  # every copy the same drawing
-        offset = 200.0 + 20.0 * (copy % 25) if copy % 10 else 0.0
+        offset = far_offset(copy)
         drawing = []
         for number in range(80):
             drawing += _path(rng, number, offset, offset, -0.8)
@@ -132,7 +134,3 @@ def build(path: Path = ARCS, lines: int = TARGET_LINES) -> Path:
     path.write_text(HEADER + "".join(copies) + FOOTER)
     return path
 
-
-def _count(path: Path) -> int:
-    with path.open("rb") as f:
-        return sum(block.count(b"\n") for block in iter(lambda: f.read(1 << 20), b""))

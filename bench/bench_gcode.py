@@ -32,6 +32,7 @@ from functools import partial
 from pathlib import Path
 
 from bench import arcfile, peers, spellings, tracedfile
+from bench.copies import AXIS, ENDS, count_lines, far_offset
 
 ROOT = Path(__file__).resolve().parents[1]
 DATA = ROOT / "bench" / "data"
@@ -41,8 +42,6 @@ TARGET_LINES = 1_000_000
 ARCS_ORIGIN = ("bench/arcfile.py: a traced drawing as Gcodetools writes it (biarcs, G02/G03 with I J, "
                "six decimals, comments): one drawing of 80 paths, 203 copies at 26 places, 9 in 10 outside "
                "the travel")
-_AXIS = re.compile(r"([XY])(-?\d*\.?\d+)")
-_DROP = re.compile(r"^\s*(%|M0?2\b|M30\b)", re.IGNORECASE)
 
 
 def _shift(text: str, dx: float, dy: float) -> str:
@@ -50,14 +49,14 @@ def _shift(text: str, dx: float, dy: float) -> str:
         d = dx if m.group(1) == "X" else dy
         return f"{m.group(1)}{float(m.group(2)) + d:.6f}"
 
-    return _AXIS.sub(repl, text)
+    return AXIS.sub(repl, text)
 
 
 def _sources() -> tuple[list[str], str]:
     samples = sorted(p for p in (ROOT / "resources" / "samples").glob("*.ngc") if p != tracedfile.SAMPLE)
     texts = []
     for path in samples:
-        lines = [line for line in path.read_text().splitlines() if not _DROP.match(line)]
+        lines = [line for line in path.read_text().splitlines() if not ENDS.match(line)]
         texts.append("\n".join(lines) + "\n")
     if texts:
         return texts, f"{len(texts)} samples from resources/samples"
@@ -88,7 +87,7 @@ def build(far: bool = False) -> tuple[Path, str]:
     while count < TARGET_LINES:
         for text in texts:
             inch = re.search(r"\bG20\b", text) is not None
-            mm = (200.0 + 20.0 * (copy % 25) if copy % 10 else 0.0) if far else (copy % 10) * 0.5
+            mm = far_offset(copy) if far else (copy % 10) * 0.5
             step = mm / 25.4 if inch else mm
             shifted = _shift(text, step, step)
             out.append(shifted)
@@ -286,7 +285,7 @@ def _window(path: Path) -> None:
 def main() -> None:
     from app.gcode import load, workers
 
-    print(f"machine load average: {_loadavg()} on {os.cpu_count()} cores (cnc-gcode shares a big "
+    print(f"machine load average: {_loadavg()} on {os.cpucount_lines()} cores (cnc-gcode shares a big "
           f"file's scan with a forked child when half a core stood idle while it started and read "
           f"the file, by /proc/stat; where that cannot be told, at a load average of cores - 1 or less)")
     compiled = compileall.compile_dir(ROOT / "app", quiet=1)  # as pip compiles an installed package
@@ -296,7 +295,8 @@ def main() -> None:
     files.append((tracedfile.build(), tracedfile.describe()))
     for path, origin in files:
         size = path.stat().st_size
-        print(f"file: {path.relative_to(ROOT)}: {_count(path):,} lines, {size / 1e6:.1f} MB, from {origin}")
+        print(f"file: {path.relative_to(ROOT)}: {count_lines(path):,} lines, {size / 1e6:.1f} MB, "
+              f"from {origin}")
         _versus(path)
         stages, where = _stages(path)
         print(f"  stages of one load, CPU s: {stages} [load {_loadavg()}]")
@@ -306,7 +306,8 @@ def main() -> None:
     _spellings(files[2][0])
     small = _small(files[1][0])
     runs = [peers.measure([sys.executable, "-m", "app.gcode", "check", str(small)]) for _ in range(RUNS)]
-    print(_whole(runs, f"{small.name} ({_count(small):,} lines), cnc-gcode check") + " (target <= 0.25 s)")
+    print(_whole(runs, f"{small.name} ({count_lines(small):,} lines), cnc-gcode check")
+          + " (target <= 0.25 s)")
     runs = [peers.measure([sys.executable, "-c", "import app.gcode.cli"]) for _ in range(RUNS)]
     print(_whole(runs, "python -c 'import app.gcode.cli'"))
     path = files[1][0]
@@ -329,10 +330,6 @@ def main() -> None:
     print(f"  device lines (rendered on first use): {len(device):,} in {time.perf_counter() - started:.2f} s")
 
 
-def _count(path: Path) -> int:
-    with path.open("rb") as f:
-        return sum(block.count(b"\n") for block in iter(lambda: f.read(1 << 20), b""))
-
 
 def _loadavg() -> str:
     try:
@@ -344,7 +341,8 @@ def _loadavg() -> str:
 def _spellings(compact: Path) -> None:
     """``compact`` and each spelling of it (``bench/spellings.py``), paired runs of
     ``cnc-gcode check`` as whole processes: time and peak memory (target: within 1.3x)."""
-    print(f"spellings of {compact.name} ({_count(compact):,} lines), cnc-gcode check, {RUNS} paired runs:")
+    print(f"spellings of {compact.name} ({count_lines(compact):,} lines), cnc-gcode check, "
+          f"{RUNS} paired runs:")
     ours = [sys.executable, "-m", "app.gcode", "check"]
     for name, path in spellings.variants(compact).items():
         base, spelled = [], []

@@ -20,30 +20,25 @@ import math
 import re
 from pathlib import Path
 
+from bench.copies import AXIS, ENDS, count_lines, far_offset
+
 ROOT = Path(__file__).resolve().parents[1]
 SAMPLE = ROOT / "resources" / "samples" / "traced_drawing.ngc"
 TRACED = ROOT / "bench" / "data" / "traced.ngc"
 TARGET_LINES = 1_000_000
-_AXIS = re.compile(r"([XY])(-?\d*\.?\d+)")  # the words bench_gcode._shift moves
-_DROP = re.compile(r"^\s*(%|M0?2\b|M30\b)", re.IGNORECASE)
 _MOTION = re.compile(r"^\s*G0?([0-3])(?!\d)", re.MULTILINE)
-
-
-def offset(copy: int) -> float:
-    """How far copy number ``copy`` moves in X and in Y (mm), as in ``far.ngc``."""
-    return 200.0 + 20.0 * (copy % 25) if copy % 10 else 0.0
 
 
 def body(sample: Path = SAMPLE) -> str:
     """The sample without its ``%`` lines and its ``M2``, ending in a newline."""
     lines = sample.read_text().splitlines()
-    return "\n".join(line for line in lines if not _DROP.match(line)) + "\n"
+    return "\n".join(line for line in lines if not ENDS.match(line)) + "\n"
 
 
 def _shifter(text: str):
     """A function of (dx, dy) giving ``text`` with every X/Y word moved: the text is split
     at its X/Y words once, so a copy is a join of formatted numbers, not a regex pass."""
-    parts = _AXIS.split(text)  # text, letter, number, text, letter, number, ..., text
+    parts = AXIS.split(text)  # text, letter, number, text, letter, number, ..., text
     texts, letters = parts[0::3], parts[1::3]
     values = [float(v) for v in parts[2::3]]
     is_x = [letter == "X" for letter in letters]
@@ -64,14 +59,14 @@ def _shifter(text: str):
 def build(path: Path = TRACED, lines: int = TARGET_LINES, sample: Path = SAMPLE) -> Path:
     """The file of at least ``lines`` lines (made once, then reused)."""
     if (path.exists() and path.stat().st_size > 0 and path.stat().st_mtime >= sample.stat().st_mtime
-            and _count(path) >= lines):
+            and count_lines(path) >= lines):
         return path
     text = body(sample)
     copies = math.ceil((lines - 3) / text.count("\n"))
     shifted, made = _shifter(text), {}
     out = ["%\n"]
     for copy in range(copies):
-        d = offset(copy)
+        d = far_offset(copy)
         if d not in made:
             made[d] = shifted(d, d) if d else text
         out.append(made[d])
@@ -85,7 +80,7 @@ def build(path: Path = TRACED, lines: int = TARGET_LINES, sample: Path = SAMPLE)
 
 def copies(path: Path = TRACED, sample: Path = SAMPLE) -> int:
     """How many copies of the sample's body ``path`` holds."""
-    return (_count(path) - 3) // body(sample).count("\n")
+    return (count_lines(path) - 3) // body(sample).count("\n")
 
 
 def describe(path: Path = TRACED, sample: Path = SAMPLE) -> str:
@@ -97,15 +92,11 @@ def describe(path: Path = TRACED, sample: Path = SAMPLE) -> str:
             f"{arcs:.0%} of its moves G02/G03), {copies(path, sample)} copies, 9 in 10 outside the travel")
 
 
-def _count(path: Path) -> int:
-    with path.open("rb") as f:
-        return sum(block.count(b"\n") for block in iter(lambda: f.read(1 << 20), b""))
-
 
 if __name__ == "__main__":
     import time
 
     started = time.perf_counter()
     built = build()
-    print(f"{built.relative_to(ROOT)}: {_count(built):,} lines, {built.stat().st_size / 1e6:.1f} MB, "
+    print(f"{built.relative_to(ROOT)}: {count_lines(built):,} lines, {built.stat().st_size / 1e6:.1f} MB, "
           f"from {describe(built)} ({time.perf_counter() - started:.2f} s)")
