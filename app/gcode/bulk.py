@@ -180,38 +180,48 @@ def scan_stream(data: bytes, n_lines: int, chunks: list | None = None, share_byt
     helper process when there is one: it takes groups of chunks from the end while this
     process works from the start (and the caller interprets what is ready); a group the
     helper has not finished when this process reaches it is done here, so the two meet
-    wherever their speeds (and the helper's start-up) put them, and nobody waits."""
+    wherever their speeds (and the helper's start-up) put them, and nobody waits. In a
+    one-shot load (no helper) a forked child shares the groups instead (``forked.Shared``)."""
     if not data.endswith(b"\n"):
         data, chunks = data + b"\n", None
     big = len(data) >= (SHARE_BYTES if share_bytes is None else share_bytes)
     parts = chunks or chunk_table(data)
-    tail, helper = None, big and len(parts) >= 2 and workers.ready()
-    if big and len(parts) >= 2 and not helper and forked.usable():  # a one-shot load
-        groups = _split(parts)
-        tail = forked.Tail(scan_chunks, data, groups)
-    else:
-        groups = _split(parts) if helper else _windows(parts)
+    shared, helper = None, big and len(parts) >= 2 and workers.ready()
+    fork = big and len(parts) >= 2 and not helper and forked.usable()  # a one-shot load
+    groups = _split(parts) if helper or fork else _windows(parts)
+    firsts = np.cumsum([0] + [sum(count for *_, count in group) for group in groups]).tolist()
+    if fork:
+        shared = forked.Shared(lambda k: group_window(data, groups[k], firsts[k], n_lines), len(groups))
     futures = {k: _submit(data, groups[k]) for k in range(len(groups) - 1, 0, -1)} if helper else {}
-    base = 0
     try:
         for k, group in enumerate(groups):
-            words_of = (tail.take(k) if tail and k else _collect(futures.get(k))) or scan_chunks(data, group)
-            first = base
-            window, table = _table(first, min(sum(count for *_, count in group), n_lines - first))
-            for (*words, plain), (_, _, count) in zip(words_of, group, strict=True):
-                _fill(window, table, base - first, *words)
-                window.plain &= plain
-                base += count
-            del words_of
-            _classify(window, table, 0, len(window.simple))
-            yield window, min(base, n_lines)
+            if shared:
+                window = shared.take(k)
+            else:
+                window = group_window(data, group, firsts[k], n_lines, _collect(futures.get(k)))
+            yield window, min(firsts[k + 1], n_lines)
     finally:  # (also when the caller stops early: a program that needs the expander)
-        if tail:
-            tail.close()
+        if shared:
+            shared.close()
         for future in futures.values():  # the helper's groups not begun yet are dropped
             future.cancel()
-    if base < n_lines:  # lines the chunks did not count: none is simple
-        yield _table(base, n_lines - base)[0], n_lines
+    if firsts[-1] < n_lines:  # lines the chunks did not count: none is simple
+        yield _table(firsts[-1], n_lines - firsts[-1])[0], n_lines
+
+
+def group_window(data: bytes, group: list, first: int, n_lines: int, words_of: list | None = None) -> Scan:
+    """The ``Scan`` of one group of chunks ``(start, end, lines)`` of ``data``, its lines
+    from line ``first`` on (at most to ``n_lines``); ``words_of``: the group's words when
+    already scanned (``scan_chunks``, by the helper process), else they are scanned here."""
+    words_of = words_of or scan_chunks(data, group)
+    window, table = _table(first, min(sum(count for *_, count in group), n_lines - first))
+    base = 0
+    for (*words, plain), (_, _, count) in zip(words_of, group, strict=True):
+        _fill(window, table, base, *words)
+        window.plain &= plain
+        base += count
+    _classify(window, table, 0, len(window.simple))
+    return window
 
 
 def scan_chunks(data: bytes, parts: list) -> list:

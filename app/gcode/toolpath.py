@@ -214,7 +214,8 @@ def _ends(ops: Ops, rows: np.ndarray, pick) -> tuple[np.ndarray, np.ndarray]:
         return pick(ops.starts()), pick(ops.end)
     points = np.empty((len(rows) + 1, 3))
     points[0] = ops.starts()[rows[0]]
-    ops.end.take(rows, axis=0, out=points[1:])
+    ops.end.take(rows, axis=0, out=points[1:], mode="clip")  # (rows are in range: "raise", the default,
+    # would gather into a temporary copy first and copy that over)
     start, end = points[:-1], points[1:]
     start.flags.writeable = end.flags.writeable = False  # they share their memory
     return start, end

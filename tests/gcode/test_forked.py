@@ -1,5 +1,5 @@
-"""The forked child that scans the tail of a big file for a one-shot load: the same
-result as a scan alone, and a child that fails costs time, never the result."""
+"""The forked child that shares the scan of a big file in a one-shot load: the same
+result as a scan alone, and a child that fails or sticks costs time, never the result."""
 
 import os
 import sys
@@ -28,15 +28,14 @@ def one_shot(monkeypatch):
     monkeypatch.setattr(forked, "spare_core", lambda: None)  # not known: the load average decides
     monkeypatch.setattr(forked.os, "getloadavg", lambda: (0.0, 0.0, 0.0))  # a quiet machine
     workers.set_enabled(False)
-    taken = []
-    take = forked.Tail.take
+    taken = []  # per shared scan: how many groups came from the child
+    close = forked.Shared.close
 
-    def spy(self, k):
-        result = take(self, k)
-        taken.append(result is not None)
-        return result
+    def spy(self):
+        taken.append(len(self.received))
+        close(self)
 
-    monkeypatch.setattr(forked.Tail, "take", spy)
+    monkeypatch.setattr(forked.Shared, "close", spy)
     yield taken
     workers.set_enabled(True)
 
@@ -53,7 +52,7 @@ def test_a_scan_shared_with_a_forked_child_equals_a_scan_alone(big, one_shot, mo
     monkeypatch.setattr(bulk, "scan_chunks", scan_chunks)
     shared = bulk.scan(big, n, share_bytes=0)
     monkeypatch.setattr(bulk, "scan_chunks", real)
-    assert any(one_shot), "the child sent no group"
+    assert one_shot and one_shot[0] > 0, "the child sent no group"
     monkeypatch.setattr(forked, "_allowed", False)
     assert_same_scan(shared, bulk.scan(big, n))
 
@@ -70,7 +69,7 @@ def test_a_child_that_fails_costs_time_not_the_result(big, one_shot, monkeypatch
     monkeypatch.setattr(bulk, "scan_chunks", scan_chunks)
     failed = bulk.scan(big, n, share_bytes=0)
     monkeypatch.setattr(bulk, "scan_chunks", real)
-    assert one_shot and not any(one_shot)  # asked, and nothing came
+    assert one_shot == [0]  # asked, and nothing came
     monkeypatch.setattr(forked, "_allowed", False)
     assert_same_scan(failed, bulk.scan(big, n))
 
@@ -119,17 +118,42 @@ def test_the_idle_time_is_read_from_the_machine():
     assert forked._WATCHED_FROM is not None and forked._WATCHED_FROM[1] <= reading[1]
 
 
-def test_a_tail_gives_the_groups_from_the_last_one_back():
-    groups = [[k] for k in range(6)]
-    tail = forked.Tail(lambda data, group: (data, group[0] * 10), b"x", groups)
+def _job(parent: int, k: int, slow_parent_s: float = 0.0, stuck_child_job: int = -1) -> tuple[int, int]:
+    """Job ``k`` of the tests below: (who did it, its value)."""
+    me = os.getpid()
+    if me == parent:
+        time.sleep(slow_parent_s)
+    elif k == stuck_child_job:
+        time.sleep(600)
+    return me, k * 10
+
+
+def test_shared_jobs_come_in_order_from_both_sides():
+    parent = os.getpid()
+    shared = forked.Shared(lambda k: _job(parent, k, slow_parent_s=0.02), 24)
+    try:
+        results = [shared.take(k) for k in range(24)]
+    finally:
+        shared.close()
+    assert [value for _, value in results] == [k * 10 for k in range(24)]
+    by_child = [k for k, (who, _) in enumerate(results) if who != parent]
+    assert by_child and by_child == sorted(shared.received)  # both sides worked: the child's
+    assert results[0][0] == parent and 0 not in by_child  # jobs are those it sent; the parent began
+
+
+def test_a_child_stuck_on_a_job_costs_time_not_the_result(monkeypatch):
+    monkeypatch.setattr(forked, "STUCK_S", 0.2)
+    parent = os.getpid()
+    shared = forked.Shared(lambda k: _job(parent, k, stuck_child_job=1), 6)
     try:
         deadline = time.monotonic() + 30
-        while time.monotonic() < deadline and len(tail._results) < 5:
+        while time.monotonic() < deadline and shared._claims[1] != forked.CHILD:  # the child has job 1
             time.sleep(0.01)
-        assert [tail.take(k) for k in range(1, 6)] == [(b"x", k * 10) for k in range(1, 6)]
-        assert tail.take(0) is None  # never the child's: the parent starts there
+        results = [shared.take(k) for k in range(6)]
     finally:
-        tail.close()
+        shared.close()
+    assert results == [(parent, k * 10) for k in range(6)]  # all done here, job 1 after the wait
+    assert shared.received == []
 
 
 def test_the_command_line_load_with_a_child_gives_the_same_program(big, one_shot, tmp_path, monkeypatch):
@@ -141,7 +165,7 @@ def test_the_command_line_load_with_a_child_gives_the_same_program(big, one_shot
     shared = load(path)
     monkeypatch.setattr(forked, "_allowed", False)
     alone = load(path)
-    assert one_shot  # a child was forked and asked
+    assert one_shot  # a child was forked
     assert [str(d) for d in shared.diagnostics] == [str(d) for d in alone.diagnostics]
     assert shared.errors  # the repeated X at least
     np.testing.assert_array_equal(shared.toolpath.end, alone.toolpath.end)
@@ -153,11 +177,9 @@ def test_a_big_file_found_to_need_the_expander_mid_scan_stops_its_child(big, one
 
     path = tmp_path / "big.ngc"
     path.write_bytes(big)  # its unclosed comment near the end: the expander's, found mid-scan
-    closed, close = [], forked.Tail.close
-    monkeypatch.setattr(forked.Tail, "close", lambda self: closed.append(close(self)))
     monkeypatch.setattr(bulk, "SHARE_BYTES", 0)
     folded = load(path)
-    assert one_shot and closed  # a child was forked, asked, and stopped
+    assert one_shot  # a child was forked and stopped (the fixture counts at its close)
     monkeypatch.setattr(forked, "_allowed", False)
     monkeypatch.setattr(program, "FOLD_BYTES", 1 << 40)
     sniffed = load(path)
