@@ -230,13 +230,14 @@ def _plain(lines: Lines, data: list[bytes], start: State, report: Report, stop: 
 
 
 def _expanded(lines: Lines, name: str, folder: Path | None, start: State, report: Report,
-              stop: int) -> tuple[Ops, int]:
+              stop: int, chunked: tuple | None = None) -> tuple[Ops, int]:
     """The expander's path (parameters, control flow, calls) over the lines before index
-    ``stop``, rows traced to their source; (ops, line of M2/M30 or 0)."""
+    ``stop``, rows traced to their source; (ops, line of M2/M30 or 0). ``chunked``:
+    ``macro.plain_runs`` of those lines, when made already."""
     from . import macro  # only for a program that needs it: a plain load never imports it
 
     buffer = OpBuffer()
-    trace = macro.expand(lines.as_list()[:stop], name, folder, start, buffer, report)
+    trace = macro.expand(lines.as_list()[:stop], name, folder, start, buffer, report, chunked=chunked)
     ops = buffer.finish()
     ops.source = Source(trace.file.array(np.int32), trace.call_line.array(np.int64),
                         trace.context.array(np.int32), trace.iteration.array(np.int32),
@@ -309,7 +310,7 @@ def _line_end(raw: bytes, count: int) -> int:
 
 
 def _prefix_reader(raw: bytes | None, lines: Lines, name: str, profile: MachineProfile, tools, folder,
-                   expand: bool, stop: int, settings: tuple):
+                   expand: bool, stop: int, settings: tuple, chunked: tuple | None = None):
     """``start.Reader`` of this program: its first rows read from a given origin (a plain
     program's first lines; an expanded program until it has made the rows asked for);
     ``stop`` and ``settings`` (block delete, work systems) as for the whole program."""
@@ -321,7 +322,8 @@ def _prefix_reader(raw: bytes | None, lines: Lines, name: str, profile: MachineP
 
             buffer = _CappedBuffer(cap=limit)
             try:
-                macro.expand(lines.as_list()[:stop], name, folder, state, buffer, report, rows_wanted=limit)
+                macro.expand(lines.as_list()[:stop], name, folder, state, buffer, report, rows_wanted=limit,
+                             chunked=chunked)
             except _Enough:
                 return buffer.finish(), False
             return buffer.finish(), True
@@ -361,12 +363,16 @@ def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfi
             expand = True
     if expand:
         report, start = Report(), _start_state(profile, tools, *settings, origin)
-        reader = _prefix_reader(None, lines, name, profile, tools, folder, True, whole, settings)
         data.clear()
-        ops, ended = _expanded(lines, name, folder, start, report, whole)
+        from . import macro  # (a plain load never imports it)
+
+        chunked = macro.plain_runs(lines.as_list()[:whole])  # scanned once for the walk and the probe
+        reader = _prefix_reader(None, lines, name, profile, tools, folder, True, whole, settings, chunked)
+        ops, ended = _expanded(lines, name, folder, start, report, whole, chunked)
         shifted = reader  # the rows read from the origin are the program's own: one reading less
         reader = lambda at, limit: (ops, True) if np.array_equal(at, origin) else shifted(at, limit)  # noqa: E731
         where = job_start.probe(reader, origin)
+        del reader, shifted, chunked  # the scan of the plain runs (75 MB a 1 M-line program) goes now
     report_tail(lines, percent, ended, report)
     ops.origin = tuple(float(v) for v in origin)
     ops.starts()  # computed once, before the threads read it

@@ -66,9 +66,10 @@ class Unit:
     """One compiled source file (see the module docstring)."""
 
     def __init__(self, name: str, lines, fanuc: bool | None, block_delete: bool = False,
-                 compile_limit: int = 0):
-        """``fanuc``: the dialect, or None to tell it from the lines (``is_fanuc``)."""
-        found, self.scan = chunks(lines)
+                 compile_limit: int = 0, chunked: tuple | None = None):
+        """``fanuc``: the dialect, or None to tell it from the lines (``is_fanuc``);
+        ``chunked``: ``plain.chunks(lines)`` when the caller has it already."""
+        found, self.scan = chunked or chunks(lines)
         if fanuc is None:
             fanuc = is_fanuc(outside(lines, found))  # a simple line is of either dialect
         self.name, self.fanuc, self.block_delete, self.lines = name, fanuc, block_delete, lines

@@ -76,3 +76,44 @@ def test_chunks_are_found_where_simple_lines_run_long():
     assert found == [(5, 69)] and plain.labels(calls, found)[5] == 5
     assert plain.outside(calls, found) == "\n".join(calls[:5]) + "\n"
     assert plain.chunks(["G1 X1"] * 63) == ([], None)
+
+
+def test_a_load_scans_the_plain_runs_once_for_the_walk_and_the_first_move_probe(monkeypatch):
+    """The first-move probe expands the program again from another origin: it reuses the
+    walk's scan (a 1 M-line program's took half a second and 75 MB, twice)."""
+    import app.gcode.macro as macro
+
+    calls, real = [], plain.chunks
+    monkeypatch.setattr(macro, "plain_runs", lambda lines: calls.append(len(lines)) or real(lines))
+    monkeypatch.setattr(plain, "chunks", lambda lines: pytest.fail("a second scan of the plain runs"))
+    program = load_text("#1 = 2\nG21 G90 F300\nG0 X1 Y1\nG1 Z-1\n" + MOVES + "M2\n")
+    assert not program.errors and len(program.moves) > 100
+    assert calls == [len(program.lines)]
+    assert program.start is not None
+
+
+def test_an_expansion_frees_its_walk_as_it_returns():
+    """Without the cyclic collector (reference counting alone), the walker, its frames
+    and the units' scan are gone once ``expand`` returns: they held 75 MB of a 1 M-line
+    program through the rest of the load."""
+    import gc
+    import weakref
+
+    import app.gcode.macro as macro
+    from app.gcode.diagnostics import Report
+    from app.gcode.ops import OpBuffer
+    from app.gcode.state import State
+
+    lines = ("#1 = 2\nG21 F300\n" + MOVES + "M2\n").splitlines()
+    chunked = macro.plain_runs(lines)
+    scan = weakref.ref(chunked[1].simple)
+    was = gc.isenabled()
+    gc.disable()
+    try:
+        trace = macro.expand(lines, "t", None, State(), OpBuffer(), Report(), chunked=chunked)
+        del chunked
+        assert scan() is None
+    finally:
+        if was:
+            gc.enable()
+    assert trace.state.ended
