@@ -68,5 +68,5 @@ def expand(lines, name: str, folder: Path | None, state, ops: OpBuffer, report: 
                 walker.run()
         walker.trace.state = walker.state
         return walker.trace
-    finally:  # the walker's one cycle (its scope calls back into it): broken, so its frames, units
-        walker.scope.sync = None  # and their scan (75 MB for 1 M lines) go at once, not at the collector's next pass
+    finally:  # the walker's one cycle (its scope calls back into it) broken: its frames, units and
+        walker.scope.sync = None  # their scan (75 MB for 1 M lines) go now, not at the collector's next pass
