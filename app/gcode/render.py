@@ -13,7 +13,7 @@ from __future__ import annotations
 import numpy as np
 
 from .arcs import chord_points
-from .numbers import fmt, milli, rounded
+from .numbers import milli, rounded, texts
 from .ops import ARC_CCW, ARC_CW, DWELL, END, FEED, PAUSE, PLANE_AXES, RAPID, SPINDLE, Ops
 from .stops import device_line
 
@@ -86,7 +86,7 @@ def _append(line, mask, prefix: str, numbers) -> None:
     if not len(idx):
         return
     uniq, inverse = np.unique(numbers[idx], return_inverse=True)
-    table = np.array([prefix + fmt(v) for v in uniq.tolist()], dtype=object)
+    table = _sliced(lambda part: texts(uniq[part], prefix), len(uniq), object)
     inverse = inverse.reshape(-1)
     for start in range(0, len(idx), GIL_SLICE):
         part = idx[start : start + GIL_SLICE]
