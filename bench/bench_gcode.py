@@ -285,7 +285,7 @@ def _window(path: Path) -> None:
 def main() -> None:
     from app.gcode import load, workers
 
-    print(f"machine load average: {_loadavg()} on {os.cpucount_lines()} cores (cnc-gcode shares a big "
+    print(f"machine load average: {_loadavg()} on {os.cpu_count()} cores (cnc-gcode shares a big "
           f"file's scan with a forked child when half a core stood idle while it started and read "
           f"the file, by /proc/stat; where that cannot be told, at a load average of cores - 1 or less)")
     compiled = compileall.compile_dir(ROOT / "app", quiet=1)  # as pip compiles an installed package
