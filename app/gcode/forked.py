@@ -113,7 +113,7 @@ class Shared:
     ``received``: the jobs whose result came from the child."""
 
     def __init__(self, fn, count: int):
-        self._fn, self._count = fn, count
+        self._fn = fn
         self._results: dict[int, object] = {}
         self._arrived = threading.Condition()
         self._next, self._child_gone = 0, False  # the job this process takes next
@@ -162,13 +162,11 @@ class Shared:
                     continue
                 self._claims[job] = PARENT
             result = self._fn(job)
-            if job == k:
-                with self._arrived:
+            with self._arrived:  # (when both did a job, the child's copy is the one kept: ``received``)
+                if job == k:
                     self._next = k + 1
-                    self._results.pop(k, None)  # the child's copy, if it came meanwhile
-                return result
-            with self._arrived:
-                self._results[job] = result
+                    return self._results.pop(k, result)
+                self._results.setdefault(job, result)
 
     def close(self) -> None:
         """Stop the child (it may be on a job no longer needed) and reap it."""

@@ -365,7 +365,6 @@ def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfi
         report, start = Report(), _start_state(profile, tools, *settings, origin)
         data.clear()
         from . import macro  # (a plain load never imports it)
-
         chunked = macro.plain_runs(lines.as_list()[:whole])  # scanned once for the walk and the probe
         reader = _prefix_reader(None, lines, name, profile, tools, folder, True, whole, settings, chunked)
         ops, ended = _expanded(lines, name, folder, start, report, whole, chunked)
