@@ -149,6 +149,7 @@ def test_a_child_stuck_on_a_job_costs_time_not_the_result(monkeypatch):
         deadline = time.monotonic() + 30
         while time.monotonic() < deadline and shared._claims[1] != forked.CHILD:  # the child has job 1
             time.sleep(0.01)
+        assert shared._claims[1] == forked.CHILD  # (else the stuck path would go untried)
         results = [shared.take(k) for k in range(6)]
     finally:
         shared.close()

@@ -85,7 +85,9 @@ def test_a_load_scans_the_plain_runs_once_for_the_walk_and_the_first_move_probe(
 
     calls, real = [], plain.chunks
     monkeypatch.setattr(macro, "plain_runs", lambda lines: calls.append(len(lines)) or real(lines))
-    monkeypatch.setattr(plain, "chunks", lambda lines: pytest.fail("a second scan of the plain runs"))
+    from app.gcode.macro import structure
+
+    monkeypatch.setattr(structure, "chunks", lambda lines: pytest.fail("a Unit scanned the plain runs again"))
     program = load_text("#1 = 2\nG21 G90 F300\nG0 X1 Y1\nG1 Z-1\n" + MOVES + "M2\n")
     assert not program.errors and len(program.moves) > 100
     assert calls == [len(program.lines)]
