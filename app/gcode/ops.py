@@ -199,3 +199,33 @@ class OpBuffer:
                 arrays.append(np.concatenate(cols[i]).astype(dtype, copy=False))
             cols[i] = None  # free each column's pieces once joined
         return Ops(*arrays, messages=self.messages)
+
+
+class Enough(BaseException):
+    """Raised by ``CappedBuffer`` once it holds the rows a reading asked for."""
+
+
+@dataclass
+class CappedBuffer(OpBuffer):
+    """An ``OpBuffer`` that stops the reading (``Enough``) once it holds ``cap`` rows
+    (the start probe reads only a program's first rows: ``start.probe``)."""
+
+    cap: int = 0
+    count: int = 0
+
+    def add(self, *args, **kwargs) -> None:
+        super().add(*args, **kwargs)
+        self._count(1)
+
+    def add_block(self, line, *rest) -> None:
+        super().add_block(line, *rest)
+        self._count(len(line))
+
+    def extend(self, other: OpBuffer) -> None:
+        super().extend(other)
+        self._count(len(other.rows))
+
+    def _count(self, n: int) -> None:
+        self.count += n
+        if self.count >= self.cap:
+            raise Enough

@@ -23,7 +23,7 @@ import numpy as np
 from app.i18n import msg
 from app.profile import MachineProfile
 
-from . import bulk, checks, normalize, runner, sniff
+from . import bulk, checks, expanding, normalize, runner, sniff
 from . import start as job_start
 from .diagnostics import ERROR, WARNING, Diagnostic, Report
 from .estimate import Estimate, estimate
@@ -31,7 +31,7 @@ from .estimate_lines import EventLines
 from .limits import program_checks
 from .moves import moves_of
 from .offsets import ACTIVE_SYSTEM, system_param
-from .ops import OpBuffer, Ops, Source
+from .ops import CappedBuffer, Enough, OpBuffer, Ops
 from .percent import abort_line, abort_message, percent_lines, report_tail
 from .reading import SourceError, clean_bytes, clean_text, read_source, text_problem
 from .render import render
@@ -229,34 +229,18 @@ def _plain(lines: Lines, data: list[bytes], start: State, report: Report, stop: 
     return buffer.finish(), ended
 
 
-def _expanded(lines: Lines, name: str, folder: Path | None, start: State, report: Report,
-              stop: int, chunked: tuple | None = None) -> tuple[Ops, int]:
-    """The expander's path (parameters, control flow, calls) over the lines before index
-    ``stop``, rows traced to their source; (ops, line of M2/M30 or 0). ``chunked``:
-    ``macro.plain_runs`` of those lines, when made already."""
-    from . import macro  # only for a program that needs it: a plain load never imports it
-
-    buffer = OpBuffer()
-    trace = macro.expand(lines.as_list()[:stop], name, folder, start, buffer, report, chunked=chunked)
-    ops = buffer.finish()
-    ops.source = Source(trace.file.array(np.int32), trace.call_line.array(np.int64),
-                        trace.context.array(np.int32), trace.iteration.array(np.int32),
-                        trace.files, trace.names)
-    return ops, trace.state.ended
-
-
-def _fast(lines: Lines, data: list[bytes], name: str, profile: MachineProfile, tools, folder, settings,
-          origin, stop: int, unsure: bool) -> tuple[Ops, int, StartInfo, Report]:
+def _fast(lines: Lines, data: list[bytes], state_at, origin, stop: int,
+          unsure: bool) -> tuple[Ops, int, StartInfo, Report]:
     """``_interpret``'s fast path: (ops, line of M2/M30 or 0, where the job starts, report);
-    ``unsure`` as for ``_plain`` (``sniff.NeedsExpander`` then leaves ``data`` as it was)."""
-    report, start = Report(), _start_state(profile, tools, *settings, origin)
+    ``state_at(origin)``: the start state; ``unsure`` as for ``_plain`` (``sniff.NeedsExpander``
+    then leaves ``data`` as it was)."""
+    report, start = Report(), state_at(origin)
     aborted, text = abort_line(data[0], partial(lines.line_of, data[0]))  # the expander stops at an
     if aborted and aborted <= stop:  # ABORT when its flow reaches it; here it ends the program
         stop = aborted - 1
         report.error(aborted, 0, abort_message(text))
-    reader = _prefix_reader(data[0], lines, name, profile, tools, folder, False, stop, settings)
-    where = job_start.probe(reader, origin)  # before the bytes are handed over
-    del reader
+    where = job_start.probe(_plain_reader(data[0], lines, stop, state_at), origin)  # before the bytes
+    # are handed over
     big = len(data[0]) >= TRIM_BYTES
     raw = data[0]
     try:
@@ -270,35 +254,6 @@ def _fast(lines: Lines, data: list[bytes], name: str, profile: MachineProfile, t
     return ops, ended, where, report
 
 
-class _Enough(BaseException):
-    """Raised by ``_CappedBuffer`` once it holds the rows a probe asked for."""
-
-
-@dataclass
-class _CappedBuffer(OpBuffer):
-    """An ``OpBuffer`` that stops the reading (``_Enough``) once it holds ``cap`` rows."""
-
-    cap: int = 0
-    count: int = 0
-
-    def add(self, *args, **kwargs) -> None:
-        super().add(*args, **kwargs)
-        self._count(1)
-
-    def add_block(self, line, *rest) -> None:
-        super().add_block(line, *rest)
-        self._count(len(line))
-
-    def extend(self, other: OpBuffer) -> None:
-        super().extend(other)
-        self._count(len(other.rows))
-
-    def _count(self, n: int) -> None:
-        self.count += n
-        if self.count >= self.cap:
-            raise _Enough
-
-
 def _line_end(raw: bytes, count: int) -> int:
     """Offset just past the ``count``-th newline of ``raw`` (its length if fewer)."""
     pos = -1
@@ -309,29 +264,18 @@ def _line_end(raw: bytes, count: int) -> int:
     return pos + 1
 
 
-def _prefix_reader(raw: bytes | None, lines: Lines, name: str, profile: MachineProfile, tools, folder,
-                   expand: bool, stop: int, settings: tuple, chunked: tuple | None = None):
-    """``start.Reader`` of this program: its first rows read from a given origin (a plain
-    program's first lines; an expanded program until it has made the rows asked for);
-    ``stop`` and ``settings`` (block delete, work systems) as for the whole program."""
+def _plain_reader(raw: bytes, lines: Lines, stop: int, state_at):
+    """``start.Reader`` of a plain program: its first lines read from a given origin;
+    ``stop`` as for the whole program, ``state_at(origin)`` its start state."""
 
     def read(origin, limit: int) -> tuple[Ops, bool]:
-        state, report = _start_state(profile, tools, *settings, origin), Report()
-        if expand:
-            from . import macro
-
-            buffer = _CappedBuffer(cap=limit)
-            try:
-                macro.expand(lines.as_list()[:stop], name, folder, state, buffer, report, rows_wanted=limit,
-                             chunked=chunked)
-            except _Enough:
-                return buffer.finish(), False
-            return buffer.finish(), True
+        report = Report()
         cut = _line_end(raw, min(limit, stop))
-        buffer = _CappedBuffer(cap=limit)  # a line may make many rows (chords of a spline)
+        buffer = CappedBuffer(cap=limit)  # a line may make many rows (chords of a spline)
         try:
-            ops, _ = _plain(Lines(data=raw[:cut]), [raw[:cut]], state, report, min(limit, stop), buffer)
-        except _Enough:
+            ops, _ = _plain(Lines(data=raw[:cut]), [raw[:cut]], state_at(origin), report, min(limit, stop),
+                            buffer)
+        except Enough:
             return buffer.finish(), False
         return ops, cut >= len(raw) or report.has_errors()  # nothing after an error runs
 
@@ -349,6 +293,7 @@ def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfi
     A program of ``FOLD_BYTES`` or more is not sniffed first: its scan tells on the way
     (``_plain``), and it starts again on the expander's path if it needs it."""
     settings = (block_delete, systems)
+    state_at = partial(_start_state, profile, tools, *settings)
     line_of = partial(lines.line_of, data[0])  # from the chunk table: no count of every newline
     percent = percent_lines(data[0], line_of)
     closing = percent[1]
@@ -357,21 +302,12 @@ def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfi
     expand = not unsure and sniff.needs_expander(data[0])
     if not expand:
         try:
-            ops, ended, where, report = _fast(lines, data, name, profile, tools, folder, settings, origin,
-                                              whole, unsure)
+            ops, ended, where, report = _fast(lines, data, state_at, origin, whole, unsure)
         except sniff.NeedsExpander:
             expand = True
     if expand:
-        report, start = Report(), _start_state(profile, tools, *settings, origin)
         data.clear()
-        from . import macro  # (a plain load never imports it)
-        chunked = macro.plain_runs(lines.as_list()[:whole])  # scanned once for the walk and the probe
-        reader = _prefix_reader(None, lines, name, profile, tools, folder, True, whole, settings, chunked)
-        ops, ended = _expanded(lines, name, folder, start, report, whole, chunked)
-        shifted = reader  # the rows read from the origin are the program's own: one reading less
-        reader = lambda at, limit: (ops, True) if np.array_equal(at, origin) else shifted(at, limit)  # noqa: E731
-        where = job_start.probe(reader, origin)
-        del reader, shifted, chunked  # the scan of the plain runs (75 MB a 1 M-line program) goes now
+        ops, ended, where, report = expanding.interpret(lines, name, folder, whole, state_at, origin)
     report_tail(lines, percent, ended, report)
     ops.origin = tuple(float(v) for v in origin)
     ops.starts()  # computed once, before the threads read it
