@@ -1995,12 +1995,6 @@ Hình 2-D hiển thị chương trình.</translation>
         <source>No program open.</source>
         <translation>Chưa mở chương trình nào.</translation>
     </message>
-    <message numerus="yes">
-        <source>… and %n more</source>
-        <translation>
-            <numerusform>… và %n mục nữa</numerusform>
-        </translation>
-    </message>
     <message>
         <source>%1, %2</source>
         <translation>%1, %2</translation>

@@ -55,10 +55,10 @@ def test_file_with_errors_is_shown_not_run(qtbot, window, notifier, tmp_path):
     assert loaded.program.errors and loaded.program.errors[0].line == 3
     assert notifier.last()[1] == "Program has errors"
     problems = window.program_panel.problems
-    assert problems.topLevelItemCount() >= 1
-    item = problems.topLevelItem(0)
-    assert item.text(0) == "3" and item.text(2) == "error"
-    problems.itemActivated.emit(item, 0)
+    model = problems.model()
+    assert model.rowCount() >= 1
+    assert model.index(0, 0).data() == "3" and model.index(0, 2).data() == "error"
+    problems.activated.emit(model.index(0, 0))
     assert window.program_panel.source.currentIndex().row() == 2
     window.operator.start()
     assert notifier.last()[1] == "Program has errors"
@@ -69,8 +69,8 @@ def test_problem_double_click_highlights_the_move(qtbot, window, tmp_path):
     path.write_text("G21 G90\nG0 X10 Y10\nG1 X500 Y10 F200\nG1 X10 Y20\n")  # X 500 is off the table
     loaded = open_and_wait(qtbot, window, path)
     assert loaded.program.warnings
-    item = window.program_panel.problems.topLevelItem(0)
-    window.program_panel.problems.itemActivated.emit(item, 0)
+    problems = window.program_panel.problems
+    problems.activated.emit(problems.model().index(0, 0))
     x, _ = window.preview.highlight_item.getData()
     assert max(x) >= 500 - 1e-6
 

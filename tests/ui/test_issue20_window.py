@@ -208,7 +208,7 @@ def test_all_problems_at_once_even_past_a_line_that_does_not_compile(qtbot, wind
         errors = sorted((d.line, str(d.message)) for d in program.errors)
         assert [line for line, _ in errors] == [n, n + 1, n + 2], errors
         assert any(d.line == n + 3 and "beyond travel" in str(d.message) for d in program.warnings)
-        listed = window.program_panel.problems.topLevelItemCount()
+        listed = window.program_panel.problems.model().rowCount()
         assert listed == len(program.errors) + len(program.warnings)
 
 

@@ -132,21 +132,21 @@ def test_switching_language_relabels_menus_panels_and_problems(qtbot, window, tm
     bad.write_text(BAD)
     open_and_wait(qtbot, window, bad)
     menus = [a.text() for a in window.menuBar().actions()]
-    problem = window.program_panel.problems.topLevelItem(0).text(3)
+    problem = window.program_panel.problems.model().index(0, 3).data()
     assert menus[0] == "&File" and window.docks["program"].windowTitle() == "Program"
     window.set_language("vi")
     assert [a.text() for a in window.menuBar().actions()][:3] == ["&Tệp", "&Máy", "&Xem"]
     assert window.docks["program"].windowTitle() == "Chương trình"
     assert window.controls.buttons["home"].text() == "Về gốc máy"
     assert window.program_panel.tabs.tabText(1) == "Sự cố (2 lỗi, 1 cảnh báo)"
-    vietnamese = [window.program_panel.problems.topLevelItem(i).text(3) for i in range(3)]
+    vietnamese = [window.program_panel.problems.model().index(i, 3).data() for i in range(3)]
     assert vietnamese[0] == "máy này không có trục A (chỉ có X, Y và Z)"
     assert "vượt hành trình trục X" in vietnamese[2]
     assert "dòng" in window.program_panel.summary.text() and "0.00" not in window.program_panel.summary.text()
     assert window.qsettings.value("language") == "vi" and saved_language(window.qsettings) == "vi"
     window.set_language("en")
     assert [a.text() for a in window.menuBar().actions()][0] == "&File"
-    assert window.program_panel.problems.topLevelItem(0).text(3) == problem
+    assert window.program_panel.problems.model().index(0, 3).data() == problem
     assert window.program_panel.tabs.tabText(1) == "Problems (2 errors, 1 warning)"
 
 

@@ -10,6 +10,7 @@ import html
 import re
 
 import pyqtgraph as pg
+from PySide6.QtCore import Qt
 from PySide6.QtWidgets import (
     QAbstractButton,
     QComboBox,
@@ -23,6 +24,7 @@ from PySide6.QtWidgets import (
     QStatusBar,
     QTabBar,
     QTableWidget,
+    QTreeView,
     QTreeWidget,
     QWidget,
 )
@@ -68,6 +70,8 @@ def widget_texts(widget: QWidget) -> list[tuple[str, str]]:
         for row in range(min(widget.topLevelItemCount(), 50)):
             item = widget.topLevelItem(row)
             out += [(where + ".row", item.text(c)) for c in range(item.columnCount())]
+    elif isinstance(widget, QTreeView) and widget.model() is not None:  # a model's rows (Problems)
+        out += _model_texts(where, widget.model())
     elif isinstance(widget, QTableWidget):
         headers = [widget.horizontalHeaderItem(c) for c in range(widget.columnCount())]
         out += [(where + ".header", h.text()) for h in headers if h is not None]
@@ -79,6 +83,14 @@ def widget_texts(widget: QWidget) -> list[tuple[str, str]]:
         for item in widget.ci.items:
             if isinstance(item, pg.PlotItem):
                 out += _plot_texts(where, item)
+    return out
+
+
+def _model_texts(where: str, model) -> list[tuple[str, str]]:
+    columns = range(model.columnCount())
+    out = [(where + ".header", model.headerData(c, Qt.Orientation.Horizontal) or "") for c in columns]
+    for row in range(min(model.rowCount(), 50)):
+        out += [(where + ".row", model.index(row, c).data() or "") for c in columns]
     return out
 
 

@@ -14,19 +14,18 @@ from PySide6.QtWidgets import (
     QPushButton,
     QTableView,
     QTabWidget,
-    QTreeWidget,
-    QTreeWidgetItem,
+    QTreeView,
     QVBoxLayout,
     QWidget,
 )
 
-from app.i18n import localize
 from app.ui.missing_tool import missing_tools
 from app.ui.numbers import fill
+from app.ui.program.problems_model import ProblemsModel
 from app.ui.program.source_model import SourceModel
 from app.ui.program.summary import describe
 
-MAX_PROBLEMS = 2000
+CELL_PADDING = 16  # pixels around a cell's text (the item view's margins and focus frame)
 
 
 class ProgramPanel(QWidget):
@@ -49,9 +48,12 @@ class ProgramPanel(QWidget):
         self._menu_line = 0
         self.context = QLabel()  # where an expanded program is: subprogram and loop pass
         self.context.hide()
-        self.problems = QTreeWidget()
+        self.problems_model = ProblemsModel(self)
+        self.problems = QTreeView()  # every finding, each row made when it scrolls into view
         self.problems.setRootIsDecorated(False)
-        self.problems.itemActivated.connect(self._problem_activated)
+        self.problems.setUniformRowHeights(True)
+        self.problems.setModel(self.problems_model)
+        self.problems.activated.connect(self._problem_activated)
         self.missing_tool = 0  # the first tool the problems say the tool table lacks
         self.tool_button = QPushButton()  # offers the tool table editor on that tool
         self.tool_button.clicked.connect(lambda: self.tool_table_requested.emit(self.missing_tool))
@@ -74,7 +76,7 @@ class ProgramPanel(QWidget):
         self.retranslate_ui()
 
     def retranslate_ui(self) -> None:
-        self.problems.setHeaderLabels([self.tr("Line"), self.tr("Col"), "", self.tr("Message")])
+        self.problems_model.set_headers([self.tr("Line"), self.tr("Col"), "", self.tr("Message")])
         self.tabs.setTabText(0, self.tr("Source"))
         self.start_here_action.setText(self.tr("Start here"))
         if self._shown is None:
@@ -113,26 +115,33 @@ class ProgramPanel(QWidget):
         self.context.hide()
         self._shown = None
         self.source_model.set_lines([])
-        self.problems.clear()
+        self.problems_model.set_problems([], {})
         self._offer_tool_table([])
         self.summary.setText(self.tr("No program open."))
 
     def _fill_problems(self, errors, warnings, keep_tab: bool = False) -> None:
-        self.problems.clear()
         rows = [("error", d) for d in errors] + [("warning", d) for d in warnings]
-        items = [self._problem_item(kind, d) for kind, d in rows[:MAX_PROBLEMS]]
-        if len(rows) > MAX_PROBLEMS:
-            more = self.tr("… and %n more", "", len(rows) - MAX_PROBLEMS)
-            items.append(QTreeWidgetItem(["", "", "", more]))
-        self.problems.addTopLevelItems(items)
-        for column in range(3):
-            self.problems.resizeColumnToContents(column)
+        said = {"error": self.tr("error"), "warning": self.tr("warning")}
+        self.problems_model.set_problems(rows, said)
+        self._fit_columns(rows, said)
         counts = fill(self.tr("%1, %2"), self.tr("%n error(s)", "", len(errors)),
                       self.tr("%n warning(s)", "", len(warnings)))
         self.tabs.setTabText(1, fill(self.tr("Problems (%1)"), counts))
         self._offer_tool_table(errors)
         if errors and not keep_tab:
             self.tabs.setCurrentWidget(self.problems_page)
+
+    def _fit_columns(self, rows, said: dict[str, str]) -> None:
+        """Line, column and kind as wide as their widest text (the largest number is the
+        widest), or their title: worked out from the texts, not by the view, which would
+        ask the model for every row."""
+        lines = max((int(getattr(d, "line", 0) or 0) for _, d in rows), default=0)
+        columns = max((int(getattr(d, "column", 0) or 0) for _, d in rows), default=0)
+        widest = (str(lines), str(columns or ""), max(said.values(), key=len))
+        metrics, header = self.problems.fontMetrics(), self.problems.header()
+        for column, text in enumerate(widest):
+            width = metrics.horizontalAdvance(text) + CELL_PADDING
+            self.problems.setColumnWidth(column, max(width, header.sectionSizeFromContents(column).width()))
 
     def _offer_tool_table(self, errors) -> None:
         """The button to the tool table editor when an error says a tool is not in it."""
@@ -153,19 +162,8 @@ class ProgramPanel(QWidget):
         menu.addAction(self.start_here_action)
         menu.popup(self.source.viewport().mapToGlobal(pos))
 
-    def _problem_item(self, kind: str, diagnostic) -> QTreeWidgetItem:
-        line = int(getattr(diagnostic, "line", 0) or 0)
-        column = getattr(diagnostic, "column", "") or ""
-        said = self.tr("error") if kind == "error" else self.tr("warning")
-        message = localize(diagnostic.message)
-        item = QTreeWidgetItem([str(line), str(column), said, message])
-        item.setToolTip(3, message)  # the whole message where the column is too narrow
-        item.setData(0, Qt.ItemDataRole.UserRole, line)
-        item.setForeground(2, Qt.GlobalColor.red if kind == "error" else Qt.GlobalColor.darkYellow)
-        return item
-
-    def _problem_activated(self, item: QTreeWidgetItem) -> None:
-        line = item.data(0, Qt.ItemDataRole.UserRole)
+    def _problem_activated(self, index) -> None:
+        line = self.problems_model.line_of(index.row())
         if line:
             self.go_to_line(line)
             self.line_activated.emit(line)
