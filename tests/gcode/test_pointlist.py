@@ -145,3 +145,19 @@ def test_cli_import_refuses_a_malformed_file(tmp_path, capsys):
     assert main(["import", str(path)]) == 1
     out, err = capsys.readouterr()
     assert out == "" and "bad.xyz, line 2: expected three numbers" in err
+
+
+def test_telling_a_point_list_apart_does_not_import_the_converter():
+    """The window asks ``looks_like_points`` of every file it opens; the converter brings
+    the features' modules (0.1 s or more of the first Open), and only an import needs it."""
+    import subprocess
+    import sys
+
+    probe = ("import sys; from app.gcode.pointlist import looks_like_points\n"
+             "assert looks_like_points(b'1 2 3\\n4 5 6\\n')\n"
+             "assert 'app.gcode.pointlist.convert' not in sys.modules\n"
+             "assert 'app.gcode.features' not in sys.modules\n"
+             "from app.gcode.pointlist import to_gcode\n"
+             "assert 'app.gcode.pointlist.convert' in sys.modules")
+    done = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
