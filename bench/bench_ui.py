@@ -267,6 +267,7 @@ def bench_big_file(config: Path, path: Path | None = None) -> None:
     refined = []
     window.loader.refined.connect(lambda loaded: refined.append(time.perf_counter()))
     seen = _first_picture(window)
+    _settle(app)
     probe = LatenessProbe()
     tracer = StallTracer(probe) if os.environ.get("BENCH_UI_TRACE") == "1" else None
     probe.start()
@@ -308,6 +309,20 @@ def bench_big_file(config: Path, path: Path | None = None) -> None:
               f"{prepared[0] - started:.2f} s after Open" if prepared else "")
     _pan_zoom(app, window, "once the file is ready")
     window.close()
+
+
+def _settle(app, quiet_ticks: int = 20, timeout: float = 10.0) -> bool:
+    """Run the event loop until the window is idle (``quiet_ticks`` ticks of a 10 ms timer
+    in a row, each at most 5 ms late): a window just shown still lays out and paints
+    itself for a few tenths of a second, and an operator opens a file after that, not in
+    the window's first frame. False when it never settles within ``timeout`` s."""
+    probe = LatenessProbe()
+    probe.start()
+    try:
+        return _wait(app, lambda: len(probe.samples) >= quiet_ticks
+                     and max(probe.samples[-quiet_ticks:]) <= 0.005, timeout)
+    finally:
+        probe.stop()
 
 
 def _first_picture(window) -> dict:
