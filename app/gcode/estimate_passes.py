@@ -186,13 +186,25 @@ def _queue_chunk(length, speed, trail_s: float, capacity: int, s, a: int, b: int
     """``queue_horizons`` of blocks ``a..b``."""
     n = len(length)
     trail = s[a:b] - speed[a:b] * trail_s
-    head = np.minimum(np.searchsorted(s[1:], trail, side="right"), max(n - 1, 0))
+    head = np.minimum(_blocks_up_to(s[1:], trail), max(n - 1, 0))
     with np.errstate(divide="ignore", invalid="ignore"):
         frac = np.clip(np.where(length[head] > 0, (trail - s[head]) / length[head], 0.0), 0.0, 1.0)
     end = np.minimum(head + frac + capacity, n)
     whole = np.floor(end).astype(np.int64)
     last = np.where(whole < n, length[np.minimum(whole, n - 1)], 0.0)
     return np.clip(whole - np.arange(a, b), 1, capacity - 1), s[whole] + (end - whole) * last
+
+
+def _blocks_up_to(ends: np.ndarray, points: np.ndarray) -> np.ndarray:
+    """``np.searchsorted(ends, points, side="right")`` (``ends`` sorted), searched among
+    the ends between the smallest and the largest point only: a chunk's trailing points
+    lie within a few blocks of it, and a search of the whole path (a million ends) missed
+    the cache at nearly every step."""
+    low, high = (points.min(), points.max()) if len(points) else (0.0, 0.0)
+    if not (np.isfinite(low) and np.isfinite(high)):  # NaN (or inf) anywhere: the whole path
+        return np.searchsorted(ends, points, side="right")
+    first, last = np.searchsorted(ends, [low, high], side="right")  # ends[:first] <= every point
+    return first + np.searchsorted(ends[first:last], points, side="right")  # (ends[last:] > all)
 
 
 def look_ahead_binds(length, entry_sq, accel: float, horizon, queue_end, s: np.ndarray | None = None) -> bool:

@@ -81,3 +81,17 @@ def test_any_chunk_size_gives_the_same_figures(programs, monkeypatch, chunk):
     monkeypatch.setattr(passes, "CHUNK", chunk)
     monkeypatch.setattr(module, "BLOCK", chunk)
     assert {name: _digest(_estimate(*p)) for name, p in programs.items()} == WHOLE_ARRAY_DIGESTS
+
+
+def test_the_trailing_search_finds_what_a_search_of_the_whole_path_finds():
+    """``_blocks_up_to`` searches only the ends between its smallest and largest point;
+    zero-length blocks (equal ends), points outside the path, inf and NaN included."""
+    from app.gcode.estimate_passes import _blocks_up_to
+
+    rng = np.random.default_rng(24)
+    for _ in range(2000):
+        ends = np.cumsum(rng.choice([0.0, 0.5, 1.0, 2.5], size=int(rng.integers(0, 60))))
+        special = np.array([-1.0, 0.0, 1e9, -np.inf, np.inf, np.nan])
+        points = rng.choice(np.concatenate((ends, special)), size=int(rng.integers(0, 20)))
+        points[rng.random(len(points)) < 0.5] += rng.normal(scale=0.3)
+        assert np.array_equal(_blocks_up_to(ends, points), np.searchsorted(ends, points, side="right"))
