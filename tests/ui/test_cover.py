@@ -22,9 +22,9 @@ def test_cover_open_mid_job_banner_refusals_and_resume(qtbot, window, tmp_path):
     qtbot.waitUntil(lambda: status().done >= 3 and status().rpm > 2500, timeout=60_000)
     sim = window.link.sim
     sim.panel.set_cover(True)
-    qtbot.waitUntil(lambda: window.cover_banner.bar.isVisible(), timeout=10_000)
+    qtbot.waitUntil(lambda: window.cover_banner.bar.isVisible(), timeout=60_000)
     assert "COVER OPEN" in window.status.currentMessage()
-    qtbot.waitUntil(lambda: status().rpm == 0 and status().state == "HOLD", timeout=10_000)
+    qtbot.waitUntil(lambda: status().rpm == 0 and status().state == "HOLD", timeout=60_000)
     assert sim.panel.oled_text()[0] == "COVER OPEN"
     before = len(window.notifier.messages)
     window.operator.jog("X", 1.0, 300.0)  # the window refuses them itself: nothing is sent

@@ -88,7 +88,7 @@ def test_run_from_sd_shows_its_progress_and_can_be_paused_resumed_and_stopped(qt
     qtbot.waitUntil(lambda: window.sd_panel.lines_of("long.nc") == len(lines), timeout=20_000)
     window.operator.run_from_sd("long.nc")
     qtbot.waitUntil(lambda: "S" in _status(window).flags and _status(window).done >= 2, timeout=60_000)
-    qtbot.waitUntil(lambda: "SD long.nc" in window.status.progress_text.text(), timeout=10_000)
+    qtbot.waitUntil(lambda: "SD long.nc" in window.status.progress_text.text(), timeout=60_000)
     assert f"/{len(lines)}" in window.status.progress_text.text()  # lines of the card's file
     controls = window.controls.buttons
     assert controls["pause"].isEnabled() and controls["stop"].isEnabled()

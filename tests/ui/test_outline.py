@@ -57,6 +57,7 @@ def test_outline_convex_hull_and_a_hold_stops_it(qtbot, homed, tmp_path):
     open_job(qtbot, window, tmp_path)
     qtbot.waitUntil(window.outline.button.isEnabled, timeout=10_000)
     window.outline.hull.setChecked(True)
+    outline = [line for line in window.outline.program_lines() if line.startswith("G01")]
     qtbot.mouseClick(window.outline.button, Qt.MouseButton.LeftButton)
     qtbot.waitUntil(lambda: window.binder.status.state == "RUN", timeout=60_000)
     qtbot.mouseClick(window.controls.buttons["pause"], Qt.MouseButton.LeftButton)
@@ -64,7 +65,8 @@ def test_outline_convex_hull_and_a_hold_stops_it(qtbot, homed, tmp_path):
     qtbot.mouseClick(window.controls.buttons["stop"], Qt.MouseButton.LeftButton)
     qtbot.waitUntil(lambda: window.binder.last_job_event is not None, timeout=60_000)
     assert not window.binder.last_job_event.completed
-    assert len([line for line in executed(window) if line.startswith("G01")]) < 20
+    ran = [line for line in executed(window) if line.startswith("G01")]
+    assert len(ran) < len(outline), "the hold did not stop the outline"  # how far: the machine's speed
 
 
 def test_an_outline_past_the_travel_is_refused_before_anything_is_sent(qtbot, homed, tmp_path):
