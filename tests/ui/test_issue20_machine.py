@@ -90,8 +90,8 @@ def test_run_from_sd_shows_its_progress_and_can_be_paused_resumed_and_stopped(qt
     qtbot.waitUntil(lambda: "S" in _status(window).flags and _status(window).done >= 2, timeout=60_000)
     qtbot.waitUntil(lambda: "SD long.nc" in window.status.progress_text.text(), timeout=60_000)
     assert f"/{len(lines)}" in window.status.progress_text.text()  # lines of the card's file
-    controls = window.controls.buttons
-    assert controls["pause"].isEnabled() and controls["stop"].isEnabled()
+    controls = window.controls.buttons  # (the state table follows the status that says it runs)
+    qtbot.waitUntil(lambda: controls["pause"].isEnabled() and controls["stop"].isEnabled(), timeout=60_000)
     assert not any(controls[name].isEnabled() for name in ("start", "home", "zero_XY"))
     assert not window.controls.jog.buttons["X", 1].isEnabled()
     window.operator.pause()
