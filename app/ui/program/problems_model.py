@@ -37,7 +37,14 @@ class ProblemsModel(QAbstractTableModel):
 
     def line_of(self, row: int) -> int:
         """The 1-based source line of row ``row`` (0 when it names none)."""
-        return int(getattr(self._rows[row][1], "line", 0) or 0) if 0 <= row < len(self._rows) else 0
+        return _number(self._rows[row][1], "line") if 0 <= row < len(self._rows) else 0
+
+    def widest(self) -> tuple[str, str, str]:
+        """The widest text of the line, column and kind columns (the largest number is the
+        widest), found without making every row's texts."""
+        lines = max((_number(d, "line") for _, d in self._rows), default=0)
+        columns = max((_number(d, "column") for _, d in self._rows), default=0)
+        return str(lines), str(columns or ""), max(self._said.values(), key=len, default="")
 
     def rowCount(self, parent=QModelIndex()) -> int:  # noqa: B008, N802 (Qt signature)
         return 0 if parent.isValid() else len(self._rows)
@@ -60,9 +67,9 @@ class ProblemsModel(QAbstractTableModel):
 
     def _text(self, kind: str, diagnostic, column: int) -> str:
         if column == LINE:
-            return str(int(getattr(diagnostic, "line", 0) or 0))
+            return str(_number(diagnostic, "line"))
         if column == COLUMN:
-            return str(getattr(diagnostic, "column", "") or "")
+            return str(_number(diagnostic, "column") or "")
         if column == KIND:
             return self._said.get(kind, kind)
         return localize(diagnostic.message)
@@ -71,3 +78,8 @@ class ProblemsModel(QAbstractTableModel):
         if orientation == Qt.Orientation.Horizontal and role == Qt.ItemDataRole.DisplayRole:
             return self._headers[section] if 0 <= section < len(self._headers) else None
         return None
+
+
+def _number(diagnostic, name: str) -> int:
+    """``diagnostic.line`` or ``.column`` (0 when it has none)."""
+    return int(getattr(diagnostic, name, 0) or 0)

@@ -123,7 +123,7 @@ class ProgramPanel(QWidget):
         rows = [("error", d) for d in errors] + [("warning", d) for d in warnings]
         said = {"error": self.tr("error"), "warning": self.tr("warning")}
         self.problems_model.set_problems(rows, said)
-        self._fit_columns(rows, said)
+        self._fit_columns()
         counts = fill(self.tr("%1, %2"), self.tr("%n error(s)", "", len(errors)),
                       self.tr("%n warning(s)", "", len(warnings)))
         self.tabs.setTabText(1, fill(self.tr("Problems (%1)"), counts))
@@ -131,13 +131,11 @@ class ProgramPanel(QWidget):
         if errors and not keep_tab:
             self.tabs.setCurrentWidget(self.problems_page)
 
-    def _fit_columns(self, rows, said: dict[str, str]) -> None:
-        """Line, column and kind as wide as their widest text (the largest number is the
-        widest), or their title: worked out from the texts, not by the view, which would
-        ask the model for every row."""
-        lines = max((int(getattr(d, "line", 0) or 0) for _, d in rows), default=0)
-        columns = max((int(getattr(d, "column", 0) or 0) for _, d in rows), default=0)
-        widest = (str(lines), str(columns or ""), max(said.values(), key=len))
+    def _fit_columns(self) -> None:
+        """Line, column and kind as wide as their widest text or their title: worked out
+        from the texts (``ProblemsModel.widest``), not by the view, which would ask the
+        model for every row."""
+        widest = self.problems_model.widest()
         metrics, header = self.problems.fontMetrics(), self.problems.header()
         for column, text in enumerate(widest):
             width = metrics.horizontalAdvance(text) + CELL_PADDING
