@@ -178,13 +178,21 @@ class Simulator:
     def start(self, speed: float | None = 1.0) -> None:
         """Run on a daemon thread: real time (1.0), a factor (20.0) or unpaced (None)."""
         if self._running:
-            self.clock.set_speed(speed)
+            self.set_speed(speed)
             return
         with self.lock:
             self.clock.set_speed(speed)
             self._running = True
         self._thread = threading.Thread(target=self._thread_main, name="cnc-sim", daemon=True)
         self._thread.start()
+
+    def set_speed(self, speed: float | None) -> None:
+        """Change the speed factor of a running machine from any thread: simulated time
+        goes on from where it is, at the new pace (a test slows the machine down so that
+        a job it must catch mid-run cannot end first on a busy computer)."""
+        with self.lock:
+            self.clock.set_speed(speed)
+            self.condition.notify_all()
 
     def stop(self) -> None:
         with self.lock:

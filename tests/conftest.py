@@ -28,3 +28,17 @@ def _private_user_folders() -> None:
 
 
 _private_user_folders()
+
+
+def _hypothesis_without_clocks() -> None:
+    """No property test passes or fails on the computer's speed: Hypothesis's deadline and
+    its too-slow health check time each example, and a busy CI machine trips them on
+    tests whose examples are right. A test's own ``@settings`` still sets the rest."""
+    from hypothesis import HealthCheck, settings
+
+    settings.register_profile("suite", deadline=None, suppress_health_check=[HealthCheck.too_slow])
+    settings.load_profile("suite")
+
+
+_hypothesis_without_clocks()
+

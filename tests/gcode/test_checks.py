@@ -106,7 +106,8 @@ def arc_programs(draw):
     return "\n".join(rows) + "\nM2\n"
 
 
-@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@settings(max_examples=60, deadline=None,
+          suppress_health_check=[HealthCheck.function_scoped_fixture, HealthCheck.too_slow])
 @given(arc_programs(), st.sampled_from([1, 3, 1 << 16]), st.sampled_from([1, 200]))
 def test_envelope_matches_the_reference_on_any_arcs(monkeypatch, text, block, shown):
     _check(text, monkeypatch, block, shown)

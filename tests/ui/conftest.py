@@ -96,3 +96,11 @@ def home_when_allowed(qtbot, window, timeout=60_000):
     binder = window.binder
     at_rest = lambda: binder.status.state == "IDLE" and binder.pending_motion is None  # noqa: E731
     qtbot.waitUntil(lambda: binder.status.homed and at_rest(), timeout=timeout)
+
+
+def pace(window, speed: float) -> None:
+    """Run the simulated machine at ``speed`` times real time from now on: a test's hand on
+    the simulated world, as its faults are. A job that a test must catch mid-run (to pause
+    it, unplug it) runs slow enough that a busy computer's latency cannot let it end first;
+    the test stops it when it has seen what it came for."""
+    window.link.sim.set_speed(speed)

@@ -13,7 +13,7 @@ from app.ui.language import apply_language, saved_language
 from app.ui.ports import available_ports
 from app.ui.settings.dialog import ORDER
 from app.ui.settings.tools_dialog import open_tool_table
-from tests.ui.conftest import SAMPLES, open_and_wait
+from tests.ui.conftest import SAMPLES, open_and_wait, pace
 from tests.ui.untranslated import english_in_vietnamese, placeholders
 from tests.ui.visible import all_texts
 
@@ -50,6 +50,7 @@ def _session(qtbot, window, tmp_path) -> list[tuple[str, str]]:
     told = len(window.notifier.messages)
     window.operator.jog("X", -50.0, 300.0)  # past the travel: the machine refuses (soft limit)
     qtbot.waitUntil(lambda: len(window.notifier.messages) > told, timeout=60_000)
+    pace(window, 5.0)  # the job lasts over half a minute: paused, resumed and unplugged mid-run
     _click(qtbot, window.controls.buttons["start"])
     qtbot.waitUntil(lambda: window.binder.job_done >= 5, timeout=60_000)
     _click(qtbot, window.controls.buttons["pause"])

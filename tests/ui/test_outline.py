@@ -7,7 +7,7 @@ from __future__ import annotations
 from PySide6.QtCore import Qt
 
 from tests.ui import test_machine_controls
-from tests.ui.conftest import open_and_wait
+from tests.ui.conftest import open_and_wait, pace
 
 SPEED = 20  # as test_machine_controls' fixture
 homed = test_machine_controls.connected  # the fixture: connected at 20x, homed
@@ -58,6 +58,7 @@ def test_outline_convex_hull_and_a_hold_stops_it(qtbot, homed, tmp_path):
     qtbot.waitUntil(window.outline.button.isEnabled, timeout=10_000)
     window.outline.hull.setChecked(True)
     outline = [line for line in window.outline.program_lines() if line.startswith("G01")]
+    pace(window, 1.0)  # the outline takes seconds: the Pause below lands while it runs
     qtbot.mouseClick(window.outline.button, Qt.MouseButton.LeftButton)
     qtbot.waitUntil(lambda: window.binder.status.state == "RUN", timeout=60_000)
     qtbot.mouseClick(window.controls.buttons["pause"], Qt.MouseButton.LeftButton)

@@ -7,7 +7,7 @@ from __future__ import annotations
 from PySide6.QtCore import Qt
 
 from app.ui.state_table import Inputs, Link, Machine, decide
-from tests.ui.conftest import home_when_allowed, open_and_wait
+from tests.ui.conftest import home_when_allowed, open_and_wait, pace
 
 SPEED = 10
 SOURCE = "G21 G90\nM3 S3000\nG0 Z5\nG1 X120 F300\nG1 Y60\nG0 Z5\nM5\nM2\n"
@@ -48,6 +48,7 @@ def test_overrides_reach_the_machine_and_show_in_the_panel(qtbot, window, tmp_pa
     path = tmp_path / "overrides.ngc"
     path.write_text(SOURCE)
     open_and_wait(qtbot, window, path)
+    pace(window, 1.0)  # the job lasts half a minute: it is still running at every step below
     window.operator.start()
     qtbot.waitUntil(lambda: status().state == "RUN" and status().x > 5, timeout=60_000)
     panel = window.controls.overrides
@@ -64,7 +65,7 @@ def test_overrides_reach_the_machine_and_show_in_the_panel(qtbot, window, tmp_pa
     qtbot.waitUntil(lambda: status().state == "HOLD", timeout=60_000)
     assert panel.buttons["FEED"][-1].isEnabled()  # usable while held
     window.operator.resume()
-    qtbot.waitUntil(lambda: status().state == "RUN", timeout=10_000)
+    qtbot.waitUntil(lambda: status().state == "RUN", timeout=60_000)
     assert status().overrides == (80, 110, 50)  # kept across the hold
     window.operator.stop()
     qtbot.waitUntil(lambda: status().state == "IDLE", timeout=20_000)
