@@ -7,7 +7,7 @@ from __future__ import annotations
 import pytest
 from PySide6.QtCore import Qt
 
-from tests.ui.conftest import home_when_allowed, open_and_wait
+from tests.ui.conftest import home_when_allowed, open_and_wait, pace
 
 SPEED = 20
 SOURCE = """G21 G90
@@ -114,12 +114,13 @@ def test_tool_diameter_comes_from_the_tool_table_when_there_is_one(tmp_path):
 def test_an_sd_run_prompts_too_and_the_panel_ok_closes_the_prompt(qtbot, ready, tmp_path):
     window = ready
     (tmp_path / "stops.nc").write_text("\n".join(window.loaded.program.device_lines) + "\n")
+    pace(window, 2.0)  # the move between M00 and M01 outlasts a status period: the machine is seen running
     window.operator.run_from_sd("stops.nc")
     prompt = window.program_stops.prompt
     qtbot.waitUntil(prompt.isVisible, timeout=120_000)
     assert window.program_stops.events[-1].line == "M00"
-    window.link.sim.panel.press("OK")  # answered on the machine instead
-    qtbot.waitUntil(lambda: not prompt.isVisible(), timeout=30_000)
+    with qtbot.waitSignal(prompt.finished, timeout=60_000):  # closed, however soon M01 follows
+        window.link.sim.panel.press("OK")  # answered on the machine instead
     qtbot.waitUntil(prompt.isVisible, timeout=120_000)  # M01
     qtbot.mouseClick(prompt.continue_button, Qt.MouseButton.LeftButton)
     qtbot.waitUntil(lambda: prompt.isVisible() and window.program_stops.events[-1].tool == 2, timeout=120_000)
