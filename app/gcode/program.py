@@ -41,6 +41,7 @@ from .state import State
 from .toolpath import Toolpath, build
 
 TRIM_BYTES = 8 << 20  # after the scan of a file this big, free heap pages go back to the system
+LATER_CHECKS_ROWS = 200_000  # a program this long may leave its checks for after its first picture
 FOLD_BYTES = 1 << 20  # a program this big is read on the fast path before it is known to be plain
 ORIGIN = (0.0, 0.0, 0.0)  # where rs274 reads a program from; ``from_start`` gives the machine's
 
@@ -61,6 +62,7 @@ class Program:
     start: StartInfo = field(default_factory=StartInfo)  # where the job starts (start.py)
     _again: object = field(default=None, repr=False)  # origin -> the program read from there
     _planning: _in_thread | None = field(default=None, repr=False)  # ``planned`` under way (``plan_ahead``)
+    _checks: object = field(default=None, repr=False)  # the checks left for later (``later_checks``)
 
     def from_start(self, position) -> Program:
         """The program as a job from ``position`` (work mm, as the machine reports it):
@@ -73,6 +75,21 @@ class Program:
     def __repr__(self) -> str:
         return (f"Program({self.name!r}, {len(self.lines)} lines, {len(self.toolpath)} moves, "
                 f"{len(self.errors)} errors, {len(self.warnings)} warnings)")
+
+    @property
+    def checks_pending(self) -> bool:
+        """True while the checks a load left for later (``load(later_checks=True)``) have
+        not run: ``diagnostics`` lacks their warnings, and ``envelope`` is None."""
+        return self._checks is not None
+
+    def finish_checks(self) -> None:
+        """Run the checks the load left for later (the travel, feed 0 and spindle speed
+        warnings): they join ``diagnostics``, in line order, and ``envelope`` is set.
+        Nothing when none are left; one thread at a time."""
+        pending = self._checks
+        if pending is not None:
+            self.envelope, self.diagnostics = pending()
+            self._checks = None
 
     @property
     def source_lines(self) -> list[str]:
@@ -166,6 +183,13 @@ def _checked(ops: Ops, profile: MachineProfile, lines: Lines, report: Report,
     envelope = checks.run(ops, profile, lines, report)
     toolpath.bounds  # noqa: B018 (a cached property)
     return envelope
+
+
+def _later_checks(ops: Ops, profile: MachineProfile, lines: Lines, report: Report):
+    """``Program._checks``: (envelope, every diagnostic) once ``checks.run`` has added its
+    warnings to the load's ``report``."""
+    envelope = checks.run(ops, profile, lines, report)
+    return envelope, report.finish()
 
 
 def _split(text: str) -> list[str]:
@@ -284,12 +308,13 @@ def _plain_reader(raw: bytes, lines: Lines, stop: int, state_at):
 
 def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfile,
                tools: dict | None = None, folder: Path | None = None, block_delete: bool = False,
-               systems=None, origin=ORIGIN, plan_ahead: bool = False) -> Program:
+               systems=None, origin=ORIGIN, plan_ahead: bool = False, later_checks: bool = False) -> Program:
     """Interpret ``lines`` from ``origin`` (work mm): the expander when the bytes in
     ``data`` need it, else the fast path; ``plan_ahead``: the planner's estimate starts on
     a thread as soon as the toolpath is there (``Program.planned`` then waits for it), and
     the checks wait for the toolpath and run beside it (less memory at the peak; without
-    it they run beside the plan and the toolpath: the window's load returns sooner).
+    it they run beside the plan and the toolpath: the window's load returns sooner);
+    ``later_checks`` as for ``load``.
     A program of ``FOLD_BYTES`` or more is not sniffed first: its scan tells on the way
     (``_plain``), and it starts again on the expander's path if it needs it."""
     settings = (block_delete, systems)
@@ -311,8 +336,9 @@ def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfi
     report_tail(lines, percent, ended, report)
     ops.origin = tuple(float(v) for v in origin)
     ops.starts()  # computed once, before the threads read it
-    early = None if plan_ahead else _in_thread(checks.run, ops, profile, lines, report)  # the window's:
-    # beside the plan and the toolpath (numpy lets them run at once), as soon as can be
+    later = later_checks and len(ops) >= LATER_CHECKS_ROWS
+    early = None if plan_ahead or later else _in_thread(checks.run, ops, profile, lines, report)  # the
+    # window's small programs: beside the plan and the toolpath (numpy lets them run at once)
     normalizing = _in_thread(normalize.plan, ops, profile.motion.arc_tolerance_mm, name="gcode-normalize")
     toolpath = build(ops, lambda: normalizing.join().first, profile)
     the_plan = normalizing.join()
@@ -330,7 +356,8 @@ def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfi
         return _interpret(lines, [lines.encoded()], name, profile, tools, folder, *settings, position)
 
     return Program(name, lines, report.finish(), ops, toolpath, profile, the_plan, envelope=envelope,
-                   start=where, _again=again, _planning=planning)
+                   start=where, _again=again, _planning=planning,
+                   _checks=partial(_later_checks, ops, profile, lines, report) if later else None)
 
 
 def _glibc(name: str):
@@ -414,12 +441,16 @@ def load_text(text: str, name: str = "<text>", profile: MachineProfile | None = 
 
 
 def load(path: str | Path, profile: MachineProfile | None = None, tools: dict | None = None,
-         block_delete: bool = False, systems=None, plan_ahead: bool = False) -> Program:
+         block_delete: bool = False, systems=None, plan_ahead: bool = False,
+         later_checks: bool = False) -> Program:
     """Read and interpret a G-code file; unreadable or non-UTF-8 files give an error.
     ``tools``, ``block_delete`` and ``systems`` as for ``load_text``; subprogram files are
     looked for in the file's folder. ``plan_ahead``: start the planner's estimate on a
     thread at once, beside the last checks (for a caller that will ask for it at once,
-    such as ``cnc-gcode check``; the window asks only after its first picture)."""
+    such as ``cnc-gcode check``; the window asks only after its first picture).
+    ``later_checks``: a program of LATER_CHECKS_ROWS rows or more is returned before its
+    travel, feed and spindle speed checks, which ``Program.finish_checks`` then runs (the
+    window: after the first picture, which does not need them)."""
     path = Path(path)
     profile = profile or MachineProfile()
     try:
@@ -433,4 +464,4 @@ def load(path: str | Path, profile: MachineProfile | None = None, tools: dict | 
     data = [raw]  # valid UTF-8: the bytes the fast path reads
     del raw
     return _interpret(lines, data, str(path), profile, tools, path.parent, block_delete, systems,
-                      plan_ahead=plan_ahead)
+                      plan_ahead=plan_ahead, later_checks=later_checks)

@@ -21,6 +21,7 @@ opens, the benchmark before timing). It is shut down when the interpreter exits.
 from __future__ import annotations
 
 import atexit
+import contextlib
 import os
 import sys
 import threading
@@ -29,6 +30,7 @@ from typing import TYPE_CHECKING
 if TYPE_CHECKING:  # multiprocessing and concurrent.futures are imported when the helper starts
     from concurrent.futures import Future, ProcessPoolExecutor
 
+PIPE_BYTES = 1 << 20  # Linux lets any process have pipes this big (fs.pipe-max-size)
 PRELOAD = ["app.gcode.bulk"]  # imported once by the forkserver, not by every helper
 _lock = threading.Lock()
 _pool: ProcessPoolExecutor | None = None
@@ -74,6 +76,7 @@ def _start() -> None:
 
     try:
         pool = ProcessPoolExecutor(max_workers=1, mp_context=_context())
+        _widen_pipes(pool)
         pool.submit(int).result()  # the helper process exists and answers
     except Exception:  # no semaphores, no pipes, no processes: work alone
         with _lock:
@@ -87,6 +90,21 @@ def _start() -> None:
             atexit.register(_drop, pool)  # before the late-imported pool modules are torn down
     if _pool is not pool:  # forbidden while it started
         pool.shutdown(wait=False)
+
+
+def _widen_pipes(pool: ProcessPoolExecutor) -> None:
+    """Pipes of PIPE_BYTES to and from the helper, where the system allows (Linux): a
+    group's 1.5 MB of source then crosses in two writes, not 24 of 64 kB, each of which
+    waits for the other side to be scheduled (measured: 6.0 -> 1.3 ms a group)."""
+    try:
+        import fcntl
+    except ImportError:  # Windows
+        return
+    setpipe = getattr(fcntl, "F_SETPIPE_SZ", None)
+    ends = (("_call_queue", "_writer"), ("_result_queue", "_reader"))  # the pool's own, if it has them
+    for end in (getattr(getattr(pool, queue, None), name, None) for queue, name in ends):
+        with contextlib.suppress(OSError, ValueError, AttributeError, TypeError):
+            fcntl.fcntl(end.fileno(), setpipe, PIPE_BYTES)
 
 
 def _drop(pool: ProcessPoolExecutor) -> None:

@@ -7,8 +7,11 @@ far fewer chords than at 0.01 mm) with its level of detail for that view, while 
 second thread works out what the window's summary reads (the exact bounds); ``loaded``
 is emitted then, and the window paints the picture before it does anything else. The
 rest waits until the window says it has shown the program (``shown()``, or
-SHOW_WAIT_S), so it does not compete with the first picture for the interpreter: the
-model at the real tolerance with every level of detail, for zooming in (``refined``,
+SHOW_WAIT_S), so it does not compete with the first picture for the interpreter: first
+the travel, feed and spindle speed checks a big program left for later
+(``load(later_checks=True)``: a tenth of a second or two for a million moves, and the
+picture does not need them), then ``checked`` (its warnings are in the program now);
+the model at the real tolerance with every level of detail, for zooming in (``refined``,
 when the first one was coarser), then the device lines, for Start and Save to SD
 (``prepared``). The rest runs niced, on this thread alone, and in pieces (chords
 65,536 arcs at a time, device-line texts in slices), so a redraw never waits long for
@@ -64,6 +67,7 @@ class ReadAgain:
 class ProgramLoader(QObject):
     loaded = Signal(object)  # LoadedProgram
     failed = Signal(str, str)  # path, message
+    checked = Signal(object)  # LoadedProgram whose checks, left for after the picture, have run
     refined = Signal(object)  # LoadedProgram with the preview at the real tolerance, all levels built
     prepared = Signal(object)  # LoadedProgram whose device lines are rendered (Start is instant)
     read_again = Signal(object)  # ReadAgain: ``read_from``'s answer
@@ -128,6 +132,9 @@ class ProgramLoader(QObject):
         self.loaded.emit(result)
         if defer:
             self._shown.wait(SHOW_WAIT_S)
+        if result.program.checks_pending:
+            result.program.finish_checks()
+            self.checked.emit(result)
         _yield_cpu()  # the rest is background work: the window comes first
         result = self._refine(result, view_size)
         _warm(result.program)  # about 1 s for a million lines
@@ -173,7 +180,7 @@ def load_program(path: Path, tolerance: float = 0.01, view_size=None, tools=None
 
     started = time.perf_counter()
     try:
-        program = load(path, tools=tools, block_delete=block_delete, systems=systems)
+        program = load(path, tools=tools, block_delete=block_delete, systems=systems, later_checks=True)
     except (OSError, UnicodeError, ValueError) as exc:
         said = QCoreApplication.translate("Loader", "%1 could not be read as G-code: %2")
         raise LoadError(fill(said, path.name, exc)) from None

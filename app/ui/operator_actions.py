@@ -150,7 +150,7 @@ class OperatorActions(QObject):
             self.w.notifier.error(self.tr("Program has errors"), text)
             return False
         if self.w.preflight.blocks_start():
-            self.w.notifier.error(self.tr("Program leaves the travel"), self.w.preflight.message())
+            self.w.notifier.error(self.w.preflight.title(), self.w.preflight.message())
             return False
         status = self.w.binder.status
         if status is not None and not status.homed and not self.w.controls.check_mode.isChecked():
@@ -301,8 +301,9 @@ class OperatorActions(QObject):
                            len(errors))
             self.w.notifier.warning(self.tr("Program has errors"), text.replace("%1", loaded.path.name))
 
-    def program_prepared(self, loaded) -> None:
-        """The device lines and the planner's time estimate are ready: the summary says it."""
+    def program_updated(self, loaded) -> None:
+        """The device lines and the planner's time estimate are ready (``prepared``), or a
+        big program's checks have run (``checked``): the summary and the Problems list say it."""
         if self.w.program_panel.program is loaded.program:
             self.w.program_panel.show_program(loaded.program, loaded.path.name, keep_tab=True)
 

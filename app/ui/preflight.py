@@ -7,8 +7,9 @@ The travel is the profile's, or a GRBL machine's own ``$130``-``$132`` (from its
 print-out and every ``$13x=`` written), as ``app.comm.grbl.dialect.grbl_travel`` reads them.
 A GRBL machine without homing (``$22=0``) is not checked: its machine coordinates start
 where it powered up, so its travel says nothing of where a program goes.
-The check runs again when a file is opened, the work zero changes or the settings
-change. A program that would leave the travel cannot start (``blocks_start``); only in
+The check runs again when a file is opened (a big program's once its own checks have
+run, ``ProgramLoader.checked``; Start waits until then), the work zero changes or the
+settings change. A program that would leave the travel cannot start (``blocks_start``); only in
 check mode may the operator override it (the "Override travel check" switch).
 """
 
@@ -45,6 +46,7 @@ class Preflight(QObject):
         worker.connected.connect(self.ask_offset)
         worker.command_finished.connect(self.on_command)
         window.loader.loaded.connect(self.on_loaded)
+        window.loader.checked.connect(self.on_loaded)  # a big program's own checks, after its picture
         window.controls.check_mode.toggled.connect(lambda _on: self.w.binder.refresh_enabled())
         window.controls.override_travel.toggled.connect(lambda _on: self.w.binder.refresh_enabled())
 
@@ -95,6 +97,9 @@ class Preflight(QObject):
         program = getattr(loaded, "program", None)
         old = [str(e) for e in self.errors]
         self.errors = []
+        if getattr(program, "checks_pending", False):  # run again once they have (``checked``)
+            self.w.binder.refresh_enabled()
+            return
         if program is not None and not program.errors and self._homing:
             profile = self.w.profile if self.travel is None else replace(self.w.profile, travel=self.travel)
             self.errors = preflight(program.ops, profile, program.lines, self.current_offset(),
@@ -103,7 +108,21 @@ class Preflight(QObject):
             self.w.notifier.error(self.tr("Program leaves the travel"), self.message())
         self.w.binder.refresh_enabled()
 
+    def _unchecked(self) -> bool:
+        """True while the open program's own checks have not run (a big program's come a
+        moment after its picture): until then it is not known to stay in the travel."""
+        program = getattr(self.w.loaded, "program", None)
+        return bool(getattr(program, "checks_pending", False))
+
+    def title(self) -> str:
+        if self._unchecked():
+            return self.tr("Program not checked yet")
+        return self.tr("Program leaves the travel")
+
     def message(self) -> str:
+        if self._unchecked():
+            return self.tr("Start waits until the program is checked against the travel (a moment "
+                           "after it opens).")
         first = self.errors[0]
         more = len(self.errors) - 1
         text = self.tr("Start is disabled: line %1: %2").replace("%1", str(first.line)).replace(
@@ -114,6 +133,8 @@ class Preflight(QObject):
         return sentence(text) + " " + advice
 
     def blocks_start(self) -> bool:
+        if self._unchecked():
+            return True
         if not self.errors:
             return False
         controls = self.w.controls

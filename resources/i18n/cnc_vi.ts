@@ -1859,6 +1859,14 @@ Nếu mất kết nối, máy giữ nguyên vị trí; kết nối lại và ch�
         <translation>Chương trình vượt hành trình</translation>
     </message>
     <message>
+        <source>Program not checked yet</source>
+        <translation>Chương trình chưa kiểm tra xong</translation>
+    </message>
+    <message>
+        <source>Start waits until the program is checked against the travel (a moment after it opens).</source>
+        <translation>Lệnh chạy chờ đến khi chương trình được kiểm tra hành trình xong (ngay sau khi mở).</translation>
+    </message>
+    <message>
         <source>Start is disabled: line %1: %2</source>
         <translation>Không cho phép chạy: dòng %1: %2</translation>
     </message>
