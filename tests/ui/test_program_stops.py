@@ -7,7 +7,7 @@ from __future__ import annotations
 import pytest
 from PySide6.QtCore import Qt
 
-from tests.ui.conftest import home_when_allowed, open_and_wait, pace
+from tests.ui.conftest import home_when_allowed, open_and_wait, pace, when_allowed
 
 SPEED = 20
 SOURCE = """G21 G90
@@ -121,8 +121,10 @@ def test_an_sd_run_prompts_too_and_the_panel_ok_closes_the_prompt(qtbot, ready, 
     assert window.program_stops.events[-1].line == "M00"
     with qtbot.waitSignal(prompt.finished, timeout=60_000):  # closed, however soon M01 follows
         window.link.sim.panel.press("OK")  # answered on the machine instead
-    qtbot.waitUntil(prompt.isVisible, timeout=120_000)  # M01
-    qtbot.mouseClick(prompt.continue_button, Qt.MouseButton.LeftButton)
+    qtbot.waitUntil(prompt.isVisible, timeout=120_000)  # M01: the prompt comes with the machine's
+    # notice, the status that says it holds a moment later; Continue before it would be refused
+    when_allowed(qtbot, window, "resume",
+                 lambda: qtbot.mouseClick(prompt.continue_button, Qt.MouseButton.LeftButton))
     qtbot.waitUntil(lambda: prompt.isVisible() and window.program_stops.events[-1].tool == 2, timeout=120_000)
     qtbot.mouseClick(prompt.stop_button, Qt.MouseButton.LeftButton)
     qtbot.waitUntil(lambda: window.link.sim.main.sd_job is None, timeout=30_000)
