@@ -30,6 +30,10 @@ def controls_of(window) -> dict[str, list]:
             ("home", "home_recover", "start", "pause", "resume", "stop", "spindle_on", "spindle_off")}
     alarm = getattr(getattr(window, "grbl", None), "alarm", None)  # issue 23: the alarm banner's buttons
     grbl = {name: [a[name]] if name in a else [] for name in ("machine_settings", "unlock")}
+    prompt = getattr(getattr(window, "program_stops", None), "prompt", None)  # a program stop's answers:
+    if prompt is not None:  # Continue only once the machine is seen waiting (an SD run's notice
+        both["resume"].append(prompt.continue_button)  # comes a moment before the status saying so)
+        both["stop"].append(prompt.stop_button)
     if alarm is not None:
         both["home"].append(alarm.buttons["home"])
         both["stop"].append(alarm.buttons["reset"])

@@ -57,6 +57,7 @@ def _answer_stops(qtbot, window) -> list[tuple]:
         event = window.program_stops.events[before + len(seen)]
         status = window.binder.status
         seen.append((event, prompt.text() + " " + prompt.informativeText(), status))
+        qtbot.waitUntil(prompt.continue_button.isEnabled, timeout=60_000)  # the status says it waits
         qtbot.mouseClick(prompt.continue_button, Qt.MouseButton.LeftButton)
         qtbot.waitUntil(lambda: not prompt.isVisible(), timeout=10_000)
 
@@ -122,9 +123,22 @@ def test_an_sd_run_prompts_too_and_the_panel_ok_closes_the_prompt(qtbot, ready, 
     with qtbot.waitSignal(prompt.finished, timeout=60_000):  # closed, however soon M01 follows
         window.link.sim.panel.press("OK")  # answered on the machine instead
     qtbot.waitUntil(prompt.isVisible, timeout=120_000)  # M01: the prompt comes with the machine's
-    # notice, the status that says it holds a moment later; Continue before it would be refused
+    # notice, the status that says it waits a moment later; Continue is off until then
     when_allowed(qtbot, window, "resume",
                  lambda: qtbot.mouseClick(prompt.continue_button, Qt.MouseButton.LeftButton))
     qtbot.waitUntil(lambda: prompt.isVisible() and window.program_stops.events[-1].tool == 2, timeout=120_000)
     qtbot.mouseClick(prompt.stop_button, Qt.MouseButton.LeftButton)
     qtbot.waitUntil(lambda: window.link.sim.main.sd_job is None, timeout=30_000)
+
+
+def test_the_prompt_answers_only_when_the_state_table_allows_them(qtbot, window):
+    """An SD run's prompt comes with the machine's notice; until a status says the machine
+    waits, Continue is off (a click would be refused and close the prompt) and says why."""
+    from app.comm.stops import stop_event
+
+    window.program_stops.on_stop(stop_event(3, "M00"), sd_run=True)
+    window.binder.refresh_enabled()
+    prompt = window.program_stops.prompt
+    assert prompt.isVisible()
+    assert not prompt.continue_button.isEnabled() and "Not now" in prompt.continue_button.toolTip()
+    assert not prompt.stop_button.isEnabled()  # nothing runs here: not connected
