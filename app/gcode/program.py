@@ -85,7 +85,8 @@ class Program:
     def finish_checks(self) -> None:
         """Run the checks the load left for later (the travel, feed 0 and spindle speed
         warnings): they join ``diagnostics``, in line order, and ``envelope`` is set.
-        Nothing when none are left; one thread at a time."""
+        Nothing when none are left; one thread at a time. Should they raise, they stay
+        pending (the program is not known to stay in the travel)."""
         pending = self._checks
         if pending is not None:
             self.envelope, self.diagnostics = pending()

@@ -125,20 +125,27 @@ class ProgramLoader(QObject):
             return
         except Exception as exc:  # a bug must not leave the operator waiting forever
             self.busy = False
-            said = QCoreApplication.translate("Loader", "%1 could not be loaded: %2")
-            self.failed.emit(str(path), fill(said, path.name, f"{type(exc).__name__}: {exc}"))
+            self._failed(path, exc)
             return
         self.busy = False
         self.loaded.emit(result)
         if defer:
             self._shown.wait(SHOW_WAIT_S)
         if result.program.checks_pending:
-            result.program.finish_checks()
+            try:
+                result.program.finish_checks()
+            except Exception as exc:  # said; the checks stay pending, so Start stays refused
+                self._failed(path, exc)
+                return
             self.checked.emit(result)
         _yield_cpu()  # the rest is background work: the window comes first
         result = self._refine(result, view_size)
         _warm(result.program)  # about 1 s for a million lines
         self.prepared.emit(result)
+
+    def _failed(self, path: Path, exc: Exception) -> None:
+        said = QCoreApplication.translate("Loader", "%1 could not be loaded: %2")
+        self.failed.emit(str(path), fill(said, path.name, f"{type(exc).__name__}: {exc}"))
 
     def _refine(self, result: LoadedProgram, view_size) -> LoadedProgram:
         if result.preview.tolerance <= self.tolerance:

@@ -39,3 +39,19 @@ def test_start_waits_for_the_checks_then_they_are_shown(qtbot, window, tmp_path,
     assert window.preflight.errors and window.preflight.title() == "Program leaves the travel"
     assert not window.operator.can_start()
     assert window.notifier.messages[-1][1] == "Program leaves the travel"
+
+
+def test_checks_that_fail_are_said_and_keep_start_refused(qtbot, window, tmp_path, monkeypatch):
+    monkeypatch.setattr(program_module, "LATER_CHECKS_ROWS", 1)
+
+    def broken(*_args):
+        raise RuntimeError("a bug in the checks")
+
+    monkeypatch.setattr(program_module.checks, "run", broken)
+    path = tmp_path / "far.ngc"
+    path.write_text(SOURCE)
+    with qtbot.waitSignal(window.loader.failed, timeout=60_000) as failed:
+        window.open_file(path)
+    assert "a bug in the checks" in failed.args[1]
+    qtbot.waitUntil(lambda: window.loaded is not None, timeout=10_000)
+    assert window.loaded.program.checks_pending and window.preflight.blocks_start()
