@@ -63,8 +63,6 @@ class Toolpath:
     def _length_by_kind(self) -> np.ndarray:
         """Millimetres moved by each kind of row, in one pass over the moves (the window's
         summary reads them when a program opens: worked out beside its first picture)."""
-        if not len(self.kind):
-            return np.zeros(ARC_CCW + 1)
         return np.bincount(self.kind, weights=self.length, minlength=ARC_CCW + 1)
 
     @property

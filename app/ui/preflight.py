@@ -97,7 +97,7 @@ class Preflight(QObject):
         program = getattr(loaded, "program", None)
         old = [str(e) for e in self.errors]
         self.errors = []
-        if getattr(program, "checks_pending", False):  # run again once they have (``checked``)
+        if self._unchecked():  # run again once they have (``checked``)
             self.w.binder.refresh_enabled()
             return
         if program is not None and not program.errors and self._homing:

@@ -83,11 +83,10 @@ def test_loading_with_the_helper_gives_the_same_program(big, helper, tmp_path):
     np.testing.assert_array_equal(shared.toolpath.source_line, alone.toolpath.source_line)
 
 
-@pytest.mark.skipif(not hasattr(__import__("fcntl") if os.name == "posix" else None, "F_GETPIPE_SZ"),
-                    reason="only Linux sets a pipe's size")
 def test_the_pipes_to_and_from_the_helper_hold_a_group_at_a_time(helper):
-    import fcntl
-
+    fcntl = pytest.importorskip("fcntl")
+    if not hasattr(fcntl, "F_GETPIPE_SZ"):
+        pytest.skip("only Linux sets a pipe's size")
     pool = workers._pool
     for end in (pool._call_queue._writer, pool._result_queue._reader):
         assert fcntl.fcntl(end.fileno(), fcntl.F_GETPIPE_SZ) == workers.PIPE_BYTES
