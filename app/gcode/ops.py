@@ -72,15 +72,16 @@ class Ops:
     def starts(self) -> np.ndarray:
         """Start point of every row: the previous row's end (``origin`` for the first).
 
-        Computed once; treat the result as read-only. When ``end`` is the tail of an
-        array of points whose first row is the origin (as ``OpBuffer.finish`` makes it),
-        the starts are a view of that array: no copy."""
+        Computed once; treat the result as read-only. When ``end`` starts at the second
+        row of an array of points with a spare first row (as ``OpBuffer.finish`` makes it),
+        the starts are a view of that array, the spare row the origin's: no copy."""
         if self._starts is None:
             points = self.end.base
-            if (isinstance(points, np.ndarray) and points.shape == (len(self.end) + 1, 3)
-                    and points[1:].ctypes.data == self.end.ctypes.data and points.flags.writeable):
+            if (isinstance(points, np.ndarray) and points.ndim == 2 and points.shape[1] == 3
+                    and points.flags.c_contiguous and self.end.flags.c_contiguous
+                    and self.end.ctypes.data == points[1:].ctypes.data and points.flags.writeable):
                 points[0] = self.origin  # the spare first row is the origin's (start.py)
-                self._starts = points[:-1]
+                self._starts = points[: len(self.end)]
                 return self._starts
             start = np.empty_like(self.end)
             if len(start):
@@ -134,13 +135,60 @@ class Ops:
         return column
 
 
+_DTYPES = (np.int64, np.int8, np.float64, np.float64, np.int8, np.int32, np.float64)  # Ops' columns
+_WIDTHS = (1, 1, 3, 3, 1, 1, 1)
+_END = 2  # the ends' column: stored after a spare first row (``Ops.starts`` is then a view)
+FIRST_ROWS = 1024  # rows an OpBuffer makes room for when it was told of none
+
+
+class _Columns:
+    """Ops' columns written in place, in room made ahead (``reserve``) and doubled when
+    full: ``take`` gives views of the rows written, with no copy. Room never written to
+    is never touched, so it costs address space, not memory."""
+
+    def __init__(self, reserve: int):
+        self.n = 0
+        self.arrays = self._room(max(reserve, 1))
+
+    @staticmethod
+    def _room(rows: int) -> list[np.ndarray]:
+        arrays = [np.empty((rows + (i == _END),) + ((w,) if w > 1 else ()), d)
+                  for i, (d, w) in enumerate(zip(_DTYPES, _WIDTHS, strict=True))]
+        arrays[_END][0] = 0.0
+        return arrays
+
+    def write(self, columns) -> None:
+        """Append rows: one array per column, all of one length."""
+        n, k = self.n, len(columns[0])
+        if n + k > len(self.arrays[0]):
+            self._grow(n + k)
+        for i, (array, column) in enumerate(zip(self.arrays, columns, strict=True)):
+            at = n + (i == _END)
+            array[at : at + k] = column
+        self.n = n + k
+
+    def _grow(self, needed: int) -> None:
+        bigger = self._room(max(needed, 2 * len(self.arrays[0])))
+        for i, (old, new) in enumerate(zip(self.arrays, bigger, strict=True)):
+            rows = self.n + (i == _END)
+            new[:rows] = old[:rows]
+        self.arrays = bigger
+
+    def take(self) -> list[np.ndarray]:
+        """The columns of the rows written (views; the ends' view follows the spare row)."""
+        n = self.n
+        return [array[1 : n + 1] if i == _END else array[:n] for i, array in enumerate(self.arrays)]
+
+
 @dataclass
 class OpBuffer:
-    """Collects rows; single rows are batched and flushed before each array block."""
+    """Collects rows; single rows are batched and written before each array block.
+    ``reserve``: the rows to make room for at once (a guess; more are taken in stride)."""
 
-    blocks: list[tuple] = field(default_factory=list)
+    reserve: int = FIRST_ROWS
     rows: list[tuple] = field(default_factory=list)
     messages: list[str] = field(default_factory=list)
+    _columns: _Columns | None = field(default=None, repr=False)
 
     def add(self, line, kind, end, center=_NAN3, plane=XY, turn=0, value=0.0, message=None):
         """Append one row (the general path)."""
@@ -155,50 +203,48 @@ class OpBuffer:
 
     def clear(self) -> None:
         """Drop every row collected so far."""
-        self.blocks, self.rows, self.messages = [], [], []
+        self.rows, self.messages, self._columns = [], [], None
 
-    def add_block(self, line, kind, end, center, turn, value) -> None:
-        """Append many XY rows at once (the fast path); arrays of equal length."""
+    def add_block(self, line, kind, end, center, turn, value, plane=None) -> None:
+        """Append many rows at once (the fast path); arrays of equal length, ``plane``
+        per row (None: all XY)."""
         self._flush()
-        n = len(line)
-        plane = np.zeros(n, np.int8)
-        self.blocks.append((line, kind, end, center, plane, turn, value))
+        plane = np.zeros(len(line), np.int8) if plane is None else plane
+        self._write((line, kind, end, center, plane, turn, value))
 
     def flush(self) -> None:
-        """Turn the single rows gathered so far into one array block (a caller that adds
+        """Turn the single rows gathered so far into array rows (a caller that adds
         many rows one at a time keeps its memory in arrays, not tuples of floats)."""
         self._flush()
+
+    @property
+    def written(self) -> int:
+        """Rows written as arrays so far (single rows not yet flushed are not counted)."""
+        return 0 if self._columns is None else self._columns.n
+
+    def lines_from(self, first: int) -> np.ndarray:
+        """The line column of the array rows from row ``first`` on, writable (a caller
+        that numbered the rows of its own block puts their lines in)."""
+        return self._columns.arrays[0][first : self.written]
+
+    def _write(self, columns) -> None:
+        if self._columns is None:
+            self._columns = _Columns(self.reserve)
+        self._columns.write(columns)
 
     def _flush(self) -> None:
         if not self.rows:
             return
         a = np.array(self.rows, dtype=np.float64).reshape(-1, 11)
         self.rows = []
-        self.blocks.append(
-            (a[:, 0].astype(np.int64), a[:, 1].astype(np.int8), a[:, 2:5], a[:, 5:8],
-             a[:, 8].astype(np.int8), a[:, 9].astype(np.int32), a[:, 10])
-        )
+        self._write((a[:, 0], a[:, 1], a[:, 2:5], a[:, 5:8], a[:, 8], a[:, 9], a[:, 10]))
 
     def finish(self) -> Ops:
-        """All rows as one ``Ops``."""
+        """All rows as one ``Ops`` (its columns views of the rows written here: the
+        buffer is done with)."""
         self._flush()
-        if not self.blocks:
-            empty = np.empty((0, 3))
-            return Ops(np.empty(0, np.int64), np.empty(0, np.int8), empty, empty.copy(),
-                       np.empty(0, np.int8), np.empty(0, np.int32), np.empty(0), [])
-        cols = list(zip(*self.blocks, strict=True))
-        self.blocks = []
-        dtypes = (np.int64, np.int8, np.float64, np.float64, np.int8, np.int32, np.float64)
-        arrays = []
-        for i, dtype in enumerate(dtypes):
-            if i == 2:  # the ends after a row of zeros: ``Ops.starts`` is then a view
-                points = np.empty((sum(len(part) for part in cols[i]) + 1, 3))
-                points[0] = 0.0
-                arrays.append(np.concatenate(cols[i], out=points[1:]))
-            else:
-                arrays.append(np.concatenate(cols[i]).astype(dtype, copy=False))
-            cols[i] = None  # free each column's pieces once joined
-        return Ops(*arrays, messages=self.messages)
+        columns, self._columns = self._columns or _Columns(0), None
+        return Ops(*columns.take(), messages=self.messages)
 
 
 class Enough(BaseException):
@@ -217,8 +263,8 @@ class CappedBuffer(OpBuffer):
         super().add(*args, **kwargs)
         self._count(1)
 
-    def add_block(self, line, *rest) -> None:
-        super().add_block(line, *rest)
+    def add_block(self, line, *rest, **named) -> None:
+        super().add_block(line, *rest, **named)
         self._count(len(line))
 
     def extend(self, other: OpBuffer) -> None:

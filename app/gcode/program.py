@@ -240,7 +240,7 @@ def _plain(lines: Lines, data: list[bytes], start: State, report: Report, stop: 
     before a line of that window is interpreted; ``sniff.NeedsExpander`` when it does."""
     raw = data.pop()
     n = len(lines)  # reuse the chunks Lines already counted; otherwise scan makes its own
-    buffer = OpBuffer() if buffer is None else buffer
+    buffer = OpBuffer(reserve=n) if buffer is None else buffer  # about a row a line
     interpreter = runner.Runner(lines, buffer, report, start)
     with contextlib.closing(bulk.scan_stream(raw, n, lines.chunks or None)) as stream:  # (a forked
         for scan, ready in stream:  # child stops at once); interpret as lines come

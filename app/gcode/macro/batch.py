@@ -177,10 +177,11 @@ class Batch:
         values = {c: table[:, i + 1] for i, c in enumerate(LETTERS)}
         values["M"] = values["S"] = np.full(n, np.nan)
         scan = Scan(np.ones(n, bool), table[:, 0].astype(np.int8), np.full(n, -1, np.int8), values)
-        before = len(ops.blocks)
+        ops.flush()  # the rows vector.run writes are then the last
+        before = ops.written
         state, stop = vector.run(scan, 0, n, state, ops)
-        if len(ops.blocks) > before:
-            self._trace_block(ops, trace, table)
+        if ops.written > before:
+            self._trace_block(ops.lines_from(before), trace, table)
         return self._each(table, stop, state, ops, trace)
 
     def _each(self, rows, stop: int, state, ops, trace):
@@ -212,12 +213,13 @@ class Batch:
             self._where_table = np.array([w[:3] for w in self.wheres], np.int64).reshape(-1, 3)
         return self._where_table
 
-    def _trace_block(self, ops, trace, table: np.ndarray) -> None:
-        line, *rest = ops.blocks[-1]
-        rows = table[line - 1]  # vector.run numbers rows by their place in the batch
+    def _trace_block(self, line: np.ndarray, trace, table: np.ndarray) -> None:
+        """``line``: the line column of the rows vector.run made, which it numbered by
+        their place in the batch; they get their source lines, and the trace their rows."""
+        rows = table[line - 1]
         lines = rows[:, 7].astype(np.int64)
         where = self._where_columns()[rows[:, 8].astype(np.intp)]
-        ops.blocks[-1] = (lines, *rest)
+        line[:] = lines
         trace.file.add(where[:, 0].astype(np.int32))
         trace.call_line.add(np.where(where[:, 1] == 0, lines, where[:, 1]))
         trace.context.add(where[:, 2].astype(np.int32))

@@ -131,11 +131,6 @@ def _add_rows(w, f, piece: OpBuffer, before: int) -> None:
     trace.context.add(np.full(n, w._names[f.name], np.int32))
     trace.iteration.add(np.full(n, f.iteration, np.int32))
     w.ops.messages.extend(ops.messages)  # none: a simple line makes no pause
-    plane = ops.plane[keep]
     kept = [column[keep] for column in (ops.kind, ops.end, ops.center, ops.turn, ops.value)]
-    try:
-        w.ops.add_block(lines, *kept)
-    finally:
-        if plane.any():  # add_block takes every row for XY: the planes the rows were read in
-            w.ops.blocks[-1] = (*w.ops.blocks[-1][:4], plane, *w.ops.blocks[-1][5:])
+    w.ops.add_block(lines, *kept, plane=ops.plane[keep])
     w.check_moves(int(lines[-1]))
