@@ -14,7 +14,7 @@ seconds. ``Program.planned`` replaces ``time`` with the machine planner's (``est
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from functools import cached_property
+from functools import cached_property, partial
 
 import numpy as np
 
@@ -51,13 +51,34 @@ class Toolpath:
     turn: np.ndarray
     source_line: np.ndarray
     device_index: np.ndarray
-    feed: np.ndarray
-    length: np.ndarray
-    time: np.ndarray
+    _timing: object = field(repr=False)  # () -> (feed, length, time): worked out on first use
     _cache: dict = field(default_factory=dict, repr=False)
 
     def __len__(self) -> int:
         return len(self.kind)
+
+    @cached_property
+    def _timed(self) -> list[np.ndarray]:
+        """[feed, length, time], worked out once (the first picture needs none of them:
+        the window's loader has them worked out beside it)."""
+        timed, self._timing = list(self._timing()), None
+        return timed
+
+    @property
+    def feed(self) -> np.ndarray:
+        return self._timed[0]
+
+    @property
+    def length(self) -> np.ndarray:
+        return self._timed[1]
+
+    @property
+    def time(self) -> np.ndarray:
+        return self._timed[2]
+
+    @time.setter
+    def time(self, seconds: np.ndarray) -> None:
+        self._timed[2] = seconds
 
     @cached_property
     def _length_by_kind(self) -> np.ndarray:
@@ -197,16 +218,20 @@ def build(ops: Ops, device_first, profile: MachineProfile) -> Toolpath:
     start, end = _ends(ops, rows, pick) if len(rows) and not views else (pick(ops.starts()), pick(ops.end))
     center = pick(ops.center)
     kind, plane, turn = pick(ops.kind), pick(ops.plane), pick(ops.turn)
-    motion = profile.motion
-    feed, length, time = (np.empty(len(rows)) for _ in range(3))
-    for a in range(0, len(rows), BLOCK):  # a block at a time: small temporaries
-        part = slice(a, a + BLOCK)
-        value = ops.value.take(rows[part])
-        feed[part], length[part], time[part] = _timing(start[part], end[part], center[part], kind[part],
-                                                       plane[part], turn[part], value, motion)
+    timing = partial(_timings, start, end, center, kind, plane, turn, pick(ops.value), profile.motion)
     source = pick(ops.main_lines())
     device = pick(device_first() if callable(device_first) else device_first)
-    return Toolpath(start, end, kind, center, plane, turn, source, device, feed, length, time)
+    return Toolpath(start, end, kind, center, plane, turn, source, device, timing)
+
+
+def _timings(start, end, center, kind, plane, turn, value, motion) -> tuple[np.ndarray, ...]:
+    """(feed, length, time) of every row, a block at a time (small temporaries)."""
+    feed, length, time = (np.empty(len(kind)) for _ in range(3))
+    for a in range(0, len(kind), BLOCK):
+        part = slice(a, a + BLOCK)
+        feed[part], length[part], time[part] = _timing(start[part], end[part], center[part], kind[part],
+                                                       plane[part], turn[part], value[part], motion)
+    return feed, length, time
 
 
 def _ends(ops: Ops, rows: np.ndarray, pick) -> tuple[np.ndarray, np.ndarray]:
