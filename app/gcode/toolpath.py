@@ -13,6 +13,7 @@ seconds. ``Program.planned`` replaces ``time`` with the machine planner's (``est
 
 from __future__ import annotations
 
+import threading
 from dataclasses import dataclass, field
 from functools import cached_property, partial
 
@@ -51,18 +52,21 @@ class Toolpath:
     turn: np.ndarray
     source_line: np.ndarray
     device_index: np.ndarray
-    _timing: object = field(repr=False)  # () -> (feed, length, time): worked out on first use
+    _timing: object = field(repr=False)  # () -> (feed, length, time); once used, [feed, length, time]
     _cache: dict = field(default_factory=dict, repr=False)
+    _timing_lock: threading.Lock = field(default_factory=threading.Lock, repr=False, compare=False)
 
     def __len__(self) -> int:
         return len(self.kind)
 
-    @cached_property
+    @property
     def _timed(self) -> list[np.ndarray]:
-        """[feed, length, time], worked out once (the first picture needs none of them:
-        the window's loader has them worked out beside it)."""
-        timed, self._timing = list(self._timing()), None
-        return timed
+        """[feed, length, time], worked out once, whichever thread asks first (the first
+        picture needs none of them: the window's loader has them worked out beside it)."""
+        with self._timing_lock:
+            if not isinstance(self._timing, list):
+                self._timing = list(self._timing())
+            return self._timing
 
     @property
     def feed(self) -> np.ndarray:

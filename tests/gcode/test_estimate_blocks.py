@@ -4,10 +4,11 @@ same ones to the last bit.
 
 The figures were pinned first as a sha256 digest of every bit the whole-array version
 (before the passes ran in chunks) computed. Those bits hold only on one kind of
-machine: the arcs' angles and radii come from the C library's ``atan2``, ``hypot``,
-``sin`` and ``cos``, whose last bit differs between builds and CPUs (the digests of
-the programs with arcs failed on an AMD EPYC with every numpy from 2.2 to 2.4, the
-same code that met them where they were recorded). So the pins are now moments of
+machine: the digests of the programs with arcs failed on an AMD EPYC with every numpy
+from 2.2 to 2.4 (and with numpy's AVX2 loops turned off), the same code that met them
+where they were recorded; the arcs' angles and radii come from ``atan2``, ``hypot``,
+``sin`` and ``cos``, most likely the C library's, whose last bit is not the same
+everywhere. So the pins are now moments of
 the figures, recorded with that code (``python -m tests.gcode.test_estimate_blocks``
 prints them), met within a relative 1e-9: a change of any row's time by a
 millionth of a second shows, a C library's last bit does not."""

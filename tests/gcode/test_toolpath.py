@@ -192,3 +192,32 @@ def test_arcs_counted_first_give_the_same_polyline(monkeypatch, tolerance, threa
     expected = _every_arc_chorded(tp, tolerance)
     pts, index = tp.polyline(tolerance, threads)
     assert np.array_equal(pts, expected[0]) and np.array_equal(index, expected[1])
+
+
+def test_the_timing_is_worked_out_once_whichever_threads_ask():
+    """The feeds, lengths and times are worked out on first use (the window's loader asks
+    on one thread while another may ask too): once, and every thread gets the same."""
+    import threading
+
+    tp = toolpath("G0 X10 Y0\nG1 X20 F300\nG2 X30 Y0 I5 J0\nG4 P2")
+    work, calls, entered, release = tp._timing, [], threading.Event(), threading.Event()
+
+    def slow():
+        calls.append(1)
+        entered.set()
+        release.wait(10)
+        return work()
+
+    tp._timing = slow
+    seen = []
+    first = threading.Thread(target=lambda: seen.append(tp.feed))
+    first.start()
+    entered.wait(10)  # the first thread is inside the work; a second one asks now
+    second = threading.Thread(target=lambda: seen.append(tp.length))
+    second.start()
+    release.set()
+    first.join(10)
+    second.join(10)
+    assert len(calls) == 1 and len(seen) == 2
+    assert seen[0] is tp.feed and seen[1] is tp.length
+    assert tp.length.tolist() == pytest.approx([10.0, 10.0, 5 * math.pi, 0.0])
