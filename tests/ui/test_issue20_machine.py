@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import pytest
 
-from tests.ui.conftest import open_and_wait
+from tests.ui.conftest import open_and_wait, when_allowed
 
 SPEED = 20
 
@@ -86,7 +86,7 @@ def test_run_from_sd_shows_its_progress_and_can_be_paused_resumed_and_stopped(qt
     (tmp_path / "card" / "long.nc").write_text("\n".join(lines) + "\n")
     window.sd_panel.list_requested.emit()
     qtbot.waitUntil(lambda: window.sd_panel.lines_of("long.nc") == len(lines), timeout=20_000)
-    window.operator.run_from_sd("long.nc")
+    when_allowed(qtbot, window, "sd_run", lambda: window.operator.run_from_sd("long.nc"))
     qtbot.waitUntil(lambda: "S" in _status(window).flags and _status(window).done >= 2, timeout=60_000)
     qtbot.waitUntil(lambda: "SD long.nc" in window.status.progress_text.text(), timeout=60_000)
     assert f"/{len(lines)}" in window.status.progress_text.text()  # lines of the card's file
