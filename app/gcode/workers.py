@@ -44,7 +44,8 @@ def available() -> bool:
     if _disabled or (os.cpu_count() or 1) < 2:
         return False
     mp = sys.modules.get("multiprocessing")  # a helper has it imported; a fresh CLI need not
-    return mp is None or mp.parent_process() is None  # never a helper's helper
+    parent = getattr(mp, "parent_process", None)  # absent while the helper's start-up thread
+    return parent is None or parent() is None  # is still importing it here; never a helper's helper
 
 
 def _context():

@@ -90,3 +90,14 @@ def test_the_pipes_to_and_from_the_helper_hold_a_group_at_a_time(helper):
     pool = workers._pool
     for end in (pool._call_queue._writer, pool._result_queue._reader):
         assert fcntl.fcntl(end.fileno(), fcntl.F_GETPIPE_SZ) == workers.PIPE_BYTES
+
+
+def test_a_half_imported_multiprocessing_means_this_is_no_helper(monkeypatch):
+    """The helper's start-up thread imports multiprocessing; a load asking meanwhile (the
+    window opens a file as it starts) meets the module half made, without parent_process."""
+    import sys
+    import types
+
+    monkeypatch.setattr(workers, "_disabled", False)
+    monkeypatch.setitem(sys.modules, "multiprocessing", types.ModuleType("multiprocessing"))
+    assert workers.available()
