@@ -185,15 +185,34 @@ class Toolpath:
         count = np.ones(len(moves), np.int64)
         if arc.any():
             count[arc] = self._chords(moves[arc], tolerance, threads, counts=True)
-        index = np.repeat(moves, count)
-        pts = self.end.take(index, axis=0)  # a line's end is its point (a take lets the GIL go: repeat
-        # of rows would hold it for tens of ms while a window redraws)
+        index = np.concatenate([moves[:1], np.repeat(moves, count)])
         many = count > 1
+        pts = _points(self.start, self.end) if len(moves) == len(self.kind) and not many.any() else None
+        if pts is None:  # a line's end is its point (a take lets the GIL go: repeat of rows would
+            pts = np.empty((len(index), 3))  # hold it for tens of ms while a window redraws)
+            pts[0] = self.start[moves[0]]
+            self.end.take(index[1:], axis=0, out=pts[1:], mode="clip")  # (in range: see ``_ends``)
         if many.any():
             pts_arc, _ = self._chords(moves[many], tolerance, threads)
-            pts[np.repeat(many, count)] = pts_arc  # an arc's rows are its chord points, in order
-        start = self.start[moves[0]][None, :]
-        return np.concatenate([start, pts]), np.concatenate([[moves[0]], index])
+            pts[1:][np.repeat(many, count)] = pts_arc  # an arc's rows are its chord points, in order
+        pts.flags.writeable = index.flags.writeable = False  # cached: every caller reads the same
+        return pts, index
+
+
+def _points(start: np.ndarray, end: np.ndarray) -> np.ndarray | None:
+    """The first start and every end as one read-only (n + 1, 3) view, when ``start``
+    and ``end`` are one array of points a row apart (``_ends``, ``Ops.starts``), else None."""
+    base = end.base
+    if (not isinstance(base, np.ndarray) or start.base is not base or not (start.flags.c_contiguous and end.flags.c_contiguous)
+            or start.shape != end.shape or start.dtype != end.dtype or not base.flags.c_contiguous):
+        return None
+    first = start.__array_interface__["data"][0]
+    if end.__array_interface__["data"][0] - first != end.strides[0]:
+        return None
+    offset = first - base.__array_interface__["data"][0]
+    points = np.ndarray((len(end) + 1, *end.shape[1:]), end.dtype, buffer=base, offset=offset)
+    points.flags.writeable = False
+    return points
 
 
 def _picker(rows: np.ndarray):

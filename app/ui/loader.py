@@ -168,8 +168,10 @@ def _yield_cpu() -> None:
 
 def _warm(program) -> None:
     """Render the device lines now, off the GUI thread, so Start and Save to SD need not
-    wait; then the machine planner's time estimate, which the toolpath's times become."""
+    wait, with their source lines (a job's progress reads them); then the machine
+    planner's time estimate, which the toolpath's times become."""
     with contextlib.suppress(Exception):  # the job start reports any problem itself
+        program.line_map  # noqa: B018 (a cached property)
         program.device_lines  # noqa: B018 (a cached property)
         program.planned  # noqa: B018
 
@@ -209,12 +211,12 @@ def _summary_facts(program) -> None:
     """What the window's summary reads when the program arrives (all cached), worked
     out here rather than on the GUI thread: the exact bounds (arcs' bulges: 30-100 ms
     for a million moves), the moves' feeds, lengths and times (``Toolpath`` works them
-    out on first use: 80-115 ms), the lengths cut and moved at rapid rate (its first
-    handler spent 40-70 ms on them) and the device lines' source lines."""
+    out on first use: 80-115 ms) and the lengths cut and moved at rapid rate (its first
+    handler spent 40-70 ms on them). The device lines' source lines wait for ``_warm``:
+    the summary counts the device lines from the plan."""
     with contextlib.suppress(Exception):  # the window meets any problem when it reads them
         program.toolpath.bounds  # noqa: B018 (a cached property)
         program.toolpath.cut_length  # noqa: B018 (a cached sum by kind)
-        program.line_map  # noqa: B018
 
 
 def _sniff(path: Path) -> None:

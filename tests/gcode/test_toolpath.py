@@ -221,3 +221,32 @@ def test_the_timing_is_worked_out_once_whichever_threads_ask():
     assert len(calls) == 1 and len(seen) == 2
     assert seen[0] is tp.feed and seen[1] is tp.length
     assert tp.length.tolist() == pytest.approx([10.0, 10.0, 5 * math.pi, 0.0])
+
+
+@pytest.mark.parametrize("text", [
+    "G0 X0 Y0\nG1 X5 F300\nG3 X6 Y1 I0 J1\nG1 Y4\nM2",  # the moves one run: the rows' own points
+    "M3 S1000\nG0 X1 Y1\nG1 X5 F300\nG2 X6 Y0 I0 J-1\nM5\nG0 X0 Y0\nM2",  # an event between the moves
+    "G0 X1\nG3 X2 Y1 I0 J1 F200\nG4 P1\nG1 Y3 F100\nM30",  # a dwell: it has no point of its own
+])
+def test_a_polyline_of_one_chord_arcs_is_the_toolpath_s_points(text):
+    """When every move ends a segment (lines, and arcs of one chord at this tolerance)
+    and the moves' starts and ends are one array, the polyline is that array, read-only."""
+    tp = toolpath(text)
+    pts, index = tp.polyline(1.0)
+    expected = _every_arc_chorded(tp, 1.0)
+    np.testing.assert_array_equal(pts, expected[0])
+    np.testing.assert_array_equal(index, expected[1])
+    if not (tp.kind == DWELL).any():
+        assert np.shares_memory(pts, tp.end) and np.shares_memory(pts, tp.start)
+    with pytest.raises(ValueError):
+        pts[0, 0] = 1.0  # cached and shared: nobody changes it
+
+
+def test_unrelated_starts_and_ends_give_no_shared_points():
+    from app.gcode.toolpath import _points
+
+    points = np.arange(30.0).reshape(10, 3)
+    assert np.array_equal(_points(points[:-1], points[1:]), points)
+    assert _points(points[:-2], points[2:]) is None  # two rows apart
+    assert _points(points[:-1].copy(), points[1:]) is None
+    assert _points(points[1:][::-1], points[:-1][::-1]) is None  # not contiguous

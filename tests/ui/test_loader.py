@@ -7,6 +7,7 @@ import pytest
 
 from app.ui.loader import load_program
 from app.ui.preview.model import PreviewModel
+from app.ui.program.summary import describe, device_count
 from tests.ui.conftest import SAMPLE_FILES
 
 VIEW = (900, 700)
@@ -39,4 +40,8 @@ def test_the_first_picture_covers_what_the_fine_model_draws(path):
 def test_the_summary_s_facts_are_ready_when_the_program_arrives():
     first = load_program(SAMPLE_FILES[0], 0.01, VIEW)
     cached = vars(first.program.toolpath)
-    assert "bounds" in cached and "line_map" in vars(first.program)  # not left to the GUI thread
+    assert "bounds" in cached and "_length_by_kind" in cached  # not left to the GUI thread
+    assert device_count(first.program) == first.program.device_count == len(first.program.line_map)
+    first = load_program(SAMPLE_FILES[0], 0.01, VIEW)
+    describe(first.program, "name")
+    assert "line_map" not in vars(first.program)  # the summary counts the plan's device lines

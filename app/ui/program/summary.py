@@ -26,8 +26,10 @@ def bounds_array(bounds) -> np.ndarray | None:
 
 
 def device_count(program) -> int:
-    """Number of device lines, without rendering them (``line_map`` has one entry each)."""
-    return len(program.line_map)
+    """Number of device lines, without rendering them: the program's ``device_count``
+    (the plan's total), else one per entry of its ``line_map``."""
+    count = getattr(program, "device_count", None)
+    return int(count) if count is not None else len(program.line_map)
 
 
 class Summary(QObject):
