@@ -203,8 +203,9 @@ def _points(start: np.ndarray, end: np.ndarray) -> np.ndarray | None:
     """The first start and every end as one read-only (n + 1, 3) view, when ``start``
     and ``end`` are one array of points a row apart (``_ends``, ``Ops.starts``), else None."""
     base = end.base
-    if (not isinstance(base, np.ndarray) or start.base is not base or not (start.flags.c_contiguous and end.flags.c_contiguous)
-            or start.shape != end.shape or start.dtype != end.dtype or not base.flags.c_contiguous):
+    arrays = (start, end, base)
+    if (not isinstance(base, np.ndarray) or start.base is not base or start.shape != end.shape
+            or start.dtype != end.dtype or not all(a.flags.c_contiguous for a in arrays)):
         return None
     first = start.__array_interface__["data"][0]
     if end.__array_interface__["data"][0] - first != end.strides[0]:
