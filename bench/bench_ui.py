@@ -374,6 +374,24 @@ def open_file(path: str) -> None:
         bench_big_file(Path(tmp) / "a", Path(path))
 
 
+def first_picture_only(path: str) -> None:
+    """Print the seconds from Open to the first picture of ``path`` on the screen, as
+    ``bench_big_file`` measures them, and nothing else (bench_gcode repeats this in fresh
+    processes: one open on a noisy machine is one sample)."""
+    from app.gcode import workers
+
+    with tempfile.TemporaryDirectory() as tmp:
+        app, window = _window(Path(tmp) / "a")
+        workers.warm_up(wait=10)
+        seen = _first_picture(window)
+        _settle(app)
+        started = time.perf_counter()
+        window.open_file(Path(path))
+        _wait(app, lambda: "painted" in seen, 300)
+        print(f"{seen['painted'] - started:.4f}" if "painted" in seen else "nan")
+        window.close()
+
+
 def bench_3d(config: Path) -> None:
     """The 3-D view's figures (see the module's docstring)."""
     from app.ui.preview3d.glview import PathGLView
