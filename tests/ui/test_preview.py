@@ -238,3 +238,27 @@ def test_a_level_sorted_on_two_threads_equals_one_sorted_on_one():
     same[-1] = [5.0, 5.0, 6.0, 6.0]
     level = LodSegments(same, np.arange(len(same)), threads=2).level(3)
     np.testing.assert_array_equal(level.move, [0, len(same) - 1])
+
+
+@pytest.mark.parametrize("threads", [1, 2])
+def test_a_level_keeps_the_first_segment_of_every_pair_of_cells(threads):
+    """np.unique's first occurrences of the (start cell, end cell) keys, and the extremes:
+    on a walk that crosses itself, in steps so small that most segments repeat the pair of
+    the one before, and comes back to cells it left long ago."""
+    from app.ui.preview.lod import PARALLEL_SEGMENTS, _pair_keys
+
+    rng = np.random.default_rng(7)
+    steps = rng.normal(0, 0.002, size=(PARALLEL_SEGMENTS + 20_001, 2))
+    steps[::997] += rng.normal(0, 5, size=(len(steps[::997]), 2))  # jumps back over the path
+    walk = np.cumsum(steps, axis=0)
+    seg = np.column_stack([walk[:-1], walk[1:]]).astype(np.float32)
+    lod = LodSegments(seg, np.arange(len(seg)), threads=threads)
+    for index in (3, 5, 7):
+        key = _pair_keys(seg, lod.cells[index])
+        expected = np.zeros(len(seg), bool)
+        expected[np.unique(key, return_index=True)[1]] = True
+        for column in range(4):
+            expected[np.argmin(seg[:, column])] = expected[np.argmax(seg[:, column])] = True
+        level = lod.level(index)
+        assert np.count_nonzero(key[1:] == key[:-1]) > len(seg) // 2  # runs of the same pair
+        np.testing.assert_array_equal(level.move, np.flatnonzero(expected))
