@@ -19,6 +19,7 @@ at once, never a table of the whole file (72 bytes a line).
 from __future__ import annotations
 
 import re
+import zlib
 from dataclasses import dataclass
 
 import numpy as np
@@ -157,12 +158,13 @@ def _classify(result: Scan, table: np.ndarray, a: int, b: int) -> None:
     simple &= ~(bad_m | (spindle & moving))
 
 
-def scan(data: bytes, n_lines: int, chunks: list | None = None, share_bytes: int | None = None) -> Scan:
+def scan(data: bytes, n_lines: int, chunks: list | None = None, share_bytes: int | None = None,
+         origin: tuple[str, int] | None = None) -> Scan:
     """Scan ``data`` (``n_lines`` lines joined by newlines) with the fast path, the
     whole table at once; ``chunks``, when given, is ``source.chunks(data)`` (data ending
-    with a newline)."""
+    with a newline); ``origin`` as for ``scan_stream``."""
     result, _ = _table(0, n_lines)
-    for window, _ in scan_stream(data, n_lines, chunks, share_bytes):
+    for window, _ in scan_stream(data, n_lines, chunks, share_bytes, origin):
         rows = slice(window.first, window.first + len(window.simple))
         result.simple[rows], result.g[rows], result.units[rows] = window.simple, window.g, window.units
         result.deleted[rows] = window.deleted
@@ -171,7 +173,8 @@ def scan(data: bytes, n_lines: int, chunks: list | None = None, share_bytes: int
     return result
 
 
-def scan_stream(data: bytes, n_lines: int, chunks: list | None = None, share_bytes: int | None = None):
+def scan_stream(data: bytes, n_lines: int, chunks: list | None = None, share_bytes: int | None = None,
+                origin: tuple[str, int] | None = None):
     """``scan`` as it goes: yields ``(window, ready)`` each time lines ``0..ready`` are
     final, ``window`` the ``Scan`` of lines ``window.first..ready`` (a new one each time:
     the caller reads it before asking for the next), at least once.
@@ -181,7 +184,9 @@ def scan_stream(data: bytes, n_lines: int, chunks: list | None = None, share_byt
     process works from the start (and the caller interprets what is ready); a group the
     helper has not finished when this process reaches it is done here, so the two meet
     wherever their speeds (and the helper's start-up) put them, and nobody waits. In a
-    one-shot load (no helper) a forked child shares the groups instead (``forked.Shared``)."""
+    one-shot load (no helper) a forked child shares the groups instead (``forked.Shared``).
+    ``origin``: (path, offset) where ``data`` lies in a file as read: the helper reads its
+    groups there (``scan_file_chunks``) rather than be sent them."""
     if not data.endswith(b"\n"):
         data, chunks = data + b"\n", None
     big = len(data) >= (SHARE_BYTES if share_bytes is None else share_bytes)
@@ -192,13 +197,13 @@ def scan_stream(data: bytes, n_lines: int, chunks: list | None = None, share_byt
     firsts = np.cumsum([0] + [sum(count for *_, count in group) for group in groups]).tolist()
     if fork:
         shared = forked.Shared(lambda k: group_window(data, groups[k], firsts[k], n_lines), len(groups))
-    futures = {k: _submit(data, groups[k]) for k in range(len(groups) - 1, 0, -1)} if helper else {}
+    futures = {k: _submit(data, groups[k], origin) for k in range(len(groups) - 1, 0, -1)} if helper else {}
     try:
         for k, group in enumerate(groups):
             if shared:
                 window = shared.take(k)
             else:
-                window = group_window(data, group, firsts[k], n_lines, _collect(futures.get(k)))
+                window = group_window(data, group, firsts[k], n_lines, _collect(futures.get(k), data, group))
             yield window, min(firsts[k + 1], n_lines)
     finally:  # (also when the caller stops early: a program that needs the expander)
         if shared:
@@ -247,15 +252,39 @@ def _windows(parts: list) -> list[list]:
     return [*out, run]
 
 
-def _submit(data: bytes, group: list):
+def scan_file_chunks(path: str, offset: int, size: int, parts: list) -> tuple[int, list] | None:
+    """(zlib.crc32 of the ``size`` bytes of ``path`` from ``offset``, ``scan_chunks`` of
+    them), or None when they cannot be read (the helper's work for a group of a file)."""
+    try:
+        with open(path, "rb") as file:
+            file.seek(offset)
+            data = file.read(size)
+    except OSError:
+        return None
+    return (zlib.crc32(data), scan_chunks(data, parts)) if len(data) == size else None
+
+
+def _submit(data: bytes, group: list, origin: tuple[str, int] | None):
+    """The helper's scan of a group: read from the file when ``origin`` says where
+    ``data`` lies in one (no copy of the bytes sent), else sent."""
     first, last = group[0][0], group[-1][1]
-    return workers.submit(scan_chunks, data[first:last], [(s - first, e - first, c) for s, e, c in group])
+    parts = [(s - first, e - first, c) for s, e, c in group]
+    if origin is None:
+        return workers.submit(scan_chunks, data[first:last], parts)
+    path, offset = origin
+    return workers.submit(scan_file_chunks, path, offset + first, last - first, parts)
 
 
-def _collect(future) -> list | None:
+def _collect(future, data: bytes, group: list) -> list | None:
     """The helper's words for a group if it has finished them, else ``None`` and this
     process does the group (one the helper has begun is then done twice: at the
-    meeting point that is quicker than waiting)."""
+    meeting point that is quicker than waiting). The words of a group it read from the
+    file count only when it read these bytes (their crc32: the file may have changed)."""
     if future is None or future.cancel() or not future.done():
         return None
-    return workers.result(future)
+    words = workers.result(future)
+    if not isinstance(words, tuple):
+        return words
+    first, last = group[0][0], group[-1][1]
+    crc, words = words
+    return words if crc == zlib.crc32(memoryview(data)[first:last]) else None

@@ -33,7 +33,7 @@ from .moves import moves_of
 from .offsets import ACTIVE_SYSTEM, system_param
 from .ops import CappedBuffer, Enough, OpBuffer, Ops
 from .percent import abort_line, abort_message, percent_lines, report_tail
-from .reading import SourceError, clean_bytes, clean_text, read_source, text_problem
+from .reading import BOM, SourceError, clean_bytes, clean_text, read_source, text_problem
 from .render import render
 from .source import Lines
 from .start import StartInfo
@@ -193,6 +193,17 @@ def _later_checks(ops: Ops, profile: MachineProfile, lines: Lines, report: Repor
     return envelope, report.finish()
 
 
+def _origin(path: Path, read: bytes, raw: bytes) -> tuple[str, int] | None:
+    """(path, offset) of ``raw`` (``clean_bytes`` of ``read``, the file's bytes) in the
+    file when it is the file's bytes from there on: as read, or without its byte-order
+    mark; None when line ends were changed."""
+    if raw is read:
+        return str(path), 0
+    if len(read) - len(raw) == len(BOM) and read.startswith(BOM) and memoryview(read)[len(BOM):] == raw:
+        return str(path), len(BOM)  # (CR-only line ends made LF keep the length)
+    return None
+
+
 def _split(text: str) -> list[str]:
     lines = text.split("\n")
     if lines and lines[-1] == "":
@@ -242,8 +253,9 @@ def _plain(lines: Lines, data: list[bytes], start: State, report: Report, stop: 
     n = len(lines)  # reuse the chunks Lines already counted; otherwise scan makes its own
     buffer = OpBuffer(reserve=n) if buffer is None else buffer  # about a row a line
     interpreter = runner.Runner(lines, buffer, report, start)
-    with contextlib.closing(bulk.scan_stream(raw, n, lines.chunks or None)) as stream:  # (a forked
-        for scan, ready in stream:  # child stops at once); interpret as lines come
+    stream = bulk.scan_stream(raw, n, lines.chunks or None, origin=lines.origin)
+    with contextlib.closing(stream):  # (a forked child stops at once)
+        for scan, ready in stream:  # interpret as lines come
             if unsure and not scan.plain:
                 if sniff.needs_expander(raw):
                     raise sniff.NeedsExpander
@@ -455,13 +467,15 @@ def load(path: str | Path, profile: MachineProfile | None = None, tools: dict | 
     path = Path(path)
     profile = profile or MachineProfile()
     try:
-        raw = clean_bytes(read_source(path))
+        read = read_source(path)
     except SourceError as exc:
         return _empty(str(path), exc.args[0], profile)
+    raw = clean_bytes(read)
     problem = text_problem(raw)
     if problem:
         return _empty(str(path), problem, profile)
-    lines = Lines(data=raw)  # split on first use, not here
+    lines = Lines(data=raw, origin=_origin(path, read, raw))  # split on first use, not here
+    del read
     data = [raw]  # valid UTF-8: the bytes the fast path reads
     del raw
     return _interpret(lines, data, str(path), profile, tools, path.parent, block_delete, systems,

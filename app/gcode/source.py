@@ -34,9 +34,13 @@ def chunks(data: bytes) -> list[tuple[int, int, int]]:
 class Lines(Sequence):
     """Source lines over a list or over UTF-8 bytes (see the module docstring)."""
 
-    def __init__(self, lines: list[str] | None = None, data: bytes = b""):
+    def __init__(self, lines: list[str] | None = None, data: bytes = b"",
+                 origin: tuple[str, int] | None = None):
+        """``origin``: (path, offset) when ``data`` is that file's bytes from that offset on,
+        as read (the helper process then reads its part of the scan there itself)."""
         self._list = lines
         self._data = data
+        self.origin = origin
         self.chunks = chunks(data) if lines is None else []  # also the fast path's chunks
         self._firsts = np.cumsum([0] + [c[2] for c in self.chunks])  # first line of each chunk
         self._ends: dict[int, np.ndarray] = {}  # chunk -> offsets of its newlines (as read)

@@ -101,3 +101,68 @@ def test_a_half_imported_multiprocessing_means_this_is_no_helper(monkeypatch):
     monkeypatch.setattr(workers, "_disabled", False)
     monkeypatch.setitem(sys.modules, "multiprocessing", types.ModuleType("multiprocessing"))
     assert workers.available()
+
+
+def _helper_finishes_every_group(monkeypatch):
+    """``_collect`` after the helper has finished the group: every group given to the
+    helper is its work (else where the two meet depends on their speeds)."""
+    from concurrent.futures import wait
+
+    collect = bulk._collect
+
+    def after_the_helper(future, *args):
+        if future is not None:
+            wait([future])
+        return collect(future, *args)
+
+    monkeypatch.setattr(bulk, "_collect", after_the_helper)
+
+
+def test_the_helper_reads_its_groups_from_the_file_itself(big, helper, tmp_path, monkeypatch):
+    import zlib
+
+    path = tmp_path / "big.ngc"
+    path.write_bytes(b"\xef\xbb\xbf" + big)  # the bytes start after a byte-order mark
+    parts = chunks(big)
+    first, last = parts[3][0], parts[5][1]
+    group = [(s - first, e - first, c) for s, e, c in parts[3:6]]
+    future = workers.submit(bulk.scan_file_chunks, str(path), 3 + first, last - first, group)
+    crc, theirs = workers.result(future)
+    assert crc == zlib.crc32(big[first:last])
+    for a, b in zip(theirs, bulk.scan_chunks(big[first:last], group), strict=True):
+        for x, y in zip(a, b, strict=True):
+            np.testing.assert_array_equal(x, y)
+    _helper_finishes_every_group(monkeypatch)
+    n = big.count(b"\n")
+    shared = bulk.scan(big, n, share_bytes=0, origin=(str(path), 3))
+    workers.set_enabled(False)
+    assert_same_scan(shared, bulk.scan(big, n))
+
+
+@pytest.mark.parametrize("change", ["other words", "shorter", "gone"])
+def test_a_file_changed_after_it_was_read_costs_time_not_the_result(big, helper, tmp_path, monkeypatch,
+                                                                     change):
+    path = tmp_path / "big.ngc"
+    if change != "gone":
+        path.write_bytes(big.replace(b"X", b"Y") if change == "other words" else big[: len(big) // 2])
+    _helper_finishes_every_group(monkeypatch)
+    n = big.count(b"\n")
+    shared = bulk.scan(big, n, share_bytes=0, origin=(str(path), 0))
+    workers.set_enabled(False)
+    assert_same_scan(shared, bulk.scan(big, n))
+
+
+@pytest.mark.parametrize(("read", "offset"), [
+    (b"G0 X1\nG1 Y2\n", 0), (b"\xef\xbb\xbfG0 X1\n", 3), (b"G0 X1\r\nG1 Y2\r\n", 0),
+    (b"G0 X1\rG1 Y2\r", None), (b"\xef\xbb\xbfG0 X1\rG1 Y2\r", None),  # line ends made LF: not as read
+])
+def test_a_program_s_origin_is_where_its_bytes_lie_in_the_file(read, offset):
+    from pathlib import Path
+
+    from app.gcode.program import _origin
+    from app.gcode.reading import clean_bytes
+
+    origin = _origin(Path("f.ngc"), read, clean_bytes(read))
+    assert origin == (None if offset is None else ("f.ngc", offset))
+    if origin is not None:
+        assert read[offset:] == clean_bytes(read)
