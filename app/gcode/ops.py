@@ -94,17 +94,33 @@ class Ops:
         """Free the cached starts (a later ``starts()`` computes them again)."""
         self._starts = None
 
-    def hand_over(self, moves) -> None:
+    def handed_names(self) -> tuple[str, ...]:
+        """The columns ``hand_over`` gives to the Toolpath (``line`` only when every row
+        is from the main program: it is then the moves' source line)."""
+        return HANDED if self.source is None else HANDED[1:]
+
+    def events_own(self) -> tuple[np.ndarray, dict]:
+        """(the event rows, their own values of the handed columns), for ``hand_over``."""
+        events = np.flatnonzero(self.kind > HANDED_KINDS)
+        return events, {name: getattr(self, name)[events] for name in self.handed_names()}
+
+    def hand_over(self, moves, owned: tuple[np.ndarray, dict] | None = None) -> None:
         """Let ``moves`` (a ``Toolpath`` built from these rows, with its own copies) hold
         the positions of the move rows: this object drops its ``end`` and ``center``
         (and ``line``, when every row is from the main program) and keeps only the event
         rows' own; on first use they are put back together (``__getattr__``). A program
-        whose events stand between its moves thus holds its positions once, not twice."""
-        if np.may_share_memory(moves.center, self.center):  # its columns are views of these
+        whose events stand between its moves thus holds its positions once, not twice.
+        ``owned``: ``events_own()`` taken before the moves were closed up in these
+        columns (``toolpath.build_in_place``: they are then views of them, and these
+        columns' other rows are no longer the rows')."""
+        if self.handed_to is moves:
             return
-        events = np.flatnonzero(self.kind > HANDED_KINDS)
-        names = HANDED if self.source is None else HANDED[1:]
-        own = {name: getattr(self, name)[events] for name in names}
+        if owned is None:
+            if np.may_share_memory(moves.center, self.center):  # its columns are views of these
+                return
+            owned = self.events_own()
+        events, own = owned
+        names = tuple(own)
         self._starts = None
         for name in names:
             delattr(self, name)

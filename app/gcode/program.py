@@ -38,7 +38,7 @@ from .render import render
 from .source import Lines
 from .start import StartInfo
 from .state import State
-from .toolpath import Toolpath, build
+from .toolpath import Toolpath, build, build_in_place, closable
 
 TRIM_BYTES = 8 << 20  # after the scan of a file this big, free heap pages go back to the system
 LATER_CHECKS_ROWS = 200_000  # a program this long may leave its checks for after its first picture
@@ -353,10 +353,15 @@ def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfi
     early = None if plan_ahead or later else _in_thread(checks.run, ops, profile, lines, report)  # the
     # window's small programs: beside the plan and the toolpath (numpy lets them run at once)
     normalizing = _in_thread(normalize.plan, ops, profile.motion.arc_tolerance_mm, name="gcode-normalize")
-    toolpath = build(ops, lambda: normalizing.join().first, profile)
-    the_plan = normalizing.join()
-    envelope = early.join() if early is not None else None
-    ops.hand_over(toolpath)  # the moves' positions kept once, by the Toolpath
+    if closable(ops):  # the moves closed up in the rows' own columns, once the plan and the checks
+        the_plan = normalizing.join()  # have read them as they are: no copy of the positions
+        envelope = early.join() if early is not None else None
+        toolpath = build_in_place(ops, the_plan.first, profile)
+    else:
+        toolpath = build(ops, lambda: normalizing.join().first, profile)
+        the_plan = normalizing.join()
+        envelope = early.join() if early is not None else None
+        ops.hand_over(toolpath)  # the moves' positions kept once, by the Toolpath
     planning = None
     if plan_ahead:  # cnc-gcode check: the checks, on the toolpath, beside the planner's estimate
         checking = _in_thread(_checked, ops, profile, lines, report, toolpath)

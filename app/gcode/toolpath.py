@@ -28,6 +28,8 @@ KIND_NAMES = {RAPID: "rapid", FEED: "feed", ARC_CW: "arc", ARC_CCW: "arc", DWELL
 PARALLEL_ARCS = 50_000  # arcs from which chords are computed on two threads
 PIECE_ARCS = 65_536  # arcs per call when chords are computed in the background
 BLOCK = 1 << 16  # rows whose lengths and times are worked out at a time (small temporaries)
+TAIL_SHARE = 1 / 8  # build_in_place: the share of the moves that may follow an event among them
+TAIL_RUNS = 64  # and in how many runs at most
 
 
 def move_times(length, feed_mm_min, accel: float) -> np.ndarray:
@@ -246,6 +248,57 @@ def build(ops: Ops, device_first, profile: MachineProfile) -> Toolpath:
     source = pick(ops.main_lines())
     device = pick(device_first() if callable(device_first) else device_first)
     return Toolpath(start, end, kind, center, plane, turn, source, device, timing)
+
+
+def closable(ops: Ops) -> bool:
+    """Whether ``build_in_place`` can build the Toolpath of ``ops`` without a copy of
+    its positions: the moves are not one run (``build`` shares them then), but at most
+    ``TAIL_SHARE`` of them, in at most ``TAIL_RUNS`` runs, come after the first event
+    among them (a CAM program's footer: spindle off, a last retract, the end), the
+    events keep the position, and the ends are an array of points (``Ops.starts``)."""
+    rows = np.flatnonzero(ops.kind <= DWELL)
+    breaks = np.flatnonzero(np.diff(rows) != 1)
+    if not len(breaks) or len(breaks) > TAIL_RUNS or (len(rows) - breaks[0] - 1) > TAIL_SHARE * len(rows):
+        return False
+    starts, events = ops.starts(), np.flatnonzero(ops.kind > DWELL)
+    one_array = starts.base is not None and starts.base is ops.end.base
+    return (one_array and starts.ctypes.data + starts.strides[0] == ops.end.ctypes.data
+            and np.array_equal(ops.end[events], starts[events]))
+
+
+def build_in_place(ops: Ops, device_first: np.ndarray, profile: MachineProfile) -> Toolpath:
+    """``build`` of ``closable`` rows: the moves after the first event are moved up in
+    ``ops``'s own position columns, over the events, so that the moves are one run of
+    them, and the Toolpath's positions are views of that run; ``ops`` hands them over
+    (the events' own values kept first). Nothing else may read ``ops`` meanwhile."""
+    rows = np.flatnonzero(ops.kind <= DWELL)
+    owned = ops.events_own()
+    breaks = np.flatnonzero(np.diff(rows) != 1)
+    columns = [getattr(ops, name) for name in ops.handed_names()]
+    source = None if "line" in owned[1] else ops.main_lines().take(rows)
+    for column in columns:
+        _close_up(column, rows, breaks)
+    part = slice(int(rows[0]), int(rows[0]) + len(rows))
+    start, end, center = ops.starts()[part], ops.end[part], ops.center[part]
+    for column in (start, end, center):
+        column.flags.writeable = False
+    source = ops.line[part] if source is None else source
+    kind, plane, turn, value = (column.take(rows) for column in (ops.kind, ops.plane, ops.turn, ops.value))
+    timing = partial(_timings, start, end, center, kind, plane, turn, value, profile.motion)
+    moves = Toolpath(start, end, kind, center, plane, turn, source, device_first.take(rows), timing)
+    ops.hand_over(moves, owned)
+    return moves
+
+
+def _close_up(column: np.ndarray, rows: np.ndarray, breaks: np.ndarray) -> None:
+    """Move the rows ``rows`` of ``column`` after the first of ``breaks`` (places in
+    ``rows`` after which a row is skipped) up, run by run, behind those before it."""
+    bounds = [*(breaks + 1).tolist(), len(rows)]
+    to = int(rows[breaks[0]]) + 1
+    for first, stop in zip(bounds[:-1], bounds[1:], strict=True):
+        source = int(rows[first])
+        column[to : to + stop - first] = column[source : source + stop - first]
+        to += stop - first
 
 
 def _timings(start, end, center, kind, plane, turn, value, motion) -> tuple[np.ndarray, ...]:
