@@ -476,11 +476,12 @@ def load(path: str | Path, profile: MachineProfile | None = None, tools: dict | 
     except SourceError as exc:
         return _empty(str(path), exc.args[0], profile)
     raw = clean_bytes(read)
+    origin = _origin(path, read, raw)
+    del read  # (a copy without its byte-order mark: the file's bytes go at once)
     problem = text_problem(raw)
     if problem:
         return _empty(str(path), problem, profile)
-    lines = Lines(data=raw, origin=_origin(path, read, raw))  # split on first use, not here
-    del read
+    lines = Lines(data=raw, origin=origin)  # split on first use, not here
     data = [raw]  # valid UTF-8: the bytes the fast path reads
     del raw
     return _interpret(lines, data, str(path), profile, tools, path.parent, block_delete, systems,
