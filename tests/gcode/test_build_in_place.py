@@ -5,7 +5,7 @@ of the rows' own columns, and its rows as they were (put back together on first 
 import numpy as np
 import pytest
 
-from app.gcode import load_text, toolpath
+from app.gcode import load_text
 from app.gcode.ops import HANDED
 from tests.gcode.scans import SAMPLES
 
@@ -57,7 +57,7 @@ def test_a_toolpath_built_in_place_is_the_copied_one(name, monkeypatch):
 def test_the_positions_are_views_of_the_rows_own_columns():
     program = load_text(PROGRAMS["a Gcodetools footer"])
     tp = program.toolpath
-    assert toolpath.TAIL_RUNS >= 1 and np.shares_memory(tp.start, tp.end)
+    assert tp.center.base is not None  # a view of the rows' column, not a copy of its own
     assert tp.end.base is tp.start.base  # one array of points, as the rows wrote it
     for column in (tp.start, tp.end, tp.center):
         with pytest.raises(ValueError):
