@@ -353,10 +353,11 @@ def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfi
     early = None if plan_ahead or later else _in_thread(checks.run, ops, profile, lines, report)  # the
     # window's small programs: beside the plan and the toolpath (numpy lets them run at once)
     normalizing = _in_thread(normalize.plan, ops, profile.motion.arc_tolerance_mm, name="gcode-normalize")
-    if closable(ops):  # the moves closed up in the rows' own columns, once the plan and the checks
-        the_plan = normalizing.join()  # have read them as they are: no copy of the positions
+    closing = closable(ops)
+    if closing is not None:  # the moves closed up in the rows' own columns, once the plan and the
+        the_plan = normalizing.join()  # checks have read them as they are: no copy of the positions
         envelope = early.join() if early is not None else None
-        toolpath = build_in_place(ops, the_plan.first, profile)
+        toolpath = build_in_place(ops, closing, the_plan.first, profile)
     else:
         toolpath = build(ops, lambda: normalizing.join().first, profile)
         the_plan = normalizing.join()

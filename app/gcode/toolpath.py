@@ -250,30 +250,32 @@ def build(ops: Ops, device_first, profile: MachineProfile) -> Toolpath:
     return Toolpath(start, end, kind, center, plane, turn, source, device, timing)
 
 
-def closable(ops: Ops) -> bool:
-    """Whether ``build_in_place`` can build the Toolpath of ``ops`` without a copy of
-    its positions: the moves are not one run (``build`` shares them then), but at most
-    ``TAIL_SHARE`` of them, in at most ``TAIL_RUNS`` runs, come after the first event
-    among them (a CAM program's footer: spindle off, a last retract, the end), the
-    events keep the position, and the ends are an array of points (``Ops.starts``)."""
+def closable(ops: Ops) -> tuple[np.ndarray, np.ndarray] | None:
+    """(the move rows, the places in them after which a row is skipped) when
+    ``build_in_place`` can build the Toolpath of ``ops`` without a copy of its
+    positions, else None: the moves are not one run (``build`` shares them then), but at
+    most ``TAIL_SHARE`` of them, in at most ``TAIL_RUNS`` runs, come after the first
+    event among them (a CAM program's footer: spindle off, a last retract, the end), the
+    events keep the position, and the starts and ends are one array (``_points``)."""
     rows = np.flatnonzero(ops.kind <= DWELL)
     breaks = np.flatnonzero(np.diff(rows) != 1)
     if not len(breaks) or len(breaks) > TAIL_RUNS or (len(rows) - breaks[0] - 1) > TAIL_SHARE * len(rows):
-        return False
+        return None
     starts, events = ops.starts(), np.flatnonzero(ops.kind > DWELL)
-    one_array = starts.base is not None and starts.base is ops.end.base
-    return (one_array and starts.ctypes.data + starts.strides[0] == ops.end.ctypes.data
-            and np.array_equal(ops.end[events], starts[events]))
+    if _points(starts, ops.end) is None or not np.array_equal(ops.end[events], starts[events]):
+        return None
+    return rows, breaks
 
 
-def build_in_place(ops: Ops, device_first: np.ndarray, profile: MachineProfile) -> Toolpath:
-    """``build`` of ``closable`` rows: the moves after the first event are moved up in
-    ``ops``'s own position columns, over the events, so that the moves are one run of
-    them, and the Toolpath's positions are views of that run; ``ops`` hands them over
-    (the events' own values kept first). Nothing else may read ``ops`` meanwhile."""
-    rows = np.flatnonzero(ops.kind <= DWELL)
+def build_in_place(ops: Ops, closing: tuple[np.ndarray, np.ndarray], device_first: np.ndarray,
+                   profile: MachineProfile) -> Toolpath:
+    """``build`` of rows ``closable`` found (``closing``, what it returned): the moves after
+    the first event are moved up in ``ops``'s own position columns, over the events, so
+    that the moves are one run of them, and the Toolpath's positions are views of that
+    run; ``ops`` hands them over (the events' own values kept first). Nothing else may
+    read ``ops`` meanwhile."""
+    rows, breaks = closing
     owned = ops.events_own()
-    breaks = np.flatnonzero(np.diff(rows) != 1)
     columns = [getattr(ops, name) for name in ops.handed_names()]
     source = None if "line" in owned[1] else ops.main_lines().take(rows)
     for column in columns:

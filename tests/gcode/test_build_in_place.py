@@ -28,7 +28,7 @@ def _both(text: str, monkeypatch):
 
     calls, real = [], program.build_in_place
     with monkeypatch.context() as m:
-        m.setattr(program, "closable", lambda ops: False)
+        m.setattr(program, "closable", lambda ops: None)
         copied = load_text(text)
         m.undo()
         m.setattr(program, "build_in_place", lambda *args: calls.append(args) or real(*args))
@@ -80,7 +80,7 @@ def test_a_program_read_again_from_the_machine_s_position_is_built_in_place_the_
 
     text = "G91\nG0 X1 Y1\nG90\n" + CUTS + "M5\nG1 X2\nM2\n"  # its first move from where the machine is
     with monkeypatch.context() as m:
-        m.setattr(program, "closable", lambda ops: False)
+        m.setattr(program, "closable", lambda ops: None)
         copied = load_text(text).from_start((3.0, 4.0, 0.0))
     placed = load_text(text).from_start((3.0, 4.0, 0.0))
     assert placed.ops.origin == (3.0, 4.0, 0.0) and placed.toolpath.end.base is placed.toolpath.start.base
