@@ -38,7 +38,7 @@ from .render import render
 from .source import Lines
 from .start import StartInfo
 from .state import State
-from .toolpath import Toolpath, build, build_in_place, closable
+from .toolpath import Toolpath, build, build_in_place, closable, timed_before_closing
 
 TRIM_BYTES = 8 << 20  # after the scan of a file this big, free heap pages go back to the system
 LATER_CHECKS_ROWS = 200_000  # a program this long may leave its checks for after its first picture
@@ -355,9 +355,12 @@ def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfi
     normalizing = _in_thread(normalize.plan, ops, profile.motion.arc_tolerance_mm, name="gcode-normalize")
     closing = closable(ops)
     if closing is not None:  # the moves closed up in the rows' own columns, once the plan and the
-        the_plan = normalizing.join()  # checks have read them as they are: no copy of the positions
+        # checks have read them as they are: no copy of the positions (check's estimate reads
+        # the moves' timing first: worked out here, while this thread would wait for the plan)
+        timed = timed_before_closing(ops, closing, profile) if plan_ahead else None
+        the_plan = normalizing.join()
         envelope = early.join() if early is not None else None
-        toolpath = build_in_place(ops, closing, the_plan.first, profile)
+        toolpath = build_in_place(ops, closing, the_plan.first, profile, timed)
     else:
         toolpath = build(ops, lambda: normalizing.join().first, profile)
         the_plan = normalizing.join()

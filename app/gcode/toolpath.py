@@ -267,13 +267,29 @@ def closable(ops: Ops) -> tuple[np.ndarray, np.ndarray] | None:
     return rows, breaks
 
 
+def timed_before_closing(ops: Ops, closing: tuple[np.ndarray, np.ndarray],
+                         profile: MachineProfile) -> list[np.ndarray]:
+    """[feed, length, time] of the Toolpath ``build_in_place`` will make of ``closing``
+    (``closable``'s rows), worked out on ``ops``'s columns before they are closed up (a
+    caller waiting for the plan meanwhile, and about to read them: ``cnc-gcode check``).
+    The events among the moves are worked out too, and left out."""
+    rows = closing[0]
+    span = slice(int(rows[0]), int(rows[-1]) + 1)
+    columns = (ops.starts(), ops.end, ops.center, ops.kind, ops.plane, ops.turn, ops.value)
+    timed = _timings(*(column[span] for column in columns), profile.motion)
+    if len(rows) == span.stop - span.start:
+        return list(timed)
+    picked = rows - span.start
+    return [column.take(picked) for column in timed]
+
+
 def build_in_place(ops: Ops, closing: tuple[np.ndarray, np.ndarray], device_first: np.ndarray,
-                   profile: MachineProfile) -> Toolpath:
+                   profile: MachineProfile, timed: list[np.ndarray] | None = None) -> Toolpath:
     """``build`` of rows ``closable`` found (``closing``, what it returned): the moves after
     the first event are moved up in ``ops``'s own position columns, over the events, so
     that the moves are one run of them, and the Toolpath's positions are views of that
     run; ``ops`` hands them over (the events' own values kept first). Nothing else may
-    read ``ops`` meanwhile."""
+    read ``ops`` meanwhile. ``timed``: ``timed_before_closing``'s, if worked out."""
     rows, breaks = closing
     owned = ops.events_own()
     columns = [getattr(ops, name) for name in ops.handed_names()]
@@ -285,8 +301,9 @@ def build_in_place(ops: Ops, closing: tuple[np.ndarray, np.ndarray], device_firs
     for column in (start, end, center):
         column.flags.writeable = False
     source = ops.line[part] if source is None else source
-    kind, plane, turn, value = (column.take(rows) for column in (ops.kind, ops.plane, ops.turn, ops.value))
-    timing = partial(_timings, start, end, center, kind, plane, turn, value, profile.motion)
+    kind, plane, turn = (column.take(rows) for column in (ops.kind, ops.plane, ops.turn))
+    timing = timed if timed is not None else partial(_timings, start, end, center, kind, plane, turn,
+                                                     ops.value.take(rows), profile.motion)
     moves = Toolpath(start, end, kind, center, plane, turn, source, device_first.take(rows), timing)
     ops.hand_over(moves, owned)
     return moves

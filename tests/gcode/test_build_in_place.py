@@ -54,6 +54,29 @@ def test_a_toolpath_built_in_place_is_the_copied_one(name, monkeypatch):
     np.testing.assert_array_equal(placed.plan.count, copied.plan.count)
 
 
+@pytest.mark.parametrize("name", sorted(PROGRAMS))
+def test_a_check_s_timing_worked_out_before_the_close_up_is_the_copied_one(name, tmp_path, monkeypatch):
+    """``cnc-gcode check`` (``plan_ahead``) times the moves on the rows' columns while it
+    waits for the plan, events among them included and then left out."""
+    import app.gcode.program as program
+
+    path = tmp_path / "job.ngc"
+    path.write_text(PROGRAMS[name])
+    calls, real = [], program.timed_before_closing
+    with monkeypatch.context() as m:
+        m.setattr(program, "closable", lambda ops: None)
+        copied = program.load(path, plan_ahead=True)
+        m.undo()
+        m.setattr(program, "timed_before_closing", lambda *args: calls.append(args) or real(*args))
+        placed = program.load(path, plan_ahead=True)
+    assert calls and not placed.errors
+    for column in ("feed", "length", "time", "start", "end", "device_index"):
+        np.testing.assert_array_equal(getattr(placed.toolpath, column), getattr(copied.toolpath, column),
+                                      err_msg=column)
+    assert placed.planned.total == copied.planned.total
+    np.testing.assert_array_equal(placed.planned.line_seconds, copied.planned.line_seconds)
+
+
 def test_the_positions_are_views_of_the_rows_own_columns():
     program = load_text(PROGRAMS["a Gcodetools footer"])
     tp = program.toolpath
