@@ -145,11 +145,17 @@ def _move_times(moves, is_move, chain_len, reached, nominal, accel: float) -> np
     times = np.empty(len(moves))
     at = _index(np.flatnonzero(is_move))
     for a in range(0, len(at), BLOCK):
-        place = at[a : a + BLOCK]
-        after = place + 1
-        v_out = np.where(after < len(reached), reached[np.minimum(after, len(reached) - 1)], 0.0)
-        v_in, v = reached[place], nominal[a : a + BLOCK]
-        times[a : a + BLOCK] = trapezoid_times(chain_len[place], v_in, v_out, v, accel)
+        place = _run(at[a : a + BLOCK])
+        if isinstance(place, slice):  # a run of blocks: each one's exit is the entry of the next
+            v_in, v_out = reached[place], np.zeros(place.stop - place.start)
+            exits = reached[place.start + 1 : place.stop + 1]  # (none after the last block)
+            v_out[: len(exits)] = exits
+        else:
+            after = place + 1
+            v_out = np.where(after < len(reached), reached[np.minimum(after, len(reached) - 1)], 0.0)
+            v_in = reached[place]
+        times[a : a + BLOCK] = trapezoid_times(_gather(chain_len, place), v_in, v_out, nominal[a : a + BLOCK],
+                                               accel)
     return times
 
 
@@ -216,39 +222,66 @@ def _geometry(tp, moves: np.ndarray, at: np.ndarray, is_move: np.ndarray, accel:
     last_dir, last_v = np.zeros((1, 3)), np.zeros(1)
     for a in range(0, n, BLOCK):
         part = slice(a, a + BLOCK)
-        rows = moves[part]
-        row_len = row_length.take(rows).astype(float)
-        length, v_nom, start_dir, end_dir = _block_geometry(tp, rows, accel, row_len, first)
-        place = at[part]
+        rows, place = _run(moves[part]), _run(at[part])
+        length, v_nom, start_dir, end_dir = _block_geometry(tp, rows, accel, _gather(row_length, rows), first)
         chain_len[place], nominal[part] = length, v_nom
         end_dir, v = np.concatenate((last_dir, end_dir)), np.concatenate((last_v, v_nom))
         last_dir, last_v = end_dir[-1:], v[-1:]
-        follows = np.flatnonzero((place > 0) & is_move[np.maximum(place - 1, 0)])
-        vj = junction_speeds(end_dir.take(follows, axis=0), start_dir.take(follows, axis=0), accel, deviation)
-        vj = np.minimum(np.minimum(vj, v[follows + 1]), v[follows])
-        junction_sq[place[follows]] = vj * vj
+        where, follows = _follows(place, is_move)
+        vj = junction_speeds(_gather(end_dir, follows), _gather(start_dir, follows), accel, deviation)
+        vj = np.minimum(np.minimum(vj, _gather(v[1:], follows)), _gather(v, follows))
+        junction_sq[where] = vj * vj
     return chain_len, junction_sq, nominal
 
 
-def _starts(tp, rows: np.ndarray, first) -> np.ndarray:
+def _follows(place, is_move: np.ndarray):
+    """(the queue blocks among ``place`` (a slice or numbers) that follow a move, and
+    where they are in ``place``: a slice when ``place`` is one, as a run of moves with
+    no barrier among them follows a move from its second block on)."""
+    if isinstance(place, slice):
+        skip = 0 if place.start > 0 and is_move[place.start - 1] else 1
+        return slice(place.start + skip, place.stop), slice(skip, place.stop - place.start)
+    follows = np.flatnonzero((place > 0) & is_move[np.maximum(place - 1, 0)])
+    return place[follows], follows
+
+
+def _run(index: np.ndarray):
+    """Increasing ``index`` as a slice when it is one run of consecutive numbers (so that
+    the columns are read as views, not gathered), else itself."""
+    if len(index) and int(index[-1]) - int(index[0]) + 1 == len(index):
+        return slice(int(index[0]), int(index[-1]) + 1)
+    return index
+
+
+def _gather(column: np.ndarray, rows) -> np.ndarray:
+    """Those rows of ``column`` (``rows``: a slice (a view: read only) or row numbers)."""
+    return column[rows] if isinstance(rows, slice) else column.take(rows, axis=0)
+
+
+def _starts(tp, rows, first) -> np.ndarray:
     """Where these rows start (``first``: (row, start) that row starts from instead)."""
-    start = tp.start.take(rows, axis=0)
-    if first is not None:
-        start[rows == first[0]] = first[1]
+    start = _gather(tp.start, rows)
+    if first is None:
+        return start
+    if isinstance(rows, slice):
+        if not rows.start <= first[0] < rows.stop:
+            return start
+        start, rows = start.copy(), np.arange(rows.start, rows.stop)
+    start[rows == first[0]] = first[1]
     return start
 
 
-def _nominal_speeds(tp, rows: np.ndarray, accel: float, start: np.ndarray):
+def _nominal_speeds(tp, rows, accel: float, start: np.ndarray):
     """(mm/s each of these moves runs at most: its feed, arcs at most sqrt(a r); their
     kinds; the arcs among them; the arcs' starts, centres and radii); ``start``: where
     they start."""
-    kind, feed = tp.kind.take(rows), tp.feed.take(rows)
+    kind, feed = _gather(tp.kind, rows), _gather(tp.feed, rows)
     v_nom = feed / 60.0
     arc = np.flatnonzero((kind == ARC_CW) | (kind == ARC_CCW))
     center = radius = None
     if len(arc):
         start = start.take(arc, axis=0)
-        center = tp.center.take(rows[arc], axis=0)
+        center = tp.center.take(arc + rows.start if isinstance(rows, slice) else rows[arc], axis=0)
         radius = np.hypot(start[:, 0] - center[:, 0], start[:, 1] - center[:, 1])
         v_nom[arc] = np.minimum(v_nom[arc], np.sqrt(accel * radius))
     rapid = kind == RAPID
@@ -256,9 +289,10 @@ def _nominal_speeds(tp, rows: np.ndarray, accel: float, start: np.ndarray):
     return v_nom, kind, arc, start, center, radius
 
 
-def _block_geometry(tp, rows: np.ndarray, accel: float, length: np.ndarray, first):
-    """``_geometry`` of some moves, and their nominal speeds."""
-    start, end = _starts(tp, rows, first), tp.end.take(rows, axis=0)
+def _block_geometry(tp, rows, accel: float, length: np.ndarray, first):
+    """``_geometry`` of some moves (``rows``: row numbers, or a slice of them), and their
+    nominal speeds."""
+    start, end = _starts(tp, rows, first), _gather(tp.end, rows)
     v_nom, kind, arc, arc_start, center, radius = _nominal_speeds(tp, rows, accel, start)
     start_dir = line_tangents(start, end)
     end_dir = start_dir.copy()
@@ -287,6 +321,7 @@ def _barriers(tp, device_lines, profile) -> list[_Barrier]:
     out: list[_Barrier] = []
     rpm = 0.0
     z_at = _z_before(tp, len(device_lines), profile)
+    spin_ms: dict[tuple[float, float], float] = {}  # (from, to) rpm: a program has few speeds
     for line in np.flatnonzero(~taken).tolist():
         text = device_lines[line]
         code = text.split(" ", 1)[0]
@@ -294,7 +329,9 @@ def _barriers(tp, device_lines, profile) -> list[_Barrier]:
             out.append(_Barrier(line, "dwell", float(round(max(_word(text, "P", 0.0), 0.0) * 1000))))
         elif code in ("M03", "M3", "M04", "M4", "M05", "M5"):
             new = _word(text, "S", rpm) if code[-1] != "5" else 0.0
-            out.append(_Barrier(line, "spindle", spin_wait_ms(profile, rpm, new) - 1.0))
+            if (rpm, new) not in spin_ms:
+                spin_ms[rpm, new] = spin_wait_ms(profile, rpm, new) - 1.0
+            out.append(_Barrier(line, "spindle", spin_ms[rpm, new]))
             rpm = new
         elif code in ("M00", "M0", "M01", "M1", "M06", "M6"):
             tool_change = _is_tool_change(text)
