@@ -254,7 +254,8 @@ def _run(index: np.ndarray):
 
 
 def _gather(column: np.ndarray, rows) -> np.ndarray:
-    """Those rows of ``column`` (``rows``: a slice (a view: read only) or row numbers)."""
+    """Those rows of ``column`` (``rows``: a slice, giving a view the caller must not
+    write to, or row numbers, giving a copy)."""
     return column[rows] if isinstance(rows, slice) else column.take(rows, axis=0)
 
 
