@@ -35,7 +35,7 @@ from .estimate_passes import (
     trapezoid_times,
 )
 from .estimate_spindle import spin_wait_ms
-from .ops import ARC_CCW, ARC_CW, DWELL, RAPID
+from .ops import ARC_CCW, ARC_CW, DWELL, RAPID, run_of
 
 QUEUE_BLOCKS = 16  # the CNC MCU's motion queue (MotionController capacity)
 HORIZON_ROUNDS = 6
@@ -145,7 +145,7 @@ def _move_times(moves, is_move, chain_len, reached, nominal, accel: float) -> np
     times = np.empty(len(moves))
     at = _index(np.flatnonzero(is_move))
     for a in range(0, len(at), BLOCK):
-        place = _run(at[a : a + BLOCK])
+        place = run_of(at[a : a + BLOCK])
         if isinstance(place, slice):  # a run of blocks: each one's exit is the entry of the next
             v_in, v_out = reached[place], np.zeros(place.stop - place.start)
             exits = reached[place.start + 1 : place.stop + 1]  # (none after the last block)
@@ -222,7 +222,7 @@ def _geometry(tp, moves: np.ndarray, at: np.ndarray, is_move: np.ndarray, accel:
     last_dir, last_v = np.zeros((1, 3)), np.zeros(1)
     for a in range(0, n, BLOCK):
         part = slice(a, a + BLOCK)
-        rows, place = _run(moves[part]), _run(at[part])
+        rows, place = run_of(moves[part]), run_of(at[part])
         length, v_nom, start_dir, end_dir = _block_geometry(tp, rows, accel, _gather(row_length, rows), first)
         chain_len[place], nominal[part] = length, v_nom
         end_dir, v = np.concatenate((last_dir, end_dir)), np.concatenate((last_v, v_nom))
@@ -243,14 +243,6 @@ def _follows(place, is_move: np.ndarray):
         return slice(place.start + skip, place.stop), slice(skip, place.stop - place.start)
     follows = np.flatnonzero((place > 0) & is_move[np.maximum(place - 1, 0)])
     return place[follows], follows
-
-
-def _run(index: np.ndarray):
-    """Increasing ``index`` as a slice when it is one run of consecutive numbers (so that
-    the columns are read as views, not gathered), else itself."""
-    if len(index) and int(index[-1]) - int(index[0]) + 1 == len(index):
-        return slice(int(index[0]), int(index[-1]) + 1)
-    return index
 
 
 def _gather(column: np.ndarray, rows) -> np.ndarray:

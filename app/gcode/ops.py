@@ -34,6 +34,14 @@ HANDED = ("line", "end", "center")  # the columns ``Ops.hand_over`` gives to the
 HANDED_KINDS = DWELL  # rows of these kinds and below are the Toolpath's
 
 
+def run_of(rows: np.ndarray):
+    """Increasing row numbers ``rows`` as a slice when they are one run of consecutive
+    rows (so that columns are read as views, not gathered), else ``rows`` themselves."""
+    if len(rows) and int(rows[-1]) - int(rows[0]) + 1 == len(rows):
+        return slice(int(rows[0]), int(rows[-1]) + 1)
+    return rows
+
+
 @dataclass
 class Source:
     """Where the rows of an expanded program come from (see the module docstring)."""

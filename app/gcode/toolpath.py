@@ -22,7 +22,7 @@ import numpy as np
 from app.profile import MachineProfile
 
 from .arcs import arc_box, arc_length, chord_counts, chord_points, in_plane
-from .ops import ARC_CCW, ARC_CW, DWELL, FEED, PLANE_AXES, RAPID, Ops
+from .ops import ARC_CCW, ARC_CW, DWELL, FEED, PLANE_AXES, RAPID, Ops, run_of
 
 KIND_NAMES = {RAPID: "rapid", FEED: "feed", ARC_CW: "arc", ARC_CCW: "arc", DWELL: "dwell"}
 PARALLEL_ARCS = 50_000  # arcs from which chords are computed on two threads
@@ -223,11 +223,11 @@ def _picker(rows: np.ndarray):
     are one run (events such as the spindle only before and after the moves) it gives
     read-only views, so the Toolpath shares the interpreted rows' memory (60 MB of a
     1 M-move file) instead of copying it; else copies (``take``: a faster gather)."""
-    if len(rows) and int(rows[-1]) - int(rows[0]) + 1 == len(rows):
-        first, stop = int(rows[0]), int(rows[-1]) + 1
+    run = run_of(rows)
+    if isinstance(run, slice):
 
         def view(column: np.ndarray) -> np.ndarray:
-            part = column[first:stop]
+            part = column[run]
             part.flags.writeable = False
             return part
 
