@@ -5,15 +5,17 @@ import sys
 import time
 from pathlib import Path
 
+from bench import machine
+
 
 def main(argv: list[str]) -> int:
     names = argv or sorted(p.stem for p in Path(__file__).parent.glob("bench_*.py"))
     for name in names:
         module = importlib.import_module(f"bench.{name}")
-        print(f"== {name}", flush=True)
+        print(f"== {name}\n{machine.state()}", flush=True)
         started = time.perf_counter()
         module.main()
-        print(f"== {name} took {time.perf_counter() - started:.1f} s\n", flush=True)
+        print(f"== {name} took {time.perf_counter() - started:.1f} s; {machine.state()}\n", flush=True)
     return 0
 
 
