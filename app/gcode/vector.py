@@ -23,11 +23,18 @@ from .state import State
 
 
 def _ffill(values: np.ndarray, first: float) -> np.ndarray:
-    """``values`` with NaNs replaced by the last number before them (``first`` at start)."""
+    """``values`` (float64) with NaNs replaced by the last number before them (``first``
+    at start); ``values`` itself when it has no NaN (a word on every line: not to be
+    written to), a constant when it is all NaN (a word on none)."""
+    known = values == values  # not NaN (one pass, no isnan and invert)
+    if known.all():
+        return values
+    if not known.any():
+        return np.full(len(values), first)
     arr = np.empty(len(values) + 1)
     arr[0], arr[1:] = first, values
     idx = np.arange(len(arr), dtype=np.int32)  # a run is at most RUN_MAX lines
-    np.multiply(idx, arr == arr, out=idx)  # 0 at NaNs (one pass, no isnan and invert)
+    np.multiply(idx[1:], known, out=idx[1:])  # 0 at NaNs
     np.maximum.accumulate(idx, out=idx)
     return arr.take(idx[1:])
 
