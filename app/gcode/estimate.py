@@ -296,8 +296,8 @@ def _block_geometry(tp, rows, accel: float, length: np.ndarray, first):
         sweep = np.where(kind[arc] == ARC_CW, -1.0, 1.0) * sweep / np.where(radius > 0, radius, 1.0)
         arc_len = np.where(arc_len > 0, arc_len, 1.0)
         per_mm, dz_per_mm = sweep / arc_len, dz / arc_len
-        start_dir[arc] = helix_tangents(arc_start, center, per_mm, dz_per_mm)
-        end_dir[arc] = helix_tangents(arc_end, center, per_mm, dz_per_mm)
+        helix_tangents(arc_start, center, per_mm, dz_per_mm, start_dir, arc)
+        helix_tangents(arc_end, center, per_mm, dz_per_mm, end_dir, arc)
     return length, v_nom, start_dir, end_dir
 
 

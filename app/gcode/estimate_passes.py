@@ -23,7 +23,10 @@ def line_tangents(start: np.ndarray, end: np.ndarray) -> np.ndarray:
     """Unit directions (n, 3) of straight moves (zero vectors for zero lengths)."""
     d = end - start
     n = np.sqrt(_dot(d, d))
-    return d / np.where(n > 0, n, 1.0)[:, None]
+    n[~(n > 0)] = 1.0
+    for k in range(3):  # column by column: a row of three over a column is a loop per row
+        np.divide(d[:, k], n, out=d[:, k])
+    return d
 
 
 def _dot(a: np.ndarray, b: np.ndarray) -> np.ndarray:
@@ -36,9 +39,10 @@ def _dot(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     return out
 
 
-def helix_tangents(point, center, sweep_per_mm, dz_per_mm) -> np.ndarray:
-    """Unit tangents (n, 3) of XY arcs/helices at ``point``: the angle grows by
-    ``sweep_per_mm`` (signed, rad/mm) and z by ``dz_per_mm`` along the path."""
+def helix_tangents(point, center, sweep_per_mm, dz_per_mm, out: np.ndarray, rows: np.ndarray) -> None:
+    """Unit tangents of XY arcs/helices at ``point`` into rows ``rows`` of ``out`` (n, 3):
+    the angle grows by ``sweep_per_mm`` (signed, rad/mm) and z by ``dz_per_mm`` along
+    the path."""
     rx, ry = point[:, 0] - center[:, 0], point[:, 1] - center[:, 1]
     tx, ty = -ry * sweep_per_mm, rx * sweep_per_mm
     n = tx * tx  # the squared norm, summed in ``_dot``'s order
@@ -46,10 +50,8 @@ def helix_tangents(point, center, sweep_per_mm, dz_per_mm) -> np.ndarray:
     n += dz_per_mm * dz_per_mm
     np.sqrt(n, out=n)
     n[~(n > 0)] = 1.0
-    out = np.empty((len(n), 3))
-    for k, column in enumerate((tx, ty, dz_per_mm)):  # column by column: no (n, 3) temporaries
-        np.divide(column, n, out=out[:, k])
-    return out
+    for k, column in enumerate((tx, ty, dz_per_mm)):  # column by column: a scatter of rows of
+        out[rows, k] = column / n  # three is a loop per row
 
 
 def junction_speeds(end_dir: np.ndarray, start_dir: np.ndarray, accel: float, deviation: float) -> np.ndarray:
