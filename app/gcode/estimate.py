@@ -18,10 +18,11 @@ of the path distance over ``accel/jerk`` seconds: it delays every stop before a 
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
+from .estimate_chords import as_sent, fold
 from .estimate_passes import (
     entry_speeds_sq,
     helix_tangents,
@@ -82,11 +83,20 @@ class _Barrier:
     stop_ms: float = 0.0  # what a program stop makes the machine do (reported apart)
 
 
-def estimate(toolpath, device_lines, profile, start=None) -> Estimate:
+def estimate(toolpath, device_lines, profile, start=None, plan=None) -> Estimate:
     """The planner's time for ``toolpath`` whose rows come from ``device_lines`` (in their
     order); ``start`` (work mm), where the machine is when the job starts, if known: the
-    first move is a straight one from there rather than from where the program assumed.
-    Kept whole: a few numbers per planner block; the rest is worked out in blocks."""
+    first move is a straight one from there rather than from where the program assumed;
+    ``plan`` (the normaliser's), when given: the arcs it sends as chords are timed as those
+    chords (``estimate_chords``), and each row's seconds are its chords' sum."""
+    sent, begins = as_sent(toolpath, plan, profile.motion.arc_tolerance_mm)
+    est = _as_planned(sent, device_lines, profile, start)
+    return est if begins is None else replace(est, row_seconds=fold(est.row_seconds, begins))
+
+
+def _as_planned(toolpath, device_lines, profile, start) -> Estimate:
+    """``estimate`` of the blocks the planner is sent, one per row of ``toolpath``. Kept
+    whole: a few numbers per planner block; the rest is worked out in blocks."""
     mo = profile.motion
     accel = mo.accel_mm_s2
     window_s = max(1, round(accel / mo.jerk_mm_s3 * 1000)) / 1000.0

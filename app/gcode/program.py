@@ -174,7 +174,7 @@ class Program:
 
 
 def _estimate(toolpath: Toolpath, ops: Ops, the_plan: normalize.Plan, profile: MachineProfile) -> Estimate:
-    return estimate(toolpath, EventLines(ops, the_plan), profile)
+    return estimate(toolpath, EventLines(ops, the_plan), profile, plan=the_plan)
 
 
 def _checked(ops: Ops, profile: MachineProfile, lines: Lines, report: Report,

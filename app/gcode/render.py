@@ -25,6 +25,14 @@ _CODE_TEXT = np.array(["G00", "G01", "G02", "G03", "G04", "M03", "M02", "M00"], 
 ROUNDING = 0.001
 
 
+def chord_ends(start, end, center, plane, turn, tolerance: float) -> np.ndarray:
+    """(k, 3) ends of the G01 chords the arcs (rows of ``Ops`` columns) are sent as, in
+    order, ``normalize.plan``'s ``count`` of them per arc (``tolerance``: the profile's arc
+    tolerance; the rounding of the sent numbers is taken from it)."""
+    axes = np.array(PLANE_AXES)[plane]
+    return chord_points(start, end, center, axes, turn, tolerance - ROUNDING)[0]
+
+
 def _rows(ops: Ops, count: np.ndarray, chords: np.ndarray, tolerance: float, default_rpm: float):
     """Per device row: op index, code, target (milli), value."""
     op = np.repeat(np.arange(len(ops)), count)
@@ -33,10 +41,8 @@ def _rows(ops: Ops, count: np.ndarray, chords: np.ndarray, tolerance: float, def
     value = ops.value[op]
     chord_ops = np.flatnonzero(chords)
     if len(chord_ops):
-        start = ops.starts()[chord_ops]
-        axes = np.array(PLANE_AXES)[ops.plane[chord_ops]]
-        pts, _ = chord_points(start, ops.end[chord_ops], ops.center[chord_ops], axes, ops.turn[chord_ops],
-                              tolerance - ROUNDING)
+        pts = chord_ends(ops.starts()[chord_ops], ops.end[chord_ops], ops.center[chord_ops],
+                         ops.plane[chord_ops], ops.turn[chord_ops], tolerance)
         dev = np.flatnonzero(chords[op])
         target[dev] = milli(pts)
         code[dev] = G01

@@ -78,6 +78,9 @@ def test_junction_speeds_follow_the_deviation_rule():
     assert junction_speeds(x, y, A, 0.02)[0] == pytest.approx(math.sqrt(A * 0.02 * sin_half / (1 - sin_half)))
 
 
+NEARLY_STRAIGHT = "G00 X121.703677 Y88.137881 Z2\nG01 Z-0.8 F300\n{} F900\nG01 X110 Y95\nM02\n"  # Gcodetools'
+# biarc of radius 56 km: its rounded centre would be too far off, so it is sent as one G01
+STRAIGHT_ARC = "G03 X117.562241 Y95.365318 Z-0.8 I-48314.248092 J-27680.037918"
 PROGRAMS = {
     "corners": "M03 S3000\nG00 Z2\nG00 X10 Y10\nG01 Z-0.5 F120\n"
                + "".join(f"G01 X{10 + 30 * (k % 2)} Y{10 + 3 * k} F500\n" for k in range(12)) + "M05\nM02\n",
@@ -86,6 +89,12 @@ PROGRAMS = {
     "short segments": short_segments(0.025, 600),  # 0.025 mm chords: the look-ahead is short
     "dwell and spindle": "M03 S2000\nG04 P1.5\nG00 X30 Y30 Z2\nM03 S4000\nG01 X40 F300\nG04 P0.25\n"
                          "G01 X50\nM05\nG00 Z5\nM02\n",
+    # arcs the normaliser sends as G01 chords: outside the XY plane, of several turns
+    "XZ and YZ arcs": "G00 X20 Y20 Z2\nF800\n"
+                      + "".join(f"G18 G02 X{24 + 4 * k} Z2 I2 K0\n" for k in range(20))
+                      + "G19 G03 Y60 Z2 J20 K0 F2000\nG02 Y20 Z2 J-20 K0\nG17 G01 X30\nM02\n",
+    "three turns": "G00 X60 Y50 Z0\nG17 G03 X60 Y50 Z-3 I-10 J0 P3 F400\nG01 X70\nM02\n",
+    "a nearly straight arc": NEARLY_STRAIGHT.format(STRAIGHT_ARC),
 }
 
 
@@ -94,7 +103,7 @@ def test_the_estimate_agrees_with_the_simulated_machine(name):
     program = load_text(PROGRAMS[name])
     assert not program.errors
     real, start = real_run(list(program.device_lines), program.profile)
-    est = estimate(program.toolpath, program.device_lines, program.profile, start=start)
+    est = estimate(program.toolpath, program.device_lines, program.profile, start=start, plan=program.plan)
     assert est.stops == 0 and est.stop_seconds == 0.0
     assert est.total == pytest.approx(real, rel=0.02)
     assert est.line_seconds.sum() == pytest.approx(est.total)
@@ -210,3 +219,31 @@ def test_a_load_that_plans_ahead_gives_the_same_estimate(tmp_path):
     _same_estimate(ahead.planned, later.planned)
     assert ahead.planned_if_ready is ahead.planned
     assert np.array_equal(ahead.toolpath.time, later.toolpath.time)
+
+
+@pytest.mark.parametrize("name", ["XZ and YZ arcs", "three turns"])
+def test_an_arc_sent_as_chords_is_timed_as_its_chords(name):
+    """Each chord is a block of the planner's and a device line of its own: its seconds
+    are on its line (a job's progress and remaining time read them), and the arc's row
+    holds their sum (a move follows every arc: the row before the end also holds the
+    settling before it)."""
+    program = load_text(PROGRAMS[name])
+    tp, plan, est = program.toolpath, program.plan, program.planned
+    chorded = np.flatnonzero(plan.chords)
+    assert len(chorded) and (plan.count[chorded] > 10).all()
+    for op in chorded:
+        lines = est.line_seconds[plan.first[op] : plan.first[op] + plan.count[op]]
+        row = int(np.flatnonzero(tp.device_index == plan.first[op])[0])
+        assert (lines > 0).all() and lines.max() < 0.2 * lines.sum()
+        assert lines.sum() == pytest.approx(est.row_seconds[row])
+    assert est.row_seconds.sum() == pytest.approx(est.total) and len(est.row_seconds) == len(tp)
+    assert np.array_equal(tp.time, est.row_seconds)
+
+
+def test_an_arc_sent_as_one_chord_is_timed_as_that_line():
+    line_to_its_end = "G01 X117.562241 Y95.365318 Z-0.8"
+    arc, line = (load_text(NEARLY_STRAIGHT.format(move)) for move in (STRAIGHT_ARC, line_to_its_end))
+    assert arc.plan.chords.sum() == 1 and arc.plan.count.sum() == line.plan.count.sum()
+    assert arc.device_lines == line.device_lines
+    np.testing.assert_allclose(arc.planned.line_seconds, line.planned.line_seconds, rtol=1e-12)
+    assert arc.planned.total == pytest.approx(line.planned.total, rel=1e-12)
