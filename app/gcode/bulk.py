@@ -21,6 +21,7 @@ from __future__ import annotations
 import re
 import zlib
 from dataclasses import dataclass
+from functools import partial
 
 import numpy as np
 
@@ -180,44 +181,39 @@ def scan_stream(data: bytes, n_lines: int, chunks: list | None = None, share_byt
     the caller reads it before asking for the next), at least once.
 
     Data of ``share_bytes`` (default ``SHARE_BYTES``) or more is shared with the
-    helper process when there is one: it takes groups of chunks from the end while this
-    process works from the start (and the caller interprets what is ready); a group the
-    helper has not finished when this process reaches it is done here, so the two meet
-    wherever their speeds (and the helper's start-up) put them, and nobody waits. In a
-    one-shot load (no helper) a forked child shares the groups instead (``forked.Shared``).
+    helper process when there is one (``Helped``: it scans the groups of chunks in order
+    from the second, this process interprets each as it comes and scans the last ones
+    itself while it would wait), or in a one-shot load (no helper) with a forked child
+    (``forked.Shared``, the same order).
     ``origin``: (path, offset) where ``data`` lies in a file as read: the helper reads its
     groups there (``scan_file_chunks``) rather than be sent them."""
     if not data.endswith(b"\n"):
         data, chunks = data + b"\n", None
     big = len(data) >= (SHARE_BYTES if share_bytes is None else share_bytes)
     parts = chunks or chunk_table(data)
-    shared, helper = None, big and len(parts) >= 2 and workers.ready()
+    helper = big and len(parts) >= 2 and workers.ready()
     fork = big and len(parts) >= 2 and not helper and forked.usable()  # a one-shot load
     groups = _split(parts) if helper or fork else _windows(parts)
     firsts = np.cumsum([0] + [sum(count for *_, count in group) for group in groups]).tolist()
-    if fork:
-        shared = forked.Shared(lambda k: group_window(data, groups[k], firsts[k], n_lines), len(groups))
-    futures = {k: _submit(data, groups[k], origin) for k in range(len(groups) - 1, 0, -1)} if helper else {}
+    window_of = partial(group_window, data, groups, firsts, n_lines)
+    shared = forked.Shared(window_of, len(groups)) if fork else None
+    shared = Helped(data, groups, origin, window_of) if helper else shared
     try:
-        for k, group in enumerate(groups):
-            if shared:
-                window = shared.take(k)
-            else:
-                window = group_window(data, group, firsts[k], n_lines, _collect(futures.get(k), data, group))
-            yield window, min(firsts[k + 1], n_lines)
+        for k in range(len(groups)):
+            yield shared.take(k) if shared else window_of(k), min(firsts[k + 1], n_lines)
     finally:  # (also when the caller stops early: a program that needs the expander)
         if shared:
             shared.close()
-        for future in futures.values():  # the helper's groups not begun yet are dropped
-            future.cancel()
     if firsts[-1] < n_lines:  # lines the chunks did not count: none is simple
         yield _table(firsts[-1], n_lines - firsts[-1])[0], n_lines
 
 
-def group_window(data: bytes, group: list, first: int, n_lines: int, words_of: list | None = None) -> Scan:
-    """The ``Scan`` of one group of chunks ``(start, end, lines)`` of ``data``, its lines
-    from line ``first`` on (at most to ``n_lines``); ``words_of``: the group's words when
+def group_window(data: bytes, groups: list, firsts: list, n_lines: int, k: int,
+                 words_of: list | None = None) -> Scan:
+    """The ``Scan`` of group ``k`` of chunks ``(start, end, lines)`` of ``data``, its lines
+    from line ``firsts[k]`` on (at most to ``n_lines``); ``words_of``: the group's words when
     already scanned (``scan_chunks``, by the helper process), else they are scanned here."""
+    group, first = groups[k], firsts[k]
     words_of = words_of or scan_chunks(data, group)
     window, table = _table(first, min(sum(count for *_, count in group), n_lines - first))
     base = 0
@@ -275,12 +271,65 @@ def _submit(data: bytes, group: list, origin: tuple[str, int] | None):
     return workers.submit(scan_file_chunks, path, offset + first, last - first, parts)
 
 
-def _collect(future, data: bytes, group: list) -> list | None:
-    """The helper's words for a group if it has finished them, else ``None`` and this
-    process does the group (one the helper has begun is then done twice: at the
-    meeting point that is quicker than waiting). The words of a group it read from the
-    file count only when it read these bytes (their crc32: the file may have changed)."""
-    if future is None or future.cancel() or not future.done():
+class Helped:
+    """``window_of(k)`` for groups ``k = 0 .. len(groups) - 1`` of ``data``, taken in
+    order by this process, their scans shared with the helper process.
+
+    The helper is handed groups 1, 2, ... in order at once (``_submit``); ``take(k)``
+    gives group ``k``'s window from the helper's words when it has sent them. While the
+    helper is still on ``k`` (or has it next in its pipe), this process scans the last
+    group the helper has not begun instead (withdrawn from it, kept for later), and
+    waits only when the helper holds every group left: so the caller interprets each
+    group as the helper sends it and neither side stands idle while work is left. A
+    group the helper has not sent after ``forked.STUCK_S`` of waiting, failed, or read
+    from a file that changed (``_words``) is scanned here: a helper costs time, never
+    the result."""
+
+    def __init__(self, data: bytes, groups: list, origin, window_of):
+        self._data, self._groups, self._window_of = data, groups, window_of
+        self._futures = {k: _submit(data, groups[k], origin) for k in range(1, len(groups))}
+        self._ahead: dict[int, list] = {}  # groups scanned here, ahead of their turn
+        self._back = len(groups) - 1  # groups after this one are scanned here (or being)
+
+    def take(self, k: int) -> Scan:
+        """Group ``k``'s window (groups are taken in order: 0, 1, 2, ...)."""
+        if k in self._ahead:
+            return self._window_of(k, self._ahead.pop(k))
+        future = self._futures.pop(k, None)
+        while future is not None and not future.done() and not future.cancel():  # the helper has k
+            if not self._scan_ahead(k):
+                break  # it has every group left: wait for k
+        return self._window_of(k, _words(future, self._data, self._groups[k]))
+
+    def _scan_ahead(self, k: int) -> bool:
+        """Scan the last group after ``k`` that the helper has not begun; False when the
+        helper has begun (or been sent) every group up to the ones scanned here."""
+        while self._back > k:
+            j, self._back = self._back, self._back - 1
+            future = self._futures.pop(j, None)
+            if future is None or future.cancel():
+                self._ahead[j] = scan_chunks(self._data, self._groups[j])
+                return True
+            self._futures[j] = future  # begun: so is every group before it (taken in order)
+            self._back = k
+        return False
+
+    def close(self) -> None:
+        """Withdraw the groups the helper has not begun (the caller stopped early)."""
+        for future in self._futures.values():
+            future.cancel()
+
+
+def _words(future, data: bytes, group: list) -> list | None:
+    """The helper's words for a group (waiting up to ``forked.STUCK_S`` for them), or
+    ``None`` when this process is to scan it: no helper, a failed or slow one, or the
+    words of a group it read from a file that no longer holds these bytes (their crc32)."""
+    if future is None or future.cancelled():
+        return None
+    from concurrent.futures import wait
+
+    if not wait([future], timeout=forked.STUCK_S).done:
+        future.cancel()
         return None
     words = workers.result(future)
     if not isinstance(words, tuple):

@@ -103,19 +103,23 @@ def test_a_half_imported_multiprocessing_means_this_is_no_helper(monkeypatch):
     assert workers.available()
 
 
-def _helper_finishes_every_group(monkeypatch):
-    """``_collect`` after the helper has finished the group: every group given to the
-    helper is its work (else where the two meet depends on their speeds)."""
+def _helper_finishes_every_group(monkeypatch) -> list:
+    """Each group waited for until the helper has finished it, so every group given to
+    the helper is its work (else who scans which depends on their speeds); the list the
+    groups it did are added to."""
     from concurrent.futures import wait
 
-    collect = bulk._collect
+    take, theirs = bulk.Helped.take, []
 
-    def after_the_helper(future, *args):
+    def after_the_helper(self, k):
+        future = self._futures.get(k)
         if future is not None:
             wait([future])
-        return collect(future, *args)
+            theirs.append(k)
+        return take(self, k)
 
-    monkeypatch.setattr(bulk, "_collect", after_the_helper)
+    monkeypatch.setattr(bulk.Helped, "take", after_the_helper)
+    return theirs
 
 
 def test_the_helper_reads_its_groups_from_the_file_itself(big, helper, tmp_path, monkeypatch):
@@ -132,9 +136,10 @@ def test_the_helper_reads_its_groups_from_the_file_itself(big, helper, tmp_path,
     for a, b in zip(theirs, bulk.scan_chunks(big[first:last], group), strict=True):
         for x, y in zip(a, b, strict=True):
             np.testing.assert_array_equal(x, y)
-    _helper_finishes_every_group(monkeypatch)
+    theirs = _helper_finishes_every_group(monkeypatch)
     n = big.count(b"\n")
     shared = bulk.scan(big, n, share_bytes=0, origin=(str(path), 3))
+    assert theirs == list(range(1, len(theirs) + 1)) and len(theirs) >= 8  # every group but the first
     workers.set_enabled(False)
     assert_same_scan(shared, bulk.scan(big, n))
 
@@ -145,9 +150,10 @@ def test_a_file_changed_after_it_was_read_costs_time_not_the_result(big, helper,
     path = tmp_path / "big.ngc"
     if change != "gone":
         path.write_bytes(big.replace(b"X", b"Y") if change == "other words" else big[: len(big) // 2])
-    _helper_finishes_every_group(monkeypatch)
+    theirs = _helper_finishes_every_group(monkeypatch)
     n = big.count(b"\n")
     shared = bulk.scan(big, n, share_bytes=0, origin=(str(path), 0))
+    assert theirs == list(range(1, len(theirs) + 1)) and len(theirs) >= 8  # every group but the first
     workers.set_enabled(False)
     assert_same_scan(shared, bulk.scan(big, n))
 
