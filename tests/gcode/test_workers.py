@@ -172,3 +172,39 @@ def test_a_program_s_origin_is_where_its_bytes_lie_in_the_file(read, offset):
     assert origin == (None if offset is None else ("f.ngc", offset))
     if origin is not None:
         assert read[offset:] == clean_bytes(read)
+
+
+def test_while_the_helper_holds_the_next_group_this_process_scans_the_last_ones(big, monkeypatch):
+    """The helper (here a thread, held on the first group it begins until this process has
+    scanned a group ahead) takes the groups in order; the loader, waiting for the one the
+    helper holds, scans the last groups meanwhile, from the end: the scan is the same."""
+    import threading
+    from concurrent.futures import ThreadPoolExecutor
+
+    pool, ahead, went_ahead = ThreadPoolExecutor(max_workers=1), [], threading.Event()
+
+    def held(fn, *args):
+        went_ahead.wait(60)
+        return fn(*args)
+
+    scan_ahead = bulk.Helped._scan_ahead
+
+    def recorded(self, k):
+        before = set(self._ahead)
+        done = scan_ahead(self, k)
+        ahead.extend(sorted(set(self._ahead) - before))
+        went_ahead.set()
+        return done
+
+    monkeypatch.setattr(workers, "ready", lambda: True)
+    monkeypatch.setattr(workers, "submit", lambda fn, *args: pool.submit(held, fn, *args))
+    monkeypatch.setattr(bulk.Helped, "_scan_ahead", recorded)
+    n = big.count(b"\n")
+    shared = bulk.scan(big, n, share_bytes=0)
+    pool.shutdown()
+    monkeypatch.undo()
+    groups = len(bulk._split(chunks(big)))
+    assert ahead and ahead == list(range(groups - 1, groups - 1 - len(ahead), -1))  # the last, from the end
+    workers.set_enabled(False)
+    assert_same_scan(shared, bulk.scan(big, n))
+    workers.set_enabled(True)
