@@ -66,16 +66,18 @@ def _rounded(values: np.ndarray) -> np.ndarray:
 
 def _arc_ok_rounded(start, end, center) -> np.ndarray:
     """True where the arc can be sent as an arc: with its numbers rounded as sent, it
-    passes the circle check, and its radius is at most ``MAX_ARC_RADIUS``."""
-    start, end, center = start[:, :2], end[:, :2], center[:, :2]  # XY arcs only
-    rs, re_ = _rounded(start), _rounded(end)
-    c = rs + _rounded(center - rs)
-    r1 = np.hypot(c[:, 0] - rs[:, 0], c[:, 1] - rs[:, 1])
-    r2 = np.hypot(c[:, 0] - re_[:, 0], c[:, 1] - re_[:, 1])
+    passes the circle check, and its radius is at most ``MAX_ARC_RADIUS``. (XY arcs only;
+    worked out a column at a time: numpy runs an (n, 2) slice of (n, 3) rows as a loop
+    of two.)"""
+    sx, sy, ex, ey = (_rounded(points[:, axis]) for points in (start, end) for axis in (0, 1))
+    cx, cy = _rounded(center[:, 0] - sx), _rounded(center[:, 1] - sy)
+    cx += sx
+    cy += sy
+    r1, r2 = np.hypot(cx - sx, cy - sy), np.hypot(cx - ex, cy - ey)
     ok = (r1 >= RADIUS_TOL[False]) & (r2 >= RADIUS_TOL[False]) & (r1 <= MAX_ARC_RADIUS)
     ok &= ~spiral_refused(np.abs(r1 - r2), np.maximum(r1, r2), False)
     # a short arc whose ends round together would become a full circle on the device
-    same = (rs[:, 0] == re_[:, 0]) & (rs[:, 1] == re_[:, 1])  # equal thousandths
+    same = (sx == ex) & (sy == ey)  # equal thousandths
     full = (start[:, 0] == end[:, 0]) & (start[:, 1] == end[:, 1])
     return ok & (~same | full)
 
