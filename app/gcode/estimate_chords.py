@@ -23,10 +23,9 @@ def as_sent(toolpath: Toolpath, plan, tolerance: float) -> tuple[Toolpath, np.nd
     any, sends no arc as chords; with its arcs of one chord made lines, which costs a copy
     of two columns; with every arc of several chords replaced by its chords, which copies
     every column). ``tolerance``: the profile's arc tolerance, as rendered."""
-    tp, rows = toolpath, _chorded_rows(toolpath, plan)
+    tp, (rows, count) = toolpath, _chorded_rows(toolpath, plan)
     if not len(rows):
         return tp, None
-    count = plan.count[_plan_rows(tp, plan, rows)]
     if (count == 1).all():  # (Gcodetools' nearly straight arcs, sent as one G01 each)
         kind, length = tp.kind.copy(), tp.length.copy()
         kind[rows], length[rows] = FEED, _lengths(tp.start[rows], tp.end[rows])
@@ -58,17 +57,16 @@ def _lengths(start: np.ndarray, end: np.ndarray) -> np.ndarray:
 
 
 def _chorded_rows(tp: Toolpath, plan) -> np.ndarray:
-    """The toolpath's rows (arcs) that the plan sends as chords."""
-    if plan is None or not plan.chords.any():
-        return np.empty(0, np.int64)
-    arcs = np.flatnonzero((tp.kind == ARC_CW) | (tp.kind == ARC_CCW))
-    return arcs[plan.chords[_plan_rows(tp, plan, arcs)]]
-
-
-def _plan_rows(tp: Toolpath, plan, rows: np.ndarray) -> np.ndarray:
-    """The plan's (``Ops``) rows of some toolpath rows: the one whose device lines hold
-    each row's first device line (every plan row makes at least one)."""
-    return np.searchsorted(plan.first, tp.device_index[rows], side="right") - 1
+    """The toolpath's rows (arcs) that the plan sends as chords, found from the plan's
+    side (a few rows, by their first device line: the toolpath's rows are in device line
+    order), and the plan's count of chords for each."""
+    if plan is None or not len(tp) or not plan.chords.any():
+        return np.empty(0, np.int64), np.empty(0, np.int64)
+    chorded = np.flatnonzero(plan.chords)
+    lines = plan.first[chorded]
+    rows = np.minimum(np.searchsorted(tp.device_index, lines), len(tp) - 1)
+    found = (tp.device_index[rows] == lines) & ((tp.kind[rows] == ARC_CW) | (tp.kind[rows] == ARC_CCW))
+    return rows[found], plan.count[chorded[found]]
 
 
 def fold(row_seconds: np.ndarray, begins: np.ndarray) -> np.ndarray:
