@@ -23,7 +23,7 @@ from app.gcode import load, load_text
 from app.gcode.estimate import estimate
 from bench import arcfile
 from bench.bench_estimate import short_segments
-from tests.gcode.test_estimate import ARCS_AND_STOPS
+from tests.gcode.test_estimate import ARCS_AND_STOPS, PROGRAMS
 
 SAMPLES = Path(__file__).resolve().parents[2] / "resources" / "samples"
 RTOL = 1e-9
@@ -87,6 +87,10 @@ FIGURES = {
         (1.318033988749895, 1.7372135954999586, 1.318033988749895),
         (1.318033988749895, 1.7372135954999586, 1.318033988749895),
         (1.318033988749895, 0.0, 0.0, 0.0), (0, 0)),
+    'arcs sent as chords': (
+        (73.72869952062146, 981.3107844329273, 57.173245672846214),
+        (73.72869952062146, 88.19009037330534, 44.62404873200026),
+        (73.72869952062145, 0.0, 0.0, 0.0), (0, 0)),
 }
 
 
@@ -122,6 +126,8 @@ def _programs(tmp: Path) -> dict:
     out["events only"] = (load_text("M3 S1000\nG4 P1\nM0\nM5\nM2\n"), None)
     out["moves that go nowhere"] = (load_text("G0 X0 Y0 Z0\nG1 X0 F100\nG4 P0.5\nG1 X1\nG1 X1\nM2\n"), None)
     out["one move from a start"] = (load_text("G1 X10 Y5 F600\n"), (0.0, 0.0, 0.0))
+    chorded = PROGRAMS["XZ and YZ arcs"].replace("M02\n", "") + PROGRAMS["three turns"]
+    out["arcs sent as chords"] = (load_text(chorded), None)
     return out
 
 
@@ -131,7 +137,7 @@ def programs(tmp_path_factory):
 
 
 def _estimate(program, start):
-    return estimate(program.toolpath, program.device_lines, program.profile, start=start)
+    return estimate(program.toolpath, program.device_lines, program.profile, start=start, plan=program.plan)
 
 
 def test_the_estimate_gives_the_whole_array_estimates_figures(programs):
