@@ -14,6 +14,8 @@ reported finished, which trails the path: ``queue_horizons``; the end of the que
 stops), a forward pass from rest, trapezoids at ``accel``. The S-curve is a moving average
 of the path distance over ``accel/jerk`` seconds: it delays every stop before a barrier
 (dwell, spindle, stop, end) by that window and otherwise leaves the time unchanged.
+Given the normaliser's plan, an arc it sends as G01 chords is timed as those chords
+(``estimate_chords.py``), each a block on its own device line, as the machine runs it.
 """
 
 from __future__ import annotations
