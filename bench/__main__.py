@@ -13,9 +13,10 @@ def main(argv: list[str]) -> int:
     for name in names:
         module = importlib.import_module(f"bench.{name}")
         print(f"== {name}\n{machine.state()}", flush=True)
-        started = time.perf_counter()
+        started, stolen = time.perf_counter(), machine.stolen()
         module.main()
-        print(f"== {name} took {time.perf_counter() - started:.1f} s; {machine.state()}\n", flush=True)
+        took = f"{time.perf_counter() - started:.1f} s{machine.stolen_since(stolen)}"
+        print(f"== {name} took {took}; {machine.state()}\n", flush=True)
     return 0
 
 

@@ -32,7 +32,7 @@ import time
 from functools import partial
 from pathlib import Path
 
-from bench import arcfile, peers, spellings, tracedfile
+from bench import arcfile, machine, peers, spellings, tracedfile
 from bench.copies import AXIS, ENDS, count_lines, far_offset
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -245,14 +245,17 @@ def _versus(path: Path) -> None:
     runs (ours, then gcode-toolpath) so that both see the same load on the machine."""
     ours = [sys.executable, "-m", "app.gcode", "check", str(path)]
     node, modules = peers.node_peers()
+    peer = [*node[next(iter(node))], str(path)] if node else []
     env = peers.node_env(modules) if node else None
     toolpath_name = next(iter(node)) if node else ""
-    mine, theirs = [], []
+    mine, theirs, stolen = [], [], {"ours": 0.0, "theirs": 0.0}
     for _ in range(RUNS):
-        mine.append(peers.measure(ours))
+        mine.append(_stolen_from(stolen, "ours", peers.measure, ours))
         if node:
-            theirs.append(peers.measure([*node[toolpath_name], str(path)], env=env))
+            theirs.append(_stolen_from(stolen, "theirs", peers.measure, peer, env=env))
     print("  " + _whole(mine, "cnc-gcode check (whole process)") + f"; exit status {mine[0].status}")
+    print(f"    the host took {stolen['ours']:.1f} s of CPU from this machine during our runs, "
+          f"{stolen['theirs']:.1f} s during the peer's (steal time: a share of the wall times above)")
     summary = [row for row in mine[0].out.splitlines() if row.startswith(("lines:", "warnings:"))]
     print("    " + " / ".join(summary))
     wall, cpu = statistics.median(r.wall for r in mine), statistics.median(r.cpu for r in mine)
@@ -275,13 +278,26 @@ def _versus(path: Path) -> None:
           f"{run.cpu / cpu:.1f}x by CPU")
 
 
+def _stolen_from(stolen: dict, key: str, fn, *args, **kwargs):
+    """``fn(*args, **kwargs)``, adding to ``stolen[key]`` the CPU seconds the host took
+    from this machine meanwhile (``machine.stolen``; nothing where that is not known)."""
+    before = machine.stolen()
+    result = fn(*args, **kwargs)
+    after = machine.stolen()
+    if before is not None and after is not None:
+        stolen[key] += after - before
+    return result
+
+
 def _window(path: Path) -> None:
     """bench_ui's figures for opening ``path`` in the window, in a fresh process; then the
     first picture again in ``PICTURE_RUNS - 1`` more fresh processes, and its median."""
-    rows = _in_fresh_window("open_file", path).splitlines()
+    stolen = {"window": 0.0}
+    rows = _stolen_from(stolen, "window", _in_fresh_window, "open_file", path).splitlines()
     print("\n".join(f"  window: {row.strip()}" for row in rows))
     seconds = re.findall(r"first picture on screen ([0-9.]+) s", rows[0]) if rows else []
-    seconds += [_in_fresh_window("first_picture_only", path).strip() for _ in range(PICTURE_RUNS - 1)]
+    seconds += [_stolen_from(stolen, "window", _in_fresh_window, "first_picture_only", path).strip()
+                for _ in range(PICTURE_RUNS - 1)]
     try:
         times = sorted(float(t) for t in seconds)
     except ValueError:
@@ -289,7 +305,7 @@ def _window(path: Path) -> None:
         return
     print(f"  window: first picture over {len(times)} opens, each in a fresh process: median "
           f"{statistics.median(times):.2f} s ({times[0]:.2f}-{times[-1]:.2f}; target <= 1.2 s) "
-          f"[load {_loadavg()}]")
+          f"[load {_loadavg()}]; the host took {stolen['window']:.1f} s of CPU from this machine during them")
 
 
 def _in_fresh_window(function: str, path: Path) -> str:

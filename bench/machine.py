@@ -3,11 +3,14 @@
 On a shared virtual machine the same code runs 10-50% slower on some days, and our
 Python and numpy slow down more than the compiled peers do. ``state()`` times three
 fixed kernels so that a reader can tell a slow day from a regression: compare this
-line between the runs whose figures are compared.
+line between the runs whose figures are compared. ``stolen()`` is the CPU time the
+virtual machine's host has taken from it (Linux's steal time): on a shared host it
+reached 1-2 s in a 3 s load, which no calibration before or after a bench can show.
 """
 
 from __future__ import annotations
 
+import os
 import time
 
 import numpy as np
@@ -41,3 +44,23 @@ def state() -> str:
     return (f"this machine now: a {LOOP_STEPS // 1_000_000} M-step Python loop {loop:.2f} s, a sort of "
             f"{SORT_VALUES // 1_000_000} M doubles {sort:.2f} s, {FRESH_MB} MB of fresh memory filled "
             f"{fresh:.2f} s (best of 3 each)")
+
+
+def stolen() -> float | None:
+    """Seconds of CPU the host has taken from this virtual machine since it booted, over
+    every core (the steal column of ``/proc/stat``), or None where that is not known."""
+    try:
+        with open("/proc/stat", "rb") as stat:
+            fields = stat.readline().split()
+        return int(fields[8]) / os.sysconf("SC_CLK_TCK")
+    except (OSError, ValueError, IndexError):
+        return None
+
+
+def stolen_since(before: float | None) -> str:
+    """A clause for a figure's line: the CPU seconds the host took since ``before`` (a
+    ``stolen()``), or "" where that is not known."""
+    now = stolen()
+    if before is None or now is None:
+        return ""
+    return f"; the host took {now - before:.1f} s of CPU from this machine meanwhile (steal time)"
