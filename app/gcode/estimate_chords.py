@@ -56,7 +56,7 @@ def _lengths(start: np.ndarray, end: np.ndarray) -> np.ndarray:
     return np.sqrt(np.square(end - start).sum(axis=1))
 
 
-def _chorded_rows(tp: Toolpath, plan) -> np.ndarray:
+def _chorded_rows(tp: Toolpath, plan) -> tuple[np.ndarray, np.ndarray]:
     """The toolpath's rows (arcs) that the plan sends as chords, found from the plan's
     side (a few rows, by their first device line: the toolpath's rows are in device line
     order), and the plan's count of chords for each."""
