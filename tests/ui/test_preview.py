@@ -222,43 +222,41 @@ def test_a_program_is_on_the_screen_when_show_model_returns(preview):
     assert painted and painted[-1] == sum(len(x) // 2 for x, _ in preview.group_data) > 0
 
 
-def test_a_level_sorted_on_two_threads_equals_one_sorted_on_one():
-    from app.ui.preview.lod import PARALLEL_SEGMENTS
+def test_one_spot_drilled_over_and_over_is_one_segment_on_either_sort(monkeypatch):
+    from app.ui.preview import lod
 
-    rng = np.random.default_rng(24)
-    walk = np.cumsum(rng.normal(0, 0.3, size=(PARALLEL_SEGMENTS + 5_001, 2)), axis=0)  # crosses itself
-    seg = np.column_stack([walk[:-1], walk[1:]])
-    one, two = LodSegments(seg, np.arange(len(seg))), LodSegments(seg, np.arange(len(seg)), threads=2)
-    for index in (1, 4, 8):
-        a, b = one.level(index), two.level(index)
-        assert 0 < len(a.move) < len(seg)
-        np.testing.assert_array_equal(a.move, b.move)
-        np.testing.assert_array_equal(a.seg, b.seg)
-    same = np.tile([[0.0, 0.0, 1.0, 1.0]], (PARALLEL_SEGMENTS + 1, 1))  # one spot, drilled over and over
+    same = np.tile([[0.0, 0.0, 1.0, 1.0]], (100_001, 1))
     same[-1] = [5.0, 5.0, 6.0, 6.0]
-    level = LodSegments(same, np.arange(len(same)), threads=2).level(3)
-    np.testing.assert_array_equal(level.move, [0, len(same) - 1])
+    for bits in (64, 0):  # the packed value sort; the argsort
+        monkeypatch.setattr(lod, "PACKED_BITS", bits)
+        level = LodSegments(same, np.arange(len(same))).level(3)
+        np.testing.assert_array_equal(level.move, [0, len(same) - 1])
 
 
-@pytest.mark.parametrize("threads", [1, 2])
-def test_a_level_keeps_the_first_segment_of_every_pair_of_cells(threads):
+@pytest.mark.parametrize("bits", [64, 0], ids=["packed value sort", "argsort"])
+def test_a_level_keeps_the_first_segment_of_every_pair_of_cells(bits, monkeypatch):
     """np.unique's first occurrences of the (start cell, end cell) keys, and the extremes:
     on a walk that crosses itself, in steps so small that most segments repeat the pair of
-    the one before, and comes back to cells it left long ago."""
-    from app.ui.preview.lod import PARALLEL_SEGMENTS, _pair_keys
+    the one before, and comes back to cells it left long ago; the keys (and their
+    indices) packed for one value sort where they fit, else sorted by an argsort."""
+    from app.ui.preview import lod
 
+    monkeypatch.setattr(lod, "PACKED_BITS", bits)
     rng = np.random.default_rng(7)
-    steps = rng.normal(0, 0.002, size=(PARALLEL_SEGMENTS + 20_001, 2))
+    steps = rng.normal(0, 0.002, size=(220_001, 2))
     steps[::997] += rng.normal(0, 5, size=(len(steps[::997]), 2))  # jumps back over the path
     walk = np.cumsum(steps, axis=0)
     seg = np.column_stack([walk[:-1], walk[1:]]).astype(np.float32)
-    lod = LodSegments(seg, np.arange(len(seg)), threads=threads)
-    for index in (3, 5, 7):
-        key = _pair_keys(seg, lod.cells[index])
+    segments, packed = LodSegments(seg, np.arange(len(seg))), []
+    for index in (1, 3, 5, 7):
+        key, bound = lod._pair_keys(seg, segments.cells[index])
+        assert key.min() >= 0 and key.max() < bound
+        packed.append(bound << (len(seg) - 1).bit_length() <= 1 << bits)
         expected = np.zeros(len(seg), bool)
         expected[np.unique(key, return_index=True)[1]] = True
         for column in range(4):
             expected[np.argmin(seg[:, column])] = expected[np.argmax(seg[:, column])] = True
-        level = lod.level(index)
+        level = segments.level(index)
         assert np.count_nonzero(key[1:] == key[:-1]) > len(seg) // 2  # runs of the same pair
         np.testing.assert_array_equal(level.move, np.flatnonzero(expected))
+    assert packed == ([False, True, True, True] if bits else [False] * 4)  # the finest: too many keys

@@ -27,10 +27,7 @@ class PreviewModel:
         self.geometry = PathGeometry.from_toolpath(toolpath, tolerance, threads)
         g = self.geometry
         parts = group_segments(g.points, g.move, g.group, g.group_count)
-        # A group of most of the segments sorts them on two threads (the groups are built
-        # two at a time, and it is the one the others wait for); the rest on one each.
-        self.groups = [LodSegments(seg, move, threads if 2 * len(move) > len(g.move) else 1)
-                       for seg, move in parts]
+        self.groups = [LodSegments(seg, move) for seg, move in parts]
         self.device_index = _device_index(toolpath)
         self._bounds = _bounds(self.geometry.points)
         self.levels_built = False  # every level of every group (build_all)
