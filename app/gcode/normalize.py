@@ -34,6 +34,7 @@ import numpy as np
 from .arcs import RADIUS_TOL, segments, spiral_refused, sweep
 from .numbers import rounded
 from .ops import ARC_CCW, ARC_CW, PLANE_AXES, XY, Ops
+from .threads import on_two_threads
 
 ROUNDING = 0.001
 MAX_ARC_RADIUS = 1000.0  # mm: R * 2**-24 (float32) times the few operations of a point stays
@@ -87,7 +88,8 @@ def _axes(ops: Ops, rows) -> np.ndarray:
 
 
 def plan(ops: Ops, tolerance: float) -> Plan:
-    """How many device lines each row becomes (vectorised)."""
+    """How many device lines each row becomes (vectorised; the arcs' check, a block at a
+    time, on two threads when there are several blocks: the load waits for the plan)."""
     kind = ops.kind
     count = np.ones(len(kind), np.int64)  # a PAUSE row is one stop line (M00, M01, M06 T..)
     chords = np.zeros(len(ops), bool)
@@ -95,10 +97,16 @@ def plan(ops: Ops, tolerance: float) -> Plan:
     if len(arcs):
         ok = (ops.plane[arcs] == XY) & (np.abs(ops.turn[arcs]) == 1)
         starts = ops.starts()
-        for a in range(0, len(arcs), BLOCK):  # a block at a time: small temporaries
+
+        def check(a: int) -> None:  # a block at a time: small temporaries
             rows = arcs[a : a + BLOCK]
             ok[a : a + BLOCK] &= _arc_ok_rounded(starts.take(rows, axis=0), ops.end.take(rows, axis=0),
                                                  ops.center.take(rows, axis=0))
+
+        if len(arcs) > BLOCK:
+            on_two_threads(check, range(0, len(arcs), BLOCK), "plan")
+        else:
+            check(0)
         chords[arcs[~ok]] = True
         bad = arcs[~ok]
         if len(bad):

@@ -23,6 +23,7 @@ from app.profile import MachineProfile
 
 from .arcs import arc_box, arc_length, chord_counts, chord_points, in_plane
 from .ops import ARC_CCW, ARC_CW, DWELL, FEED, PLANE_AXES, RAPID, Ops, run_of
+from .threads import on_two_threads
 
 KIND_NAMES = {RAPID: "rapid", FEED: "feed", ARC_CW: "arc", ARC_CCW: "arc", DWELL: "dwell"}
 PARALLEL_ARCS = 50_000  # arcs from which chords are computed on two threads
@@ -170,11 +171,8 @@ class Toolpath:
             return join([of(piece) for piece in pieces], [len(piece) for piece in pieces])
         if len(arcs) < PARALLEL_ARCS:
             return of(arcs)
-        from concurrent.futures import ThreadPoolExecutor  # only here: a CLI start-up need not load it
-
         half = len(arcs) // 2
-        with ThreadPoolExecutor(max_workers=2, thread_name_prefix="chords") as pool:
-            return join(list(pool.map(of, (arcs[:half], arcs[half:]))), [half, len(arcs) - half])
+        return join(on_two_threads(of, (arcs[:half], arcs[half:]), "chords"), [half, len(arcs) - half])
 
     def _polyline(self, tolerance: float, threads: int):
         """Every move's end, and an arc of several chords its chord ends in its place

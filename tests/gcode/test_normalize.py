@@ -163,7 +163,7 @@ def test_normalising_the_dialect_changes_nothing():
     assert device("\n".join(lines)) == lines
 
 
-def test_the_plan_in_blocks_of_arcs_is_the_same(monkeypatch):
+def test_the_plan_in_blocks_of_arcs_on_two_threads_is_the_same(monkeypatch):
     from app.gcode import normalize
 
     rows, x = [], 10.0
@@ -173,7 +173,7 @@ def test_the_plan_in_blocks_of_arcs_is_the_same(monkeypatch):
         x += 2 * r
     text = "G21 G90 F300\nG0 X10 Y10\n" + "".join(rows) + f"G18 G2 X{x + 2} Z0 I1 K0\nM2\n"
     whole = load_text(text)
-    monkeypatch.setattr(normalize, "BLOCK", 3)
+    monkeypatch.setattr(normalize, "BLOCK", 3)  # 14 blocks, checked on two threads
     blocks = load_text(text)
     assert whole.plan.chords.any() and not whole.plan.chords.all()
     assert blocks.plan.count.tolist() == whole.plan.count.tolist()

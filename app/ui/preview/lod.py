@@ -14,7 +14,6 @@ one already built when there is one, so the coarser levels cost little.
 from __future__ import annotations
 
 import threading
-from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 
 import numpy as np
@@ -136,13 +135,6 @@ def _run_starts(ordered):
     starts[0] = True
     np.not_equal(ordered[1:], ordered[:-1], out=starts[1:])
     return starts
-
-
-def on_two_threads(fn, items) -> list:
-    """``[fn(item) for item in items]`` on two threads (numpy sorts and sums without the
-    GIL, so both run at once)."""
-    with ThreadPoolExecutor(max_workers=2, thread_name_prefix="preview") as pool:
-        return list(pool.map(fn, items))
 
 
 def _pair_keys(seg, cell):
