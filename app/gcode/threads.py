@@ -2,11 +2,35 @@
 
 from __future__ import annotations
 
+import threading
+
 
 def on_two_threads(fn, items, name: str = "numpy") -> list:
-    """``[fn(item) for item in items]`` on two threads: numpy's arithmetic, sorts and
-    gathers let the GIL go, so both run at once (``name``: the threads' name prefix)."""
-    from concurrent.futures import ThreadPoolExecutor  # only here: a CLI start-up need not load it
+    """``[fn(item) for item in items]`` worked out by this thread and one more (``name``),
+    each taking the next item as it is free: numpy's arithmetic, sorts and gathers let
+    the GIL go, so both run at once. The first exception raised is raised here, once
+    both are done. (No ``concurrent.futures``: importing it costs a load 10 ms.)"""
+    items = list(items)
+    results: list = [None] * len(items)
+    failed: list[BaseException] = []
+    turns = iter(range(len(items)))
+    lock = threading.Lock()
 
-    with ThreadPoolExecutor(max_workers=2, thread_name_prefix=name) as pool:
-        return list(pool.map(fn, items))
+    def work() -> None:
+        while not failed:
+            with lock:
+                i = next(turns, None)
+            if i is None:
+                return
+            try:
+                results[i] = fn(items[i])
+            except BaseException as exc:  # the other thread stops at its next item
+                failed.append(exc)
+
+    other = threading.Thread(target=work, name=name, daemon=True)
+    other.start()
+    work()
+    other.join()
+    if failed:
+        raise failed[0]
+    return results

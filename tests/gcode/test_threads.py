@@ -1,0 +1,40 @@
+"""``on_two_threads``: the caller's thread and one more share the items."""
+
+import threading
+
+import pytest
+
+from app.gcode.threads import on_two_threads
+
+
+def test_results_come_in_the_items_order_worked_out_by_two_threads():
+    both = threading.Barrier(2, timeout=10)  # neither goes on until the other has an item
+    seen = []
+
+    def work(item):
+        if item < 2:
+            both.wait()
+        seen.append(threading.current_thread().name)
+        return item * item
+
+    assert on_two_threads(work, range(50), "squares") == [i * i for i in range(50)]
+    assert {threading.current_thread().name, "squares"} == set(seen)
+
+
+def test_no_items_and_one_item():
+    assert on_two_threads(lambda item: item, []) == []
+    assert on_two_threads(lambda item: item + 1, [1]) == [2]
+
+
+def test_an_exception_is_raised_once_both_are_done():
+    done = []
+
+    def work(item):
+        if item == 3:
+            raise ValueError("item 3")
+        done.append(item)
+
+    with pytest.raises(ValueError, match="item 3"):
+        on_two_threads(work, range(10))
+    assert all(t.name != "numpy" for t in threading.enumerate())  # joined before the raise
+    assert 3 not in done
