@@ -39,6 +39,7 @@ from .estimate_passes import (
 )
 from .estimate_spindle import spin_wait_ms
 from .ops import ARC_CCW, ARC_CW, DWELL, RAPID, run_of
+from .threads import each_on, in_order
 
 QUEUE_BLOCKS = 16  # the CNC MCU's motion queue (MotionController capacity)
 HORIZON_ROUNDS = 6
@@ -85,20 +86,23 @@ class _Barrier:
     stop_ms: float = 0.0  # what a program stop makes the machine do (reported apart)
 
 
-def estimate(toolpath, device_lines, profile, start=None, plan=None) -> Estimate:
+def estimate(toolpath, device_lines, profile, start=None, plan=None, threads: int = 1,
+             second=None) -> Estimate:
     """The planner's time for ``toolpath`` whose rows come from ``device_lines`` (in their
     order); ``start`` (work mm), where the machine is when the job starts, if known: the
     first move is a straight one from there rather than from where the program assumed;
     ``plan`` (the normaliser's), when given: the arcs it sends as chords are timed as those
-    chords (``estimate_chords``), and each row's seconds are its chords' sum."""
+    chords (``estimate_chords``), and each row's seconds are its chords' sum. ``threads`` 2:
+    its blocks shared by a second thread, from when ``second`` (an Event) is set if given."""
     sent, begins = as_sent(toolpath, plan, profile.motion.arc_tolerance_mm)
-    est = _as_planned(sent, device_lines, profile, start)
+    est = _as_planned(sent, device_lines, profile, start, each_on(threads, second))
     return est if begins is None else replace(est, row_seconds=fold(est.row_seconds, begins))
 
 
-def _as_planned(toolpath, device_lines, profile, start) -> Estimate:
+def _as_planned(toolpath, device_lines, profile, start, each=in_order) -> Estimate:
     """``estimate`` of the blocks the planner is sent, one per row of ``toolpath``. Kept
-    whole: a few numbers per planner block; the rest is worked out in blocks."""
+    whole: a few numbers per planner block; the rest is worked out in blocks (``each``
+    maps a function over them: ``threads.in_order`` or ``on_two_threads``)."""
     mo = profile.motion
     accel = mo.accel_mm_s2
     window_s = max(1, round(accel / mo.jerk_mm_s3 * 1000)) / 1000.0
@@ -113,11 +117,11 @@ def _as_planned(toolpath, device_lines, profile, start) -> Estimate:
     at = _index(np.flatnonzero(is_move))  # each move's place in the queue
     first = None if first is None else (first, start)
     chain_len, junction_sq, nominal = _geometry(toolpath, moves, at, is_move, accel, row_length,
-                                               mo.junction_deviation_mm, first)
+                                               mo.junction_deviation_mm, first, each)
     del at  # the passes need a few numbers per block only
-    reached = _planned_speeds(chain_len, junction_sq, accel, window_s)
+    reached = _planned_speeds(chain_len, junction_sq, accel, window_s, each)
     del junction_sq
-    times = _move_times(moves, is_move, chain_len, reached, nominal, accel)
+    times = _move_times(moves, is_move, chain_len, reached, nominal, accel, each)
     del reached, chain_len, nominal
     # the S-curve settles for its window where the path stops before a barrier
     barrier_at = np.flatnonzero(~is_move)
@@ -150,13 +154,14 @@ def _as_planned(toolpath, device_lines, profile, start) -> Estimate:
         stop_seconds=stop_settle + sum(b.stop_ms for b in stops) / 1000.0)
 
 
-def _move_times(moves, is_move, chain_len, reached, nominal, accel: float) -> np.ndarray:
+def _move_times(moves, is_move, chain_len, reached, nominal, accel: float, each=in_order) -> np.ndarray:
     """Seconds of each move, a block at a time: from the speed reached at its entry to the
     next block's (0 after the last), never above its nominal speed (``nominal``, per move,
     kept from ``_geometry``: 8 bytes a move, against working them out twice)."""
     times = np.empty(len(moves))
     at = _index(np.flatnonzero(is_move))
-    for a in range(0, len(at), BLOCK):
+
+    def block(a: int) -> None:
         place = run_of(at[a : a + BLOCK])
         if isinstance(place, slice):  # a run of blocks: each one's exit is the entry of the next
             v_in, v_out = reached[place], np.zeros(place.stop - place.start)
@@ -168,6 +173,8 @@ def _move_times(moves, is_move, chain_len, reached, nominal, accel: float) -> np
             v_in = reached[place]
         times[a : a + BLOCK] = trapezoid_times(_gather(chain_len, place), v_in, v_out, nominal[a : a + BLOCK],
                                                accel)
+
+    each(block, range(0, len(at), BLOCK), "times")
     return times
 
 
@@ -176,7 +183,7 @@ def _index(rows: np.ndarray) -> np.ndarray:
     return rows.astype(np.int32) if len(rows) < 2**31 - 1 else rows
 
 
-def _planned_speeds(length, junction_sq, accel: float, window_s: float) -> np.ndarray:
+def _planned_speeds(length, junction_sq, accel: float, window_s: float, each=in_order) -> np.ndarray:
     """Speed at each block's entry. The look-ahead depends on the speed (``queue_horizons``)
     and the speed on the look-ahead: the passes run a few rounds from the full queue, each
     round moving the horizon half way to what the last speeds imply (undamped, it swings)."""
@@ -184,13 +191,14 @@ def _planned_speeds(length, junction_sq, accel: float, window_s: float) -> np.nd
     horizon, queue_end, before = QUEUE_BLOCKS - 1, None, None
     s = path_before(length)
     for _ in range(HORIZON_ROUNDS):
-        entry = entry_speeds_sq(length, junction_sq, accel, horizon, queue_end, s=s)
+        entry = entry_speeds_sq(length, junction_sq, accel, horizon, queue_end, s=s, each=each)
         reached = reached_speeds_sq(length, entry, accel, s=s)
         np.sqrt(reached, out=reached)
         if before is not None and speeds_close(reached, before, rtol=1e-4, atol=1e-6):
             break  # the look-ahead no longer changes the speeds
         before = reached
-        if queue_end is None and not queue_binds(length, reached, entry, accel, trail_s, QUEUE_BLOCKS, s):
+        if queue_end is None and not queue_binds(length, reached, entry, accel, trail_s, QUEUE_BLOCKS, s,
+                                                 each):
             break  # the queue is long enough everywhere: the full look-ahead's speeds hold
         del entry
         implied, end = queue_horizons(length, reached, trail_s, QUEUE_BLOCKS, s=s)
@@ -223,27 +231,48 @@ def _first_line_row(tp) -> int | None:
 
 
 def _geometry(tp, moves: np.ndarray, at: np.ndarray, is_move: np.ndarray, accel: float, row_length,
-              deviation: float, first=None):
+              deviation: float, first=None, each=in_order):
     """Per queue block its length and squared junction speed from the block before (0 at
     barriers and after them: from rest); ``first``:
-    (row, start) that row starts from instead. Worked out ``BLOCK`` moves at a time, each
-    block's first tangent meeting the last end tangent of the block before (the same
-    numbers as whole arrays, a few MB at a time); and each move's nominal speed."""
+    (row, start) that row starts from instead. Worked out ``BLOCK`` moves at a time (the
+    same numbers as whole arrays, a few MB at a time; ``each`` as for ``_as_planned``),
+    then each block's first tangent met with the last end tangent of the block before;
+    and each move's nominal speed."""
     n = len(moves)
     chain_len, junction_sq, nominal = np.zeros(len(is_move)), np.zeros(len(is_move)), np.empty(n)
-    last_dir, last_v = np.zeros((1, 3)), np.zeros(1)
-    for a in range(0, n, BLOCK):
+    none_dir, none_v = np.zeros((1, 3)), np.zeros(1)  # before the first block
+
+    def block(a: int):
+        """Block ``a``'s numbers, its junctions but the first with the block before; (that
+        junction's queue block or None, its start tangent and speed, its end tangent and speed)."""
         part = slice(a, a + BLOCK)
         rows, place = run_of(moves[part]), run_of(at[part])
         length, v_nom, start_dir, end_dir = _block_geometry(tp, rows, accel, _gather(row_length, rows), first)
         chain_len[place], nominal[part] = length, v_nom
-        end_dir, v = np.concatenate((last_dir, end_dir)), np.concatenate((last_v, v_nom))
-        last_dir, last_v = end_dir[-1:], v[-1:]
+        ends, v = np.concatenate((none_dir, end_dir)), np.concatenate((none_v, v_nom))
         where, follows = _follows(place, is_move)
-        vj = junction_speeds(_gather(end_dir, follows), _gather(start_dir, follows), accel, deviation)
+        vj = junction_speeds(_gather(ends, follows), _gather(start_dir, follows), accel, deviation)
         vj = np.minimum(np.minimum(vj, _gather(v[1:], follows)), _gather(v, follows))
         junction_sq[where] = vj * vj
+        joins = _first_of(where, follows)
+        return joins, start_dir[:1].copy(), v_nom[:1].copy(), end_dir[-1:].copy(), v_nom[-1:].copy()  # (a
+        # view would keep the block's arrays)
+
+    blocks = each(block, range(0, n, BLOCK), "geometry")
+    for (_, _, _, end_dir, v), (joins, start_dir, v_nom, _, _) in zip(blocks, blocks[1:], strict=False):
+        if joins is not None:  # (the first block's first junction is from rest, as worked out)
+            vj = junction_speeds(end_dir, start_dir, accel, deviation)
+            vj = np.minimum(np.minimum(vj, v_nom), v)
+            junction_sq[joins] = vj[0] * vj[0]
     return chain_len, junction_sq, nominal
+
+
+def _first_of(where, follows) -> int | None:
+    """The queue block of the block's first move when it follows a move (its junction is
+    with the last move of the block before), else None."""
+    if isinstance(follows, slice):
+        return where.start if follows.start == 0 else None
+    return int(where[0]) if len(follows) and follows[0] == 0 else None
 
 
 def _follows(place, is_move: np.ndarray):

@@ -15,6 +15,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from .threads import in_order
+
 CHUNK = 1 << 15  # blocks a pass works on at a time (small temporaries)
 STRAIGHT = 0.999999  # the planner's cosine beyond which a corner is straight on / a reversal
 
@@ -86,7 +88,8 @@ def _horizons(horizon, n: int, a: int, b: int) -> np.ndarray:
 
 
 def entry_speeds_sq(length: np.ndarray, junction_sq: np.ndarray, accel: float, horizon,
-                    queue_end: np.ndarray | None = None, s: np.ndarray | None = None) -> np.ndarray:
+                    queue_end: np.ndarray | None = None, s: np.ndarray | None = None,
+                    each=in_order) -> np.ndarray:
     """Squared entry speed of each block as the planner's backward pass gives it while the
     previous block runs with ``horizon`` blocks (an int, or one per block) queued from this
     one on, the last of them stopping; ``s``: ``path_before(length)`` if known.
@@ -96,12 +99,15 @@ def entry_speeds_sq(length: np.ndarray, junction_sq: np.ndarray, accel: float, h
     2a S[j]) - 2a S[k]``, the queue's end adding ``2a S[k+h]`` (or ``2a queue_end[k]``
     when given, a path position within the last block): a sliding minimum, grown one
     block at a time up to the largest horizon, ``CHUNK`` blocks at a time (each chunk
-    reading the few blocks after it its horizons reach)."""
+    reading the few blocks after it its horizons reach; ``each`` maps over the chunks:
+    ``threads.in_order`` or ``on_two_threads``)."""
     n = len(length)
     two_a = 2.0 * accel
     s = path_before(length) if s is None else s
     out = np.empty(n)
-    for a, b in _chunks(n):
+
+    def chunk(bounds) -> None:
+        a, b = bounds
         h_of = _horizons(horizon, n, a, b)
         top = int(h_of.max())
         reach = min(b + top - 1, n)
@@ -118,6 +124,8 @@ def entry_speeds_sq(length: np.ndarray, junction_sq: np.ndarray, accel: float, h
         if queue_end is not None:
             np.minimum(part, two_a * queue_end[a:b], out=part)
         part[:] = np.maximum(part - two_a * s[a:b], 0.0)
+
+    each(chunk, _chunks(n), "entry")
     return out
 
 
@@ -220,12 +228,18 @@ def look_ahead_binds(length, entry_sq, accel: float, horizon, queue_end, s: np.n
                for a, b in _chunks(n))
 
 
-def queue_binds(length, speed, entry_sq, accel: float, trail_s: float, capacity: int, s) -> bool:
+def queue_binds(length, speed, entry_sq, accel: float, trail_s: float, capacity: int, s, each=None) -> bool:
     """``look_ahead_binds`` of the ``queue_horizons`` at ``speed``, a chunk at a time
-    (neither kept whole: where it binds, they are worked out again, whole)."""
+    (neither kept whole: where it binds, they are worked out again, whole); ``each``, when
+    given, maps over every chunk (``on_two_threads``), else the chunks stop at the first
+    that binds."""
+    def binds(bounds) -> bool:
+        a, b = bounds
+        queue = _queue_chunk(length, speed, trail_s, capacity, s, a, b)
+        return _binds_chunk(entry_sq, accel, *queue, s, a, b)
+
     chunks = _chunks(len(length))
-    queues = ((a, b, _queue_chunk(length, speed, trail_s, capacity, s, a, b)) for a, b in chunks)
-    return any(_binds_chunk(entry_sq, accel, *queue, s, a, b) for a, b, queue in queues)
+    return any(map(binds, chunks) if each is None else each(binds, chunks, "queue"))
 
 
 def _binds_chunk(entry_sq, accel: float, horizon, queue_end, s, a: int, b: int) -> bool:

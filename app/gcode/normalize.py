@@ -34,7 +34,7 @@ import numpy as np
 from .arcs import RADIUS_TOL, segments, spiral_refused, sweep
 from .numbers import rounded
 from .ops import ARC_CCW, ARC_CW, PLANE_AXES, XY, Ops
-from .threads import on_two_threads
+from .threads import each_on
 
 ROUNDING = 0.001
 MAX_ARC_RADIUS = 1000.0  # mm: R * 2**-24 (float32) times the few operations of a point stays
@@ -87,9 +87,10 @@ def _axes(ops: Ops, rows) -> np.ndarray:
     return np.array(PLANE_AXES)[ops.plane[rows]]
 
 
-def plan(ops: Ops, tolerance: float) -> Plan:
+def plan(ops: Ops, tolerance: float, threads: int = 1) -> Plan:
     """How many device lines each row becomes (vectorised; the arcs' check, a block at a
-    time, on two threads when there are several blocks: the load waits for the plan)."""
+    time, on two threads when ``threads`` is 2 and there are several blocks: a load whose
+    thread only waits for the plan)."""
     kind = ops.kind
     count = np.ones(len(kind), np.int64)  # a PAUSE row is one stop line (M00, M01, M06 T..)
     chords = np.zeros(len(ops), bool)
@@ -103,10 +104,7 @@ def plan(ops: Ops, tolerance: float) -> Plan:
             ok[a : a + BLOCK] &= _arc_ok_rounded(starts.take(rows, axis=0), ops.end.take(rows, axis=0),
                                                  ops.center.take(rows, axis=0))
 
-        if len(arcs) > BLOCK:
-            on_two_threads(check, range(0, len(arcs), BLOCK), "plan")
-        else:
-            check(0)
+        each_on(threads)(check, range(0, len(arcs), BLOCK), "plan")
         chords[arcs[~ok]] = True
         bad = arcs[~ok]
         if len(bad):

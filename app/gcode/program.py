@@ -173,17 +173,26 @@ class Program:
         return moves_of(self.ops)
 
 
-def _estimate(toolpath: Toolpath, ops: Ops, the_plan: normalize.Plan, profile: MachineProfile) -> Estimate:
-    return estimate(toolpath, EventLines(ops, the_plan), profile, plan=the_plan)
+def _estimate(toolpath: Toolpath, ops: Ops, the_plan: normalize.Plan, profile: MachineProfile,
+              spare: threading.Event | None = None) -> Estimate:
+    """The planner's estimate; ``spare``: a second thread works on its blocks too once it is
+    set (a one-shot check: the checks beside it have finished and left a core idle). The
+    window's runs on one thread, beside its redraws."""
+    return estimate(toolpath, EventLines(ops, the_plan), profile, plan=the_plan,
+                    threads=1 if spare is None else 2, second=spare)
 
 
 def _checked(ops: Ops, profile: MachineProfile, lines: Lines, report: Report,
-             toolpath: Toolpath) -> checks.Envelope:
+             toolpath: Toolpath, done: threading.Event) -> checks.Envelope:
     """``checks.run``, then the toolpath's bounds (for a caller that reads them at once:
-    worked out beside the planner's estimate, which takes longer)."""
-    envelope = checks.run(ops, profile, lines, report)
-    toolpath.bounds  # noqa: B018 (a cached property)
-    return envelope
+    worked out beside the planner's estimate, which takes longer); ``done`` is set at the
+    end, whatever happened (the estimate's second thread waits for it)."""
+    try:
+        envelope = checks.run(ops, profile, lines, report)
+        toolpath.bounds  # noqa: B018 (a cached property)
+        return envelope
+    finally:
+        done.set()
 
 
 def _later_checks(ops: Ops, profile: MachineProfile, lines: Lines, report: Report):
@@ -352,7 +361,8 @@ def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfi
     later = later_checks and len(ops) >= LATER_CHECKS_ROWS
     early = None if plan_ahead or later else _in_thread(checks.run, ops, profile, lines, report)  # the
     # window's small programs: beside the plan and the toolpath (numpy lets them run at once)
-    normalizing = _in_thread(normalize.plan, ops, profile.motion.arc_tolerance_mm, name="gcode-normalize")
+    normalizing = _in_thread(normalize.plan, ops, profile.motion.arc_tolerance_mm, 1 if plan_ahead else 2,
+                             name="gcode-normalize")  # (check's thread works out the moves' timing meanwhile)
     closing = closable(ops)
     if closing is not None:  # the moves closed up in the rows' own columns, once the plan and the
         # checks have read them as they are: no copy of the positions (check's estimate reads
@@ -368,8 +378,9 @@ def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfi
         ops.hand_over(toolpath)  # the moves' positions kept once, by the Toolpath
     planning = None
     if plan_ahead:  # cnc-gcode check: the checks, on the toolpath, beside the planner's estimate
-        checking = _in_thread(_checked, ops, profile, lines, report, toolpath)
-        planning = _in_thread(_estimate, toolpath, ops, the_plan, profile, name="gcode-plan")
+        spare = threading.Event()  # the checks are done: a core for the estimate's second thread
+        checking = _in_thread(_checked, ops, profile, lines, report, toolpath, spare)
+        planning = _in_thread(_estimate, toolpath, ops, the_plan, profile, spare, name="gcode-plan")
         envelope = checking.join()
     program_checks(toolpath, profile, report)
     ops.forget_starts()  # the Toolpath has the moves' starts

@@ -136,8 +136,9 @@ def programs(tmp_path_factory):
     return _programs(tmp_path_factory.mktemp("estimate"))
 
 
-def _estimate(program, start):
-    return estimate(program.toolpath, program.device_lines, program.profile, start=start, plan=program.plan)
+def _estimate(program, start, threads=1):
+    return estimate(program.toolpath, program.device_lines, program.profile, start=start, plan=program.plan,
+                    threads=threads)
 
 
 def test_the_estimate_gives_the_whole_array_estimates_figures(programs):
@@ -150,15 +151,18 @@ def test_the_estimate_gives_the_whole_array_estimates_figures(programs):
                                    err_msg=name)
 
 
+@pytest.mark.parametrize("threads", [1, 2])
 @pytest.mark.parametrize("chunk", [1, 7, 1000])
-def test_any_chunk_size_gives_the_same_figures(programs, monkeypatch, chunk):
+def test_any_chunk_size_gives_the_same_figures(programs, monkeypatch, chunk, threads):
+    """On one thread, and with the chunks and blocks shared by two (``threads`` 2: each
+    block's first junction then met with the last move of a block the other one did)."""
     from app.gcode import estimate as module
     from app.gcode import estimate_passes as passes
 
     whole = {name: _bits(_estimate(*p)) for name, p in programs.items()}
     monkeypatch.setattr(passes, "CHUNK", chunk)
     monkeypatch.setattr(module, "BLOCK", chunk)
-    assert {name: _bits(_estimate(*p)) for name, p in programs.items()} == whole
+    assert {name: _bits(_estimate(*p, threads)) for name, p in programs.items()} == whole
 
 
 def test_the_trailing_search_finds_what_a_search_of_the_whole_path_finds():

@@ -36,5 +36,18 @@ def test_an_exception_is_raised_once_both_are_done():
 
     with pytest.raises(ValueError, match="item 3"):
         on_two_threads(work, range(10))
-    assert all(t.name != "numpy" for t in threading.enumerate())  # joined before the raise
     assert 3 not in done
+
+
+def test_the_second_thread_waits_for_its_event():
+    free = threading.Event()
+    names = []
+    assert on_two_threads(lambda item: names.append(threading.current_thread().name) or item, range(30),
+                          "waits", second=free) == list(range(30))
+    assert set(names) == {threading.current_thread().name}  # every item done here
+    free.set()  # (the waiting thread then finds nothing left)
+
+    free, both = threading.Event(), threading.Barrier(2, timeout=10)
+    free.set()
+    squares = on_two_threads(lambda item: both.wait() if item < 2 else item * item, range(6), second=free)
+    assert squares[2:] == [4, 9, 16, 25]  # both threads met at the barrier: the second began
