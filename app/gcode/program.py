@@ -38,6 +38,7 @@ from .render import render
 from .source import Lines
 from .start import StartInfo
 from .state import State
+from .threads import each_on
 from .toolpath import Toolpath, build, build_in_place, closable, timed_before_closing
 
 TRIM_BYTES = 8 << 20  # after the scan of a file this big, free heap pages go back to the system
@@ -183,16 +184,12 @@ def _estimate(toolpath: Toolpath, ops: Ops, the_plan: normalize.Plan, profile: M
 
 
 def _checked(ops: Ops, profile: MachineProfile, lines: Lines, report: Report,
-             toolpath: Toolpath, done: threading.Event) -> checks.Envelope:
+             toolpath: Toolpath) -> checks.Envelope:
     """``checks.run``, then the toolpath's bounds (for a caller that reads them at once:
-    worked out beside the planner's estimate, which takes longer); ``done`` is set at the
-    end, whatever happened (the estimate's second thread waits for it)."""
-    try:
-        envelope = checks.run(ops, profile, lines, report)
-        toolpath.bounds  # noqa: B018 (a cached property)
-        return envelope
-    finally:
-        done.set()
+    worked out beside the planner's estimate, which takes longer)."""
+    envelope = checks.run(ops, profile, lines, report)
+    toolpath.bounds  # noqa: B018 (a cached property)
+    return envelope
 
 
 def _later_checks(ops: Ops, profile: MachineProfile, lines: Lines, report: Report):
@@ -363,24 +360,25 @@ def _interpret(lines: Lines, data: list[bytes], name: str, profile: MachineProfi
     # window's small programs: beside the plan and the toolpath (numpy lets them run at once)
     normalizing = _in_thread(normalize.plan, ops, profile.motion.arc_tolerance_mm, 1 if plan_ahead else 2,
                              name="gcode-normalize")  # (check's thread works out the moves' timing meanwhile)
+    timing = each_on(2, normalizing.done) if plan_ahead else None  # a second thread once the plan is done
     closing = closable(ops)
     if closing is not None:  # the moves closed up in the rows' own columns, once the plan and the
         # checks have read them as they are: no copy of the positions (check's estimate reads
         # the moves' timing first: worked out here, while this thread would wait for the plan)
-        timed = timed_before_closing(ops, closing, profile) if plan_ahead else None
+        timed = timed_before_closing(ops, closing, profile, timing) if plan_ahead else None
         the_plan = normalizing.join()
         envelope = early.join() if early is not None else None
         toolpath = build_in_place(ops, closing, the_plan.first, profile, timed)
     else:
-        toolpath = build(ops, lambda: normalizing.join().first, profile)
+        toolpath = build(ops, lambda: normalizing.join().first, profile, timing)
         the_plan = normalizing.join()
         envelope = early.join() if early is not None else None
         ops.hand_over(toolpath)  # the moves' positions kept once, by the Toolpath
     planning = None
     if plan_ahead:  # cnc-gcode check: the checks, on the toolpath, beside the planner's estimate
-        spare = threading.Event()  # the checks are done: a core for the estimate's second thread
-        checking = _in_thread(_checked, ops, profile, lines, report, toolpath, spare)
-        planning = _in_thread(_estimate, toolpath, ops, the_plan, profile, spare, name="gcode-plan")
+        checking = _in_thread(_checked, ops, profile, lines, report, toolpath)
+        planning = _in_thread(_estimate, toolpath, ops, the_plan, profile, checking.done,  # (then a
+                              name="gcode-plan")  # core for the estimate's second thread)
         envelope = checking.join()
     program_checks(toolpath, profile, report)
     ops.forget_starts()  # the Toolpath has the moves' starts
@@ -435,11 +433,13 @@ def one_heap() -> None:
 
 
 class _in_thread(threading.Thread):
-    """``fn(*args)`` on a thread; ``join()`` returns its value or re-raises what it raised."""
+    """``fn(*args)`` on a thread; ``join()`` returns its value or re-raises what it raised;
+    ``done`` is set when it has ended, either way (a core is free then)."""
 
     def __init__(self, fn, *args, name: str = "gcode-checks"):
         super().__init__(name=name, daemon=True)
         self._call, self._error, self._value = (fn, args), None, None
+        self.done = threading.Event()
         self.start()
 
     def run(self) -> None:
@@ -448,6 +448,8 @@ class _in_thread(threading.Thread):
             self._value = fn(*args)
         except BaseException as exc:  # handed to the joining thread
             self._error = exc
+        finally:
+            self.done.set()
 
     def join(self, timeout: float | None = None):
         super().join(timeout)

@@ -23,7 +23,7 @@ from app.profile import MachineProfile
 
 from .arcs import arc_box, arc_length, chord_counts, chord_points, in_plane
 from .ops import ARC_CCW, ARC_CW, DWELL, FEED, PLANE_AXES, RAPID, Ops, run_of
-from .threads import on_two_threads
+from .threads import in_order, on_two_threads
 
 KIND_NAMES = {RAPID: "rapid", FEED: "feed", ARC_CW: "arc", ARC_CCW: "arc", DWELL: "dwell"}
 PARALLEL_ARCS = 50_000  # arcs from which chords are computed on two threads
@@ -233,16 +233,20 @@ def _picker(rows: np.ndarray):
     return (lambda column: column.take(rows, axis=0)), False
 
 
-def build(ops: Ops, device_first, profile: MachineProfile) -> Toolpath:
+def build(ops: Ops, device_first, profile: MachineProfile, timed_ahead=None) -> Toolpath:
     """The Toolpath of interpreted rows; ``device_first`` from the normaliser's plan, or a
     function that gives it (called last: the plan may be worked out meanwhile). Its
-    position, kind and line columns may be read-only views of ``ops``'s and ``device_first``."""
+    position, kind and line columns may be read-only views of ``ops``'s and ``device_first``.
+    ``timed_ahead``: the moves' feed, length and time are worked out before ``device_first``
+    is called, their blocks mapped by it (as ``_timings``'s ``each``); else on first use."""
     rows = np.flatnonzero(ops.kind <= DWELL)
     pick, views = _picker(rows)
     start, end = _ends(ops, rows, pick) if len(rows) and not views else (pick(ops.starts()), pick(ops.end))
     center = pick(ops.center)
     kind, plane, turn = pick(ops.kind), pick(ops.plane), pick(ops.turn)
     timing = partial(_timings, start, end, center, kind, plane, turn, pick(ops.value), profile.motion)
+    if timed_ahead is not None:  # worked out now, before waiting for the plan
+        timing = list(timing(timed_ahead))
     source = pick(ops.main_lines())
     device = pick(device_first() if callable(device_first) else device_first)
     return Toolpath(start, end, kind, center, plane, turn, source, device, timing)
@@ -266,15 +270,15 @@ def closable(ops: Ops) -> tuple[np.ndarray, np.ndarray] | None:
 
 
 def timed_before_closing(ops: Ops, closing: tuple[np.ndarray, np.ndarray],
-                         profile: MachineProfile) -> list[np.ndarray]:
+                         profile: MachineProfile, each=in_order) -> list[np.ndarray]:
     """[feed, length, time] of the Toolpath ``build_in_place`` will make of ``closing``
     (``closable``'s rows), worked out on ``ops``'s columns before they are closed up (a
     caller waiting for the plan meanwhile, and about to read them: ``cnc-gcode check``).
-    The events among the moves are worked out too, and left out."""
+    The events among the moves are worked out too, and left out. ``each`` as for ``_timings``."""
     rows = closing[0]
     span = slice(int(rows[0]), int(rows[-1]) + 1)
     columns = (ops.starts(), ops.end, ops.center, ops.kind, ops.plane, ops.turn, ops.value)
-    timed = _timings(*(column[span] for column in columns), profile.motion)
+    timed = _timings(*(column[span] for column in columns), profile.motion, each)
     if len(rows) == span.stop - span.start:
         return list(timed)
     picked = rows - span.start
@@ -318,13 +322,17 @@ def _close_up(column: np.ndarray, rows: np.ndarray, breaks: np.ndarray) -> None:
         to += stop - first
 
 
-def _timings(start, end, center, kind, plane, turn, value, motion) -> tuple[np.ndarray, ...]:
-    """(feed, length, time) of every row, a block at a time (small temporaries)."""
+def _timings(start, end, center, kind, plane, turn, value, motion, each=in_order) -> tuple[np.ndarray, ...]:
+    """(feed, length, time) of every row, a block at a time (small temporaries; ``each``
+    maps over the blocks: ``threads.in_order`` or ``on_two_threads``)."""
     feed, length, time = (np.empty(len(kind)) for _ in range(3))
-    for a in range(0, len(kind), BLOCK):
+
+    def block(a: int) -> None:
         part = slice(a, a + BLOCK)
         feed[part], length[part], time[part] = _timing(start[part], end[part], center[part], kind[part],
                                                        plane[part], turn[part], value[part], motion)
+
+    each(block, range(0, len(kind), BLOCK), "timing")
     return feed, length, time
 
 

@@ -110,3 +110,32 @@ def test_a_program_read_again_from_the_machine_s_position_is_built_in_place_the_
     for column in ("start", "end", "center", "source_line", "device_index"):
         np.testing.assert_array_equal(getattr(placed.toolpath, column), getattr(copied.toolpath, column))
     assert placed.device_lines == copied.device_lines
+
+
+def _spindle_every_tenth_line(text: str) -> str:
+    """``text`` with a spindle speed change after every tenth line: events all along."""
+    lines = text.splitlines()
+    return "".join(f"{line}\n" + (f"M3 S{1000 + k}\n" if k % 10 == 9 else "") for k, line in enumerate(lines))
+
+
+@pytest.mark.parametrize("closed_up", [True, False], ids=["closed up", "copied"])
+def test_a_check_s_timing_on_two_threads_is_the_timing_on_first_use(closed_up, tmp_path, monkeypatch):
+    """``cnc-gcode check`` times the moves while it waits for the plan, a block at a time
+    on two threads once the plan is done (before the close-up, or in ``build``): the bits
+    the window's Toolpath works out on first use, on one thread."""
+    import app.gcode.program as program
+    from app.gcode import toolpath
+
+    monkeypatch.setattr(toolpath, "BLOCK", 7)  # many blocks, shared by the two threads
+    closed, real = [], program.closable
+    monkeypatch.setattr(program, "closable", lambda ops: closed.append(real(ops) is not None) or real(ops))
+    path = tmp_path / "job.ngc"
+    for sample in sorted(SAMPLES.glob("*.ngc"))[:3]:
+        text = sample.read_text() + FOOTER
+        path.write_text(text if closed_up else _spindle_every_tenth_line(text))
+        lazy, ahead = program.load(path), program.load(path, plan_ahead=True)
+        assert isinstance(ahead.toolpath._timing, list) and not isinstance(lazy.toolpath._timing, list)
+        for column in ("feed", "length", "time"):
+            np.testing.assert_array_equal(getattr(ahead.toolpath, column), getattr(lazy.toolpath, column),
+                                          err_msg=f"{sample.name}: {column}")
+    assert closed == [closed_up] * 6
