@@ -36,7 +36,8 @@ import numpy as np  # noqa: E402
 from app.i18n import N_, localize, msg  # noqa: E402
 
 from . import workers  # noqa: E402
-from .program import Program, load, one_heap  # noqa: E402
+from .heap import one_heap  # noqa: E402
+from .program import Program, load  # noqa: E402
 
 
 def _summary(p: Program) -> str:

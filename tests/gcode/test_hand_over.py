@@ -63,7 +63,7 @@ def test_a_toolpath_of_views_keeps_the_rows_as_they_are():
 
 
 def test_the_command_line_puts_its_threads_on_one_heap_before_loading(monkeypatch, tmp_path, capsys):
-    from app.gcode import cli, program
+    from app.gcode import cli, heap
 
     calls = []
 
@@ -72,13 +72,13 @@ def test_the_command_line_puts_its_threads_on_one_heap_before_loading(monkeypatc
 
     loads = []
     real_load = cli.load
-    monkeypatch.setattr(program, "_glibc", glibc)
+    monkeypatch.setattr(heap, "_glibc", glibc)
     monkeypatch.setattr(cli, "load", lambda *a, **k: loads.append(1) or real_load(*a, **k))
     path = tmp_path / "a.ngc"
     path.write_text(PROGRAMS[0])
     assert cli.main(["check", str(path)]) == 0
-    assert calls == [(param, value, 0) for param, value in program.ONE_SHOT_HEAP]  # before the load began
-    assert (program.M_ARENA_MAX, 1, 0) in calls  # its threads on the main heap
+    assert calls == [(param, value, 0) for param, value in heap.ONE_SHOT_HEAP]  # before the load began
+    assert (heap.M_ARENA_MAX, 1, 0) in calls  # its threads on the main heap
     assert "moves: " in capsys.readouterr().out
 
 
