@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from app.gcode.threads import on_two_threads
+from app.gcode.threads import each_on
 from app.ui.preview.geometry import RAPID_GROUP, PathGeometry
 from app.ui.preview.lod import LodSegments, group_segments
 
@@ -98,7 +98,7 @@ class PreviewModel:
 
     def _each(self, fn, items) -> list:
         """``[fn(item) for item in items]``, on two threads unless ``threads`` is 1."""
-        return on_two_threads(fn, items, "preview") if self.threads > 1 else [fn(item) for item in items]
+        return each_on(self.threads)(fn, items, "preview")
 
     def build_all(self) -> None:
         """Build every level of detail of every group (zooming then never waits)."""
