@@ -7,7 +7,9 @@ from __future__ import annotations
 from tests.ui.conftest import home_when_allowed, open_and_wait
 
 SPEED = 20
-SOURCE = "G21 G90\nM3 S3000\nG0 Z5\nG0 X10 Y10\nG1 Z-1 F300\nG1 X120 F200\nG1 Y60\nG0 Z5\nM5\nM2\n"
+SOURCE = "G21 G90\nM3 S3000\nG0 Z5\nG0 X10 Y10\nG1 Z-1 F300\nG1 X120 F100\nG1 Y60\nG0 Z5\nM5\nM2\n"
+# (the long cut, 3.3 s at SPEED 20, outlasts a window that lags on a busy host: at F200 the job
+# once ended, 1.7 s after it began, before the cover opened)
 
 
 def test_cover_open_mid_job_banner_refusals_and_resume(qtbot, window, tmp_path):
